@@ -1,0 +1,213 @@
+"""What a component is: declared parameters, states, inputs, outputs, equations.
+
+A component is a small class. At the top it declares
+
+* ``PARAMETERS``: name -> :class:`Param` (default in SI, unit, allowed range),
+* ``STATES``: name -> :class:`State` (unit, initial value, nominal magnitude),
+* ``INPUTS``: name -> :class:`Port` (unit; a default if it may stay unconnected),
+* ``OUTPUTS``: name -> :class:`Output` (unit),
+* ``OPTIONS``: name -> :class:`Option` (structural choices, such as a
+  bulk-modulus law, that change the equations rather than a number in them),
+
+and below it writes two methods with CasADi expressions:
+
+* ``output_equations(t, x, u, p)`` returns the outputs; it may read only the
+  inputs that the outputs really depend on (the system resolves inputs lazily,
+  so an output computed from states alone never creates an algebraic loop);
+* ``state_equations(t, x, u, p, y)`` returns the time derivative of every state
+  (``y`` holds this component's own outputs).
+
+``x``, ``u``, ``p`` and ``y`` are mappings from the declared names to
+expressions. A component never sees another component: only its inputs.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+from typing import Any, ClassVar
+
+from hydroservo.errors import ParameterError, UnitError
+from hydroservo.units import si_unit, to_si, ureg
+
+__all__ = ["Param", "State", "Port", "Output", "Option", "Component", "SIGNAL"]
+
+#: Placeholder unit of signal blocks (sources, sums, gains): replaced by the
+#: block's ``unit`` argument, or by "" (dimensionless) when none is given.
+SIGNAL = "@"
+
+
+@dataclass(frozen=True)
+class Param:
+    """A numeric parameter: symbolic in the compiled model, so it can be swept or fitted."""
+
+    default: float
+    unit: str
+    description: str
+    min: float | None = None
+    max: float | None = None
+    min_inclusive: bool = True
+    max_inclusive: bool = True
+
+    def expected(self) -> str:
+        lo = "" if self.min is None else ("[" if self.min_inclusive else "(") + f"{self.min:g}"
+        hi = "" if self.max is None else f"{self.max:g}" + ("]" if self.max_inclusive else ")")
+        if self.min is not None and self.max is not None:
+            rng = f"in {lo}, {hi}"
+        elif self.min is not None:
+            rng = ("≥ " if self.min_inclusive else "> ") + f"{self.min:g}"
+        elif self.max is not None:
+            rng = ("≤ " if self.max_inclusive else "< ") + f"{self.max:g}"
+        else:
+            rng = "any finite value"
+        unit = si_unit(self.unit)
+        return f"{rng} {unit}" if unit != "-" else rng
+
+    def check(self, value: float, what: str) -> float:
+        ok = math.isfinite(value)
+        if ok and self.min is not None:
+            ok = value >= self.min if self.min_inclusive else value > self.min
+        if ok and self.max is not None:
+            ok = value <= self.max if self.max_inclusive else value < self.max
+        if not ok:
+            raise ParameterError(
+                f"{what} = {value:g} {si_unit(self.unit)}: expected {self.expected()} ({self.description})"
+            )
+        return value
+
+
+@dataclass(frozen=True)
+class State:
+    """A state variable; ``nominal`` is its typical magnitude, used to scale the solver."""
+
+    unit: str
+    description: str
+    initial: float | str = 0.0
+    nominal: float = 1.0
+
+
+@dataclass(frozen=True)
+class Port:
+    """An input; ``default`` is used when it is left unconnected (None: must be connected)."""
+
+    unit: str
+    description: str
+    default: float | None = None
+
+
+@dataclass(frozen=True)
+class Output:
+    unit: str
+    description: str
+
+
+@dataclass(frozen=True)
+class Option:
+    """A structural choice among named alternatives."""
+
+    default: str
+    choices: tuple[str, ...]
+    description: str
+
+
+class Component:
+    """Base class of all components. See the module docstring."""
+
+    PARAMETERS: ClassVar[dict[str, Param]] = {}
+    STATES: ClassVar[dict[str, State]] = {}
+    INPUTS: ClassVar[dict[str, Port]] = {}
+    OUTPUTS: ClassVar[dict[str, Output]] = {}
+    OPTIONS: ClassVar[dict[str, Option]] = {}
+
+    def __init__(self, name: str, unit: str | None = None, **values: Any) -> None:
+        if not name.isidentifier():
+            raise ParameterError(f"component name {name!r}: expected a Python identifier (letters, digits, _)")
+        self.name = name
+        self.unit = unit
+        self._bind_signal_unit(unit or "")
+        self.values: dict[str, float] = {k: v.default for k, v in self.PARAMETERS.items()}
+        self.option_values: dict[str, str] = {k: v.default for k, v in self.OPTIONS.items()}
+        self.set(**values)
+
+    def _bind_signal_unit(self, unit: str) -> None:
+        """Give signal blocks a unit: every declared unit "@" becomes ``unit``."""
+        try:
+            ureg.Unit(unit)
+        except Exception:
+            raise ParameterError(f"{self.name}.unit = {unit!r}: not a unit") from None
+
+        def sub(u: str) -> str:
+            if SIGNAL not in u:
+                return u
+            if unit == "":
+                return u.replace(SIGNAL + "/", "1/").replace(SIGNAL + "*", "").replace(SIGNAL, "")
+            return u.replace(SIGNAL, f"({unit})")
+
+        self.PARAMETERS = {k: replace(v, unit=sub(v.unit)) for k, v in self.PARAMETERS.items()}  # type: ignore[misc]
+        self.INPUTS = {k: replace(v, unit=sub(v.unit)) for k, v in self.INPUTS.items()}  # type: ignore[misc]
+        self.OUTPUTS = {k: replace(v, unit=sub(v.unit)) for k, v in self.OUTPUTS.items()}  # type: ignore[misc]
+        self.STATES = {k: replace(v, unit=sub(v.unit)) for k, v in self.STATES.items()}  # type: ignore[misc]
+
+    # -- parameters -----------------------------------------------------
+    def set(self, **values: Any) -> None:
+        """Set parameters (numbers in SI, or strings/quantities with units) and options."""
+        for key, value in values.items():
+            if key in self.OPTIONS:
+                self.set_option(key, value)
+            else:
+                self.values[key] = self.parse(key, value)
+
+    def parse(self, key: str, value: Any) -> float:
+        """Check and convert one parameter value to SI."""
+        what = f"{self.name}.{key}"
+        if key not in self.PARAMETERS:
+            known = ", ".join(sorted(self.PARAMETERS) + sorted(self.OPTIONS))
+            raise ParameterError(f"{what}: unknown parameter of {type(self).__name__}; known: {known}")
+        spec = self.PARAMETERS[key]
+        try:
+            si = to_si(value, spec.unit, what=what)
+        except UnitError as exc:
+            raise ParameterError(f"{exc} ({spec.description})") from None
+        return spec.check(si, what)
+
+    def set_option(self, key: str, value: Any) -> None:
+        spec = self.OPTIONS[key]
+        if value not in spec.choices:
+            raise ParameterError(
+                f"{self.name}.{key} = {value!r}: expected one of {', '.join(spec.choices)} ({spec.description})"
+            )
+        self.option_values[key] = str(value)
+
+    def option(self, key: str) -> str:
+        return self.option_values[key]
+
+    # -- equations --------------------------------------------------------
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {}
+
+    def check(self) -> None:
+        """Cross-parameter checks (override); raise ParameterError."""
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.name!r})"
+
+
+@dataclass
+class _Registry:
+    types: dict[str, type[Component]] = field(default_factory=dict)
+
+    def register(self, cls: type[Component]) -> type[Component]:
+        self.types[cls.__name__] = cls
+        return cls
+
+
+REGISTRY = _Registry()
+register = REGISTRY.register

@@ -1,0 +1,194 @@
+"""Spool valves and spool dynamics."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from hydroservo import _math as m
+from hydroservo.components.base import Component, Output, Param, Port, State, register
+from hydroservo.errors import ParameterError
+from hydroservo.orifices import four_way_valve_flows, transition_pressure
+
+__all__ = ["FourWayValve", "SpoolFirstOrder", "SpoolSecondOrder"]
+
+
+@register
+class FourWayValve(Component):
+    """Four-way spool valve: flows from spool position and port pressures.
+
+    Per-edge overlap (negative: underlap), optional clearance leakage, and the
+    flow-coefficient compensation :math:`K(x_v)` and hysteresis
+    :math:`H(x_v, d_f)` of seed 001 eqs. (3.22)-(3.23) as tables over the
+    relative spool position :math:`x_v/x_{max}`. With all overlaps zero and no
+    leakage it is the critical-centre valve of seed 003 (eqs. 3-18, 3-20,
+    3-22, 3-23, in their sign-correct form 3-18a and 3-23a).
+
+    The turbulent law is regularised below the transition pressure at which
+    the flow number (seed 002 eq. 4) with hydraulic diameter ``D_h`` reaches
+    ``lambda_crit``; see :mod:`hydroservo.orifices`.
+
+    Tables (lists, set in the constructor or model file): ``K_x``/``K`` and
+    ``H_x``/``H_opening``/``H_closing`` (``H_opening`` applies while
+    :math:`x_v \\dot x_v \\ge 0`). Defaults: 1 everywhere.
+    """
+
+    PARAMETERS = {
+        "c_v": Param(3.56e-7, "m^2/s/Pa^0.5", "flow coefficient per edge, seed 001 eq. 3.9", min=0.0),
+        "x_max": Param(1e-3, "m", "spool stroke (normalises the K and H tables)", min=0.0, min_inclusive=False),
+        "x_PA": Param(0.0, "m", "overlap of edge P-A (negative: underlap)"),
+        "x_AT": Param(0.0, "m", "overlap of edge A-T"),
+        "x_PB": Param(0.0, "m", "overlap of edge P-B"),
+        "x_BT": Param(0.0, "m", "overlap of edge B-T"),
+        "G_leak": Param(0.0, "m^3/s/Pa", "laminar clearance leakage conductance of each edge", min=0.0),
+        "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False),
+        "nu": Param(32e-6, "m^2/s", "kinematic viscosity (ISO VG 32 at 40 degC)", min=0.0, min_inclusive=False),
+        "D_h": Param(
+            1e-3, "m", "hydraulic diameter at which the laminar transition is evaluated", min=0.0, min_inclusive=False
+        ),
+        "lambda_crit": Param(1000.0, "", "critical flow number (seed 002 eq. 4)", min=0.0, min_inclusive=False),
+    }
+    INPUTS = {
+        "xv": Port("m", "spool position"),
+        "vv": Port("m/s", "spool velocity (only for the hysteresis table)", default=0.0),
+        "pS": Port("Pa", "supply pressure"),
+        "pT": Port("Pa", "tank pressure", default=0.0),
+        "pA": Port("Pa", "pressure in line A"),
+        "pB": Port("Pa", "pressure in line B"),
+    }
+    OUTPUTS = {
+        "QA": Output("m^3/s", "flow out of port A into line A"),
+        "QB": Output("m^3/s", "flow out of port B into line B"),
+        "QS": Output("m^3/s", "flow drawn from supply"),
+        "QT": Output("m^3/s", "flow returned to tank"),
+    }
+
+    def __init__(self, name: str, tables: Mapping[str, Any] | None = None, **values: Any) -> None:
+        super().__init__(name, **values)
+        self.tables: dict[str, np.ndarray] = {
+            "K_x": np.array([-1.0, 1.0]),
+            "K": np.array([1.0, 1.0]),
+            "H_x": np.array([-1.0, 1.0]),
+            "H_opening": np.array([1.0, 1.0]),
+            "H_closing": np.array([1.0, 1.0]),
+        }
+        for key, val in (tables or {}).items():
+            if key not in self.tables:
+                raise ParameterError(f"{name}.tables.{key}: unknown table; known: {', '.join(self.tables)}")
+            self.tables[key] = np.asarray(val, dtype=float).ravel()
+        for xs, ys in (("K_x", ("K",)), ("H_x", ("H_opening", "H_closing"))):
+            grid = self.tables[xs]
+            if np.any(np.diff(grid) <= 0):
+                raise ParameterError(f"{name}.tables.{xs}: expected strictly increasing relative positions")
+            for y in ys:
+                if self.tables[y].size != grid.size:
+                    raise ParameterError(
+                        f"{name}.tables.{y}: {self.tables[y].size} values for {grid.size} points of {xs}"
+                    )
+                if np.any(self.tables[y] < 0) or np.any(self.tables[y] > 1.5):
+                    raise ParameterError(f"{name}.tables.{y}: expected factors between 0 and 1.5")
+
+    def has_tables(self) -> bool:
+        return any(np.any(self.tables[k] != 1.0) for k in ("K", "H_opening", "H_closing"))
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        xv = u["xv"]
+        K: Any = 1.0
+        if self.has_tables():
+            rel = xv / p["x_max"]
+            h_open = m.interp(rel, self.tables["H_x"], self.tables["H_opening"])
+            h_close = m.interp(rel, self.tables["H_x"], self.tables["H_closing"])
+            K = m.interp(rel, self.tables["K_x"], self.tables["K"]) * m.if_else(xv * u["vv"] >= 0, h_open, h_close)
+        p_tr = transition_pressure(p["D_h"], p["rho"], p["nu"], p["lambda_crit"])
+        QA, QB, QS, QT = four_way_valve_flows(
+            xv,
+            u["pS"],
+            u["pT"],
+            u["pA"],
+            u["pB"],
+            p["c_v"],
+            p["x_PA"],
+            p["x_AT"],
+            p["x_PB"],
+            p["x_BT"],
+            p_tr,
+            p["G_leak"],
+            K,
+        )
+        return {"QA": QA, "QB": QB, "QS": QS, "QT": QT}
+
+
+@register
+class SpoolFirstOrder(Component):
+    r"""First-order spool dynamics from a catalogue response time.
+
+    :math:`T\,\dot s + s = \operatorname{sat}(u)`, :math:`x_v = x_{max} s`, with
+    the command saturated to :math:`[-1, 1]` (the stroke limit).
+
+    ``T`` is the catalogue :math:`T_{63}`: the step response of a first-order
+    lag reaches 63 % after one time constant (seed 001 eqs. 3.24-3.28, Fig. 3.5).
+    Seed 001 eq. (3.27) writes the forcing without the factor :math:`1/\tau`,
+    which would give a DC gain of :math:`\tau` (eq. 3.29); a valve command is
+    meant to have unit gain, so the unit-gain form is used here.
+    """
+
+    PARAMETERS = {
+        "T": Param(0.03, "s", "time constant (catalogue T63)", min=0.0, min_inclusive=False),
+        "x_max": Param(1e-3, "m", "spool stroke at |u| = 1", min=0.0, min_inclusive=False),
+        "s0": Param(0.0, "", "initial relative spool position", min=-1.0, max=1.0),
+    }
+    STATES = {"s": State("", "relative spool position", initial="s0", nominal=1.0)}
+    INPUTS = {"u": Port("", "relative command, -1 to 1")}
+    OUTPUTS = {"xv": Output("m", "spool position"), "vv": Output("m/s", "spool velocity")}
+
+    def _rate(self, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return (m.fmin(m.fmax(u["u"], -1.0), 1.0) - x["s"]) / p["T"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"xv": p["x_max"] * x["s"], "vv": p["x_max"] * self._rate(x, u, p)}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"s": self._rate(x, u, p)}
+
+
+@register
+class SpoolSecondOrder(Component):
+    r"""Second-order spool dynamics with stroke limit.
+
+    :math:`\ddot s = \omega_n^2(\operatorname{sat}(u) - s) - 2\zeta\omega_n \dot s`,
+    :math:`x_v = x_{max}\,\operatorname{clip}(s, -1, 1)`: the command is
+    saturated to the stroke and the delivered position clipped to it.
+    """
+
+    PARAMETERS = {
+        "omega_n": Param(2 * np.pi * 80, "rad/s", "natural frequency", min=0.0, min_inclusive=False),
+        "zeta": Param(0.7, "", "damping ratio", min=0.0),
+        "x_max": Param(1e-3, "m", "spool stroke at |u| = 1", min=0.0, min_inclusive=False),
+    }
+    STATES = {
+        "s": State("", "relative spool position", nominal=1.0),
+        "sdot": State("1/s", "relative spool velocity", nominal=1e3),
+    }
+    INPUTS = {"u": Port("", "relative command, -1 to 1")}
+    OUTPUTS = {"xv": Output("m", "spool position"), "vv": Output("m/s", "spool velocity")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        s = m.fmin(m.fmax(x["s"], -1.0), 1.0)
+        return {"xv": p["x_max"] * s, "vv": p["x_max"] * x["sdot"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        wn = p["omega_n"]
+        cmd = m.fmin(m.fmax(u["u"], -1.0), 1.0)
+        return {"s": x["sdot"], "sdot": wn**2 * (cmd - x["s"]) - 2 * p["zeta"] * wn * x["sdot"]}

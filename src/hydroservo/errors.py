@@ -1,0 +1,46 @@
+"""Exceptions raised by hydroservo.
+
+Every error a user can cause is a :class:`HydroservoError`; its message names
+what was wrong (file, option, component, parameter), the value given and what
+was expected.  The CLI prints the message and exits with code 2.
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "HydroservoError",
+    "UnitError",
+    "ParameterError",
+    "ModelError",
+    "ModelFileError",
+    "SolverError",
+    "TrimError",
+]
+
+
+class HydroservoError(Exception):
+    """Base class of all errors caused by input to hydroservo."""
+
+
+class UnitError(HydroservoError, ValueError):
+    """A quantity could not be read, or has the wrong dimension."""
+
+
+class ParameterError(HydroservoError, ValueError):
+    """A parameter name or value is not acceptable."""
+
+
+class ModelError(HydroservoError):
+    """A system is not well formed (unknown component, unconnected input, loop)."""
+
+
+class ModelFileError(HydroservoError):
+    """A model file cannot be read."""
+
+
+class SolverError(HydroservoError, RuntimeError):
+    """The integrator failed; the message says when, where and why."""
+
+
+class TrimError(HydroservoError, RuntimeError):
+    """No equilibrium was found."""

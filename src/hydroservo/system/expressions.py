@@ -1,0 +1,102 @@
+"""A small, safe arithmetic language for aliases and initial conditions.
+
+``"-mass.x"``, ``"load.W / cyl.A_A"``, ``"2 * pi * f.frequency"``: numbers,
+``+ - * / **``, parentheses, dotted names and the functions ``sqrt``, ``abs``,
+``sin``, ``cos``. Names are looked up in a mapping supplied by the caller
+(signals for aliases, parameters for initial conditions). Nothing else is
+evaluated: no attribute access, calls or imports.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+from collections.abc import Callable, Mapping
+from typing import Any
+
+import casadi as ca
+
+from hydroservo.errors import ModelError
+
+__all__ = ["evaluate", "names_in"]
+
+_FUNCS: dict[str, Callable[[Any], Any]] = {"sqrt": ca.sqrt, "abs": ca.fabs, "sin": ca.sin, "cos": ca.cos}
+_CONSTS = {"pi": math.pi}
+
+
+def _dotted(node: ast.AST) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute):
+        base = _dotted(node.value)
+        return None if base is None else f"{base}.{node.attr}"
+    return None
+
+
+def _parse(text: str, what: str) -> ast.Expression:
+    try:
+        return ast.parse(str(text).strip(), mode="eval")
+    except SyntaxError:
+        raise ModelError(f"{what}: cannot read expression {text!r}") from None
+
+
+def names_in(text: str, what: str = "expression") -> list[str]:
+    """Dotted names an expression refers to."""
+    out: list[str] = []
+
+    def walk(node: ast.AST) -> None:
+        name = _dotted(node)
+        if name is not None and isinstance(node, ast.Attribute):
+            out.append(name)
+            return
+        if isinstance(node, ast.Name) and node.id not in _CONSTS and node.id not in _FUNCS:
+            out.append(node.id)
+            return
+        for child in ast.iter_child_nodes(node):
+            walk(child)
+
+    walk(_parse(text, what).body)
+    return out
+
+
+def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expression") -> Any:
+    """Evaluate ``text`` with dotted names taken from ``names``."""
+    if isinstance(text, (int, float)):
+        return float(text)
+    tree = _parse(text, what)
+
+    def ev(node: ast.AST) -> Any:
+        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)) and not isinstance(node.value, bool):
+            return float(node.value)
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
+            val = ev(node.operand)
+            return -val if isinstance(node.op, ast.USub) else val
+        if isinstance(node, ast.BinOp):
+            a, b = ev(node.left), ev(node.right)
+            ops = {
+                ast.Add: lambda: a + b,
+                ast.Sub: lambda: a - b,
+                ast.Mult: lambda: a * b,
+                ast.Div: lambda: a / b,
+                ast.Pow: lambda: a**b,
+            }
+            for op, fn in ops.items():
+                if isinstance(node.op, op):
+                    return fn()
+        if (
+            isinstance(node, ast.Call)
+            and isinstance(node.func, ast.Name)
+            and node.func.id in _FUNCS
+            and len(node.args) == 1
+        ):
+            return _FUNCS[node.func.id](ev(node.args[0]))
+        name = _dotted(node)
+        if name is not None:
+            if name in names:
+                return names[name]
+            if name in _CONSTS:
+                return _CONSTS[name]
+            raise ModelError(f"{what}: unknown name {name!r} in {text!r}")
+        raise ModelError(f"{what}: {text!r} uses something other than numbers, names, + - * / ** and sqrt/abs/sin/cos")
+
+    return ev(tree.body)

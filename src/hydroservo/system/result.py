@@ -1,0 +1,182 @@
+"""Simulation results: named signals with units; pandas, CSV, MAT and plots."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from hydroservo.errors import ParameterError
+from hydroservo.units import from_si, si_unit
+
+if TYPE_CHECKING:
+    import pandas as pd
+    from matplotlib.figure import Figure
+
+__all__ = ["Result", "BatchResult"]
+
+
+class Result:
+    """One simulation run.
+
+    ``result["cyl.pA"]`` is the signal in SI units; ``result.get("cyl.pA", "psi")``
+    converts. ``result.t`` is the time [s]. :attr:`stats` holds solver statistics
+    and the wall time; :attr:`params` the parameter values used (SI).
+    """
+
+    def __init__(
+        self,
+        t: np.ndarray,
+        data: dict[str, np.ndarray],
+        units: dict[str, str],
+        descriptions: dict[str, str],
+        stats: dict[str, Any],
+        params: dict[str, float],
+        model: str,
+    ) -> None:
+        self.t = t
+        self.data = data
+        self.units = units
+        self.descriptions = descriptions
+        self.stats = stats
+        self.params = params
+        self.model = model
+
+    @property
+    def names(self) -> list[str]:
+        return list(self.data)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name in ("t", "time"):
+            return self.t
+        try:
+            return self.data[name]
+        except KeyError:
+            raise ParameterError(
+                f"no signal {name!r} in the result of {self.model!r}; signals: {', '.join(self.data)}"
+            ) from None
+
+    def get(self, name: str, unit: str | None = None) -> np.ndarray:
+        """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``)."""
+        values = self[name]
+        if unit is None:
+            return values
+        return np.asarray(from_si(1.0, self.units.get(name, ""), unit)) * values
+
+    def summary(self) -> dict[str, dict[str, Any]]:
+        """Unit, final, minimum and maximum value of every signal."""
+        return {
+            n: {
+                "unit": si_unit(self.units.get(n, "")),
+                "final": float(v[-1]),
+                "min": float(np.min(v)),
+                "max": float(np.max(v)),
+            }
+            for n, v in self.data.items()
+        }
+
+    def to_pandas(self) -> pd.DataFrame:
+        """A DataFrame indexed by time, columns named ``"signal [unit]"``."""
+        import pandas as pd
+
+        cols = {f"{n} [{si_unit(self.units.get(n, ''))}]": v for n, v in self.data.items()}
+        df = pd.DataFrame(cols, index=pd.Index(self.t, name="t [s]"))
+        return df
+
+    def to_csv(self, path: str | Path) -> Path:
+        """Write a CSV with the units in the column headers."""
+        path = Path(path)
+        self.to_pandas().to_csv(path, float_format="%.10g")
+        return path
+
+    def to_mat(self, path: str | Path) -> Path:
+        """Write a MATLAB .mat file: one variable per signal (dots become underscores), plus ``t`` and ``units``."""
+        from scipy.io import savemat
+
+        path = Path(path)
+        content: dict[str, Any] = {"t": self.t}
+        units = {}
+        for n, v in self.data.items():
+            key = n.replace(".", "_")
+            content[key] = v
+            units[key] = si_unit(self.units.get(n, ""))
+        content["units"] = units
+        savemat(path, content)
+        return path
+
+    def plot(
+        self,
+        *names: str | Sequence[str],
+        units: dict[str, str] | None = None,
+        title: str | None = None,
+        file: str | Path | None = None,
+    ) -> Figure:
+        """Plot signals against time, one panel per argument.
+
+        An argument may be a name or a list of names sharing a panel (same unit).
+        ``units`` maps names to display units, e.g. ``{"y": "in"}``.
+        """
+        import matplotlib
+
+        if file is not None:
+            matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        panels = [[n] if isinstance(n, str) else list(n) for n in (names or [[self.names[0]]])]
+        fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(7.5, 1.9 + 1.6 * len(panels)), squeeze=False)
+        for ax, panel in zip(axes[:, 0], panels):
+            labels = []
+            for n in panel:
+                unit = (units or {}).get(n)
+                shown = unit if unit else si_unit(self.units.get(n, ""))
+                ax.plot(self.t, self.get(n, unit), label=n)
+                labels.append(shown)
+            ax.set_ylabel(f"{' / '.join(panel)} [{labels[0]}]" if len(panel) == 1 else f"[{labels[0]}]")
+            if len(panel) > 1:
+                ax.legend(loc="best", fontsize="small")
+            ax.grid(True, alpha=0.3)
+        axes[-1, 0].set_xlabel("t [s]")
+        fig.suptitle(title or self.model)
+        fig.tight_layout()
+        if file is not None:
+            fig.savefig(file, dpi=110)
+            plt.close(fig)
+        return fig
+
+
+class BatchResult:
+    """Many runs: ``result["load.x"]`` has shape (runs, times)."""
+
+    def __init__(
+        self,
+        t: np.ndarray,
+        data: dict[str, np.ndarray],
+        units: dict[str, str],
+        params: dict[str, np.ndarray],
+        stats: dict[str, Any],
+        model: str,
+    ) -> None:
+        self.t, self.data, self.units, self.params, self.stats, self.model = t, data, units, params, stats, model
+
+    def __len__(self) -> int:
+        return int(self.stats["runs"])
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        try:
+            return self.data[name]
+        except KeyError:
+            raise ParameterError(f"no signal {name!r} in the batch result; signals: {', '.join(self.data)}") from None
+
+    def run(self, k: int) -> Result:
+        """Run ``k`` as a :class:`Result`."""
+        return Result(
+            self.t,
+            {n: v[k] for n, v in self.data.items()},
+            self.units,
+            {},
+            {},
+            {n: float(v[k]) for n, v in self.params.items()},
+            self.model,
+        )
