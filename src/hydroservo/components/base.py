@@ -64,16 +64,17 @@ class Param:
         unit = si_unit(self.unit)
         return f"{rng} {unit}" if unit != "-" else rng
 
-    def check(self, value: float, what: str) -> float:
+    def check(self, value: float, what: str, given: Any = None) -> float:
         ok = math.isfinite(value)
         if ok and self.min is not None:
             ok = value >= self.min if self.min_inclusive else value > self.min
         if ok and self.max is not None:
             ok = value <= self.max if self.max_inclusive else value < self.max
         if not ok:
-            raise ParameterError(
-                f"{what} = {value:g} {si_unit(self.unit)}: expected {self.expected()} ({self.description})"
-            )
+            shown = f"{value:g} {si_unit(self.unit)}".replace(" -", "")
+            if isinstance(given, str):
+                shown = f"{given!r} (= {shown})"
+            raise ParameterError(f"{what} = {shown}: expected {self.expected()} ({self.description})")
         return value
 
 
@@ -142,7 +143,7 @@ class Component:
                 return u
             if unit == "":
                 return u.replace(SIGNAL + "/", "1/").replace(SIGNAL + "*", "").replace(SIGNAL, "")
-            return u.replace(SIGNAL, f"({unit})")
+            return u.replace(SIGNAL, unit if unit.isidentifier() else f"({unit})")
 
         self.PARAMETERS = {k: replace(v, unit=sub(v.unit)) for k, v in self.PARAMETERS.items()}  # type: ignore[misc]
         self.INPUTS = {k: replace(v, unit=sub(v.unit)) for k, v in self.INPUTS.items()}  # type: ignore[misc]
@@ -169,7 +170,7 @@ class Component:
             si = to_si(value, spec.unit, what=what)
         except UnitError as exc:
             raise ParameterError(f"{exc} ({spec.description})") from None
-        return spec.check(si, what)
+        return spec.check(si, what, value)
 
     def set_option(self, key: str, value: Any) -> None:
         spec = self.OPTIONS[key]
@@ -195,6 +196,10 @@ class Component:
 
     def check(self) -> None:
         """Cross-parameter checks (override); raise ParameterError."""
+
+    def config(self) -> dict[str, Any]:
+        """Constructor arguments other than parameters and options (tables, files), for model files."""
+        return {}
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}({self.name!r})"

@@ -155,6 +155,11 @@ class Table(Component):
             raise ParameterError(f"{name}.times: expected strictly increasing times [s]")
         self.times, self.table_values = t, v
 
+    def config(self) -> dict[str, Any]:
+        if self.file is not None:
+            return {"file": self.file, "column": self.column}
+        return {"times": self.times.tolist(), "values": self.table_values.tolist()}
+
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:

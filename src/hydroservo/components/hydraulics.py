@@ -72,6 +72,9 @@ class PressureTable(Component):
             raise ParameterError(f"{self.name}.pressures: expected gauge pressures ≥ 0 Pa, got min {pr.min():g} Pa")
         self.times, self.pressures = t, pr
 
+    def config(self) -> dict[str, Any]:
+        return {"times": self.times.tolist(), "pressures": self.pressures.tolist()}
+
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:

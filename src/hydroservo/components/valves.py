@@ -90,6 +90,9 @@ class FourWayValve(Component):
                 if np.any(self.tables[y] < 0) or np.any(self.tables[y] > 1.5):
                     raise ParameterError(f"{name}.tables.{y}: expected factors between 0 and 1.5")
 
+    def config(self) -> dict[str, Any]:
+        return {"tables": {k: v.tolist() for k, v in self.tables.items()}} if self.has_tables() else {}
+
     def has_tables(self) -> bool:
         return any(np.any(self.tables[k] != 1.0) for k in ("K", "H_opening", "H_closing"))
 

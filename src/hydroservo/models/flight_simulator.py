@@ -161,4 +161,6 @@ def flight_simulator(step: float | str = "2 V", rc_form: str = "seed", volumes: 
     s.alias("ei", "summer.y", "V", "error voltage at the summing junction")
     s.alias("eo", "rc.y", "V", "error voltage at the RC network output")
     s.alias("i_s", "amp.i", "A", "valve current")
+    s.plots = [["vi", "eo"], ["xv"], ["ydot"], ["y"], ["p1", "p2"]]
+    s.plot_units = {"xv": "in", "ydot": "in/s", "y": "in", "p1": "psi", "p2": "psi"}
     return s

@@ -68,6 +68,9 @@ class System:
         self.aliases: dict[str, Alias] = {}
         self.initial: dict[str, str | float] = {}
         self.source: str | None = None
+        #: panels for plots of a run (lists of signal names) and the units to show them in
+        self.plots: list[list[str]] = []
+        self.plot_units: dict[str, str] = {}
         self._model: Model | None = None
         self._model_key: Any = None
 
