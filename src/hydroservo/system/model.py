@@ -83,6 +83,7 @@ class Model:
         self._fz = ca.Function("fz", [t, z, p], [fz])
         self._jz = ca.Function("jz", [t, z, p], [ca.jacobian(fz, z)])
         self._integrators: dict[Any, ca.Function] = {}
+        self._maps: dict[int, ca.Function] = {}
 
     # -- helpers -----------------------------------------------------------
     def _integrator(self, grid: np.ndarray, rtol: float, atol: float, max_steps: int) -> ca.Function:
@@ -194,12 +195,20 @@ class Model:
     def _result(self, grid: np.ndarray, X: np.ndarray, p: np.ndarray, stats: dict[str, Any]) -> Result:
         nt = grid.size
         data: dict[str, np.ndarray] = {n: X[i] for i, n in enumerate(self.state_names)}
-        if self.output_names:
-            Y = np.asarray(self.outputs.map(nt)(grid[None, :], X, np.tile(p[:, None], (1, nt))), dtype=float)
-            for i, n in enumerate(self.output_names):
-                data[n] = Y[i]
+
+        def outputs() -> dict[str, np.ndarray]:
+            if not self.output_names:
+                return {}
+            Y = np.asarray(self._outputs_map(nt)(grid[None, :], X, p[:, None]), dtype=float)
+            return {n: Y[i] for i, n in enumerate(self.output_names)}
+
         params = dict(zip(self.parameter_names, p.tolist()))
-        return Result(grid, data, dict(self.units), dict(self.descriptions), stats, params, self.name)
+        return Result(grid, data, dict(self.units), dict(self.descriptions), stats, params, self.name, outputs)
+
+    def _outputs_map(self, n: int) -> ca.Function:
+        if n not in self._maps:
+            self._maps[n] = self.outputs.map(n)
+        return self._maps[n]
 
     def _diagnose(
         self, message: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, rtol: float, atol: float, max_steps: int
@@ -295,13 +304,13 @@ class Model:
         atol: float = 1e-8,
         max_steps: int = 100_000,
         threads: int | None = None,
-        outputs: bool = True,
     ) -> BatchResult:
         """Run the model once per parameter set, the integrator mapped over all sets.
 
         ``sets`` maps parameter names to equally long sequences of SI values;
         other parameters keep ``p_base``. Runs are spread over ``threads``
         threads (default: all cores). Initial states follow the parameters.
+        Outputs other than states are computed when first accessed.
         """
         grid = self._grid(t_end, t_eval, n_points)
         lengths = {len(v) for v in sets.values()}
@@ -330,19 +339,28 @@ class Model:
         nt = grid.size
         X = np.asarray(xf, dtype=float).reshape(self.nx, n, nt) * self.nominal[:, None, None]
         data = {name: X[i] for i, name in enumerate(self.state_names)}
-        if outputs and self.output_names:
-            Xf = X.reshape(self.nx, n * nt)
-            T = np.tile(grid, n)[None, :]
-            Pf = np.repeat(P, nt, axis=1)
-            Y = np.asarray(self.outputs.map(n * nt, "thread", nthreads)(T, Xf, Pf), dtype=float).reshape(-1, n, nt)
-            for i, name in enumerate(self.output_names):
-                data[name] = Y[i]
+        fy = self._outputs_map(nt) if self.output_names else None
+
+        def outputs() -> dict[str, np.ndarray]:
+            if fy is None:
+                return {}
+            Y = np.stack(
+                [np.asarray(fy(grid[None, :], X[:, k, :], P[:, k : k + 1]), dtype=float) for k in range(n)], axis=1
+            )
+            return {name: Y[i] for i, name in enumerate(self.output_names)}
+
         bad = ~np.all(np.isfinite(X), axis=(0, 2))
         if np.any(bad):
             raise SolverError(f"batch run of {self.name!r}: runs {np.flatnonzero(bad)[:10].tolist()} returned NaN/Inf")
         params = {name: P[i] for i, name in enumerate(self.parameter_names)}
         return BatchResult(
-            grid, data, dict(self.units), params, {"wall_time_s": wall, "runs": n, "threads": nthreads}, self.name
+            grid,
+            data,
+            dict(self.units),
+            params,
+            {"wall_time_s": wall, "runs": n, "threads": nthreads},
+            self.name,
+            outputs,
         )
 
     # -- code generation ---------------------------------------------------

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -35,14 +35,24 @@ class Result:
         stats: dict[str, Any],
         params: dict[str, float],
         model: str,
+        outputs: Callable[[], dict[str, np.ndarray]] | None = None,
     ) -> None:
         self.t = t
-        self.data = data
+        self._data = data
+        self._outputs = outputs
         self.units = units
         self.descriptions = descriptions
         self.stats = stats
         self.params = params
         self.model = model
+
+    @property
+    def data(self) -> dict[str, np.ndarray]:
+        """All signals (SI). Outputs other than states are computed on first use."""
+        if self._outputs is not None:
+            self._data.update(self._outputs())
+            self._outputs = None
+        return self._data
 
     @property
     def names(self) -> list[str]:
@@ -51,8 +61,9 @@ class Result:
     def __getitem__(self, name: str) -> np.ndarray:
         if name in ("t", "time"):
             return self.t
+        data = self._data if name in self._data else self.data
         try:
-            return self.data[name]
+            return data[name]
         except KeyError:
             raise ParameterError(
                 f"no signal {name!r} in the result of {self.model!r}; signals: {', '.join(self.data)}"
@@ -147,7 +158,7 @@ class Result:
 
 
 class BatchResult:
-    """Many runs: ``result["load.x"]`` has shape (runs, times)."""
+    """Many runs: ``result["load.x"]`` has shape (runs, times); ``result.params`` the values per run."""
 
     def __init__(
         self,
@@ -157,15 +168,26 @@ class BatchResult:
         params: dict[str, np.ndarray],
         stats: dict[str, Any],
         model: str,
+        outputs: Callable[[], dict[str, np.ndarray]] | None = None,
     ) -> None:
-        self.t, self.data, self.units, self.params, self.stats, self.model = t, data, units, params, stats, model
+        self.t, self._data, self.units, self.params, self.stats, self.model = t, data, units, params, stats, model
+        self._outputs = outputs
+
+    @property
+    def data(self) -> dict[str, np.ndarray]:
+        """All signals, shape (runs, times). Outputs other than states are computed on first use."""
+        if self._outputs is not None:
+            self._data.update(self._outputs())
+            self._outputs = None
+        return self._data
 
     def __len__(self) -> int:
         return int(self.stats["runs"])
 
     def __getitem__(self, name: str) -> np.ndarray:
+        data = self._data if name in self._data else self.data
         try:
-            return self.data[name]
+            return data[name]
         except KeyError:
             raise ParameterError(f"no signal {name!r} in the batch result; signals: {', '.join(self.data)}") from None
 
