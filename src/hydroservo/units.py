@@ -62,8 +62,8 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
     Parameters
     ----------
     value : float, str or pint.Quantity
-        A plain number is taken to be already in SI units ``[unit]``; a string
-        such as ``"1500 psi"`` or a pint quantity is converted.
+        A bare number (also in a string, ``"0.5"``) is taken to be already in
+        the SI unit ``unit``; a quantity such as ``"1500 psi"`` is converted.
     unit : str
         The SI unit expected, e.g. ``"Pa"``, ``"m^3/s"``, ``""`` for dimensionless.
     what : str
@@ -76,9 +76,7 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
     """
     q = parse_quantity(value, what=what)
     target = _unit(unit)
-    if q.dimensionless and not isinstance(value, (str, pint.Quantity)):
-        return float(q.magnitude)
-    if q.unitless and (target.dimensionless or not isinstance(value, str)):
+    if q.unitless:  # a bare number, given as such or in a string, is SI
         return float(q.magnitude)
     try:
         out = float(q.to(target).magnitude)

@@ -36,7 +36,7 @@ class FourWayValve(Component):
     """
 
     PARAMETERS = {
-        "c_v": Param(3.56e-7, "m^2/s/Pa^0.5", "flow coefficient per edge, seed 001 eq. 3.9", min=0.0),
+        "c_v": Param(3.56e-4, "m^2/s/Pa^0.5", "flow coefficient per edge, seed 001 eq. 3.9", min=0.0),
         "x_max": Param(1e-3, "m", "spool stroke (normalises the K and H tables)", min=0.0, min_inclusive=False),
         "x_PA": Param(0.0, "m", "overlap of edge P-A (negative: underlap)"),
         "x_AT": Param(0.0, "m", "overlap of edge A-T"),

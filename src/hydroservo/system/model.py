@@ -8,7 +8,6 @@ same thing for a pressure of 1e7 Pa and a spool position of 1e-5 m.
 
 from __future__ import annotations
 
-import re
 import time
 from collections.abc import Mapping, Sequence
 from typing import Any
@@ -213,35 +212,37 @@ class Model:
     def _diagnose(
         self, message: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, rtol: float, atol: float, max_steps: int
     ) -> SolverError:
+        """Locate a failure: the last output time reached, and the state changing fastest there."""
         flag = next((k for k in _REASONS if k in message), None)
-        reason = _REASONS.get(flag, "the integrator stopped") if flag else message.strip().splitlines()[-1][:300]
-        m = re.search(r"[Aa]t t\s*=\s*([-+0-9.eE]+)", message)
-        t_fail = float(m.group(1)) if m else float("nan")
-        # re-run up to the last output time before the failure to show the state there
-        last_t, last_x = float(grid[0]), x0
-        if np.isfinite(t_fail):
-            good = grid[grid < t_fail]
-            if good.size >= 2:
-                try:
-                    sub = ca.integrator(
-                        "diag",
-                        "cvodes",
-                        self._dae,
-                        float(good[0]),
-                        [float(g) for g in good],
-                        {"abstol": atol, "reltol": rtol, "max_num_steps": max_steps},
-                    )
-                    xs = np.asarray(sub(x0=x0 / self.nominal, p=p)["xf"], dtype=float) * self.nominal[:, None]
-                    last_t, last_x = float(good[-1]), xs[:, -1]
-                except RuntimeError:
-                    pass
+        reason = _REASONS[flag] if flag else message.strip().splitlines()[-1][:300]
+
+        def reach(k: int) -> np.ndarray | None:
+            """States at grid[:k + 1], or None if the integrator fails before grid[k]."""
+            if k == 0:
+                return x0[:, None]
+            opts = {"abstol": atol, "reltol": rtol, "max_num_steps": max_steps}
+            sub = ca.integrator("diag", "cvodes", self._dae, float(grid[0]), [float(g) for g in grid[: k + 1]], opts)
+            try:
+                return np.asarray(sub(x0=x0 / self.nominal, p=p)["xf"], dtype=float) * self.nominal[:, None]
+            except RuntimeError:
+                return None
+
+        lo, hi = 0, grid.size - 1  # grid[lo] is reached, grid[hi] is not
+        states = x0[:, None]
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            got = reach(mid)
+            if got is None or not np.all(np.isfinite(got)):
+                hi = mid
+            else:
+                lo, states = mid, got
+        last_t, last_x = float(grid[lo]), states[:, -1]
         rates = np.asarray(self.f(last_t, last_x, p), dtype=float).ravel() / self.nominal
-        k = int(np.nanargmax(np.abs(np.where(np.isfinite(rates), rates, np.inf))))
+        k = int(np.argmax(np.abs(np.where(np.isfinite(rates), rates, np.inf))))
         name = self.state_names[k]
         unit = si_unit(self.units.get(name, ""))
-        where = f"at t = {t_fail:.6g} s" if np.isfinite(t_fail) else "during integration"
         return SolverError(
-            f"integration of {self.name!r} failed {where}: {reason}. "
+            f"integration of {self.name!r} failed at t = {last_t:.6g} to {float(grid[hi]):.6g} s: {reason}. "
             f"At t = {last_t:.6g} s the fastest-changing state was {name} = {last_x[k]:.6g} {unit} "
             f"(rate {rates[k] * self.nominal[k]:.3g} {unit}/s)."
         )
