@@ -210,3 +210,16 @@ def test_sources() -> None:
     np.testing.assert_allclose(r["sine.y"], np.sin(4 * np.pi * r.t), atol=1e-12)
     np.testing.assert_allclose(r["square.y"], [1, -1, -1, 1, -1, 1])  # 2 Hz: + on the first half of each 0.5 s period
     np.testing.assert_allclose(r["table.y"], 10 * r.t)
+
+
+def test_c_code_generation_compiles(tmp_path) -> None:
+    import shutil
+    import subprocess
+
+    model = hs.load_model("flight-simulator").build()
+    path = model.generate_c(tmp_path / "fs_model.c")
+    text = path.read_text()
+    assert "int f(" in text and "int jac_x(" in text
+    if shutil.which("gcc") is None:
+        pytest.skip("no C compiler")
+    subprocess.run(["gcc", "-c", "-O1", str(path), "-o", str(tmp_path / "fs_model.o")], check=True)

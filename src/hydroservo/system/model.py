@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Mapping, Sequence
+from pathlib import Path
 from typing import Any
 
 import casadi as ca
@@ -90,7 +91,7 @@ class Model:
         if key not in self._integrators:
             if len(self._integrators) > 16:
                 self._integrators.clear()
-            opts = {"abstol": atol, "reltol": rtol, "max_num_steps": max_steps}
+            opts = {"abstol": atol, "reltol": rtol, "max_num_steps": max_steps, "disable_internal_warnings": True}
             self._integrators[key] = ca.integrator(
                 "sim", "cvodes", self._dae, float(grid[0]), [float(g) for g in grid], opts
             )
@@ -220,7 +221,7 @@ class Model:
             """States at grid[:k + 1], or None if the integrator fails before grid[k]."""
             if k == 0:
                 return x0[:, None]
-            opts = {"abstol": atol, "reltol": rtol, "max_num_steps": max_steps}
+            opts = {"abstol": atol, "reltol": rtol, "max_num_steps": max_steps, "disable_internal_warnings": True}
             sub = ca.integrator("diag", "cvodes", self._dae, float(grid[0]), [float(g) for g in grid[: k + 1]], opts)
             try:
                 return np.asarray(sub(x0=x0 / self.nominal, p=p)["xf"], dtype=float) * self.nominal[:, None]
@@ -365,11 +366,25 @@ class Model:
         )
 
     # -- code generation ---------------------------------------------------
-    def generate_c(self, filename: str = "model.c") -> str:
-        """Write C code of ``f`` and its Jacobian (CasADi code generation); returns the file name."""
-        cg = ca.CodeGenerator(filename)
+    def generate_c(self, filename: str | Path = "model.c") -> Path:
+        """Write C code of ``f``, its Jacobian ``jac_x`` and the outputs ``y`` (CasADi code generation).
+
+        The functions keep their CasADi names (``f``, ``jac_x``, ``y``) and
+        calling convention; returns the path of the file written.
+        """
+        path = Path(filename)
+        name = path.stem if path.stem.isidentifier() else "model"
+        cg = ca.CodeGenerator(name + ".c", {"with_header": True})
         cg.add(self.f)
         cg.add(self.jac_x)
         cg.add(self.outputs)
-        cg.generate()
-        return filename
+        directory = path.parent.resolve()
+        cg.generate(str(directory) + "/")
+        written = directory / f"{name}.c"
+        if written != path.resolve():
+            written.replace(path)
+            header = directory / f"{name}.h"
+            if header.exists():
+                header.replace(path.with_suffix(".h"))
+            written = path
+        return written
