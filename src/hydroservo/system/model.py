@@ -173,6 +173,8 @@ class Model:
         if not np.all(np.isfinite(x0)):
             bad = [n for n, v in zip(self.state_names, x0) if not np.isfinite(v)]
             raise SolverError(f"initial state is not finite in {', '.join(bad)}")
+        if self.nx == 0:  # nothing to integrate: a system of sources and algebraic blocks
+            return self._result(grid, np.zeros((0, grid.size)), p, {"wall_time_s": 0.0})
         integ = self._integrator(grid, rtol, atol, max_steps)
         start = time.perf_counter()
         try:
