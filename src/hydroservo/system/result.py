@@ -18,7 +18,39 @@ if TYPE_CHECKING:
 __all__ = ["Result", "BatchResult"]
 
 
-class Result:
+class _Signals:
+    """Signals by name; outputs other than states are computed on first use."""
+
+    t: np.ndarray
+    model: str
+    _data: dict[str, np.ndarray]
+    _outputs: Callable[[], dict[str, np.ndarray]] | None
+
+    @property
+    def data(self) -> dict[str, np.ndarray]:
+        """All signals (SI)."""
+        if self._outputs is not None:
+            self._data.update(self._outputs())
+            self._outputs = None
+        return self._data
+
+    @property
+    def names(self) -> list[str]:
+        return list(self.data)
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name in ("t", "time"):
+            return self.t
+        data = self._data if name in self._data else self.data
+        try:
+            return data[name]
+        except KeyError:
+            raise ParameterError(
+                f"no signal {name!r} in the result of {self.model!r}; signals: {', '.join(self.data)}"
+            ) from None
+
+
+class Result(_Signals):
     """One simulation run.
 
     ``result["cyl.pA"]`` is the signal in SI units; ``result.get("cyl.pA", "psi")``
@@ -45,29 +77,6 @@ class Result:
         self.stats = stats
         self.params = params
         self.model = model
-
-    @property
-    def data(self) -> dict[str, np.ndarray]:
-        """All signals (SI). Outputs other than states are computed on first use."""
-        if self._outputs is not None:
-            self._data.update(self._outputs())
-            self._outputs = None
-        return self._data
-
-    @property
-    def names(self) -> list[str]:
-        return list(self.data)
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        if name in ("t", "time"):
-            return self.t
-        data = self._data if name in self._data else self.data
-        try:
-            return data[name]
-        except KeyError:
-            raise ParameterError(
-                f"no signal {name!r} in the result of {self.model!r}; signals: {', '.join(self.data)}"
-            ) from None
 
     def get(self, name: str, unit: str | None = None) -> np.ndarray:
         """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``)."""
@@ -157,7 +166,7 @@ class Result:
         return fig
 
 
-class BatchResult:
+class BatchResult(_Signals):
     """Many runs: ``result["load.x"]`` has shape (runs, times); ``result.params`` the values per run."""
 
     def __init__(
@@ -173,23 +182,8 @@ class BatchResult:
         self.t, self._data, self.units, self.params, self.stats, self.model = t, data, units, params, stats, model
         self._outputs = outputs
 
-    @property
-    def data(self) -> dict[str, np.ndarray]:
-        """All signals, shape (runs, times). Outputs other than states are computed on first use."""
-        if self._outputs is not None:
-            self._data.update(self._outputs())
-            self._outputs = None
-        return self._data
-
     def __len__(self) -> int:
         return int(self.stats["runs"])
-
-    def __getitem__(self, name: str) -> np.ndarray:
-        data = self._data if name in self._data else self.data
-        try:
-            return data[name]
-        except KeyError:
-            raise ParameterError(f"no signal {name!r} in the batch result; signals: {', '.join(self.data)}") from None
 
     def run(self, k: int) -> Result:
         """Run ``k`` as a :class:`Result`."""
