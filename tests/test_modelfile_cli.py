@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -12,71 +13,7 @@ from hydroservo.cli import main
 from hydroservo.errors import ModelFileError
 from hydroservo.modelfile import model_to_toml, read_model
 
-VALVE_CYLINDER = """
-[model]
-name = "valve-cylinder"
-t_end = "0.5 s"
-
-[components.supply]
-type = "ConstantPressure"
-p = "210 bar"
-
-[components.tank]
-type = "Tank"
-
-[components.command]
-type = "Step"
-amplitude = 0.5
-t_step = "10 ms"
-
-[components.spool]
-type = "SpoolFirstOrder"
-T = "15 ms"
-x_max = "1 mm"
-
-[components.valve]
-type = "FourWayValve"
-c_v = "3.5e-4 m^2/s/Pa^0.5"
-x_PA = "0.02 mm"
-x_AT = "0.02 mm"
-x_PB = "0.02 mm"
-x_BT = "0.02 mm"
-
-[components.cyl]
-type = "Cylinder"
-A_A = "19.63 cm^2"
-A_B = "11.78 cm^2"
-V_A0 = "0.3 L"
-V_B0 = "0.3 L"
-bulk_modulus = "lee"
-pA0 = "100 bar"
-pB0 = "100 bar"
-
-[components.load]
-type = "Mass"
-m = "250 kg"
-B = "2000 N*s/m"
-incline = 0.0
-F_c0 = "200 N"
-F_s0 = "50 N"
-c_s = "5 mm/s"
-
-[connections]
-"spool.u" = "command.y"
-"valve.xv" = "spool.xv"
-"valve.pS" = "supply.p"
-"valve.pT" = "tank.p"
-"valve.pA" = "cyl.pA"
-"valve.pB" = "cyl.pB"
-"cyl.QA" = "valve.QA"
-"cyl.QB" = "valve.QB"
-"cyl.x" = "load.x"
-"cyl.v" = "load.v"
-"load.F" = "cyl.F"
-
-[aliases]
-x_mm = { expr = "1000 * load.x", unit = "mm", description = "piston position" }
-"""
+VALVE_CYLINDER = (Path(__file__).resolve().parents[1] / "docs" / "examples" / "valve_cylinder.toml").read_text()
 
 
 @pytest.fixture
