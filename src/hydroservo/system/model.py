@@ -8,6 +8,7 @@ same thing for a pressure of 1e7 Pa and a spool position of 1e-5 m.
 
 from __future__ import annotations
 
+import os
 import time
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -327,8 +328,6 @@ class Model:
                 raise ParameterError(f"batch: unknown parameter {name!r}")
             P[self.parameter_names.index(name)] = np.asarray(vals, dtype=float)
         X0 = np.asarray(self.x0.map(n)(P), dtype=float) / self.nominal[:, None]
-        import os
-
         nthreads = threads or os.cpu_count() or 1
         integ = self._integrator(grid, rtol, atol, max_steps)
         fmap = integ.map(n, "thread", nthreads)

@@ -19,7 +19,7 @@ import casadi as ca
 import numpy as np
 
 from hydroservo.components.base import Component
-from hydroservo.errors import ModelError, ParameterError
+from hydroservo.errors import HydroservoError, ModelError, ParameterError
 from hydroservo.system.expressions import evaluate
 from hydroservo.units import to_si, ureg
 
@@ -132,8 +132,8 @@ class System:
         if isinstance(value, str):
             try:
                 value = to_si(value, comp.STATES[sname].unit, what=f"initial {state}")
-            except Exception:
-                pass  # an expression; checked at build time
+            except HydroservoError:
+                pass  # not a quantity: an expression of parameters, checked at build time
         self.initial[state] = value
 
     # -- parameters ---------------------------------------------------------
