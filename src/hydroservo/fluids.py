@@ -84,27 +84,31 @@ def bulk_modulus_lee(
     return a1 * E_max * m.log10(a2 * pc / p_max + a3)
 
 
-def eggerth_coefficients(temperature: float) -> tuple[float, float, float]:
+def eggerth_coefficients(temperature: Any) -> tuple[Any, Any, Any]:
     """Eggerth coefficients (k1 [m^2/N], k2 [m^2/N], lambda [-]) at ``temperature`` [degC].
 
     Linear interpolation in temperature between the rows of seed 001
     Table 3.1 (20, 50 and 90 degC). Outside that range the table is not
-    extrapolated: a :class:`~hydroservo.errors.ParameterError` is raised.
+    extrapolated: a :class:`~hydroservo.errors.ParameterError` is raised (for a
+    symbolic temperature the caller's parameter range does that check).
     """
     temps = sorted(EGGERTH_TABLE)
+    cols = np.array([EGGERTH_TABLE[T] for T in temps])
+    if m.is_symbolic(temperature):
+        k1, k2, lam = (m.interp(temperature, temps, cols[:, j]) for j in range(3))
+        return k1, k2, lam
     if not (temps[0] <= temperature <= temps[-1]):
         raise ParameterError(
             f"temperature: {temperature} degC is outside Eggerth's table; "
             f"expected {temps[0]:g} to {temps[-1]:g} degC (seed 001 Table 3.1)"
         )
-    cols = np.array([EGGERTH_TABLE[T] for T in temps])
     k1, k2, lam = (float(np.interp(temperature, temps, cols[:, j])) for j in range(3))
     return k1, k2, lam
 
 
 def bulk_modulus_eggerth(
     p: Any,
-    temperature: float = 50.0,
+    temperature: Any = 50.0,
     p0: float = 10 * BAR,
     p_min: float = 1 * BAR,
 ) -> Any:

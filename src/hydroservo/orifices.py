@@ -37,6 +37,7 @@ __all__ = [
     "DISCHARGE_COEFFICIENT",
     "flow_number",
     "transition_pressure",
+    "signed_sqrt",
     "orifice_flow",
     "opening",
     "flow_coefficient_from_catalogue",
@@ -99,6 +100,18 @@ def transition_pressure(D_h: Any, rho: Any, nu: Any, lambda_crit: Any = 1000.0) 
     return 0.5 * rho * (lambda_crit * nu / D_h) ** 2
 
 
+def signed_sqrt(dp: Any, p_tr: Any = 0.0) -> Any:
+    r"""The pressure term of the orifice law, :math:`\Delta p / (\Delta p^2 + p_{tr}^2)^{1/4}` [Pa^0.5].
+
+    With ``p_tr = 0`` (NumPy input only) exactly
+    :math:`\operatorname{sign}(\Delta p)\sqrt{|\Delta p|}`; see the module notes.
+    """
+    if not m.is_symbolic(dp, p_tr) and np.all(np.asarray(p_tr) == 0):
+        dp = np.asarray(dp, dtype=float)
+        return np.sqrt(np.abs(dp)) * np.sign(dp)
+    return dp / (dp**2 + p_tr**2) ** 0.25
+
+
 def orifice_flow(A: Any, dp: Any, rho: Any, Cd: Any = DISCHARGE_COEFFICIENT, p_tr: Any = 0.0) -> Any:
     r"""Flow through an orifice, in the direction of the pressure drop.
 
@@ -135,10 +148,7 @@ def orifice_flow(A: Any, dp: Any, rho: Any, Cd: Any = DISCHARGE_COEFFICIENT, p_t
     >>> round(float(q) * 6e4, 3)  # L/min
     32.884
     """
-    if not m.is_symbolic(A, dp, rho, Cd, p_tr) and np.all(np.asarray(p_tr) == 0):
-        dp = np.asarray(dp, dtype=float)
-        return Cd * A * np.sqrt(2.0 / rho * np.abs(dp)) * np.sign(dp)
-    return Cd * A * m.sqrt(2.0 / rho) * dp / (dp**2 + p_tr**2) ** 0.25
+    return Cd * A * m.sqrt(2.0 / rho) * signed_sqrt(dp, p_tr)
 
 
 def opening(x: Any) -> Any:
@@ -207,7 +217,7 @@ def four_way_valve_flows(
         Q_B &= c_v f(-x_v - x_{PB})\,g(p_S - p_B) - c_v f(x_v - x_{BT})\,g(p_B - p_T)
 
     with :math:`g(\Delta p) = \operatorname{sign}(\Delta p)\sqrt{|\Delta p|}`
-    regularised as in :func:`orifice_flow` and :math:`f` of :func:`opening`.
+    regularised by :func:`signed_sqrt` and :math:`f` of :func:`opening`.
     Positive ``x_v`` connects P to A and B to T.
 
     Parameters
@@ -241,15 +251,9 @@ def four_way_valve_flows(
     Seed 001 eqs. (3.18)-(3.23); seed 003 eqs. (3-18), (3-20), (3-22), (3-23).
     """
 
-    def g(dp: Any) -> Any:
-        if not m.is_symbolic(dp, p_tr) and np.all(np.asarray(p_tr) == 0):
-            dp = np.asarray(dp, dtype=float)
-            return np.sqrt(np.abs(dp)) * np.sign(dp)
-        return dp / (dp**2 + p_tr**2) ** 0.25
-
     cvk = c_v * K
-    q_PA = cvk * opening(x_v - x_PA) * g(p_S - p_A) + G_leak * (p_S - p_A)
-    q_AT = cvk * opening(-x_v - x_AT) * g(p_A - p_T) + G_leak * (p_A - p_T)
-    q_PB = cvk * opening(-x_v - x_PB) * g(p_S - p_B) + G_leak * (p_S - p_B)
-    q_BT = cvk * opening(x_v - x_BT) * g(p_B - p_T) + G_leak * (p_B - p_T)
+    q_PA = cvk * opening(x_v - x_PA) * signed_sqrt(p_S - p_A, p_tr) + G_leak * (p_S - p_A)
+    q_AT = cvk * opening(-x_v - x_AT) * signed_sqrt(p_A - p_T, p_tr) + G_leak * (p_A - p_T)
+    q_PB = cvk * opening(-x_v - x_PB) * signed_sqrt(p_S - p_B, p_tr) + G_leak * (p_S - p_B)
+    q_BT = cvk * opening(x_v - x_BT) * signed_sqrt(p_B - p_T, p_tr) + G_leak * (p_B - p_T)
     return q_PA - q_AT, q_PB - q_BT, q_PA + q_PB, q_AT + q_BT

@@ -5,17 +5,12 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-import numpy as np
-
 from hydroservo import _math as m
 from hydroservo.components.base import Component, Option, Output, Param, Port, State, register
 from hydroservo.errors import ParameterError
-from hydroservo.fluids import EGGERTH_TABLE, bulk_modulus_lee
+from hydroservo.fluids import bulk_modulus_eggerth, bulk_modulus_lee
 
 __all__ = ["Cylinder"]
-
-_EGG_T = sorted(EGGERTH_TABLE)
-_EGG = np.array([EGGERTH_TABLE[T] for T in _EGG_T])
 
 
 @register
@@ -123,10 +118,7 @@ class Cylinder(Component):
             return p["beta"]
         if law == "lee":
             return bulk_modulus_lee(pr, E_max=p["E_max"], p_max=p["p_max"])
-        T = p["temperature"]
-        k1, k2, lam = (m.interp(T, _EGG_T, _EGG[:, j]) for j in range(3))
-        pc = m.fmax(pr, 1e5)
-        return 1.0 / (k1 + k2 * (pc / 10e5) ** (-lam))
+        return bulk_modulus_eggerth(pr, temperature=p["temperature"])
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]

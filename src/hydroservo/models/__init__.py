@@ -16,7 +16,7 @@ BUILTIN: dict[str, tuple[Callable[[], System], str, str]] = {
     "flight-simulator": (
         flight_simulator,
         "Seed 003: closed-loop flight-simulator actuator with MOOG 72 two-stage servovalve",
-        "validated against seed 003 (see docs/validation.md)",
+        "steady state and frequencies reproduced, transient figures not (docs/validation.md)",
     ),
 }
 
