@@ -36,6 +36,10 @@ def sin(x: Any) -> Any:
     return ca.sin(x) if is_symbolic(x) else np.sin(x)
 
 
+def atan(x: Any) -> Any:
+    return ca.atan(x) if is_symbolic(x) else np.arctan(x)
+
+
 def floor(x: Any) -> Any:
     return ca.floor(x) if is_symbolic(x) else np.floor(x)
 

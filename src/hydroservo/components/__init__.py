@@ -18,6 +18,7 @@ from hydroservo.components.control import (
 )
 from hydroservo.components.hydraulics import ConstantPressure, PressureTable, Tank, Volume
 from hydroservo.components.mechanics import Mass
+from hydroservo.components.proportional import PseudoSectionValve, ServoSolenoidValve, SpoolRateLimited
 from hydroservo.components.servovalve import FlapperNozzleSpool, TorqueMotor
 from hydroservo.components.valves import FourWayValve, SpoolFirstOrder, SpoolSecondOrder
 
@@ -38,6 +39,9 @@ __all__ = [
     "FourWayValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
+    "SpoolRateLimited",
+    "PseudoSectionValve",
+    "ServoSolenoidValve",
     "TorqueMotor",
     "FlapperNozzleSpool",
     "Step",
