@@ -180,6 +180,10 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--set", action="append", default=[], metavar="PARAM=VALUE")
     p.set_defaults(func=cmd_export)
 
+    from hydroservo.cli_valve import add_valve_parser
+
+    add_valve_parser(sub)
+
     p = sub.add_parser("validate", help="compare a built-in system with its published figures")
     p.add_argument("model", nargs="?", metavar="NAME")
     p.add_argument("--json", action="store_true")

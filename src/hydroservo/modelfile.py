@@ -136,13 +136,18 @@ def read_model(path: str | Path) -> System:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise ModelFileError(f"{path}: malformed TOML: {exc}") from None
-    system = system_from_dict(data, where=str(path))
+    system = system_from_dict(data, where=str(path), base=path.parent)
     system.source = str(path)
     return system
 
 
-def system_from_dict(data: dict[str, Any], where: str = "model") -> System:
-    """Build a system from the parsed contents of a model file."""
+def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | None = None) -> System:
+    """Build a system from the parsed contents of a model file.
+
+    A component table may name a component parameter file, ``file = "valve.toml"``
+    (relative to ``base``, the model file's folder), whose ``[component]`` table
+    supplies the type and parameters; keys in the model file override it.
+    """
     unknown = set(data) - {"model", "components", "connections", "initial", "aliases"}
     if unknown:
         raise ModelFileError(
@@ -164,6 +169,16 @@ def system_from_dict(data: dict[str, Any], where: str = "model") -> System:
         raise ModelFileError(f"{where}: no [components.NAME] tables; a model needs at least one component")
     for cname, spec in comps.items():
         ctx = f"{where}: [components.{cname}]"
+        if isinstance(spec, dict) and "file" in spec:
+            from hydroservo.identification.files import read_component_file
+
+            included = Path(str(spec["file"]))
+            if not included.is_absolute() and base is not None:
+                included = base / included
+            try:
+                spec = {**read_component_file(included), **{k: v for k, v in spec.items() if k != "file"}}
+            except HydroservoError as exc:
+                raise ModelFileError(f"{ctx}: {exc}") from None
         if not isinstance(spec, dict) or "type" not in spec:
             raise ModelFileError(f"{ctx}: missing 'type' (one of {', '.join(sorted(REGISTRY.types))})")
         kind = spec["type"]

@@ -196,16 +196,18 @@ class FrequencyResponse:
 
         fig, (ax_g, ax_p) = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
         colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+        styles = ["-", "--", ":", "-."]
         for k, resp in enumerate([self, *others]):
-            style = "o" if k == 0 and others else "-" if k == 0 else "--"
             for i, a in enumerate(resp.amplitudes):
-                c = colors[i % len(colors)]
-                lbl = f"±{100 * a:g} %" + (f" {resp.label}" if resp.label else "")
-                kw: dict[str, Any] = {"color": c, "label": lbl}
-                if style == "o":
-                    kw.update(marker="o", ms=3, ls="none")
-                else:
-                    kw.update(ls=style)
+                kw: dict[str, Any] = {"color": colors[i % len(colors)]}
+                if k == 0:  # the reference (data): one legend entry per amplitude
+                    kw["label"] = f"±{100 * a:g} %" + (f" {resp.label}" if resp.label else "")
+                    if others:
+                        kw.update(marker="o", ms=3, ls="none")
+                else:  # models: one line style each, one legend entry per model
+                    kw["ls"] = styles[(k - 1) % len(styles)]
+                    if i == 0:
+                        kw["label"] = resp.label or f"model {k}"
                 ax_g.plot(resp.frequencies, resp.gain_db[i], **kw)
                 if np.any(np.isfinite(resp.phase_deg[i])):
                     ax_p.plot(resp.frequencies, resp.phase_deg[i], **kw)

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from hydroservo.errors import ModelFileError
 from hydroservo.models.flight_simulator import flight_simulator
+from hydroservo.models.servo_solenoid import servo_solenoid_cylinder
 from hydroservo.system import System
 
 __all__ = ["BUILTIN", "available_models", "load_model"]
@@ -17,6 +18,11 @@ BUILTIN: dict[str, tuple[Callable[[], System], str, str]] = {
         flight_simulator,
         "Seed 003: closed-loop flight-simulator actuator with MOOG 72 two-stage servovalve",
         "steady state and frequencies reproduced, transient figures not (docs/validation.md)",
+    ),
+    "servo-solenoid-cylinder": (
+        servo_solenoid_cylinder,
+        "Seed 000: Vickers KBSDG4V-3 servo-solenoid valve positioning a cylinder and 50 kg mass",
+        "valve reproduces the published datasheet fit and Bode parameters; circuit is an example (no published data)",
     ),
 }
 
