@@ -336,6 +336,7 @@ class PeriodicResponse:
         period = self._map("period", n)
         for _ in range(settle_periods):
             Z = np.asarray(period(Z, P)[0], dtype=float)
+        self._check_step(Z, P)
         prev = np.full(n, np.inf)
         for _ in range(max_iter):
             ZT, J = period(Z, P)
@@ -358,6 +359,23 @@ class PeriodicResponse:
             f"frequency response of {self.system.name!r}: no periodic steady state found for {bad.size} run(s) "
             f"({where}); largest residual {norm.max():.2g} after {max_iter} iterations"
         )
+
+    def _check_step(self, Z: np.ndarray, P: np.ndarray) -> None:
+        """Refuse a grid on which the fastest mode (at the orbit's start) is beyond RK4's stability limit."""
+        n = P.shape[1]
+        X = Z * self.model.nominal[:, None]
+        J = np.asarray(self.model.jac_x.map(n)(np.zeros(n), X, P), dtype=float)
+        J = J.reshape(self.model.nx, n, self.model.nx).transpose(1, 0, 2)
+        rho = np.max(np.abs(np.linalg.eigvals(J)), axis=1)
+        h = 1.0 / (P[self.i_freq] * self.M)
+        worst = int(np.argmax(rho * h))
+        if rho[worst] * h[worst] > 2.5:  # RK4 is stable up to |lambda h| = 2.79 on the real axis
+            need = int(np.ceil(rho[worst] / (P[self.i_freq, worst] * 1.0)))
+            raise SolverError(
+                f"frequency response of {self.system.name!r}: at f = {P[self.i_freq, worst]:g} Hz the fastest mode "
+                f"({rho[worst]:.3g} 1/s) needs more than {self.M} Runge-Kutta steps per period; "
+                f"use steps_per_period >= {need}"
+            )
 
     def response(self, P: np.ndarray, **orbit_kw: Any) -> tuple[np.ndarray, np.ndarray]:
         """Complex fundamental per unit input amplitude, and the output mean, per run."""

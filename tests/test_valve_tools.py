@@ -1,0 +1,166 @@
+"""Seed 000 valve in systems, parameter files and the ``hydroservo valve`` commands."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import hydroservo as hs
+from hydroservo import pseudo_sections as ps
+from hydroservo.cli import main
+from hydroservo.components import ConstantPressure, PseudoSectionValve, Step
+from hydroservo.identification.files import read_component_file
+from hydroservo.modelfile import read_model
+
+DATASHEET_TOML = """
+[datasheet]
+name = "test valve"
+Q_n = "25.5 L/min"
+P_n = "35 bar"
+K_q0 = "28 L/min"
+K_p0 = 36.5
+q_lk0 = "1.36 L/min"
+P_s = "70 bar"
+"""
+
+
+def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
+    code = main(list(argv))
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_component_flows_are_the_published_law() -> None:
+    s = hs.System("valve")
+    s.add(Step("xs", amplitude=0.03))
+    s.add(ConstantPressure("supply", p="70 bar"))
+    s.add(Step("pA", unit="Pa", amplitude="30 bar"))
+    s.add(Step("pB", unit="Pa", amplitude="45 bar"))
+    s.add(PseudoSectionValve("valve", structure="fixed", p_tr=0.0))
+    for src, dst in (("xs.y", "valve.xs"), ("supply.p", "valve.pS"), ("pA.y", "valve.pA"), ("pB.y", "valve.pB")):
+        s.connect(src, dst)
+    res = s.simulate(t_end=1e-3, n_points=2)
+    comp = s["valve"]
+    params = {k: comp.values[k] for k in ps.PARAMETER_NAMES["fixed"]}
+    A_p, A_n = ps.pseudo_sections(np.array(0.03), "fixed", params)
+    expected = ps.matched_valve_flows(A_p, A_n, 70e5, 0.0, 30e5, 45e5)
+    for name, q in zip(("QA", "QB", "QS", "QT"), expected):
+        assert res.get(f"valve.{name}")[-1] == pytest.approx(float(q), rel=1e-12)
+
+
+@pytest.mark.parametrize("structure", ["variable", "fixed"])
+def test_builtin_servo_solenoid_loop_reaches_its_reference(structure: str) -> None:
+    from hydroservo.models.servo_solenoid import servo_solenoid_cylinder
+
+    system = servo_solenoid_cylinder(structure=structure)
+    res = system.simulate(n_points=201)
+    x = res.get("x_mm")
+    assert x[-1] == pytest.approx(50.0, abs=0.5)
+    assert np.max(x) < 52.0  # proportional loop, no large overshoot
+    assert np.max(np.abs(res.get("xs"))) <= 1.0 + 1e-12  # spool stays within its stroke
+    assert np.min(res.get("cyl.pA")) > 0 and np.min(res.get("cyl.pB")) > 0
+
+
+def test_valve_fit_cli_json_and_parameter_file(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    ds = tmp_path / "valve.toml"
+    ds.write_text(DATASHEET_TOML)
+    code, out, _ = run(capsys, "valve", "fit", str(ds), "--out", str(tmp_path / "fit"), "--json")
+    assert code == 0
+    data = json.loads(out)
+    assert data["parameters"]["k"] == pytest.approx(36.5)
+    assert data["parameters"]["gamma"] == pytest.approx(0.1149, abs=1e-4)
+    assert data["characteristics"]["K_q0"] == pytest.approx(24.82, abs=0.01)  # eq. 23: not matched
+    assert data["deviation"]["K_q0"] == pytest.approx(24.82 / 28 - 1, abs=1e-3)
+    for f in data["files"].values():
+        assert Path(f).stat().st_size > 0
+    comp = read_component_file(data["files"]["parameters"])
+    assert comp["type"] == "PseudoSectionValve" and comp["structure"] == "variable"
+
+    code, out, _ = run(
+        capsys,
+        "valve",
+        "fit",
+        "KBSDG4V-3",
+        "--structure",
+        "fixed",
+        "--match",
+        "pressure-gain,flow-gain",
+        "--out",
+        str(tmp_path / "fix"),
+        "--json",
+    )
+    assert code == 0
+    assert json.loads(out)["parameters"]["k1"] == pytest.approx(-2.142, abs=1e-3)
+
+
+def test_parameter_file_drops_into_a_model(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert run(capsys, "valve", "fit", "KBSDG4V-3", "--out", str(tmp_path))[0] == 0
+    model = Path(__file__).parents[1] / "docs" / "examples" / "servo_solenoid_cylinder.toml"
+    text = model.read_text().replace('file = "kbsdg4v3_valve.toml"', f'file = "{tmp_path / "valve.toml"}"')
+    (tmp_path / "model.toml").write_text(text)
+    system = read_model(tmp_path / "model.toml")
+    assert type(system["valve"]).__name__ == "ServoSolenoidValve"
+    res = system.simulate(n_points=101)
+    assert res.get("x_mm")[-1] == pytest.approx(50.0, abs=0.5)
+
+
+def test_bode_and_fit_dynamics_cli(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(
+        capsys,
+        "valve",
+        "bode",
+        "KBSDG4V-3",
+        "--amplitudes",
+        "5,50",
+        "--frequencies",
+        "20:200:20",
+        "--out",
+        str(tmp_path / "bode"),
+        "--json",
+    )
+    assert code == 0
+    data = json.loads(out)
+    assert np.shape(data["gain_dB"]) == (2, 10)
+    assert data["bandwidth"]["5 %"]["f_-3dB_Hz"] == pytest.approx(183, abs=2)
+    csv = data["files"]["csv"]
+    code, out, _ = run(
+        capsys, "valve", "fit-dynamics", csv, "--model", "second-order", "--out", str(tmp_path / "f"), "--json"
+    )
+    assert code == 0
+    fit = json.loads(out)["fits"]["second-order"]
+    assert fit["parameters"]["omega_n"] > 0 and fit["parameters"]["delay"] >= 0
+    comp = read_component_file(json.loads(out)["files"]["parameters_second-order"])
+    assert comp["type"] == "SpoolSecondOrder"
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["valve", "fit", "KBSDG4V-3", "--match", "pressure-gain"], "exactly two"),
+        (["valve", "fit", "nonexistent.toml"], "cannot read"),
+        (["valve", "fit", "KBSDG4V-3", "--match", "pressure-gain,speed"], "not a null characteristic"),
+        (["valve", "bode", "KBSDG4V-3", "--amplitudes", "5,x"], "comma-separated numbers"),
+        (["valve", "bode", "KBSDG4V-3", "--amplitudes", "150"], "fractions of the stroke"),
+        (["valve", "fit-dynamics", "missing.csv"], "cannot read|No such file"),
+    ],
+)
+def test_valve_cli_bad_input_exits_2(
+    argv: list[str], message: str, capsys: pytest.CaptureFixture[str], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(capsys, *argv)
+    assert code == 2
+    assert err.startswith("hydroservo: error:")
+    import re
+
+    assert re.search(message, err), err
+
+
+def test_datasheet_with_negative_flow_exits_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    ds = tmp_path / "bad.toml"
+    ds.write_text(DATASHEET_TOML.replace('q_lk0 = "1.36 L/min"', 'q_lk0 = "-1.36 L/min"'))
+    code, _, err = run(capsys, "valve", "fit", str(ds), "--out", str(tmp_path))
+    assert code == 2 and "q_lk0" in err and "positive" in err
