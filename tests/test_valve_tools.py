@@ -164,3 +164,31 @@ def test_datasheet_with_negative_flow_exits_2(tmp_path: Path, capsys: pytest.Cap
     ds.write_text(DATASHEET_TOML.replace('q_lk0 = "1.36 L/min"', 'q_lk0 = "-1.36 L/min"'))
     code, _, err = run(capsys, "valve", "fit", str(ds), "--out", str(tmp_path))
     assert code == 2 and "q_lk0" in err and "positive" in err
+
+
+def test_valve_fit_to_measured_curves_cli(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from hydroservo.identification import fit_datasheet
+    from hydroservo.parameters import ferreira_000 as paper
+
+    true = fit_datasheet(paper.DATASHEET)
+    x = np.linspace(-0.06, 0.06, 25)
+    A_p, A_n = true.sections(x)
+    rows = ["x_s [-],P_L [-],q_lk [L/min],Q_L [L/min]"]
+    for xi, pl, q, ql in zip(
+        x,
+        ps.relative_load_pressure(A_p, A_n),
+        ps.leakage_blocked(A_p, A_n, 70e5) * 6e4,
+        ps.load_flow_no_load(A_p, A_n, 70e5) * 6e4,
+    ):
+        rows.append(f"{xi!r},{pl!r},{q!r},{ql!r}")
+    csv = tmp_path / "curves.csv"
+    csv.write_text("\n".join(rows) + "\n")
+    code, out, _ = run(capsys, "valve", "fit", "KBSDG4V-3", "--curves", str(csv), "--out", str(tmp_path), "--json")
+    assert code == 0
+    data = json.loads(out)
+    assert data["match"] == ["curves"]
+    assert data["parameters"]["k"] == pytest.approx(36.5, rel=1e-5)
+    assert data["deviation"]["rms_q_lk"] < 1e-6
+    csv.write_text("x_s [-],P_L [-],q_lk\n0,0,1\n")
+    code, _, err = run(capsys, "valve", "fit", "KBSDG4V-3", "--curves", str(csv), "--out", str(tmp_path))
+    assert code == 2 and "expected a unit in brackets" in err

@@ -58,18 +58,23 @@ def _outdir(arg: str | None, default: str) -> Path:
 # -- valve fit -------------------------------------------------------------------
 def cmd_fit(args: argparse.Namespace) -> int:
     from hydroservo import plotting
-    from hydroservo.identification.datasheet import PAPER_UNITS, PARAMETER_UNITS, fit_datasheet
+    from hydroservo.identification.datasheet import PAPER_UNITS, PARAMETER_UNITS, fit_curves, fit_datasheet
     from hydroservo.identification.files import component_toml, paper_unit_comment, read_datasheet, read_static_curves
     from hydroservo.pseudo_sections import sections_from_measurements
     from hydroservo.units import from_si
 
     ds = read_datasheet(args.datasheet)
-    fit = fit_datasheet(ds, args.structure, args.match)
     curves = read_static_curves(args.curves) if args.curves else None
+    if curves is not None and args.match:
+        raise ParameterError("--match applies to a datasheet fit; with --curves every curve is fitted by least squares")
+    fit = (
+        fit_curves(curves, ds, args.structure) if curves is not None else fit_datasheet(ds, args.structure, args.match)
+    )
     name = ds.name or Path(str(args.datasheet)).stem
     slug = "".join(ch if ch.isalnum() or ch in "-_" else "-" for ch in Path(str(args.datasheet)).stem)
     out = _outdir(args.out, f"hydroservo-valve-{slug}")
-    title = f"{name}: {fit.structure} structure, matching {' and '.join(fit.match)}"
+    what = "least squares on the measured curves" if curves is not None else f"matching {' and '.join(fit.match)}"
+    title = f"{name}: {fit.structure} structure, {what}"
     measured_sections = None
     if curves is not None:
         A_p, A_n = sections_from_measurements(curves["P_L"], curves["q_lk"], ds.P_s)
@@ -101,7 +106,7 @@ def cmd_fit(args: argparse.Namespace) -> int:
         comments=comments,
         header=(
             f"{name}: pseudo-section valve fitted by hydroservo (seed 000, {fit.structure} structure),\n"
-            f"matching the nominal flow and {' and '.join(fit.match)}.\n"
+            f"nominal flow exact, {what}.\n"
             'Use it in a model file: [components.valve] file = "valve.toml"  (type may be\n'
             "overridden with ServoSolenoidValve to add the spool dynamics)."
         ),
@@ -133,7 +138,7 @@ def cmd_fit(args: argparse.Namespace) -> int:
             )
         )
         return 0
-    print(f"{name}: {fit.structure}-structure pseudo-sections (seed 000), matching Q_n, {' and '.join(fit.match)}")
+    print(f"{name}: {fit.structure}-structure pseudo-sections (seed 000), Q_n exact, {what}")
     for k, v in paper.items():
         print(f"  {k:>6} = {v:.6g} {PAPER_UNITS[k]}")
     print("characteristic     model     datasheet  deviation")
@@ -141,8 +146,11 @@ def cmd_fit(args: argparse.Namespace) -> int:
         u = _CHAR_UNITS[k] or "-"
         g = given.get(k)
         dev = f"{100 * fit.deviation[k]:+.2f} %" if k in fit.deviation else ""
-        note = "  (not matched: eq. 23)" if g is not None and abs(fit.deviation.get(k, 0.0)) > 1e-6 else ""
+        note = "  (not matched: eq. 23)" if curves is None and abs(fit.deviation.get(k, 0.0)) > 1e-6 else ""
         print(f"  {k:<6} {shown[k]:>10.5g} {'' if g is None else f'{g:>10.5g}':>10} {u:<6} {dev}{note}")
+    for k, v in fit.deviation.items():
+        if k.startswith("rms_"):
+            print(f"  misfit of {k[4:]}: {100 * v:.2f} % rms of its largest value")
     print(f"wrote {', '.join(paths.values())}")
     return 0
 
@@ -310,7 +318,12 @@ def add_valve_parser(sub: Any) -> None:
         help="the two null characteristics to reproduce: pressure-gain, flow-gain, leakage "
         "(default: pressure-gain,leakage when given)",
     )
-    p.add_argument("--curves", default=None, metavar="CSV", help="measured x_s, P_L, q_lk (and Q_L) to compare with")
+    p.add_argument(
+        "--curves",
+        default=None,
+        metavar="CSV",
+        help="measured x_s, P_L, q_lk (and Q_L): fit them by least squares instead of the null characteristics",
+    )
     p.add_argument("--out", default=None, metavar="DIR")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_fit)

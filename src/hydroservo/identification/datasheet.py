@@ -119,12 +119,6 @@ class Datasheet:
             raise ParameterError(f"datasheet x_far = {self.x_far!r}: expected a far opening in (0, 1]")
         if self.q_lk_far < 0:
             raise ParameterError(f"datasheet q_lk_far = {self.q_lk_far!r} m^3/s: expected a leakage >= 0")
-        given = [k for k in CHARACTERISTICS.values() if getattr(self, k) is not None]
-        if len(given) < 2:
-            raise ParameterError(
-                f"datasheet gives {', '.join(given) or 'none'} of K_p0, K_q0, q_lk0: two are needed to fit the "
-                "pseudo-sections (eq. 23 ties the third to them)"
-            )
 
     @classmethod
     def from_mapping(cls, data: Mapping[str, Any], where: str = "datasheet") -> Datasheet:
@@ -259,6 +253,11 @@ def _check_sections(structure: str, params: Mapping[str, float]) -> None:
 
 def _parse_match(match: str | Iterable[str] | None, ds: Datasheet) -> tuple[str, str]:
     given = ds.given()
+    if len(given) < 2:
+        raise ParameterError(
+            f"datasheet gives {', '.join(CHARACTERISTICS[g] for g in given) or 'none'} of K_p0, K_q0, q_lk0: two are "
+            "needed to fit the pseudo-sections (eq. 23 ties the third to them), or fit measured curves instead"
+        )
     if match is None:
         # The paper always reproduces the pressure gain (section 4.1); then leakage if given.
         order = ["pressure-gain", "leakage", "flow-gain"]
@@ -423,5 +422,116 @@ def fit_datasheet(
         key: got[key] / getattr(ds, key) - 1.0
         for key in ("Q_n", "K_q0", "K_p0", "q_lk0")
         if getattr(ds, key) is not None
+    }
+    return model
+
+
+def fit_curves(
+    curves: Mapping[str, Any],
+    datasheet: Datasheet | Mapping[str, Any],
+    structure: str = "variable",
+) -> PseudoSectionModel:
+    """Least-squares pseudo-sections from measured static curves (seed 000 section 5, Figs. 3-5).
+
+    The nominal flow is kept exact (eq. 32 or 34) and, for the fixed
+    structure, the far leakage of eq. (39) (the datasheet's ``x_far``,
+    ``q_lk_far``: default zero at full opening) nearly so; the remaining
+    parameters minimise the misfit of the measured curves: relative load pressure (eq. 13)
+    and leakage (eq. 27) with blocked ports at ``P_s``, and load flow (eq. 9)
+    with connected ports at ``P_n`` per edge when given. Each curve is scaled by
+    its largest magnitude, so each weighs alike.
+
+    Parameters
+    ----------
+    curves : mapping
+        ``x_s`` [-], ``P_L`` [-], ``q_lk`` [m^3/s] and optionally ``Q_L``
+        [m^3/s]; NaN marks a missing value.
+    datasheet : Datasheet or mapping
+        Gives ``Q_n``, ``P_n`` and ``P_s``; its null characteristics, if any,
+        are not used.
+    structure : {"variable", "fixed"}
+
+    Returns
+    -------
+    PseudoSectionModel
+        ``match == ("curves",)``; ``deviation`` holds the relative deviation of
+        each characteristic the datasheet gives and, as ``rms_P_L`` etc., the
+        RMS misfit of each curve relative to its largest value.
+    """
+    ds = datasheet if isinstance(datasheet, Datasheet) else Datasheet.from_mapping(datasheet, where="datasheet")
+    if structure not in ps.STRUCTURES:
+        raise ParameterError(f"structure = {structure!r}: expected one of {', '.join(ps.STRUCTURES)}")
+    x = np.asarray(curves["x_s"], dtype=float)
+    data = {k: np.asarray(curves[k], dtype=float) for k in ("P_L", "q_lk", "Q_L") if k in curves}
+    ok = {k: np.isfinite(v) & np.isfinite(x) for k, v in data.items()}
+    if ok["P_L"].sum() < 3 or ok["q_lk"].sum() < 3:
+        raise ParameterError("curves: expected at least 3 points of P_L and of q_lk")
+    scale = {k: float(np.max(np.abs(v[ok[k]]))) for k, v in data.items() if ok[k].any()}
+    # Start: the datasheet fit to the null characteristics read off the curves.
+    near = ok["P_L"] & (np.abs(data["P_L"]) < 0.5)
+    if near.sum() < 2:
+        raise ParameterError("curves: expected at least 2 points with |P_L| < 0.5 near null to read the pressure gain")
+    K_p0 = float(np.polyfit(x[near], np.arctanh(data["P_L"][near]), 1)[0])
+    q_lk0 = float(np.max(data["q_lk"][ok["q_lk"]]))
+    if not (K_p0 > 0 and q_lk0 > 0):
+        raise ParameterError(
+            f"curves: pressure gain {K_p0:.3g} and leakage {q_lk0:.3g} m^3/s read off the curves must be positive"
+        )
+    start = fit_datasheet(
+        Datasheet(Q_n=ds.Q_n, P_n=ds.P_n, P_s=ds.P_s, K_p0=K_p0, q_lk0=q_lk0), structure, "pressure-gain,leakage"
+    ).params
+    c = ds.Q_n / math.sqrt(ds.P_n)
+    if structure == "variable":
+        names = ["k", "gamma"]
+        z0 = np.log([start["k"], start["gamma"]])
+    else:
+        names = ["k1", "k3", "k4", "k5"]
+        z0 = np.array([start["k1"] / c, start["k3"] / c**2, start["k4"] / c**2, start["k5"] / c**2])
+
+    def params_of(z: np.ndarray) -> dict[str, float]:
+        if structure == "variable":
+            k, gamma = np.exp(z)
+            sub = Datasheet(Q_n=ds.Q_n, P_n=ds.P_n, P_s=ds.P_s, K_p0=k, q_lk0=gamma * math.sqrt(2 * ds.P_s))
+            return {k: float(v) for k, v in _fit_variable(sub, ("pressure-gain", "leakage")).items()}
+        k1, k3, k4, k5 = z[0] * c, z[1] * c**2, z[2] * c**2, z[3] * c**2
+        k2 = c + k1 - math.sqrt(max(k3 - k4 + k5, 0.0))  # eq. (34)
+        return {"k1": k1, "k2": k2, "k3": k3, "k4": k4, "k5": k5}
+
+    def residuals(z: np.ndarray) -> np.ndarray:
+        try:
+            p = params_of(z)
+        except ParameterError:
+            return np.full(sum(int(v.sum()) for v in ok.values()), 10.0)
+        A_p, A_n = ps.pseudo_sections(x, structure, p)
+        model = {
+            "P_L": ps.relative_load_pressure(A_p, A_n),
+            "q_lk": ps.leakage_blocked(A_p, A_n, ds.P_s),
+            "Q_L": ps.load_flow_no_load(A_p, A_n, 2.0 * ds.P_n),
+        }
+        res = [(model[k] - v)[ok[k]] / scale[k] for k, v in data.items() if ok[k].any()]
+        if structure == "fixed":  # eq. (39): the leakage far from null (default zero at x_s = 1), near-exact
+            far = ps.fixed_structure(-ds.x_far, **p) - ds.q_lk_far / (2.0 * math.sqrt(ds.P_s))
+            res.append(np.atleast_1d(100.0 * far / c))
+        return np.concatenate(res)
+
+    lower = np.array([-np.inf, 0.0, -np.inf, 1e-12]) if structure == "fixed" else -np.inf
+    sol = least_squares(residuals, z0, bounds=(lower, np.inf), xtol=1e-12, ftol=1e-12, max_nfev=2000)
+    params = params_of(sol.x)
+    model = PseudoSectionModel(structure, params, ds, ("curves",))
+    model.check()
+    A_p, A_n = model.sections(x)
+    fitted = {
+        "P_L": ps.relative_load_pressure(A_p, A_n),
+        "q_lk": ps.leakage_blocked(A_p, A_n, ds.P_s),
+        "Q_L": ps.load_flow_no_load(A_p, A_n, 2.0 * ds.P_n),
+    }
+    got = model.characteristics()
+    model.deviation = {
+        **{key: got[key] / getattr(ds, key) - 1.0 for key in ("Q_n", "K_q0", "K_p0", "q_lk0") if getattr(ds, key)},
+        **{
+            f"rms_{k}": float(np.sqrt(np.mean(((fitted[k] - v)[ok[k]] / scale[k]) ** 2)))
+            for k, v in data.items()
+            if ok[k].any()
+        },
     }
     return model
