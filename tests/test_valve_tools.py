@@ -180,7 +180,7 @@ def test_valve_fit_to_measured_curves_cli(tmp_path: Path, capsys: pytest.Capture
         ps.leakage_blocked(A_p, A_n, 70e5) * 6e4,
         ps.load_flow_no_load(A_p, A_n, 70e5) * 6e4,
     ):
-        rows.append(f"{xi!r},{pl!r},{q!r},{ql!r}")
+        rows.append(f"{xi:.12g},{pl:.12g},{q:.12g},{ql:.12g}")
     csv = tmp_path / "curves.csv"
     csv.write_text("\n".join(rows) + "\n")
     code, out, _ = run(capsys, "valve", "fit", "KBSDG4V-3", "--curves", str(csv), "--out", str(tmp_path), "--json")

@@ -482,10 +482,8 @@ def fit_curves(
     ).params
     c = ds.Q_n / math.sqrt(ds.P_n)
     if structure == "variable":
-        names = ["k", "gamma"]
         z0 = np.log([start["k"], start["gamma"]])
     else:
-        names = ["k1", "k3", "k4", "k5"]
         z0 = np.array([start["k1"] / c, start["k3"] / c**2, start["k4"] / c**2, start["k5"] / c**2])
 
     def params_of(z: np.ndarray) -> dict[str, float]:
