@@ -78,7 +78,7 @@ def cmd_fit(args: argparse.Namespace) -> int:
     measured_sections = None
     if curves is not None:
         A_p, A_n = sections_from_measurements(curves["P_L"], curves["q_lk"], ds.P_s)
-        measured_sections = {"x": curves["x_s"], "A_p": A_p, "A_n": A_n}
+        measured_sections = {"x_s": curves["x_s"], "A_p": A_p, "A_n": A_n}
     files = {
         "pseudo_sections": plotting.plot_pseudo_sections(
             fit, measured=measured_sections, title=title, file=out / "pseudo_sections.png"

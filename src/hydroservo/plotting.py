@@ -55,7 +55,7 @@ def plot_pseudo_sections(
 ) -> Any:
     """A_p and A_n over the full stroke (Fig. 2) and near null (Fig. 3) [L/min/bar^0.5].
 
-    ``measured`` may hold ``x``, ``A_p``, ``A_n`` (SI) computed from measured
+    ``measured`` may hold ``x_s``, ``A_p``, ``A_n`` (SI) computed from measured
     curves with :func:`hydroservo.pseudo_sections.sections_from_measurements`.
     """
     plt = _plt(file)
@@ -66,7 +66,7 @@ def plot_pseudo_sections(
         ax.plot(x, _K * A_p, label="A_p = A_s1 = A_2t")
         ax.plot(x, _K * A_n, label="A_n = A_s2 = A_1t")
         if measured is not None and lim == zoom:
-            xm = np.asarray(measured["x"])
+            xm = np.asarray(measured["x_s"])
             ax.plot(xm, _K * np.asarray(measured["A_p"]), "o", ms=3, label="A_p from curves (eq. 17)")
             ax.plot(xm, _K * np.asarray(measured["A_n"]), "s", ms=3, label="A_n from curves (eq. 16)")
         if lim < 1:
@@ -93,7 +93,7 @@ def plot_null_characteristics(
 ) -> Any:
     """Relative load pressure (eq. 13) and leakage (eq. 27) with blocked ports near null (Figs. 4, 7).
 
-    ``measured`` may hold ``x``, ``P_L`` [-] and ``q_lk`` [m^3/s].
+    ``measured`` may hold ``x_s``, ``P_L`` [-] and ``q_lk`` [m^3/s].
     """
     plt = _plt(file)
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -102,8 +102,8 @@ def plot_null_characteristics(
     ax.plot(x, ps.relative_load_pressure(A_p, A_n), label="P_L [-] (model)")
     ax.plot(x, _lpm(ps.leakage_blocked(A_p, A_n, P_s)), label="q_lk [L/min] (model)")
     if measured is not None:
-        ax.plot(measured["x"], measured["P_L"], "o", ms=3, label="P_L measured")
-        ax.plot(measured["x"], _lpm(measured["q_lk"]), "s", ms=3, label="q_lk measured")
+        ax.plot(measured["x_s"], measured["P_L"], "o", ms=3, label="P_L measured")
+        ax.plot(measured["x_s"], _lpm(measured["q_lk"]), "s", ms=3, label="q_lk measured")
     ax.set_xlabel("x_s [-]")
     ax.set_ylabel("q_lk [L/min], P_L [-]")
     ax.set_title(title or f"Blocked ports at P_s = {P_s / 1e5:g} bar")
@@ -123,7 +123,7 @@ def plot_load_flow(
 ) -> Any:
     """Load flow with connected ports (eq. 9, P_n per edge) near null and over the stroke (Figs. 5-6, 8-9).
 
-    ``measured`` may hold ``x`` and ``Q_L`` [m^3/s].
+    ``measured`` may hold ``x_s`` and ``Q_L`` [m^3/s].
     """
     plt = _plt(file)
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
@@ -132,7 +132,7 @@ def plot_load_flow(
         A_p, A_n = model.sections(x)
         ax.plot(x, _lpm(ps.load_flow_no_load(A_p, A_n, 2 * P_n)), label="Q_L (model)")
         if measured is not None and "Q_L" in measured:
-            xm = np.asarray(measured["x"])
+            xm = np.asarray(measured["x_s"])
             sel = np.abs(xm) <= lim
             ax.plot(xm[sel], _lpm(np.asarray(measured["Q_L"])[sel]), "o", ms=3, label="Q_L measured")
         ax.set_xlabel("x_s [-]")
