@@ -271,7 +271,102 @@ def flight_simulator_checks() -> list[Check]:
     return checks
 
 
-VALIDATIONS: dict[str, Callable[[], list[Check]]] = {"flight-simulator": flight_simulator_checks}
+def _printed_digit(text: str) -> float:
+    """One unit in the last digit of a number printed as ``text`` (the tolerance of a printed value)."""
+    mant, _, exp = text.lower().partition("e")
+    decimals = len(mant.split(".")[1]) if "." in mant else 0
+    return 10.0 ** ((int(exp) if exp else 0) - decimals)
+
+
+def servo_solenoid_checks() -> list[Check]:
+    """Seed 000 (Ferreira et al.): datasheet fits, characteristics and Bode identification of the KBSDG4V-3."""
+    from hydroservo.identification import fit_datasheet, fit_spool_dynamics, spool_response
+    from hydroservo.identification.datasheet import PARAMETER_UNITS, characteristics
+    from hydroservo.parameters import ferreira_000 as paper
+
+    checks: list[Check] = []
+    printed = {
+        "variable": (
+            "pressure-gain,leakage",
+            {"k": "36.5", "gamma": "0.1149", "alpha": "4.241", "beta": "6.877e-2", "x_t": "3.858e-2"},
+        ),
+        "fixed": (
+            "pressure-gain,flow-gain",
+            {"k1": "-2.142", "k2": "5.818e-3", "k3": "4.604", "k4": "-5.554e-2", "k5": "1.534e-2"},
+        ),
+    }
+    for structure, (match, values) in printed.items():
+        fit = fit_datasheet(paper.DATASHEET, structure, match).in_paper_units()
+        for name, text in values.items():
+            unit = {"": "-", "m^3/s/Pa^0.5": "L/min/bar^0.5", "m^6/s^2/Pa": "(L/min)^2/bar"}[PARAMETER_UNITS[name]]
+            checks.append(
+                Check(
+                    f"{structure} structure {name}",
+                    "seed 000 section 5",
+                    float(text),
+                    fit[name],
+                    unit,
+                    _printed_digit(text),
+                    f"datasheet fit matching Q_n and {match.replace(',', ' and ')}",
+                    "tolerance: one unit in the last printed digit",
+                )
+            )
+    lpm = to_si("1 L/min", "m^3/s")
+    P_n, P_s = to_si(paper.DATASHEET["P_n"], "Pa"), to_si(paper.DATASHEET["P_s"], "Pa")
+    var = {k: to_si(v, PARAMETER_UNITS[k], what=k) for k, v in paper.VARIABLE.items()}
+    got = characteristics("variable", var, P_n, P_s)
+    checks.append(
+        Check(
+            "K_q0 of the variable fit (not matched)",
+            "seed 000 section 5",
+            28.0,
+            got["K_q0"] / lpm,
+            "L/min",
+            None,
+            "eq. 9 slope at null, 35 bar per edge, printed variable parameters",
+            "eq. 23: K_q0 = q_lk0 K_p0 / 2 = 24.82 L/min; only two of the three can be matched",
+        )
+    )
+    dyn = {"omega_n": 1007.0, "zeta": 0.48, "L_v": 125.0, "L_a": 81184.0, "delay": 7.625e-4}
+    amps, freqs = np.array(paper.BODE_AMPLITUDES) / 100, np.array(paper.BODE_FREQUENCIES)
+    data = spool_response(dyn, amps, freqs, steps_per_period=512)
+    start = {"omega_n": 1007 * 1.35, "zeta": 0.48 * 0.65, "L_v": 125 * 1.4, "L_a": 81184 * 0.6}
+    fit = fit_spool_dynamics(data, "rate-limited", start)
+    units = {"omega_n": "rad/s", "zeta": "-", "L_v": "1/s", "L_a": "1/s^2", "delay": "s"}
+    for k, v in dyn.items():
+        checks.append(
+            Check(
+                f"Bode fit {k}",
+                "seed 000 section 6",
+                v,
+                fit.params[k],
+                units[k],
+                0.01 * v,
+                "eq. 43 fit (then delay from phase) to Bode data generated with the published values, 5/25/50 %, "
+                "10-300 Hz, start 35-40 % away",
+                "the manufacturer's curves are not available; tolerance: issue floor 1 %",
+            )
+        )
+    f3 = np.interp(-3.0, data.gain_db[0][::-1], freqs[::-1])
+    checks.append(
+        Check(
+            "-3 dB frequency at ±5 %",
+            "seed 000 section 1",
+            200.0,
+            float(f3),
+            "Hz",
+            None,
+            "gain of the published spool model at 5 % amplitude",
+            "the paper says 'typically 200 Hz for a ±5 % input' of a size 6 valve",
+        )
+    )
+    return checks
+
+
+VALIDATIONS: dict[str, Callable[[], list[Check]]] = {
+    "flight-simulator": flight_simulator_checks,
+    "servo-solenoid-cylinder": servo_solenoid_checks,
+}
 
 
 def validate(name: str) -> list[Check]:
