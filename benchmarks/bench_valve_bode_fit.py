@@ -34,8 +34,9 @@ def baseline_gains(periods: int = 40, last: int = 10, points_per_period: int = 6
     gains = np.empty((AMPS.size, FREQS.size))
     for j, f in enumerate(FREQS):  # one batch per frequency: the output grid is in periods
         t = np.linspace(0.0, periods / f, periods * points_per_period + 1)
-        res = system.batch({"u.amplitude": AMPS, "u.frequency": [f] * AMPS.size}, t_end=t[-1], t_eval=t, rtol=1e-8,
-                           atol=1e-10)
+        res = system.batch(
+            {"u.amplitude": AMPS, "u.frequency": [f] * AMPS.size}, t_end=t[-1], t_eval=t, rtol=1e-8, atol=1e-10
+        )
         y = res[out]
         sel = t >= t[-1] - last / f - 1e-12
         tt = t[sel]
@@ -68,8 +69,10 @@ def main() -> None:
     t_base = time.perf_counter() - t0
     print("one evaluation of 90 gains (3 amplitudes x 30 frequencies)")
     print(f"  baseline, CVODES through 40 periods, batched:  {t_base * 1e3:8.1f} ms")
-    print(f"  hydroservo, periodic orbit by shooting:        {t_engine * 1e3:8.1f} ms   ({t_base / t_engine:.1f}x faster;"
-          f" compile {build:.2f} s once)")
+    print(
+        f"  hydroservo, periodic orbit by shooting:        {t_engine * 1e3:8.1f} ms   ({t_base / t_engine:.1f}x faster;"
+        f" compile {build:.2f} s once)"
+    )
     print(f"  largest gain difference: {np.max(np.abs(g_base - g_engine)):.2e} dB")
 
     data = spool_response(PUBLISHED, AMPS, FREQS, steps_per_period=512)
@@ -78,8 +81,10 @@ def main() -> None:
     fit = fit_spool_dynamics(data, "rate-limited", start)
     t_fit = time.perf_counter() - t0
     errs = ", ".join(f"{k} {100 * (fit.params[k] / v - 1):+.1e} %" for k, v in PUBLISHED.items())
-    print(f"complete Bode fit (eq. 43 + delay) from 35-40 % away: {t_fit:.2f} s (floor: 20 s), "
-          f"{fit.info['iterations']} evaluations")
+    print(
+        f"complete Bode fit (eq. 43 + delay) from 35-40 % away: {t_fit:.2f} s (floor: 20 s), "
+        f"{fit.info['iterations']} evaluations"
+    )
     print(f"  recovered: {errs}")
 
 

@@ -126,3 +126,11 @@ def test_bode_csv_round_trip_and_bad_files(tmp_path, published_bode: FrequencyRe
         FrequencyResponse.from_csv(bad)
     with pytest.raises(ParameterError, match="fractions of the stroke"):
         spool_response(PUBLISHED, [5.0], [10.0])
+
+
+def test_validation_table_of_seed_000() -> None:
+    from hydroservo.validation import validate
+
+    checks = validate("servo-solenoid-cylinder")
+    assert {c.verdict for c in checks} <= {"reproduced", "info"}
+    assert sum(c.verdict == "reproduced" for c in checks) == 15

@@ -33,17 +33,28 @@ def main(n: int = 20, seed: int = 2026) -> None:
     rel = {k: [] for k in PUBLISHED}
     max_err = []
     for rep in range(n):
-        noisy = FrequencyResponse(amps, freqs, clean.gain_db + 0.3 * rng.standard_normal(clean.gain_db.shape),
-                                  clean.phase_deg, label="data + 0.3 dB noise")
-        start = {k: v * (1 + rng.choice([-1, 1]) * rng.uniform(0.30, 0.40)) for k, v in PUBLISHED.items() if k != "delay"}
+        noisy = FrequencyResponse(
+            amps,
+            freqs,
+            clean.gain_db + 0.3 * rng.standard_normal(clean.gain_db.shape),
+            clean.phase_deg,
+            label="data + 0.3 dB noise",
+        )
+        start = {
+            k: v * (1 + rng.choice([-1, 1]) * rng.uniform(0.30, 0.40)) for k, v in PUBLISHED.items() if k != "delay"
+        }
         fit = fit_spool_dynamics(noisy, "rate-limited", start)
         for k, v in PUBLISHED.items():
             rel[k].append(fit.params[k] / v - 1)
         max_err.append(np.max(np.abs(fit.response.gain_db - clean.gain_db)))
         if rep == 0:
             out = Path(__file__).resolve().parents[1] / "img" / "spool_fit_noise.png"
-            noisy.plot([fit.response], title="Seed 000 spool: noisy Bode data (0.3 dB) and the fitted model",
-                       file=out, f_max=200.0)
+            noisy.plot(
+                [fit.response],
+                title="Seed 000 spool: noisy Bode data (0.3 dB) and the fitted model",
+                file=out,
+                f_max=200.0,
+            )
     print(f"{n} fits, 0.3 dB gain noise, starts 30-40 % away")
     print(f"{'parameter':>9}  {'mean':>8}  {'std':>8}  {'min':>8}  {'max':>8}   (relative to published, %)")
     for k, vals in rel.items():
