@@ -40,6 +40,7 @@ How the extracted text was read
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -51,6 +52,7 @@ from hydroservo.orifices import signed_sqrt
 __all__ = [
     "STRUCTURES",
     "PARAMETER_NAMES",
+    "PARAMETER_UNITS",
     "variable_structure",
     "fixed_structure",
     "pseudo_sections",
@@ -62,10 +64,27 @@ __all__ = [
     "leakage_blocked",
     "load_flow",
     "sections_from_measurements",
+    "check_sections",
 ]
 
 #: Pseudo-section families: the variable structure of eq. (24) and the fixed (hyperbolic) one of eq. (33).
 STRUCTURES = ("variable", "fixed")
+
+_A = "m^3/s/Pa^0.5"
+_A2 = "m^6/s^2/Pa"
+#: SI unit of every pseudo-section parameter.
+PARAMETER_UNITS = {
+    "k": "",
+    "gamma": _A,
+    "alpha": _A,
+    "beta": _A,
+    "x_t": "",
+    "k1": _A,
+    "k2": _A,
+    "k3": _A2,
+    "k4": _A2,
+    "k5": _A2,
+}
 
 #: Parameter names of each structure, as in the paper.
 PARAMETER_NAMES = {"variable": ("k", "gamma", "alpha", "beta", "x_t"), "fixed": ("k1", "k2", "k3", "k4", "k5")}
@@ -301,3 +320,39 @@ def sections_from_measurements(
         A_n = np.where(ok, q_lk / np.sqrt(2.0 * P_s * (1.0 + P_L)), np.nan)
         A_p = np.where(ok, q_lk / np.sqrt(2.0 * P_s * (1.0 - P_L)), np.nan)
     return A_p, A_n
+
+
+def check_sections(structure: str, params: Mapping[str, float]) -> None:
+    """Raise ParameterError if a pseudo-section (or the fixed radicand) is negative on [-1, 1].
+
+    Below 0.1 % of the largest section a negative value is taken as rounding of
+    printed parameters (the published fixed set reaches -1e-4 of it at x_s = -1);
+    components clip it to zero.
+    """
+    x = np.linspace(-1.0, 1.0, 2001)
+    if structure == "fixed":
+        k3, k4, k5 = params["k3"], params["k4"], params["k5"]
+        rad = np.minimum(k3 * x**2 - k4 * x + k5, k3 * x**2 + k4 * x + k5)
+        scale = max(abs(k3), abs(k4), abs(k5))
+        if np.min(rad) < -1e-9 * scale:
+            i = int(np.argmin(rad))
+            raise ParameterError(
+                f"fixed-structure pseudo-section: radicand k3 x^2 - k4 x + k5 = {rad[i]:.3g} < 0 at x_s = {x[i]:+.3f}; "
+                "expected >= 0 on [-1, 1] (eq. 33)"
+            )
+    else:
+        if not 0.0 < params["x_t"] < 1.0:
+            raise ParameterError(f"variable-structure x_t = {params['x_t']!r}: expected a transition point in (0, 1)")
+        for key in ("k", "gamma", "alpha"):
+            if not params[key] > 0:
+                raise ParameterError(f"variable-structure {key} = {params[key]!r}: expected > 0 (eq. 24)")
+    A_p, _ = pseudo_sections(x, structure, dict(params))
+    scale = float(np.max(np.abs(A_p)))
+    # Below 0.1 % of the largest section a negative value is rounding (the published fixed set itself
+    # reaches -1e-4 of it at x_s = -1); components clip it to zero.
+    if np.min(A_p) < -1e-3 * scale:
+        i = int(np.argmin(A_p))
+        raise ParameterError(
+            f"{structure}-structure pseudo-section A_p = {A_p[i]:.3g} m^3/s/Pa^0.5 < 0 at x_s = {x[i]:+.3f}; "
+            "expected a non-negative section on [-1, 1]"
+        )

@@ -44,7 +44,6 @@ from hydroservo import _math as m
 from hydroservo import pseudo_sections as ps
 from hydroservo.components.base import Component, Option, Output, Param, Port, State, register
 from hydroservo.errors import ParameterError
-from hydroservo.identification.datasheet import PARAMETER_UNITS, _check_sections
 from hydroservo.parameters.ferreira_000 import DYNAMICS, FIXED, VARIABLE
 from hydroservo.units import to_si
 
@@ -79,8 +78,8 @@ def _si(values: Mapping[str, Any], units: Mapping[str, str]) -> dict[str, float]
 
 
 _DYN = _si(DYNAMICS, {"omega_n": "rad/s", "zeta": "", "L_v": "1/s", "L_a": "1/s^2", "delay": "s"})
-_VAR = _si(VARIABLE, PARAMETER_UNITS)
-_FIX = _si(FIXED, PARAMETER_UNITS)
+_VAR = _si(VARIABLE, ps.PARAMETER_UNITS)
+_FIX = _si(FIXED, ps.PARAMETER_UNITS)
 
 _DELAY_STATES = {
     "none": {},
@@ -205,7 +204,7 @@ def _section_flows(xs: Any, u: Mapping[str, Any], p: Mapping[str, Any], structur
     x = m.fmin(m.fmax(xs, -1.0), 1.0)
     params = {n: p[n] for n in ps.PARAMETER_NAMES[structure]}
     A_p, A_n = ps.pseudo_sections(x, structure, params)
-    A_p, A_n = m.fmax(A_p, 0.0), m.fmax(A_n, 0.0)  # rounding-level negatives (see _check_sections)
+    A_p, A_n = m.fmax(A_p, 0.0), m.fmax(A_n, 0.0)  # rounding-level negatives (see check_sections)
     QA, QB, QS, QT = ps.matched_valve_flows(A_p, A_n, u["pS"], u["pT"], u["pA"], u["pB"], p["p_tr"])
     return {"QA": QA, "QB": QB, "QS": QS, "QT": QT}
 
@@ -214,7 +213,7 @@ def _check_structure(comp: Component) -> None:
     structure = comp.option("structure")
     params = {n: comp.values[n] for n in ps.PARAMETER_NAMES[structure]}
     try:
-        _check_sections(structure, params)
+        ps.check_sections(structure, params)
     except ParameterError as exc:
         raise ParameterError(f"{comp.name}: {exc}") from None
 

@@ -58,21 +58,9 @@ __all__ = [
 #: Null characteristics that can be matched, with their datasheet field.
 CHARACTERISTICS = {"pressure-gain": "K_p0", "flow-gain": "K_q0", "leakage": "q_lk0"}
 
-_A = "m^3/s/Pa^0.5"
-_A2 = "m^6/s^2/Pa"
-#: SI unit of every pseudo-section parameter.
-PARAMETER_UNITS = {
-    "k": "",
-    "gamma": _A,
-    "alpha": _A,
-    "beta": _A,
-    "x_t": "",
-    "k1": _A,
-    "k2": _A,
-    "k3": _A2,
-    "k4": _A2,
-    "k5": _A2,
-}
+_A = ps.PARAMETER_UNITS["gamma"]
+_A2 = ps.PARAMETER_UNITS["k3"]
+PARAMETER_UNITS = ps.PARAMETER_UNITS
 #: The units the paper prints them in.
 PAPER_UNITS = {k: {"": "", _A: "L/min/bar^0.5", _A2: "(L/min)^2/bar"}[u] for k, u in PARAMETER_UNITS.items()}
 
@@ -195,7 +183,7 @@ class PseudoSectionModel:
 
     def check(self) -> None:
         """Raise if a pseudo-section is negative (or its radicand) anywhere on [-1, 1]."""
-        _check_sections(self.structure, self.params)
+        ps.check_sections(self.structure, self.params)
 
 
 def characteristics(structure: str, params: Mapping[str, float], P_n: float, P_s: float) -> dict[str, float]:
@@ -219,36 +207,6 @@ def characteristics(structure: str, params: Mapping[str, float], P_n: float, P_s
         "K_p0": float((PL[2] - PL[0]) / (2 * h)),
         "q_lk0": float(ps.leakage_blocked(A_p[1], A_n[1], P_s)),
     }
-
-
-def _check_sections(structure: str, params: Mapping[str, float]) -> None:
-    x = np.linspace(-1.0, 1.0, 2001)
-    if structure == "fixed":
-        k3, k4, k5 = params["k3"], params["k4"], params["k5"]
-        rad = np.minimum(k3 * x**2 - k4 * x + k5, k3 * x**2 + k4 * x + k5)
-        scale = max(abs(k3), abs(k4), abs(k5))
-        if np.min(rad) < -1e-9 * scale:
-            i = int(np.argmin(rad))
-            raise ParameterError(
-                f"fixed-structure pseudo-section: radicand k3 x^2 - k4 x + k5 = {rad[i]:.3g} < 0 at x_s = {x[i]:+.3f}; "
-                "expected >= 0 on [-1, 1] (eq. 33)"
-            )
-    else:
-        if not 0.0 < params["x_t"] < 1.0:
-            raise ParameterError(f"variable-structure x_t = {params['x_t']!r}: expected a transition point in (0, 1)")
-        for key in ("k", "gamma", "alpha"):
-            if not params[key] > 0:
-                raise ParameterError(f"variable-structure {key} = {params[key]!r}: expected > 0 (eq. 24)")
-    A_p, _ = ps.pseudo_sections(x, structure, dict(params))
-    scale = float(np.max(np.abs(A_p)))
-    # Below 0.1 % of the largest section a negative value is rounding (the published fixed set itself
-    # reaches -1e-4 of it at x_s = -1); components clip it to zero.
-    if np.min(A_p) < -1e-3 * scale:
-        i = int(np.argmin(A_p))
-        raise ParameterError(
-            f"{structure}-structure pseudo-section A_p = {A_p[i]:.3g} m^3/s/Pa^0.5 < 0 at x_s = {x[i]:+.3f}; "
-            "expected a non-negative section on [-1, 1]"
-        )
 
 
 def _parse_match(match: str | Iterable[str] | None, ds: Datasheet) -> tuple[str, str]:
