@@ -183,6 +183,9 @@ def build_parser() -> argparse.ArgumentParser:
     from hydroservo.cli_valve import add_valve_parser
 
     add_valve_parser(sub)
+    from hydroservo.cli_fluid import add_fluid_parser
+
+    add_fluid_parser(sub)
 
     p = sub.add_parser("validate", help="compare a built-in system with its published figures")
     p.add_argument("model", nargs="?", metavar="NAME")
@@ -191,9 +194,27 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def _join_negative_values(argv: list[str]) -> list[str]:
+    """``--temperature -40,20`` -> ``--temperature=-40,20``: argparse would take -40,20 for an option."""
+    out: list[str] = []
+    it = iter(argv)
+    for tok in it:
+        if tok in ("--temperature", "--pressure", "--amplitudes", "--frequencies"):
+            nxt = next(it, None)
+            if nxt is not None and nxt.startswith("-") and len(nxt) > 1 and (nxt[1].isdigit() or nxt[1] == "."):
+                out.append(f"{tok}={nxt}")
+                continue
+            out.append(tok)
+            if nxt is not None:
+                out.append(nxt)
+            continue
+        out.append(tok)
+    return out
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args = parser.parse_args(_join_negative_values(list(sys.argv[1:] if argv is None else argv)))
     try:
         return int(args.func(args))
     except BrokenPipeError:  # output piped into head & co.

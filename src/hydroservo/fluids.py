@@ -23,6 +23,10 @@ __all__ = [
     "wave_speed",
     "max_line_length",
     "check_line_length",
+    "SKYDROL_MARE",
+    "specific_volume_mare",
+    "dynamic_viscosity_mare",
+    "kinematic_viscosity_walther",
 ]
 
 BAR = 1e5
@@ -228,3 +232,113 @@ def check_line_length(length: float, c: float, f_max: float) -> bool:
         )
         return False
     return True
+
+
+#: Skydrol coefficients of seed 002 (Maré & Attar) section 2.1, eqs. (1)-(2): pressures in Pa, temperatures in degC.
+SKYDROL_MARE = {
+    "a_p": -7.33e-10,
+    "a_p2": 3.22e-18,
+    "a_t": 8.02e-4,
+    "a_t2": 6.22e-7,
+    "a_pt": -5.44e-12,
+    "b_p": 4.45e-9,
+    "b_t": -1.62e-2,
+    "b_t2": 9.62e-5,
+}
+
+
+def specific_volume_mare(
+    p: Any,
+    T: Any,
+    v0: Any,
+    T0: Any,
+    p0: Any = 0.0,
+    a_p: Any = SKYDROL_MARE["a_p"],
+    a_p2: Any = SKYDROL_MARE["a_p2"],
+    a_t: Any = SKYDROL_MARE["a_t"],
+    a_t2: Any = SKYDROL_MARE["a_t2"],
+    a_pt: Any = SKYDROL_MARE["a_pt"],
+) -> Any:
+    r"""Specific volume against pressure and temperature, seed 002 eq. (1) [m^3/kg].
+
+    .. math:: v = v_0(1 + a_p\Delta P + a_{p2}\Delta P^2 + a_t\Delta T + a_{t2}\Delta T^2 + a_{pt}\Delta P\Delta T)
+
+    with :math:`\Delta P = p - p_0`, :math:`\Delta T = T - T_0`. Defaults: the
+    Skydrol coefficients of section 2.1 (:data:`SKYDROL_MARE`).
+
+    Parameters
+    ----------
+    p : array_like
+        Pressure [Pa] (gauge, as the reference ``p0``).
+    T : array_like
+        Temperature [degC].
+    v0 : array_like
+        Specific volume at the reference state [m^3/kg].
+    T0 : array_like
+        Reference temperature [degC].
+    p0 : array_like
+        Reference pressure [Pa].
+    a_p, a_p2, a_t, a_t2, a_pt : array_like
+        Coefficients [1/Pa], [1/Pa^2], [1/degC], [1/degC^2], [1/(Pa degC)].
+    """
+    dp, dT = p - p0, T - T0
+    return v0 * (1.0 + a_p * dp + a_p2 * dp * dp + a_t * dT + a_t2 * dT * dT + a_pt * dp * dT)
+
+
+def dynamic_viscosity_mare(
+    p: Any,
+    T: Any,
+    mu0: Any,
+    T0: Any,
+    p0: Any = 0.0,
+    b_p: Any = SKYDROL_MARE["b_p"],
+    b_t: Any = SKYDROL_MARE["b_t"],
+    b_t2: Any = SKYDROL_MARE["b_t2"],
+) -> Any:
+    r"""Dynamic viscosity against pressure and temperature, seed 002 eq. (2) [Pa s].
+
+    .. math:: \mu = \mu_0\,10^{\,b_p\Delta P + b_t\Delta T + b_{t2}\Delta T^2}
+
+    Parameters
+    ----------
+    p : array_like
+        Pressure [Pa].
+    T : array_like
+        Temperature [degC].
+    mu0 : array_like
+        Dynamic viscosity at the reference state [Pa s].
+    T0, p0 : array_like
+        Reference temperature [degC] and pressure [Pa].
+    b_p, b_t, b_t2 : array_like
+        Coefficients [1/Pa], [1/degC], [1/degC^2] (default: Skydrol, :data:`SKYDROL_MARE`).
+    """
+    dT = T - T0
+    return mu0 * 10.0 ** (b_p * (p - p0) + b_t * dT + b_t2 * dT * dT)
+
+
+def kinematic_viscosity_walther(T: Any, nu_40: float, nu_100: float) -> Any:
+    r"""Kinematic viscosity of a mineral oil against temperature, Walther's law (ASTM D341) [m^2/s].
+
+    .. math:: \log_{10}\log_{10}(\nu + 0.7) = A - B\log_{10}(T + 273.15)
+
+    with :math:`\nu` in cSt and :math:`A, B` through the two catalogue points
+    :math:`\nu_{40}` and :math:`\nu_{100}` (ISO 3448 grades are rated at 40 degC).
+    Valid above about 2 cSt.
+
+    Parameters
+    ----------
+    T : array_like
+        Temperature [degC].
+    nu_40, nu_100 : float
+        Kinematic viscosity at 40 and 100 degC [m^2/s].
+
+    Examples
+    --------
+    >>> round(float(kinematic_viscosity_walther(40.0, 32e-6, 5.4e-6)) * 1e6, 6)
+    32.0
+    """
+    t1, t2 = np.log10(313.15), np.log10(373.15)
+    w1, w2 = np.log10(np.log10(nu_40 * 1e6 + 0.7)), np.log10(np.log10(nu_100 * 1e6 + 0.7))
+    B = (w1 - w2) / (t2 - t1)
+    A = w1 + B * t1
+    return (10.0 ** (10.0 ** (A - B * m.log10(T + 273.15))) - 0.7) * 1e-6
