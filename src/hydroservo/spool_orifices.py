@@ -1,0 +1,257 @@
+r"""Spool-valve orifice laws of seed 002 (Maré & Attar): open, closed and critical, laminar to turbulent.
+
+Pure, vectorised functions (NumPy arrays; the unified model also takes CasADi
+expressions), SI units. Flow number :math:`\lambda` as in eq. (4)
+(:func:`hydroservo.orifices.flow_number`).
+
+How the extracted text was read
+-------------------------------
+* Eq. (6) prints :math:`C_q = C_{q\infty}\tanh(\alpha\lambda/\lambda_t)` with
+  :math:`\alpha` undefined; eqs. (18), (20) and Table 1 have no such factor and
+  must reduce to eq. (6) for an open orifice, so :math:`\alpha = 1` here (an
+  argument, for other conventions: AMESim uses 2 with its critical number).
+* Eqs. (18), (20) and Table 1 print the argument of tanh as
+  "λ_t / λ_t(1 + ...)" (and "λ_i/λ_i"): a lost subscript. The reading
+  :math:`\lambda_i/(\lambda_t[1 + \tfrac12 K_g(|X_i| - X_i)])` is the only one
+  for which eq. (18) tends to eq. (15), :math:`C_q \to D_h\lambda/(64|X|)`,
+  at large closure with the :math:`K_g` of eq. (19); the tests check that limit.
+* Table 1's :math:`K_g` uses the hydraulic diameter of the closed passage,
+  :math:`D_h = 2wc/(w + c)` (eq. 13), a constant, as eq. (19) says.
+* Eqs. (14) and (16) (Merritt's short orifice) use :math:`Re = C_q\lambda`
+  (eq. 5), so they are implicit in :math:`C_q`; :func:`short_orifice_coefficient`
+  solves them.
+* Eq. (11), :math:`K_g = c(w + c)/(48\delta_\lambda w)`, is the continuity
+  constant of the laminar-gap law (eq. 10), with :math:`\delta_\lambda` the limit
+  slope :math:`dC_q/d\lambda` at small flow numbers.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from scipy.optimize import brentq
+
+from hydroservo import _math as m
+from hydroservo.errors import ParameterError
+
+__all__ = [
+    "discharge_coefficient_open",
+    "short_orifice_coefficient",
+    "continuity_constant",
+    "discharge_coefficient",
+    "orifice_geometry",
+    "orifice_flow",
+    "ellman_flow",
+    "eryilmaz_flow",
+    "laminar_gap_flow",
+    "laminar_gap_continuity",
+]
+
+
+def discharge_coefficient_open(lam: Any, Cq_inf: Any, lambda_t: Any, alpha: Any = 1.0) -> Any:
+    r"""Flow coefficient of an open orifice, laminar to turbulent, seed 002 eq. (6) [-].
+
+    :math:`C_q = C_{q\infty}\tanh(\alpha\lambda/\lambda_t)`.
+
+    Parameters
+    ----------
+    lam : array_like
+        Flow number (eq. 4) [-].
+    Cq_inf : array_like
+        Turbulent limit of the flow coefficient [-].
+    lambda_t : array_like
+        Transition flow number [-].
+    alpha : array_like
+        Shape factor (1: the unified model of eq. 20).
+    """
+    return Cq_inf * m.tanh(alpha * lam / lambda_t)
+
+
+def short_orifice_coefficient(X: Any, D_h: Any, lam: Any) -> np.ndarray:
+    r"""Flow coefficient of a closed orifice as Merritt's short orifice, seed 002 eqs. (14), (16) [-].
+
+    The passage of length :math:`|X|` and hydraulic diameter :math:`D_h`:
+
+    .. math::
+        C_q = \left(2.28 + \frac{64|X|}{D_h Re}\right)^{-1/2} \quad (D_h Re/|X| < 50), \qquad
+        C_q = \left(13.74\sqrt{\frac{|X|}{D_h Re}} + 1.5\right)^{-1/2} \quad (D_h Re/|X| > 50)
+
+    with :math:`Re = C_q\lambda` (eq. 5), solved for :math:`C_q` at each point.
+    Limits: :math:`1/\sqrt{1.5} = 0.816` for small closure (eq. 17),
+    :math:`D_h\lambda/(64|X|)` for large closure (eq. 15).
+
+    Parameters
+    ----------
+    X : array_like
+        Closure (length of the passage) [m], > 0.
+    D_h : array_like
+        Hydraulic diameter of the passage [m].
+    lam : array_like
+        Flow number [-], > 0.
+    """
+    X, D_h, lam = np.broadcast_arrays(np.asarray(X, float), np.asarray(D_h, float), np.asarray(lam, float))
+    if np.any(X <= 0) or np.any(D_h <= 0) or np.any(lam <= 0):
+        raise ParameterError("short_orifice_coefficient: expected closure X > 0 m, D_h > 0 m and flow number > 0")
+    out = np.empty(X.shape)
+    for idx in np.ndindex(X.shape):
+        x, d, la = X[idx], D_h[idx], lam[idx]
+        b = 64 * x / (d * la)
+        cq = (-b + np.sqrt(b * b + 4 * 2.28)) / (2 * 2.28)  # eq. (14): 2.28 Cq^2 + b Cq - 1 = 0
+        if d * cq * la / x > 50:  # the other regime, eq. (16)
+            cq = brentq(_eq16, 1e-12, 1.0 / np.sqrt(1.5), args=(x / (d * la),), xtol=1e-15)
+        out[idx] = cq
+    return out
+
+
+def _eq16(cq: float, x_over_dlam: float) -> float:
+    """Residual of seed 002 eq. (16) with Re = C_q lambda."""
+    return cq**-2 - (13.74 * np.sqrt(x_over_dlam / cq) + 1.5)
+
+
+def continuity_constant(Cq_inf: Any, lambda_t: Any, w: Any, c: Any) -> Any:
+    r"""Continuity constant of the closed-orifice coefficient, seed 002 eq. (19) [1/m].
+
+    :math:`K_g = 64C_{q\infty}/(D_h\lambda_t) = 32(w + c)C_{q\infty}/(wc\lambda_t)`, with
+    :math:`D_h = 2wc/(w + c)` (eq. 13) the hydraulic diameter of the closed passage.
+
+    Parameters
+    ----------
+    Cq_inf : array_like
+        [-].
+    lambda_t : array_like
+        [-].
+    w : array_like
+        Slot width [m].
+    c : array_like
+        Radial clearance [m].
+    """
+    return 32.0 * (w + c) * Cq_inf / (w * c * lambda_t)
+
+
+def discharge_coefficient(X_i: Any, lam: Any, Cq_inf: Any, lambda_t: Any, K_g: Any) -> Any:
+    r"""Unified flow coefficient, continuous through null, seed 002 eq. (20) [-].
+
+    .. math:: C_{qi} = C_{q\infty}\tanh\frac{\lambda_i}{\lambda_t\left[1 + \tfrac12K_g(|X_i| - X_i)\right]}
+
+    Open (:math:`X_i > 0`): eq. (6); closed: eq. (18).
+
+    Parameters
+    ----------
+    X_i : array_like
+        Opening of orifice i [m] (negative: closure).
+    lam : array_like
+        Flow number of the orifice [-].
+    Cq_inf, lambda_t : array_like
+        [-].
+    K_g : array_like
+        Continuity constant (eq. 19) [1/m].
+    """
+    return Cq_inf * m.tanh(lam / (lambda_t * (1.0 + 0.5 * K_g * (m.fabs(X_i) - X_i))))
+
+
+def orifice_geometry(X_i: Any, r: Any, c: Any, n: Any, w: Any) -> tuple[Any, Any, Any]:
+    r"""Typical length, area and hydraulic diameter of orifice i, seed 002 Table 1.
+
+    Open (:math:`X_i > 0`): :math:`X_{si} = \sqrt{X_i^2 + (2r + c)^2} - 2r` (the
+    rounded edge of radius r and the clearance c, after Lebrun); closed or
+    critical: :math:`X_{si} = c`. Then :math:`S_i = nwX_{si}` and
+    :math:`D_{hi} = 2wX_{si}/(w + X_{si})`. Continuous in value and slope at
+    :math:`X_i = 0`.
+
+    Parameters
+    ----------
+    X_i : array_like
+        Opening [m].
+    r : array_like
+        Rounded-edge radius [m].
+    c : array_like
+        Radial clearance [m].
+    n : array_like
+        Number of slots [-].
+    w : array_like
+        Slot width [m].
+
+    Returns
+    -------
+    X_s, S, D_h : array_like
+        [m], [m^2], [m].
+    """
+    open_len = m.sqrt(X_i * X_i + (2.0 * r + c) ** 2) - 2.0 * r
+    X_s = m.if_else(X_i > 0, open_len, c + 0.0 * X_i)
+    return X_s, n * w * X_s, 2.0 * w * X_s / (w + X_s)
+
+
+def orifice_flow(
+    X_i: Any, dp: Any, r: Any, c: Any, n: Any, w: Any, rho: Any, nu: Any, Cq_inf: Any, lambda_t: Any
+) -> Any:
+    r"""Flow through orifice i, the 9-parameter model of seed 002 Table 1 [m^3/s].
+
+    :math:`Q_i = C_{qi}S_i\sqrt{2|\Delta P_i|/\rho}\,\operatorname{sgn}\Delta P_i`, with the
+    geometry of :func:`orifice_geometry`, the flow number of eq. (4) on
+    :math:`D_{hi}`, and :math:`C_{qi}` of eq. (20) with :math:`K_g` of eq. (19).
+    The opening is :math:`X_i = X_{i0} + \varepsilon X`; pass it already formed.
+
+    Parameters
+    ----------
+    X_i : array_like
+        Opening of the orifice [m] (negative when closed).
+    dp : array_like
+        Pressure drop across it [Pa].
+    r, c, n, w : array_like
+        Rounded-edge radius [m], clearance [m], slot number [-], slot width [m].
+    rho : array_like
+        Density [kg/m^3].
+    nu : array_like
+        Kinematic viscosity [m^2/s].
+    Cq_inf, lambda_t : array_like
+        Turbulent flow coefficient [-] and transition flow number [-].
+
+    Notes
+    -----
+    For small drops the flow is laminar, :math:`Q \propto \Delta P` (the tanh
+    is linear in :math:`\lambda \propto \sqrt{|\Delta P|}`), so the law has a
+    finite slope at zero drop without regularisation.
+    """
+    _, S, D_h = orifice_geometry(X_i, r, c, n, w)
+    u = m.sqrt(2.0 / rho * m.fabs(dp))
+    lam = D_h / nu * u
+    K_g = continuity_constant(Cq_inf, lambda_t, w, c)
+    Cq = discharge_coefficient(X_i, lam, Cq_inf, lambda_t, K_g)
+    return Cq * S * u * m.sign(dp)
+
+
+def ellman_flow(X: Any, dp: Any, k1: Any, k2: Any) -> Any:
+    r"""Closed-orifice leakage of Ellman (1995, 1998), seed 002 eq. (7) [m^3/s].
+
+    :math:`Q = \frac{k_2}{2}\left[\sqrt{(k_2/k_1)^2X^2 + 4\Delta P} - \frac{k_2}{k_1}X\right]`,
+    a short annulus in laminar flow; ``X`` the (signed) opening [m], ``dp`` >= 0 [Pa],
+    ``k1``, ``k2`` fitted at one temperature.
+    """
+    a = k2 / k1
+    return 0.5 * k2 * (np.sqrt(a * a * np.asarray(X) ** 2 + 4.0 * np.asarray(dp)) - a * np.asarray(X))
+
+
+def eryilmaz_flow(X: Any, dp: Any, X0: Any, k1: Any, k2: Any) -> Any:
+    r"""Closed-orifice leakage of Eryilmaz (2000), seed 002 eq. (8) [m^3/s].
+
+    :math:`Q = k_1\sqrt{\Delta P}\,X_0^2/(X_0 - k_2X)`: turbulent, inversely proportional to the closure.
+    """
+    return k1 * np.sqrt(np.asarray(dp)) * X0**2 / (X0 - k2 * np.asarray(X))
+
+
+def laminar_gap_flow(X: Any, dp: Any, mu: Any, n: Any, w: Any, c: Any, K_g: Any) -> Any:
+    r"""Closed orifice as a laminar gap between infinite planes (Rabie et al. 1981), seed 002 eq. (10) [m^3/s].
+
+    :math:`Q = \frac{nwc^3}{12\mu(K_g + |X|)}\Delta P`, ``K_g`` [m] ensuring continuity with the open law (eq. 11).
+    """
+    return n * w * c**3 / (12.0 * mu * (K_g + np.abs(np.asarray(X)))) * np.asarray(dp)
+
+
+def laminar_gap_continuity(w: Any, c: Any, delta_lambda: Any) -> Any:
+    r"""Continuity constant of the laminar-gap law, seed 002 eq. (11) [m].
+
+    :math:`K_g = c(w + c)/(48\delta_\lambda w)`, with :math:`\delta_\lambda` the limit slope of
+    :math:`C_q(\lambda)` at small flow numbers (for eq. 6: :math:`C_{q\infty}/\lambda_t`).
+    """
+    return c * (w + c) / (48.0 * delta_lambda * w)
