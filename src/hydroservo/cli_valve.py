@@ -265,25 +265,22 @@ def cmd_fit_dynamics(args: argparse.Namespace) -> int:
     files = {"plot": str(out / "fit.png")}
     for m, fit in fits.items():
         units = {**SPOOL_MODELS[m], "delay": "s"}
+        # Only the rate-limited component has a delay parameter; the others record the fitted delay beside it.
+        has_delay = m == "rate-limited"
+        header = (
+            f"Spool dynamics fitted by hydroservo to {Path(args.bode).name} (seed 000 eq. 43, then the delay)\n"
+            f"max gain error up to 200 Hz: {fit.max_gain_error(200.0):.3g} dB"
+        )
+        if not has_delay:
+            header += f"\nthe fitted delay, {fit.params['delay']:.4g} s, is not a parameter of {_COMPONENT[m]}"
         path = out / f"spool_{m}.toml"
         path.write_text(
             component_toml(
                 _COMPONENT[m],
-                fit.params,
+                {k: v for k, v in fit.params.items() if has_delay or k != "delay"},
                 units,
-                header=f"Spool dynamics fitted by hydroservo to {Path(args.bode).name} (seed 000 eq. 43, then the delay)\n"
-                f"max gain error up to 200 Hz: {fit.max_gain_error(200.0):.3g} dB",
-            )
-            if m == "rate-limited"
-            else component_toml(
-                _COMPONENT[m],
-                {k: v for k, v in fit.params.items() if k != "delay"},
-                units,
-                header=(
-                    f"Spool dynamics fitted by hydroservo to {Path(args.bode).name}; fitted delay "
-                    f"{fit.params['delay']:.4g} s is not part of this component"
-                ),
-                extra={"fit": {"delay_s": fit.params["delay"]}},
+                header=header,
+                extra=None if has_delay else {"fit": {"delay_s": fit.params["delay"]}},
             )
         )
         files[f"parameters_{m}"] = str(path)
