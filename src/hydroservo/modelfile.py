@@ -110,6 +110,19 @@ def model_to_toml(system: System) -> str:
     return "\n".join(lines) + "\n"
 
 
+def read_toml(path: str | Path, what: str, error: type[HydroservoError] = ModelFileError) -> dict[str, Any]:
+    """Parse a TOML file; an unreadable or malformed file raises ``error`` naming ``what`` and the path."""
+    path = Path(path)
+    try:
+        text = path.read_text()
+    except OSError as exc:
+        raise error(f"{what} {str(path)!r}: cannot read ({exc.strerror})") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise error(f"{what} {str(path)!r}: malformed TOML: {exc}") from None
+
+
 def write_model(system: System, path: str | Path) -> Path:
     """Write ``system`` as a TOML model file."""
     path = Path(path)
@@ -128,14 +141,7 @@ def read_model(path: str | Path) -> System:
         message names the file, the table and the key.
     """
     path = Path(path)
-    try:
-        text = path.read_text()
-    except OSError as exc:
-        raise ModelFileError(f"{path}: cannot read the model file ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ModelFileError(f"{path}: malformed TOML: {exc}") from None
+    data = read_toml(path, "model file", ModelFileError)
     system = system_from_dict(data, where=str(path), base=path.parent)
     system.source = str(path)
     return system

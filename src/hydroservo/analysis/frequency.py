@@ -257,7 +257,6 @@ class PeriodicResponse:
         names = model.parameter_names
         self.i_amp, self.i_freq = names.index(f"{source}.amplitude"), names.index(f"{source}.frequency")
         self.i_fixed = {names.index(f"{source}.{k}"): 0.0 for k in ("t_start", "phase")}
-        self.i_offset = names.index(f"{source}.offset")
         nx, npar = model.nx, model.np
         if nx == 0:
             raise ModelError(f"frequency response: system {system.name!r} has no states")
@@ -370,7 +369,7 @@ class PeriodicResponse:
         h = 1.0 / (P[self.i_freq] * self.M)
         worst = int(np.argmax(rho * h))
         if rho[worst] * h[worst] > 2.5:  # RK4 is stable up to |lambda h| = 2.79 on the real axis
-            need = int(np.ceil(rho[worst] / (P[self.i_freq, worst] * 1.0)))
+            need = int(np.ceil(rho[worst] / (2.5 * P[self.i_freq, worst])))
             raise SolverError(
                 f"frequency response of {self.system.name!r}: at f = {P[self.i_freq, worst]:g} Hz the fastest mode "
                 f"({rho[worst]:.3g} 1/s) needs more than {self.M} Runge-Kutta steps per period; "

@@ -30,7 +30,6 @@ allowed.
 from __future__ import annotations
 
 import csv
-import tomllib
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -70,15 +69,10 @@ VALVES = _valves()
 
 
 def read_toml(path: str | Path, what: str) -> dict[str, Any]:
-    path = Path(path)
-    try:
-        text = path.read_text()
-    except OSError as exc:
-        raise ParameterError(f"{what} {str(path)!r}: cannot read ({exc.strerror})") from None
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ParameterError(f"{what} {str(path)!r}: malformed TOML: {exc}") from None
+    """Parse a TOML file; errors are :class:`ParameterError` naming ``what`` and the path."""
+    from hydroservo.modelfile import read_toml as _read
+
+    return _read(path, what, ParameterError)
 
 
 def read_datasheet(source: str | Path) -> Datasheet:
