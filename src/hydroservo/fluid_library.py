@@ -32,6 +32,7 @@ from typing import Any
 
 import numpy as np
 
+from hydroservo import _math as m
 from hydroservo.errors import ParameterError
 from hydroservo.fluids import SKYDROL_MARE, dynamic_viscosity_mare, kinematic_viscosity_walther, specific_volume_mare
 
@@ -156,14 +157,14 @@ class MineralOil(Fluid):
     alpha_p: float = 2e-8
 
     def specific_volume(self, p: Any, T: Any) -> Any:
-        return (1.0 + self.alpha_T * (T - 15.0)) * np.exp(-np.asarray(p, float) / self.K) / self.rho_15
+        return (1.0 + self.alpha_T * (T - 15.0)) * m.exp(-p / self.K) / self.rho_15
 
     def dvdp(self, p: Any, T: Any) -> Any:
         return -self.specific_volume(p, T) / self.K
 
     def dynamic_viscosity(self, p: Any, T: Any) -> Any:
         nu_atm = kinematic_viscosity_walther(T, self.nu_40, self.nu_100)
-        return nu_atm / self.specific_volume(0.0, T) * np.exp(self.alpha_p * np.asarray(p, float))
+        return nu_atm / self.specific_volume(0.0, T) * m.exp(self.alpha_p * p)
 
 
 def _skydrol() -> MareFluid:

@@ -27,6 +27,7 @@ How the extracted text was read
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -46,6 +47,9 @@ __all__ = [
     "eryilmaz_flow",
     "laminar_gap_flow",
     "laminar_gap_continuity",
+    "BRIDGE",
+    "BRIDGE_PARAMETERS",
+    "bridge_orifice_flow",
 ]
 
 
@@ -183,7 +187,17 @@ def orifice_geometry(X_i: Any, r: Any, c: Any, n: Any, w: Any) -> tuple[Any, Any
 
 
 def orifice_flow(
-    X_i: Any, dp: Any, r: Any, c: Any, n: Any, w: Any, rho: Any, nu: Any, Cq_inf: Any, lambda_t: Any
+    X_i: Any,
+    dp: Any,
+    r: Any,
+    c: Any,
+    n: Any,
+    w: Any,
+    rho: Any,
+    nu: Any,
+    Cq_inf: Any,
+    lambda_t: Any,
+    dp_smooth: float = 0.0,
 ) -> Any:
     r"""Flow through orifice i, the 9-parameter model of seed 002 Table 1 [m^3/s].
 
@@ -206,19 +220,32 @@ def orifice_flow(
         Kinematic viscosity [m^2/s].
     Cq_inf, lambda_t : array_like
         Turbulent flow coefficient [-] and transition flow number [-].
+    dp_smooth : float
+        0 (default): the law as published. A positive value [Pa] replaces
+        :math:`|\Delta P|` by :math:`\sqrt{\Delta P^2 + \delta^2}` and
+        :math:`\operatorname{sgn}\Delta P` by :math:`\Delta P/\sqrt{\Delta P^2 + \delta^2}`,
+        so that exact derivatives exist at zero drop (in a simulated system).
 
     Notes
     -----
     For small drops the flow is laminar, :math:`Q \propto \Delta P` (the tanh
     is linear in :math:`\lambda \propto \sqrt{|\Delta P|}`), so the law has a
-    finite slope at zero drop without regularisation.
+    finite slope at zero drop without regularisation; its exact derivative,
+    though, is 0 * inf there. The smoothing of ``dp_smooth`` leaves that laminar
+    slope exactly as it is: :math:`Q \propto |\Delta P|\operatorname{sgn}\Delta P`
+    becomes :math:`\sqrt{\Delta P^2 + \delta^2}\,\Delta P/\sqrt{\Delta P^2 + \delta^2} = \Delta P`.
     """
     _, S, D_h = orifice_geometry(X_i, r, c, n, w)
-    u = m.sqrt(2.0 / rho * m.fabs(dp))
+    if dp_smooth > 0:
+        abs_dp = m.sqrt(dp * dp + dp_smooth**2)
+        sgn = dp / abs_dp
+    else:
+        abs_dp, sgn = m.fabs(dp), m.sign(dp)
+    u = m.sqrt(2.0 / rho * abs_dp)
     lam = D_h / nu * u
     K_g = continuity_constant(Cq_inf, lambda_t, w, c)
     Cq = discharge_coefficient(X_i, lam, Cq_inf, lambda_t, K_g)
-    return Cq * S * u * m.sign(dp)
+    return Cq * S * u * sgn
 
 
 def ellman_flow(X: Any, dp: Any, k1: Any, k2: Any) -> Any:
@@ -255,3 +282,99 @@ def laminar_gap_continuity(w: Any, c: Any, delta_lambda: Any) -> Any:
     :math:`C_q(\lambda)` at small flow numbers (for eq. 6: :math:`C_{q\infty}/\lambda_t`).
     """
     return c * (w + c) / (48.0 * delta_lambda * w)
+
+
+#: The four orifices of the Wheatstone bridge (seed 002 Fig. 1): upstream node,
+#: downstream node and :math:`\varepsilon` (+1 if the orifice opens when X
+#: increases), for nodes S (supply), R (return), 1 and 2 (use ports).
+BRIDGE: dict[str, tuple[str, str, int]] = {
+    "a": ("S", "1", +1),
+    "b": ("1", "R", -1),
+    "c": ("S", "2", -1),
+    "d": ("2", "R", +1),
+}
+
+#: Parameters of the staged-slot bridge: name -> (SI unit, description).
+BRIDGE_PARAMETERS: dict[str, tuple[str, str]] = {
+    **{f"X_{i}0": ("m", f"opening of orifice {i} at null, low-gain stage (> 0 underlap, < 0 overlap)") for i in BRIDGE},
+    **{f"X_{i}0H": ("m", f"opening of orifice {i} at null, high-gain stage (<= 0: closed at null)") for i in BRIDGE},
+    "w_L": ("m", "slot width of the low-gain stage"),
+    "w_H": ("m", "slot width of the high-gain stage (>= w_L; = w_L: no staging)"),
+    "r": ("m", "rounded-edge radius"),
+    "c": ("m", "spool-bushing radial clearance"),
+    "n": ("", "number of slots per orifice"),
+    "Cq_inf": ("", "turbulent limit of the flow coefficient"),
+    "lambda_tL": ("", "transition flow number, low-gain stage"),
+    "lambda_tH": ("", "transition flow number, high-gain stage"),
+}
+
+#: Width given to the high-gain stage of an unstaged slot (w_H = w_L): its flow is 1e-12 of the low stage's.
+_NO_STAGE_WIDTH = 1e-15
+
+
+def bridge_orifice_flow(
+    i: str,
+    X: Any,
+    p_up: Any,
+    p_down: Any,
+    params: Mapping[str, Any],
+    rho: Any,
+    nu: Any,
+    dp_smooth: float = 0.0,
+) -> Any:
+    r"""Flow through orifice ``i`` of a staged-slot bridge, seed 002 Table 1 and Fig. 5 [m^3/s].
+
+    Each metering edge opens a staged slot (Fig. 5): a narrow part of width
+    :math:`w_L` from the edge, then a wide part of width :math:`w_H`. The
+    uncovered area is that of two orifices in parallel: the low-gain one of
+    width :math:`w_L` and opening :math:`X_{i0} + \varepsilon X`, and the
+    high-gain one of width :math:`w_H - w_L` and opening
+    :math:`X_{i0H} + \varepsilon X` (closed, :math:`X_{i0H} < 0`, until the
+    edge reaches the step). Both follow the 9-parameter law of Table 1
+    (:func:`orifice_flow`) with the shared r, c, n, :math:`C_{q\infty}` and their
+    own :math:`\lambda_t` (eqs. 21 and 23 identify :math:`\lambda_{tL}` and
+    :math:`\lambda_{tH}` separately). The high stage's closed-orifice flow is the
+    leakage through the clearance over the wide part, as physical as the low one.
+
+    Parameters
+    ----------
+    i : str
+        "a", "b", "c" or "d" (:data:`BRIDGE`).
+    X : array_like
+        Valve opening (spool position from hydraulic null) [m].
+    p_up, p_down : array_like
+        Pressures at the orifice's upstream and downstream nodes of :data:`BRIDGE` [Pa].
+    params : mapping
+        :data:`BRIDGE_PARAMETERS`, SI.
+    rho, nu : array_like
+        Density [kg/m^3] and kinematic viscosity [m^2/s] of the fluid.
+    dp_smooth : float
+        See :func:`orifice_flow` [Pa].
+    """
+    eps = BRIDGE[i][2]
+    dp = p_up - p_down
+    common = (params["r"], params["c"], params["n"])
+    low = orifice_flow(
+        params[f"X_{i}0"] + eps * X,
+        dp,
+        *common,
+        params["w_L"],
+        rho,
+        nu,
+        params["Cq_inf"],
+        params["lambda_tL"],
+        dp_smooth,
+    )
+    w_extra = m.fmax(params["w_H"] - params["w_L"], _NO_STAGE_WIDTH)
+    high = orifice_flow(
+        params[f"X_{i}0H"] + eps * X,
+        dp,
+        *common,
+        w_extra,
+        rho,
+        nu,
+        params["Cq_inf"],
+        params["lambda_tH"],
+        dp_smooth,
+    )
+    return low + high

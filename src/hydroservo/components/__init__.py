@@ -20,6 +20,7 @@ from hydroservo.components.hydraulics import ConstantPressure, PressureTable, Ta
 from hydroservo.components.mechanics import Mass
 from hydroservo.components.proportional import PseudoSectionValve, ServoSolenoidValve, SpoolRateLimited
 from hydroservo.components.servovalve import FlapperNozzleSpool, TorqueMotor
+from hydroservo.components.spool import MareSpoolValve
 from hydroservo.components.valves import FourWayValve, SpoolFirstOrder, SpoolSecondOrder
 
 __all__ = [
@@ -37,6 +38,7 @@ __all__ = [
     "PressureTable",
     "Volume",
     "FourWayValve",
+    "MareSpoolValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",
