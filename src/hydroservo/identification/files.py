@@ -47,6 +47,7 @@ __all__ = [
     "read_component_file",
     "component_toml",
     "read_static_curves",
+    "read_csv_table",
 ]
 
 
@@ -143,31 +144,40 @@ def component_toml(
 _CURVE_COLUMNS = {"x_s": "", "P_L": "", "q_lk": "m^3/s", "Q_L": "m^3/s"}
 
 
-def read_static_curves(path: str | Path) -> dict[str, np.ndarray]:
-    """Measured static curves (CSV with ``name [unit]`` headers), values in SI; see the module docstring."""
+def read_csv_table(
+    path: str | Path, columns: Mapping[str, str], what: str = "curves file"
+) -> tuple[dict[str, np.ndarray], dict[str, str]]:
+    """Columns ``name [unit]`` of a CSV file in SI, and its ``# key = value`` comment lines.
+
+    ``columns`` maps the known column names to their SI unit ("" dimensionless);
+    other columns are ignored; a dimensional column without a unit, or a cell
+    that is not a number, is an error naming the file, row and column. Empty
+    cells become NaN.
+    """
     path = Path(path)
+    where = f"{what} {str(path)!r}"
     try:
-        rows = list(csv.reader(line for line in path.read_text().splitlines() if line.strip() and line[0] != "#"))
+        lines = [line for line in path.read_text().splitlines() if line.strip()]
     except OSError as exc:
-        raise ParameterError(f"curves file {str(path)!r}: cannot read ({exc.strerror})") from None
+        raise ParameterError(f"{where}: cannot read ({exc.strerror})") from None
+    meta: dict[str, str] = {}
+    for line in lines:
+        if line.startswith("#") and "=" in line:
+            key, _, value = line[1:].partition("=")
+            meta[key.strip()] = value.split("#")[0].strip()
+    rows = list(csv.reader(line for line in lines if not line.startswith("#")))
     if len(rows) < 2:
-        raise ParameterError(f"curves file {str(path)!r}: expected a header and data rows")
+        raise ParameterError(f"{where}: expected a header and data rows")
     cols: dict[str, tuple[int, str]] = {}
     for i, head in enumerate(rows[0]):
         name = head.split("[")[0].strip()
         unit = head.split("[")[1].split("]")[0].strip() if "[" in head else None
-        if name in _CURVE_COLUMNS:
-            if unit is None and _CURVE_COLUMNS[name]:
+        if name in columns:
+            if unit is None and columns[name]:
                 raise ParameterError(
-                    f"curves file {str(path)!r}, column {head.strip()!r}: expected a unit in brackets, e.g. '{name} [L/min]'"
+                    f"{where}, column {head.strip()!r}: expected a unit in brackets, e.g. '{name} [{columns[name]}]'"
                 )
             cols[name] = (i, unit or "")
-    missing = [c for c in ("x_s", "P_L", "q_lk") if c not in cols]
-    if missing:
-        raise ParameterError(
-            f"curves file {str(path)!r}: missing column(s) {', '.join(missing)}; expected 'x_s [-], P_L [-], "
-            "q_lk [L/min]' and optionally 'Q_L [L/min]'"
-        )
     out: dict[str, np.ndarray] = {}
     for name, (i, unit) in cols.items():
         vals = []
@@ -176,14 +186,21 @@ def read_static_curves(path: str | Path) -> dict[str, np.ndarray]:
             try:
                 vals.append(float(cell) if cell else np.nan)
             except ValueError:
-                raise ParameterError(
-                    f"curves file {str(path)!r}, row {lineno}, column {name}: {cell!r} is not a number"
-                ) from None
-        arr = np.array(vals)
-        target = _CURVE_COLUMNS[name]
-        if target and unit not in ("", "-"):
-            arr = arr * to_si(f"1 {unit}", target, what=f"curves file {str(path)!r}, column {name}")
-        out[name] = arr
+                raise ParameterError(f"{where}, row {lineno}, column {name}: {cell!r} is not a number") from None
+        scale = 1.0 if unit in ("", "-") else to_si(f"1 {unit}", columns[name], what=f"{where}, column {name}")
+        out[name] = np.array(vals) * scale
+    return out, meta
+
+
+def read_static_curves(path: str | Path) -> dict[str, np.ndarray]:
+    """Measured static curves (CSV with ``name [unit]`` headers), values in SI; see the module docstring."""
+    out, _ = read_csv_table(path, _CURVE_COLUMNS)
+    missing = [c for c in ("x_s", "P_L", "q_lk") if c not in out]
+    if missing:
+        raise ParameterError(
+            f"curves file {str(path)!r}: missing column(s) {', '.join(missing)}; expected 'x_s [-], P_L [-], "
+            "q_lk [L/min]' and optionally 'Q_L [L/min]'"
+        )
     if np.any(out["q_lk"][np.isfinite(out["q_lk"])] < 0):
         raise ParameterError(f"curves file {str(path)!r}: negative leakage flow in q_lk; expected >= 0")
     if np.any(np.abs(out["x_s"][np.isfinite(out["x_s"])]) > 1):
