@@ -199,7 +199,7 @@ def _join_negative_values(argv: list[str]) -> list[str]:
     out: list[str] = []
     it = iter(argv)
     for tok in it:
-        if tok in ("--temperature", "--pressure", "--amplitudes", "--frequencies"):
+        if tok in ("--temperature", "--pressure", "--amplitudes", "--frequencies", "--predict", "--reference"):
             nxt = next(it, None)
             if nxt is not None and nxt.startswith("-") and len(nxt) > 1 and (nxt[1].isdigit() or nxt[1] == "."):
                 out.append(f"{tok}={nxt}")

@@ -1,4 +1,4 @@
-"""``hydroservo valve ...``: the seed-000 valve tools on the command line (thin shell over the API)."""
+"""``hydroservo valve ...``: the seed-000 valve tools on the command line (thin shell over the API); seed 002's are in :mod:`hydroservo.cli_spool`."""
 
 from __future__ import annotations
 
@@ -300,7 +300,12 @@ def cmd_fit_dynamics(args: argparse.Namespace) -> int:
 
 
 def add_valve_parser(sub: Any) -> None:
-    valve = sub.add_parser("valve", help="servo-solenoid valve tools (seed 000): datasheet fit, Bode, dynamics fit")
+    from hydroservo.cli_spool import add_spool_commands
+
+    valve = sub.add_parser(
+        "valve",
+        help="valve tools: datasheet fit, Bode, dynamics fit (seed 000); characteristics, identify (seed 002)",
+    )
     vsub = valve.add_subparsers(dest="valve_command", required=True)
 
     p = vsub.add_parser("fit", help="pseudo-section parameters from datasheet values, with plots and a parameter file")
@@ -344,3 +349,5 @@ def add_valve_parser(sub: Any) -> None:
     p.add_argument("--out", default=None, metavar="DIR")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_fit_dynamics)
+
+    add_spool_commands(vsub)

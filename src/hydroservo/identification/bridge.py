@@ -164,7 +164,7 @@ def identify_bridge(
         Parameters of eqs. (21) and (23) held at their start values: by default
         the slot widths, which the manufacturer gives (module docstring).
     max_rounds : int
-        The two steps are repeated until no parameter moves (1e-6 in the fitted
+        The two steps are repeated until no parameter moves (1e-4 in the fitted
         scale: micrometres for laps, the logarithm otherwise), at most this many times.
     """
     _require(curves)
@@ -228,7 +228,7 @@ def identify_bridge(
             report["step"], report["round"] = step, rnd
             result.steps.append(report)
         after = np.array([_encode(n, valve.params) for n in low_names + high_names])
-        if np.max(np.abs(after - before)) < 1e-6:
+        if np.max(np.abs(after - before)) < 1e-4:
             break
     result.valve = valve
     result.errors = curve_errors(valve, curves, sw)

@@ -21,6 +21,20 @@ Component parameter file (TOML), as written by ``hydroservo valve fit`` and
     k = 36.5
     gamma = "6.0578e-09 m^3/s/Pa^0.5"
 
+Test-bench curves of a seed-002 spool valve (CSV, one or more files at one
+temperature), as ``hydroservo valve characteristics --out`` writes them and
+``hydroservo valve identify`` reads them: a column ``X`` (opening, a length)
+and any of ``Q_L`` (flow gain, ports connected), ``P_1``, ``P_2`` (ports
+blocked) and ``Q_lk`` (leakage, ports blocked), with the test conditions in
+comment lines::
+
+    # temperature = -15 degC
+    # P_s = 3000 psi
+    # P_r = 0 bar
+    # X_n = 0.4 mm
+    X [um], P_1 [bar], P_2 [bar], Q_lk [L/min]
+    -25.0, 0.012, 206.8, 0.0101
+
 Measured static curves (CSV, units in brackets in the header): ``x_s [-]``,
 ``P_L [-]`` and ``q_lk [L/min]`` (blocked ports, at the datasheet's P_s), and
 optionally ``Q_L [L/min]`` (connected ports, P_n per edge). Empty cells are
@@ -30,15 +44,18 @@ allowed.
 from __future__ import annotations
 
 import csv
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from hydroservo.errors import ParameterError
 from hydroservo.identification.datasheet import Datasheet
 from hydroservo.units import format_quantity, from_si, to_si
+
+if TYPE_CHECKING:
+    from hydroservo.analysis.bench import BenchCurves
 
 __all__ = [
     "VALVES",
@@ -48,6 +65,11 @@ __all__ = [
     "component_toml",
     "read_static_curves",
     "read_csv_table",
+    "read_bench_curves",
+    "write_bench_curves",
+    "SPOOL_VALVES",
+    "read_spool_valve",
+    "spool_valve_toml",
 ]
 
 
@@ -211,3 +233,160 @@ def read_static_curves(path: str | Path) -> dict[str, np.ndarray]:
 def paper_unit_comment(value: float, unit: str, paper_unit: str) -> str:
     """``= 0.1149 L/min/bar^0.5``-style comment."""
     return f"= {from_si(value, unit, paper_unit):.6g} {paper_unit}" if paper_unit else ""
+
+
+_BENCH_COLUMNS = {"X": "m", "Q_L": "m^3/s", "P_1": "Pa", "P_2": "Pa", "Q_lk": "m^3/s"}
+_BENCH_META = {"temperature": "degC", "P_s": "Pa", "P_r": "Pa", "X_n": "m", "Q_n": "m^3/s"}
+
+
+def read_bench_curves(paths: Sequence[str | Path]) -> BenchCurves:
+    """Test-bench curves at one temperature from one or more CSV files (module docstring), SI."""
+    from hydroservo.analysis.bench import Bench, BenchCurves
+
+    if not paths:
+        raise ParameterError("bench curves: no file given")
+    meta: dict[str, tuple[float, str]] = {}
+    arrays: dict[str, np.ndarray] = {}
+    for path in paths:
+        where = f"curves file {str(path)!r}"
+        cols, head = read_csv_table(path, _BENCH_COLUMNS)
+        for key, unit in _BENCH_META.items():
+            if key in head:
+                value = to_si(head[key], unit, what=f"{where}, {key}")
+                if key in meta and not np.isclose(meta[key][0], value, rtol=1e-9, atol=1e-12):
+                    raise ParameterError(
+                        f"{where}: {key} = {head[key]} differs from {meta[key][1]}'s; "
+                        "expected curves at one temperature and one bench"
+                    )
+                meta[key] = (value, str(path))
+        tests = [c for c in ("Q_L", "P_1", "P_2", "Q_lk") if c in cols]
+        if "X" not in cols or not tests:
+            raise ParameterError(
+                f"{where}: expected a column 'X [um]' (or another length unit) and at least one of "
+                "'Q_L [L/min]', 'P_1 [bar]', 'P_2 [bar]', 'Q_lk [L/min]'"
+            )
+        if ("P_1" in cols) != ("P_2" in cols):
+            raise ParameterError(f"{where}: expected both P_1 and P_2 (the pressure-gain test), or neither")
+        for c in tests:
+            if c in arrays:
+                raise ParameterError(f"{where}: column {c} is also in another file; expected each curve once")
+            arrays[c] = cols[c]
+            arrays["X_" + c] = cols["X"]
+    for key in ("temperature", "P_s", "X_n"):
+        if key not in meta:
+            raise ParameterError(
+                f"bench curves {', '.join(map(str, paths))}: missing '# {key} = ...' "
+                "(expected the temperature, P_s and X_n in comment lines)"
+            )
+    if "Q_lk" in arrays and np.any(arrays["Q_lk"][np.isfinite(arrays["Q_lk"])] < 0):
+        raise ParameterError("bench curves: negative leakage flow in Q_lk; expected >= 0")
+    bench = Bench(
+        P_s=meta["P_s"][0],
+        X_n=meta["X_n"][0],
+        P_r=meta.get("P_r", (0.0, ""))[0],
+        Q_n=meta["Q_n"][0] if "Q_n" in meta else None,
+    )
+    return BenchCurves(
+        meta["temperature"][0],
+        bench,
+        arrays.get("X_Q_L"),
+        arrays.get("Q_L"),
+        arrays.get("X_P_1"),
+        arrays.get("P_1"),
+        arrays.get("P_2"),
+        arrays.get("X_Q_lk"),
+        arrays.get("Q_lk"),
+    )
+
+
+def write_bench_curves(curves: BenchCurves, folder: str | Path, stem: str = "") -> list[Path]:
+    """Write ``curves`` as ``{stem}flow_gain.csv`` and ``{stem}blocked_ports.csv`` (um, L/min, bar); the paths."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    b = curves.bench
+    head = [
+        f"# temperature = {curves.temperature!r} degC",
+        f"# P_s = {from_si(b.P_s, 'Pa', 'bar')!r} bar",
+        f"# P_r = {from_si(b.P_r, 'Pa', 'bar')!r} bar",
+        f"# X_n = {from_si(b.X_n, 'm', 'mm')!r} mm",
+    ]
+    if b.Q_n is not None:
+        head.append(f"# Q_n = {from_si(b.Q_n, 'm^3/s', 'L/min')!r} L/min")
+    out = []
+    tables = [
+        ("flow_gain", curves.X_flow, {"Q_L [L/min]": curves.Q_L}),
+        (
+            "blocked_ports",
+            curves.X_blocked,
+            {"P_1 [bar]": curves.P_1, "P_2 [bar]": curves.P_2, "Q_lk [L/min]": curves.Q_lk},
+        ),
+    ]
+    scale = {"L/min": from_si(1.0, "m^3/s", "L/min"), "bar": 1e-5}
+    for name, X, cols in tables:
+        cols = {k: v for k, v in cols.items() if v is not None}
+        if X is None or not cols:
+            continue
+        path = folder / f"{stem}{name}.csv"
+        lines = head + ["X [um], " + ", ".join(cols)]
+        data = [np.asarray(X) * 1e6] + [np.asarray(v) * scale[k.split("[")[1][:-1]] for k, v in cols.items()]
+        lines += [", ".join(repr(float(x)) for x in row) for row in zip(*data, strict=True)]
+        path.write_text("\n".join(lines) + "\n")
+        out.append(path)
+    return out
+
+
+def _spool_valves() -> dict[str, dict[str, Any]]:
+    from hydroservo.parameters import mare_attar_002 as m
+
+    return {"aerospace-example": {"valve": m.EXAMPLE_VALVE, "bench": m.EXAMPLE_BENCH}}
+
+
+#: Built-in seed-002 spool valves (geometry and test bench), by name.
+SPOOL_VALVES = _spool_valves()
+
+
+def read_spool_valve(source: str | Path) -> tuple[Any, Any]:
+    """A :class:`~hydroservo.components.spool.MareSpoolValve` and its :class:`~hydroservo.analysis.bench.Bench`.
+
+    From a component file (``[component]`` with ``type = "MareSpoolValve"``, and a
+    ``[bench]`` table: P_s, X_n, optionally P_r, Q_n, T_rated, flow_ranges) or a
+    built-in name (:data:`SPOOL_VALVES`). The bench is None when the file has none.
+    """
+    from hydroservo.analysis.bench import Bench
+    from hydroservo.components.spool import MareSpoolValve
+
+    key = str(source)
+    if key in SPOOL_VALVES:
+        values, bench_data, where = dict(SPOOL_VALVES[key]["valve"]), SPOOL_VALVES[key]["bench"], f"built-in {key}"
+    else:
+        if not Path(key).exists() and not key.lower().endswith(".toml"):
+            raise ParameterError(
+                f"spool valve {key!r}: neither a TOML file nor a built-in valve ({', '.join(SPOOL_VALVES)})"
+            )
+        values = read_component_file(key)
+        bench_data, where = read_toml(key, "component file").get("bench"), key
+        kind = values.pop("type")
+        if kind != "MareSpoolValve":
+            raise ParameterError(f"spool valve {key!r}: type = {kind!r}; expected 'MareSpoolValve'")
+    valve = MareSpoolValve("valve", **{k: v for k, v in values.items() if k != "type"})
+    valve.check()
+    if bench_data is not None and not isinstance(bench_data, dict):
+        raise ParameterError(f"spool valve {where}: [bench] must be a table (P_s, X_n, ...)")
+    bench = None if bench_data is None else Bench.from_mapping(bench_data, where=f"{where} [bench]")
+    return valve, bench
+
+
+def spool_valve_toml(params: Mapping[str, float], fluid: str, bench: Any, header: str = "") -> str:
+    """A ``MareSpoolValve`` component file with its ``[bench]`` table (SI values with units)."""
+    from hydroservo.spool_orifices import BRIDGE_PARAMETERS
+
+    units = {k: u for k, (u, _) in BRIDGE_PARAMETERS.items()}
+    text = component_toml(
+        "MareSpoolValve",
+        {k: params[k] for k in BRIDGE_PARAMETERS},
+        units,
+        options={"fluid": fluid},
+        header=header,
+        extra=None if bench is None else {"bench": bench.to_mapping()},
+    )
+    return text
