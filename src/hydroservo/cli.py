@@ -10,11 +10,13 @@ import argparse
 import json
 import sys
 import time
+import warnings
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from hydroservo.errors import HydroservoError, ParameterError
+from hydroservo.fluid_library import FluidRangeWarning
 
 __all__ = ["main"]
 
@@ -212,11 +214,18 @@ def _join_negative_values(argv: list[str]) -> list[str]:
     return out
 
 
+def _show_warning(message: Warning | str, category: type[Warning], *args: object, **kwargs: object) -> None:
+    print(f"hydroservo: warning: {message}", file=sys.stderr)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = build_parser()
     args = parser.parse_args(_join_negative_values(list(sys.argv[1:] if argv is None else argv)))
     try:
-        return int(args.func(args))
+        with warnings.catch_warnings():
+            warnings.simplefilter("once", FluidRangeWarning)  # one line per message, not per call site
+            warnings.showwarning = _show_warning
+            return int(args.func(args))
     except BrokenPipeError:  # output piped into head & co.
         sys.stderr.close()
         return 0

@@ -281,41 +281,47 @@ def bench_curves(
     return BenchCurves(T, bench, Xf, Q_L, Xb, P1, P2, Xb, Q_lk)
 
 
-def _pressure_null(valve: SpoolBridge, T: float, bench: Bench) -> float:
-    def dP(x: float) -> float:
-        P1, P2, _ = blocked_ports(valve, T, bench, np.array([x]))
-        return float(P1[0] - P2[0]) / (bench.P_s - bench.P_r)
-
-    lo, hi = -bench.X_n, bench.X_n
-    if dP(lo) > 0 or dP(hi) < 0:
-        raise ParameterError("spool valve: the load pressure does not change sign over ±X_n (no pressure null)")
-    return float(brentq(dP, lo, hi, xtol=1e-12 * bench.X_n, rtol=1e-14))
-
-
 def table2_metrics(valve: SpoolBridge, T: float, bench: Bench, Q_n: float | None = None) -> dict[str, float]:
     """The metrics of seed 002 Table 2 at temperature ``T`` [degC] (units in :data:`METRICS`; module docstring)."""
     Qn = rated_flow(valve, bench) if Q_n is None else Q_n
     span = bench.P_s - bench.P_r
     Xn = bench.X_n
-    x0 = _pressure_null(valve, T, bench)
+
+    def blocked(x: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        return blocked_ports(valve, T, bench, np.atleast_1d(np.asarray(x, float)))
 
     def load_pressure(x: Any) -> np.ndarray:
-        P1, P2, _ = blocked_ports(valve, T, bench, np.atleast_1d(np.asarray(x, float)))
+        P1, P2, _ = blocked(x)
         return (P1 - P2) / span
 
+    # blocked ports on a grid about null: brackets for the crossings, start of the leakage maximum
+    Xg = np.linspace(-0.1, 0.1, 401) * Xn
+    P1g, P2g, leak = blocked(Xg)
+    PLg = (P1g - P2g) / span
+
+    def crossing(level: float) -> float:
+        above = np.nonzero(PLg >= level)[0]
+        if above.size and above[0] > 0:
+            lo, hi = Xg[above[0] - 1], Xg[above[0]]
+        else:  # outside the grid: search the whole stroke
+            lo, hi = -Xn, Xn
+            if load_pressure(lo)[0] > level or load_pressure(hi)[0] < level:
+                raise ParameterError(
+                    f"spool valve at {T:g} degC: the load pressure does not reach {level * 100:+g} % of P_s "
+                    "over ±X_n with blocked ports"
+                )
+        return float(brentq(lambda x: load_pressure(x)[0] - level, lo, hi, xtol=1e-12 * Xn, rtol=1e-14))
+
+    x0 = crossing(0.0)  # the pressure null, P_1 = P_2
     h = 0.0025 * Xn
     pl = load_pressure([x0 - h, x0 + h])
     gain_025 = (pl[1] - pl[0]) * 100.0 / 0.5
-    x_lo = brentq(lambda x: load_pressure(x)[0] + 0.4, -Xn, x0, xtol=1e-12 * Xn)
-    x_hi = brentq(lambda x: load_pressure(x)[0] - 0.4, x0, Xn, xtol=1e-12 * Xn)
-    gain_40 = 80.0 / ((x_hi - x_lo) / Xn * 100.0)
-    P1_null = blocked_ports(valve, T, bench, np.array([x0]))[0][0]
+    gain_40 = 80.0 / ((crossing(0.4) - crossing(-0.4)) / Xn * 100.0)
+    P1_null = blocked(x0)[0][0]
 
-    Xg = np.linspace(-0.1, 0.1, 401) * Xn + x0
-    leak = blocked_ports(valve, T, bench, Xg)[2]
     k = int(np.argmax(leak))
     res = minimize_scalar(
-        lambda x: -blocked_ports(valve, T, bench, np.array([x]))[2][0],
+        lambda x: -blocked(x)[2][0],
         bounds=(Xg[max(k - 1, 0)], Xg[min(k + 1, Xg.size - 1)]),
         method="bounded",
         options={"xatol": 1e-9 * Xn},
@@ -325,7 +331,8 @@ def table2_metrics(valve: SpoolBridge, T: float, bench: Bench, Q_n: float | None
     gains = []
     for lo, hi in bench.flow_ranges:
         x = np.linspace(lo, hi, 41) * Xn
-        slopes = [np.polyfit(s * x / Xn * 100, flow_gain(valve, T, bench, s * x)[0] / Qn * 100, 1)[0] for s in (1, -1)]
+        q = flow_gain(valve, T, bench, np.concatenate([x, -x]))[0] / Qn * 100
+        slopes = [np.polyfit(s * x / Xn * 100, qs, 1)[0] for s, qs in ((1, q[: x.size]), (-1, q[x.size :]))]
         gains.append(float(np.mean(slopes)))
     return {
         "max_leakage": leak_max / Qn * 100.0,
