@@ -284,3 +284,14 @@ def test_wrong_sign_lap_in_a_parameter_file_exits_2(tmp_path: Path, capsys: pyte
     curves.write_text("# temperature = -15 degC\n# P_s = 200 bar\n# X_n = 0.4 mm\nX [um], P_1 [bar]\n0, 100\n")
     code, _, err = run(capsys, "valve", "identify", str(curves), "--start", "aerospace-example")
     assert code == 2 and "P_1 and P_2" in err
+
+
+def test_example_model_file_simulates_the_valve_in_a_circuit() -> None:
+    from hydroservo.modelfile import read_model
+
+    system = read_model(Path(__file__).parents[1] / "docs" / "examples" / "mare_valve_cylinder.toml")
+    res = system.simulate(n_points=301)
+    A_A = system["cyl"].values["A_A"]
+    v_end, QA_end = res.get("load.v")[-1], res.get("valve.QA")[-1]
+    assert v_end > 0 and v_end * A_A == pytest.approx(QA_end, rel=1e-3)  # steady: the valve's flow moves the piston
+    assert res.get("valve.QS")[0] > 0  # leakage at null before the step
