@@ -9,24 +9,16 @@ from typing import Any
 
 import numpy as np
 
+from hydroservo.cli_valve import _numbers
 from hydroservo.errors import ParameterError
 
 __all__ = ["add_spool_commands"]
 
 
 def _temperatures(text: str, what: str) -> list[float]:
-    parts = [p.strip() for p in text.split(",") if p.strip()]
-    if parts and parts[-1].lower().endswith(("degc", "°c", "c")):
+    if text.strip().lower().endswith(("degc", "°c", "c")):
         raise ParameterError(f"{what} {text!r}: give bare numbers in degC, e.g. -40,-15,32")
-    try:
-        vals = [float(p) for p in parts]
-    except ValueError:
-        raise ParameterError(
-            f"{what} {text!r}: expected comma-separated temperatures in degC, e.g. -40,-15,32"
-        ) from None
-    if not vals:
-        raise ParameterError(f"{what} {text!r}: expected at least one temperature")
-    return vals
+    return _numbers(text, what)
 
 
 def _metrics_table(table: dict[str, Any]) -> list[str]:
@@ -108,7 +100,7 @@ def cmd_identify(args: argparse.Namespace) -> int:
     comp, _ = read_spool_valve(args.start)
     start = SpoolBridge.from_component(comp)
     start.fluid.check_range(np.array([data.bench.P_r, data.bench.P_s]), data.temperature, args.strict)
-    weights = tuple(_temperatures(args.weights, "--weights")) if args.weights else (1.0, 1.0)
+    weights = tuple(_numbers(args.weights, "--weights")) if args.weights else (1.0, 1.0)
     if len(weights) != 2 or min(weights) < 0:
         raise ParameterError(f"--weights {args.weights!r}: expected two non-negative numbers W_P,W_LK")
     fixed = () if args.fit_widths else ("w_L", "w_H")
