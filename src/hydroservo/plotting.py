@@ -199,33 +199,28 @@ def plot_bench_characteristics(
     fig, axes = plt.subplots(2, 2, figsize=(11, 8))
     (ax_q, ax_p), (ax_pl, ax_lk) = axes
 
-    def pct(c: BenchCurves, X: Any) -> Any:
-        return np.asarray(X) / c.bench.X_n * 100.0
+    def draw(c: BenchCurves, lab: str, style: dict[str, Any], p1: str, p2: str, p2_label: str | None) -> None:
+        """One set of curves; ``p1``/``p2`` are the formats of P_1 and P_2 (line styles or markers)."""
+        span = c.bench.P_s - c.bench.P_r
+
+        def pct(X: Any) -> Any:
+            return np.asarray(X) / c.bench.X_n * 100.0
+
+        if c.X_flow is not None and c.Q_L is not None:
+            ax_q.plot(pct(c.X_flow), _lpm(c.Q_L), p1, label=lab, **style)
+        if c.X_blocked is not None and c.P_1 is not None and c.P_2 is not None:
+            ax_p.plot(pct(c.X_blocked), c.P_1 / 1e5, p1, label=f"P_1, {lab}" if p2_label else lab, **style)
+            ax_p.plot(pct(c.X_blocked), c.P_2 / 1e5, p2, label=p2_label, **style)
+            ax_pl.plot(pct(c.X_blocked), (c.P_1 - c.P_2) / span * 100, p1, label=lab, **style)
+        if c.X_leak is not None and c.Q_lk is not None:
+            ax_lk.plot(pct(c.X_leak), _lpm(c.Q_lk), p1, label=lab, **style)
 
     for k, c in enumerate(curves):
-        col = _T_COLORS[k % len(_T_COLORS)]
         lab = f"{c.temperature:g} °C"
-        span = c.bench.P_s - c.bench.P_r
-        if c.X_flow is not None and c.Q_L is not None:
-            ax_q.plot(pct(c, c.X_flow), _lpm(c.Q_L), color=col, zorder=3, label=lab)
-        if c.X_blocked is not None and c.P_1 is not None and c.P_2 is not None:
-            ax_p.plot(pct(c, c.X_blocked), c.P_1 / 1e5, color=col, zorder=3, label=f"P_1, {lab}")
-            ax_p.plot(pct(c, c.X_blocked), c.P_2 / 1e5, "--", color=col, zorder=3, label=f"P_2, {lab}")
-            ax_pl.plot(pct(c, c.X_blocked), (c.P_1 - c.P_2) / span * 100, color=col, zorder=3, label=lab)
-        if c.X_leak is not None and c.Q_lk is not None:
-            ax_lk.plot(pct(c, c.X_leak), _lpm(c.Q_lk), color=col, zorder=3, label=lab)
+        draw(c, lab, {"color": _T_COLORS[k % len(_T_COLORS)], "zorder": 3}, "-", "--", f"P_2, {lab}")
     if measured is not None:
-        m, style = measured, {"ms": 2.5, "color": "k", "alpha": 0.45, "ls": "none"}
-        span = m.bench.P_s - m.bench.P_r
-        lab = f"measured, {m.temperature:g} °C"
-        if m.X_flow is not None and m.Q_L is not None:
-            ax_q.plot(pct(m, m.X_flow), _lpm(m.Q_L), "o", label=lab, **style)
-        if m.X_blocked is not None and m.P_1 is not None and m.P_2 is not None:
-            ax_p.plot(pct(m, m.X_blocked), m.P_1 / 1e5, "o", label=lab, **style)
-            ax_p.plot(pct(m, m.X_blocked), m.P_2 / 1e5, "s", **style)
-            ax_pl.plot(pct(m, m.X_blocked), (m.P_1 - m.P_2) / span * 100, "o", label=lab, **style)
-        if m.X_leak is not None and m.Q_lk is not None:
-            ax_lk.plot(pct(m, m.X_leak), _lpm(m.Q_lk), "o", label=lab, **style)
+        style = {"ms": 2.5, "color": "k", "alpha": 0.45, "ls": "none"}
+        draw(measured, f"measured, {measured.temperature:g} °C", style, "o", "s", None)
     labels = (
         (ax_q, "Flow gain (use ports connected)", "Q_L [L/min]"),
         (ax_p, "Pressure gain (use ports blocked)", "P_1, P_2 [bar]"),

@@ -55,6 +55,7 @@ on the start within the unidentifiable direction.
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -256,9 +257,9 @@ def _fit(valve: SpoolBridge, names: Sequence[str], residuals: Any) -> tuple[Spoo
     return fitted, report
 
 
-def _max_rel(y_hat: np.ndarray, y: np.ndarray, floor: float = 0.1) -> float:
-    """Largest |relative error| over the points whose |value| is at least ``floor`` of the curve's full scale."""
-    keep = np.abs(y) >= floor * np.max(np.abs(y))
+def _max_rel(y_hat: np.ndarray, y: np.ndarray, full_scale: float | None = None) -> float:
+    """Largest |relative error| over the points whose |value| is at least 10 % of ``full_scale`` (default: max |y|)."""
+    keep = np.abs(y) >= 0.1 * (np.max(np.abs(y)) if full_scale is None else full_scale)
     return float(np.max(np.abs(y_hat[keep] / y[keep] - 1.0))) if np.any(keep) else float("nan")
 
 
@@ -277,8 +278,9 @@ def curve_errors(valve: SpoolBridge, curves: BenchCurves, switch: float) -> dict
         X, Q = curves.X_flow[ok], curves.Q_L[ok]
         q = flow_gain(valve, T, bench, X)[0]
         low = np.abs(X) <= switch * bench.X_n
-        out["flow_low"] = _max_rel(q[low], Q[low], 0.1 * np.max(np.abs(Q)) / np.max(np.abs(Q[low])))
-        out["flow_high"] = _max_rel(q[~low], Q[~low])
+        q_fs = float(np.max(np.abs(Q)))
+        out["flow_low"] = _max_rel(q[low], Q[low], q_fs)
+        out["flow_high"] = _max_rel(q[~low], Q[~low], q_fs)
     if curves.X_blocked is not None and curves.P_1 is not None and curves.P_2 is not None:
         ok = _finite(curves.X_blocked, curves.P_1, curves.P_2)
         p1, p2, _ = blocked_ports(valve, T, bench, curves.X_blocked[ok])
@@ -296,18 +298,9 @@ def curve_errors(valve: SpoolBridge, curves: BenchCurves, switch: float) -> dict
 def noisy_curves(curves: BenchCurves, level: float, seed: int = 0) -> BenchCurves:
     """``curves`` with multiplicative Gaussian noise of relative standard deviation ``level`` on every reading."""
     rng = np.random.default_rng(seed)
-
-    def noisy(a: np.ndarray | None) -> np.ndarray | None:
-        return None if a is None else a * (1.0 + level * rng.standard_normal(a.shape))
-
-    return BenchCurves(
-        curves.temperature,
-        curves.bench,
-        curves.X_flow,
-        noisy(curves.Q_L),
-        curves.X_blocked,
-        noisy(curves.P_1),
-        noisy(curves.P_2),
-        curves.X_leak,
-        noisy(curves.Q_lk),
-    )
+    noisy = {
+        name: a * (1.0 + level * rng.standard_normal(a.shape))
+        for name in ("Q_L", "P_1", "P_2", "Q_lk")
+        if (a := getattr(curves, name)) is not None
+    }
+    return dataclasses.replace(curves, **noisy)

@@ -113,7 +113,10 @@ def read_datasheet(source: str | Path) -> Datasheet:
 
 def read_component_file(path: str | Path) -> dict[str, Any]:
     """The ``[component]`` table of a component parameter file (``type`` and parameters with units)."""
-    data = read_toml(path, "component file")
+    return _component_table(read_toml(path, "component file"), path)
+
+
+def _component_table(data: Mapping[str, Any], path: str | Path) -> dict[str, Any]:
     comp = data.get("component")
     if not isinstance(comp, dict) or "type" not in comp:
         raise ParameterError(f"component file {str(path)!r}: expected a [component] table with a 'type'")
@@ -363,8 +366,8 @@ def read_spool_valve(source: str | Path) -> tuple[Any, Any]:
             raise ParameterError(
                 f"spool valve {key!r}: neither a TOML file nor a built-in valve ({', '.join(SPOOL_VALVES)})"
             )
-        values = read_component_file(key)
-        bench_data, where = read_toml(key, "component file").get("bench"), key
+        data = read_toml(key, "component file")
+        values, bench_data, where = _component_table(data, key), data.get("bench"), key
         kind = values.pop("type")
         if kind != "MareSpoolValve":
             raise ParameterError(f"spool valve {key!r}: type = {kind!r}; expected 'MareSpoolValve'")
