@@ -62,7 +62,7 @@ def main() -> dict[str, float]:
     build_start = time.perf_counter()
     model = system.build()
     build = time.perf_counter() - build_start
-    p = system._p(None)
+    p = system.parameter_vector()
 
     def engine(rtol: float) -> tuple[float, np.ndarray]:
         model.simulate(2.0, p, rtol=rtol, atol=rtol * 1e-2)  # creates the integrator once

@@ -21,21 +21,21 @@ import time
 import numpy as np
 from scipy.optimize import brentq
 
-from hydroservo.analysis.bench import Bench, SpoolBridge, bench_curves, table2_metrics
-from hydroservo.components import MareSpoolValve
-from hydroservo.parameters.mare_attar_002 import EXAMPLE_BENCH, EXAMPLE_VALVE
+from hydroservo.analysis.static_bench import Bench, bench_curves, table2_metrics
+from hydroservo.components import StagedSlotValve
+from hydroservo.io import read_staged_slot_valve
 
 T = -15.0
 
 
-def baseline_curves(valve: SpoolBridge, bench: Bench, n: int = 401) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def baseline_curves(valve: StagedSlotValve, bench: Bench, n: int = 401) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Q_L (connected), P_1 and leakage (blocked), one scalar brentq per opening and test."""
-    props = valve.props(T, bench)
+    props = valve.fluid_properties(bench.P_s, bench.P_r, T)
     Ps, Pr, tol = bench.P_s, bench.P_r, 1e-12 * (bench.P_s - bench.P_r)
     span = Ps - Pr
 
     def f(i: str, x: float, up: float, down: float) -> float:
-        return float(valve.flow(i, np.array(x), up, down, props))
+        return float(valve.orifice_flow(i, np.array(x), up, down, props))
 
     Q_L, P1, leak = np.empty(n), np.empty(n), np.empty(n)
     for k, x in enumerate(np.linspace(-1.0, 1.0, n) * bench.X_n):
@@ -54,8 +54,8 @@ def baseline_curves(valve: SpoolBridge, bench: Bench, n: int = 401) -> tuple[np.
 
 
 def main() -> None:
-    valve = SpoolBridge.from_component(MareSpoolValve("valve", **EXAMPLE_VALVE))
-    bench = Bench.from_mapping(EXAMPLE_BENCH)
+    valve, bench = read_staged_slot_valve("aerospace-example")
+    assert bench is not None
     bench_curves(valve, T, bench)  # warm-up
     t0 = time.perf_counter()
     curves = bench_curves(valve, T, bench)

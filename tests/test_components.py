@@ -8,7 +8,8 @@ import pytest
 import hydroservo as hs
 from hydroservo import components as c
 from hydroservo.errors import ParameterError
-from hydroservo.orifices import transition_pressure
+from hydroservo.io import read_time_table
+from hydroservo.laws.orifice import transition_pressure
 
 
 def driven(block: c.Component, source: c.Component, port: str = "u") -> hs.System:
@@ -20,7 +21,7 @@ def driven(block: c.Component, source: c.Component, port: str = "u") -> hs.Syste
 
 
 def test_first_order_spool_reaches_63_percent_at_T63() -> None:
-    s = driven(c.SpoolFirstOrder("spool", T="30 ms", x_max="2 mm"), c.Step("u", amplitude=0.5))
+    s = driven(c.SpoolFirstOrder("spool", tau="30 ms", xv_max="2 mm"), c.Step("u", amplitude=0.5))
     r = s.simulate(t_eval=[0.0, 0.03, 0.5], rtol=1e-10, atol=1e-12)
     assert r["spool.xv"][1] == pytest.approx(0.5 * 2e-3 * (1 - np.exp(-1)), rel=1e-7)  # seed 001 eq. 3.28
     # command beyond the stroke saturates at x_max
@@ -30,7 +31,7 @@ def test_first_order_spool_reaches_63_percent_at_T63() -> None:
 
 def test_second_order_spool_natural_frequency_and_stroke_limit() -> None:
     wn, zeta = 2 * np.pi * 50, 0.2
-    s = driven(c.SpoolSecondOrder("spool", omega_n=wn, zeta=zeta, x_max="1 mm"), c.Step("u", amplitude=0.5))
+    s = driven(c.SpoolSecondOrder("spool", omega_n=wn, zeta=zeta, xv_max="1 mm"), c.Step("u", amplitude=0.5))
     r = s.simulate(t_end=0.1, n_points=2001, rtol=1e-10, atol=1e-12)
     t = r.t
     wd = wn * np.sqrt(1 - zeta**2)
@@ -42,7 +43,7 @@ def test_second_order_spool_natural_frequency_and_stroke_limit() -> None:
 
 def test_volume_integrates_net_flow() -> None:
     s = hs.System("vol")
-    s.add(c.Volume("vol", V="1 L", beta="1.5 GPa"))
+    s.add(c.Volume("vol", V="1 L", beta_e="1.5 GPa"))
     s.add(c.Step("q", unit="m^3/s", amplitude="1 L/min"))
     s.connect("q.y", "vol.Q1")
     r = s.simulate(t_end=0.1)
@@ -70,7 +71,7 @@ def test_pressure_table_follows_record() -> None:
 def test_valve_compensation_and_hysteresis_tables() -> None:
     def flow(tables: dict, vv: float) -> float:
         s = hs.System("valve")
-        s.add(c.FourWayValve("valve", c_v=1e-7, x_max=1e-3, tables=tables))
+        s.add(c.FourWayValve("valve", c_v=1e-7, xv_max=1e-3, tables=tables))
         s.add(c.Step("xv", unit="m", amplitude=5e-4))
         s.add(c.Step("vv", unit="m/s", amplitude=vv))
         s.add(c.ConstantPressure("sup", p=100e5))
@@ -98,12 +99,12 @@ def test_amplifier_saturation_gain_lag_pid() -> None:
     s = hs.System("chain", t_end=1.0)
     s.add(c.Step("e", unit="V", amplitude="3 V"))
     s.add(c.Amplifier("amp", G_a=2.0, R="100 ohm", I_max="50 mA"))
-    s.add(c.Gain("gain", k=0.5))
+    s.add(c.Gain("gain", K=0.5))
     s.add(c.Saturation("sat", lower=-1.0, upper=1.0))
     s.add(c.PID("pid", Kp=2.0, Ki=4.0, upper=20.0))
-    s.add(c.Lag("lag", K=2.0, T="0.1 s"))
+    s.add(c.Lag("lag", K=2.0, tau="0.1 s"))
     s.connect("e.y", "amp.E", "gain.u", "pid.e", "lag.u")
-    s.add(c.Lag("sink", T=1.0))
+    s.add(c.Lag("sink", tau=1.0))
     s.connect("gain.y", "sat.u")
     s.connect("sat.y", "sink.u")
     r = s.simulate(t_eval=[0.0, 0.5, 1.0, 2.0, 3.0], rtol=1e-10, atol=1e-12)
@@ -121,13 +122,13 @@ def test_table_source_from_csv(tmp_path) -> None:
     path = tmp_path / "u.csv"
     path.write_text("t,volts\n0,0\n1,2\n2,2\n")
     s = hs.System("table")
-    s.add(c.Table("u", unit="V", file=path, column="volts"))
+    s.add(c.Table("u", *read_time_table(path, "volts"), unit="V"))
     s.add(c.Lag("lag", unit="V"))
     s.connect("u.y", "lag.u")
     r = s.simulate(t_eval=[0.0, 0.5, 1.5])
     np.testing.assert_allclose(r["u.y"], [0.0, 1.0, 2.0])
     with pytest.raises(ParameterError, match="'amps' is not a column"):
-        c.Table("u", file=path, column="amps")
+        c.Table("u", *read_time_table(path, "amps"))
 
 
 def test_cylinder_end_stop_and_oil_mass() -> None:

@@ -12,7 +12,7 @@ from hydroservo.errors import ModelError, ParameterError, SolverError, TrimError
 
 def spring_mass(**kw: object) -> hs.System:
     s = hs.System("spring-mass")
-    s.add(c.Mass("load", m=2.0, k=800.0, x0=0.01, incline=0.0, **kw))
+    s.add(c.Mass("load", m=2.0, k_spring=800.0, x0=0.01, incline=0.0, **kw))
     return s
 
 
@@ -34,7 +34,7 @@ def test_damped_spring_mass_matches_analytic_solution() -> None:
 def test_parameters_change_without_rebuild() -> None:
     s = spring_mass()
     model = s.build()
-    r = s.simulate(t_end=0.1, params={"load.k": "3.2 kN/m"})
+    r = s.simulate(t_end=0.1, params={"load.k_spring": "3.2 kN/m"})
     assert s.build() is model
     np.testing.assert_allclose(r["load.x"], 0.01 * np.cos(40.0 * r.t), atol=1e-6)
 
@@ -42,12 +42,12 @@ def test_parameters_change_without_rebuild() -> None:
 def closed_cylinder(**cyl: object) -> hs.System:
     """A cylinder with blocked ports, its rod pushed by a sinusoidal force."""
     s = hs.System("closed-cylinder")
-    values: dict[str, object] = dict(A_A=2e-3, A_B=1.2e-3, V_A0=4e-4, V_B0=3e-4, beta=1.2e9, pA0=50e5, pB0=50e5)
+    values: dict[str, object] = dict(A_A=2e-3, A_B=1.2e-3, V_A0=4e-4, V_B0=3e-4, beta_e=1.2e9, pA0=50e5, pB0=50e5)
     values.update(pressure_floor="none", **cyl)
     s.add(c.Cylinder("cyl", **values))
     s.add(c.Mass("load", m=20.0, incline=0.0, B=2000.0))
     s.add(c.Sine("force", unit="N", amplitude=4000.0, frequency=5.0))
-    s.add(c.Sum("sum", unit="N", k1=1.0, k2=1.0))
+    s.add(c.Sum("sum", unit="N", gain1=1.0, gain2=1.0))
     s.connect("force.y", "sum.u1")
     s.connect("cyl.F", "sum.u2")
     s.connect("sum.y", "load.F")
@@ -86,7 +86,7 @@ def test_internal_leakage_conserves_total_volume_flow() -> None:
 
 def test_trim_finds_equilibrium_of_loaded_spring() -> None:
     s = hs.System("hanging")
-    s.add(c.Mass("load", m=10.0, W=98.0665, k=1000.0, B=50.0))
+    s.add(c.Mass("load", m=10.0, W=98.0665, k_spring=1000.0, B=50.0))
     x = s.trim()
     assert x["load.x"] == pytest.approx(-98.0665 / 1000.0, rel=1e-9)
     assert x["load.v"] == pytest.approx(0.0, abs=1e-12)
@@ -106,18 +106,18 @@ def test_trim_reports_failure() -> None:
 def test_batch_equals_single_runs() -> None:
     s = spring_mass(B=10.0)
     ks = [400.0, 800.0, 1600.0]
-    b = s.batch({"load.k": ks}, t_end=0.3, n_points=31, threads=2)
+    b = s.batch({"load.k_spring": ks}, t_end=0.3, n_points=31, threads=2)
     for i, k in enumerate(ks):
-        single = s.simulate(t_end=0.3, n_points=31, params={"load.k": k})
+        single = s.simulate(t_end=0.3, n_points=31, params={"load.k_spring": k})
         np.testing.assert_allclose(b["load.x"][i], single["load.x"], rtol=1e-12, atol=1e-15)
         np.testing.assert_allclose(b["load.F_f"][i], single["load.F_f"], rtol=1e-12, atol=1e-12)
-    assert b.params["load.k"].tolist() == ks
+    assert b.params["load.k_spring"].tolist() == ks
 
 
 def test_solver_failure_names_time_and_state() -> None:
     s = hs.System("runaway")
-    s.add(c.Volume("vol", V=1e-5, beta=1e9, p0=1e5))
-    s.add(c.Gain("pump", k=1e-6))  # flow proportional to pressure: exponential blow-up
+    s.add(c.Volume("vol", V=1e-5, beta_e=1e9, p0=1e5))
+    s.add(c.Gain("pump", K=1e-6))  # flow proportional to pressure: exponential blow-up
     s.connect("vol.p", "pump.u")
     s.connect("pump.y", "vol.Q1")
     with pytest.raises(SolverError, match=r"failed at t = .* vol\.p"):
@@ -148,7 +148,7 @@ def test_bad_parameters_are_named() -> None:
     with pytest.raises(ParameterError, match=r"load\.m = '-2 kg'.*expected > 0 kg"):
         c.Mass("load", m="-2 kg")
     with pytest.raises(ParameterError, match=r"cyl\.beta.*expected > 0"):
-        c.Cylinder("cyl", beta=-1.0)
+        c.Cylinder("cyl", beta_e=-1.0)
     with pytest.raises(ParameterError, match="unknown parameter"):
         c.Mass("load", mass=3.0)
     with pytest.raises(ParameterError, match="expected one of constant, lee, eggerth"):
@@ -196,13 +196,13 @@ def test_sources() -> None:
     s.add(c.Sine("sine", amplitude=1.0, frequency=2.0))
     s.add(c.Square("square", amplitude=1.0, frequency=2.0))
     s.add(c.Table("table", times=[0.0, 1.0], values=[0.0, 10.0]))
-    s.add(c.Sum("sum", k1=1.0, k2=1.0))
-    s.add(c.Lag("lag", T=1.0))
+    s.add(c.Sum("sum", gain1=1.0, gain2=1.0))
+    s.add(c.Lag("lag", tau=1.0))
     s.connect("step.y", "sum.u1")
     s.connect("ramp.y", "sum.u2")
     s.connect("sum.y", "lag.u")
     for name in ("sine", "square", "table"):
-        s.add(c.Lag(f"l_{name}", T=1.0))
+        s.add(c.Lag(f"l_{name}", tau=1.0))
         s.connect(f"{name}.y", f"l_{name}.u")
     r = s.simulate(t_eval=[0.0, 0.3, 0.4, 0.6, 0.9, 1.0])
     np.testing.assert_allclose(r["step.y"], [0, 0, 0, 2, 2, 2])

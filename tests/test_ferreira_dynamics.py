@@ -1,8 +1,9 @@
-"""Seed 000 spool dynamics: Fig. 11 model, amplitude-dependent frequency response, Bode identification.
+"""The spool dynamics of FerreiraND: Fig. 11 model, amplitude-dependent frequency response, Bode identification.
 
-The published fit (section 6): omega_n = 1007 rad/s, xi = 0.48, L_v = 125 1/s,
-L_a = 81184 1/s^2, delay 7.625e-4 s. The manufacturer's curves are not
-available, so identification is proven on data generated from these values.
+The published fit (section 6, the parameter set ``FerreiraND``): omega_n =
+1007 rad/s, xi = 0.48, L_v = 125 1/s, L_a = 81184 1/s^2, delay 7.625e-4 s.
+The manufacturer's curves are not available, so identification is proven on
+data generated from these values.
 """
 
 from __future__ import annotations
@@ -13,14 +14,14 @@ import pytest
 import hydroservo as hs
 from hydroservo.analysis import FrequencyResponse, sine_response
 from hydroservo.components import Sine, SpoolRateLimited
-from hydroservo.components.proportional import rate_limited_spool
 from hydroservo.errors import ParameterError
 from hydroservo.identification import fit_spool_dynamics, spool_response
-from hydroservo.parameters import ferreira_000 as paper
+from hydroservo.io import read_bode
+from hydroservo.laws.spool_dynamics import rate_limited_spool_acceleration as rate_limited_spool
+from hydroservo.validation.ferreira import bode_grid, published_dynamics
 
-PUBLISHED = {"omega_n": 1007.0, "zeta": 0.48, "L_v": 125.0, "L_a": 81184.0, "delay": 7.625e-4}
-AMPS = np.array(paper.BODE_AMPLITUDES) / 100.0
-FREQS = np.array(paper.BODE_FREQUENCIES)
+PUBLISHED = published_dynamics()
+AMPS, FREQS = bode_grid()
 
 
 def spool_system(delay_model: str = "none") -> hs.System:
@@ -35,7 +36,7 @@ def test_limiters_have_unit_gain_at_the_origin() -> None:
     """Small signals see the plain second order: the Jacobian at rest is [[0, 1], [-wn^2, -2 xi wn]]."""
     s = spool_system()
     model = s.build()
-    A = model.linearize(np.zeros(2), s._p(None))
+    A = model.linearize(np.zeros(2), s.parameter_vector())
     wn, z = PUBLISHED["omega_n"], PUBLISHED["zeta"]
     np.testing.assert_allclose(A, [[0.0, 1.0], [-(wn**2), -2 * z * wn]], rtol=1e-12)
     # and the limits themselves: acceleration saturates at L_a, velocity demand at L_v
@@ -103,7 +104,7 @@ def test_identification_round_trip(published_bode: FrequencyResponse) -> None:
 def test_lower_fidelities_are_fitted_by_the_same_routine(published_bode: FrequencyResponse) -> None:
     second = fit_spool_dynamics(published_bode, "second-order")
     first = fit_spool_dynamics(published_bode, "first-order")
-    assert set(second.params) == {"omega_n", "zeta", "delay"} and set(first.params) == {"T", "delay"}
+    assert set(second.params) == {"omega_n", "zeta", "delay"} and set(first.params) == {"tau", "delay"}
     # a linear model cannot follow amplitude-dependent data: errors of several dB where rate limits act
     assert second.max_gain_error(200.0) > 3.0 and first.max_gain_error(200.0) > 3.0
     assert second.cost < first.cost * 1.5
@@ -111,19 +112,19 @@ def test_lower_fidelities_are_fitted_by_the_same_routine(published_bode: Frequen
 
 def test_bode_csv_round_trip_and_bad_files(tmp_path, published_bode: FrequencyResponse) -> None:
     path = published_bode.to_csv(tmp_path / "bode.csv")
-    back = FrequencyResponse.from_csv(path)
+    back = read_bode(path)
     np.testing.assert_allclose(back.gain_db, published_bode.gain_db, rtol=1e-9)
     np.testing.assert_allclose(back.amplitudes, AMPS)
     bad = tmp_path / "bad.csv"
     bad.write_text("frequency [Hz],gain [dB]\n10,0.1\n")
     with pytest.raises(ParameterError, match="missing column.*amplitude"):
-        FrequencyResponse.from_csv(bad)
+        read_bode(bad)
     bad.write_text("frequency [rad/s],amplitude [%],gain [dB]\n10,5,0.1\n")
     with pytest.raises(ParameterError, match="expected unit \\[hz\\]"):
-        FrequencyResponse.from_csv(bad)
+        read_bode(bad)
     bad.write_text("frequency [Hz],amplitude [%],gain [dB]\n10,5,0.1\n20,25,0.1\n")
     with pytest.raises(ParameterError, match="every amplitude at every frequency"):
-        FrequencyResponse.from_csv(bad)
+        read_bode(bad)
     with pytest.raises(ParameterError, match="fractions of the stroke"):
         spool_response(PUBLISHED, [5.0], [10.0])
 

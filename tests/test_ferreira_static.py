@@ -1,8 +1,9 @@
-"""Seed 000 static model: pseudo-sections, characteristics, datasheet fit.
+"""The static model of FerreiraND: pseudo-sections, characteristics, datasheet fit.
 
-Published values are those of seed 000 section 5 (KBSDG4V-3). The paper
-prints four significant digits; the tolerance is one unit in the last printed
-digit (alpha = 4.2415 is printed 4.241: truncated, not rounded).
+Published values are those of FerreiraND section 5 (KBSDG4V-3), read from the
+package's parameter set ``FerreiraND`` (one source for the printed values).
+The paper prints four significant digits; the tolerance is one unit in the
+last printed digit (alpha = 4.2415 is printed 4.241: truncated, not rounded).
 """
 
 from __future__ import annotations
@@ -10,59 +11,51 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from hydroservo import pseudo_sections as ps
+from hydroservo.components import PseudoSectionValve
+from hydroservo.data import parameter_set
 from hydroservo.errors import ParameterError
 from hydroservo.identification import Datasheet, fit_datasheet
-from hydroservo.identification.datasheet import characteristics
-from hydroservo.parameters import ferreira_000 as paper
+from hydroservo.laws import pseudo_section as ps
+from hydroservo.laws.orifice import turbulent_flow
 from hydroservo.units import to_si
+from hydroservo.validation import printed_digit
+
+PAPER = parameter_set("FerreiraND")
+DATASHEET = PAPER.table("datasheet")
 
 LPM_SQRT_BAR = to_si("1 L/min/bar^0.5", "m^3/s/Pa^0.5")
 LPM2_BAR = to_si("1 (L/min)^2/bar", "m^6/s^2/Pa")
 
 
-def published(values: dict[str, float]) -> dict[str, float]:
-    return {
-        k: to_si(
-            v, "m^6/s^2/Pa" if k in ("k3", "k4", "k5") else "m^3/s/Pa^0.5" if k not in ("k", "x_t") else "", what=k
-        )
-        for k, v in values.items()
-    }
+def published(structure: str) -> dict[str, float]:
+    """The printed pseudo-section parameters of ``structure`` (SI)."""
+    return {k: PAPER.si(structure, k, ps.PARAMETER_UNITS[k]) for k in ps.PARAMETER_NAMES[structure]}
 
 
-def one_digit(printed: str) -> float:
-    """One unit in the last printed digit of a value printed as ``printed``."""
-    mant = printed.lower().split("e")[0]
-    exp = int(printed.lower().split("e")[1]) if "e" in printed.lower() else 0
-    decimals = len(mant.split(".")[1]) if "." in mant else 0
-    return 10.0 ** (exp - decimals)
+def printed(structure: str) -> dict[str, str]:
+    """The printed pseudo-section parameters of ``structure``, as printed."""
+    table = PAPER.table(structure)
+    return {k: str(table[k]) for k in ps.PARAMETER_NAMES[structure]}
 
 
 def test_variable_structure_published_parameters() -> None:
-    fit = fit_datasheet(paper.DATASHEET, "variable", "pressure-gain,leakage")
+    fit = fit_datasheet(DATASHEET, "variable", "pressure-gain,leakage")
     got = fit.in_paper_units()
-    for name, printed in {
-        "k": "36.5",
-        "gamma": "0.1149",
-        "alpha": "4.241",
-        "beta": "6.877e-2",
-        "x_t": "3.858e-2",
-    }.items():
-        assert got[name] == pytest.approx(float(printed), abs=one_digit(printed)), name
+    for name, text in printed("variable").items():
+        assert got[name] == pytest.approx(float(text.split()[0]), abs=printed_digit(text)), name
 
 
 def test_fixed_structure_published_parameters() -> None:
-    fit = fit_datasheet(paper.DATASHEET, "fixed", "pressure-gain,flow-gain")
+    fit = fit_datasheet(DATASHEET, "fixed", "pressure-gain,flow-gain")
     got = fit.in_paper_units()
-    printed = {"k1": "-2.142", "k2": "5.818e-3", "k3": "4.604", "k4": "-5.554e-2", "k5": "1.534e-2"}
-    for name, text in printed.items():
-        assert got[name] == pytest.approx(float(text), abs=one_digit(text)), name
+    for name, text in printed("fixed").items():
+        assert got[name] == pytest.approx(float(text.split()[0]), abs=printed_digit(text)), name
 
 
 @pytest.mark.parametrize("structure", ["variable", "fixed"])
 @pytest.mark.parametrize("match", ["pressure-gain,leakage", "pressure-gain,flow-gain", "flow-gain,leakage"])
 def test_every_fit_reproduces_what_it_matches(structure: str, match: str) -> None:
-    fit = fit_datasheet(paper.DATASHEET, structure, match)
+    fit = fit_datasheet(DATASHEET, structure, match)
     matched = {"pressure-gain": "K_p0", "flow-gain": "K_q0", "leakage": "q_lk0"}
     for name in ["Q_n", *(matched[m] for m in match.split(","))]:
         assert abs(fit.deviation[name]) < 1e-6, name
@@ -74,8 +67,8 @@ def test_every_fit_reproduces_what_it_matches(structure: str, match: str) -> Non
 def test_published_sets_reproduce_the_datasheet() -> None:
     """The printed parameters themselves give the datasheet values (to their printed precision)."""
     P_n, P_s = to_si("35 bar", "Pa"), to_si("70 bar", "Pa")
-    var = characteristics("variable", published(paper.VARIABLE), P_n, P_s)
-    fix = characteristics("fixed", published(paper.FIXED), P_n, P_s)
+    var = PseudoSectionValve("v", structure="variable").replace(**published("variable")).characteristics(P_n, P_s)
+    fix = PseudoSectionValve("v", structure="fixed").replace(**published("fixed")).characteristics(P_n, P_s)
     lpm = to_si("1 L/min", "m^3/s")
     assert var["Q_n"] / lpm == pytest.approx(25.5, rel=2e-4)
     assert var["K_p0"] == pytest.approx(36.5, rel=1e-9)
@@ -84,7 +77,7 @@ def test_published_sets_reproduce_the_datasheet() -> None:
     assert fix["K_q0"] / lpm == pytest.approx(28.0, rel=5e-4)
     assert fix["K_p0"] == pytest.approx(36.5, rel=5e-4)
     # zero leakage and zero leakage slope at x_s = 1 (eqs. 39-40): A_n(1) and its slope vanish
-    p = published(paper.FIXED)
+    p = published("fixed")
     h = 1e-5
     An = ps.fixed_structure(-np.array([1.0 - h, 1.0]), **p)
     assert abs(An[1]) < 1e-4 * p["k3"] ** 0.5
@@ -93,7 +86,7 @@ def test_published_sets_reproduce_the_datasheet() -> None:
 
 def test_variable_structure_continuous_in_value_and_slope_at_x_t() -> None:
     for match in ("pressure-gain,leakage", "pressure-gain,flow-gain", "flow-gain,leakage"):
-        p = fit_datasheet(paper.DATASHEET, "variable", match).params
+        p = fit_datasheet(DATASHEET, "variable", match).params
         xt, h = p["x_t"], 1e-7
         left = ps.variable_structure(np.array([xt - h, xt]), **p)
         right = ps.variable_structure(np.array([xt + 1e-15, xt + h]), **p)
@@ -103,7 +96,7 @@ def test_variable_structure_continuous_in_value_and_slope_at_x_t() -> None:
 
 def test_core_region_closed_forms() -> None:
     """Eqs. 25, 28 and 30 in the exponential core follow from eqs. 9, 13, 27."""
-    p = published(paper.VARIABLE)
+    p = published("variable")
     x = np.linspace(-0.9, 0.9, 19) * p["x_t"]
     A_p, A_n = ps.pseudo_sections(x, "variable", p)
     P_s = 7e6
@@ -137,7 +130,7 @@ def test_eq23_holds_for_any_pseudo_sections() -> None:
 
 def test_leakage_and_pressure_equations_agree() -> None:
     """Eqs. 16, 17 and 27 give the same leakage; eq. 21 gives zero load flow at the blocked-port pressure."""
-    p = published(paper.FIXED)
+    p = published("fixed")
     x = np.linspace(-0.06, 0.06, 25)
     A_p, A_n = ps.pseudo_sections(x, "fixed", p)
     P_s = 7e6
@@ -156,7 +149,7 @@ def test_leakage_and_pressure_equations_agree() -> None:
 
 
 def test_sections_from_measurements_invert_the_model() -> None:
-    p = published(paper.VARIABLE)
+    p = published("variable")
     x = np.linspace(-0.06, 0.06, 41)
     A_p, A_n = ps.pseudo_sections(x, "variable", p)
     P_s = 7e6
@@ -176,11 +169,11 @@ def test_general_case_reduces_to_matched() -> None:
     q_1t, q_2t = A[2] * np.sqrt(4e6), A[3] * np.sqrt(5e6)
     np.testing.assert_allclose(got, [q_s1 - q_1t, q_s2 - q_2t, q_s1 + q_s2, q_1t + q_2t])
     # reversed drop: the flow reverses (sign of eq. 1)
-    assert ps.orifice_flow(1e-8, -4e6) == pytest.approx(-2e-5)
+    assert turbulent_flow(1e-8, -4e6) == pytest.approx(-2e-5)
 
 
 def test_bad_datasheets_are_refused_with_clear_messages() -> None:
-    good = dict(paper.DATASHEET)
+    good = dict(DATASHEET)
     with pytest.raises(ParameterError, match="exactly two"):
         fit_datasheet(good, match="pressure-gain,flow-gain,leakage")
     with pytest.raises(ParameterError, match="Q_n = -.*positive"):
@@ -201,8 +194,8 @@ def test_bad_datasheets_are_refused_with_clear_messages() -> None:
 
 def test_fixed_structure_with_a_measured_far_leakage() -> None:
     """Eqs. 39-40 at x_s* = 0.04: leakage and slope there, taken from the x_s = 1 fit, give that fit back."""
-    pub = fit_datasheet(paper.DATASHEET, "fixed", "pressure-gain,flow-gain").params
-    base = Datasheet.from_mapping(paper.DATASHEET)
+    pub = fit_datasheet(DATASHEET, "fixed", "pressure-gain,flow-gain").params
+    base = Datasheet.from_mapping(DATASHEET)
     P_s, xf, h = base.P_s, 0.04, 1e-6
     A_n = ps.fixed_structure(-np.array([xf - h, xf, xf + h]), **pub)
     ds = Datasheet(
@@ -217,7 +210,7 @@ def test_fixed_structure_with_a_measured_far_leakage() -> None:
     for k, v in pub.items():
         assert fix.params[k] == pytest.approx(v, rel=1e-6, abs=1e-9 * pub["k3"] ** 0.5), k
     # a far leakage the hyperbola cannot reach without a negative section is refused, not returned
-    var = fit_datasheet(paper.DATASHEET, "variable")
+    var = fit_datasheet(DATASHEET, "variable")
     A_v = var.sections(np.array([xf - h, xf, xf + h]))[1]
     bad = Datasheet(
         **{
@@ -233,7 +226,7 @@ def test_fixed_structure_with_a_measured_far_leakage() -> None:
 
 def synthetic_curves(noise: float, seed: int = 1) -> tuple[dict[str, np.ndarray], Datasheet, dict[str, float]]:
     """Blocked-port and connected-port curves of the published variable model over +-6 %, with relative noise."""
-    true = fit_datasheet(paper.DATASHEET, "variable")
+    true = fit_datasheet(DATASHEET, "variable")
     ds = true.datasheet
     x = np.linspace(-0.06, 0.06, 49)
     A_p, A_n = true.sections(x)

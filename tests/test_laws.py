@@ -8,9 +8,10 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from hydroservo import fluids, orifices
 from hydroservo.errors import ParameterError
-from hydroservo.friction import stribeck
+from hydroservo.laws import fluid as fluids
+from hydroservo.laws import four_way, orifice
+from hydroservo.laws.friction import stribeck
 
 BAR = 1e5
 
@@ -80,15 +81,15 @@ def test_density_linear() -> None:
 # -- orifice law -------------------------------------------------------------------
 def test_unregularised_law_is_turbulent_law() -> None:
     dp = np.array([-50e5, -1e5, 0.0, 2e5, 70e5])
-    q = orifices.orifice_flow(1e-5, dp, 870.0, Cd=0.6)
+    q = orifice.orifice_flow(1e-5, dp, 870.0, Cd=0.6)
     np.testing.assert_allclose(q, 0.6 * 1e-5 * np.sqrt(2 * np.abs(dp) / 870.0) * np.sign(dp))
 
 
 def test_regularised_law_approaches_turbulent_law() -> None:
     p_tr = 1e5
     dp = np.geomspace(3e5, 3e7, 20)
-    reg = orifices.orifice_flow(1e-5, dp, 870.0, 0.6, p_tr)
-    turb = orifices.orifice_flow(1e-5, dp, 870.0, 0.6)
+    reg = orifice.orifice_flow(1e-5, dp, 870.0, 0.6, p_tr)
+    turb = orifice.orifice_flow(1e-5, dp, 870.0, 0.6)
     rel = np.abs(reg / turb - 1.0)
     # exact bound of the relative deviation: 1 - (1 + (p_tr/dp)^2)^(-1/4) <= (p_tr/dp)^2 / 4
     assert np.all(rel <= (p_tr / dp) ** 2 / 4 * (1 + 1e-12))
@@ -97,7 +98,7 @@ def test_regularised_law_approaches_turbulent_law() -> None:
 
 def test_regularised_law_is_smooth_odd_and_increasing() -> None:
     dp = ca.SX.sym("dp")
-    q = orifices.orifice_flow(1e-5, dp, 870.0, 0.6, 2e5)
+    q = orifice.orifice_flow(1e-5, dp, 870.0, 0.6, 2e5)
     f = ca.Function("f", [dp], [q, ca.jacobian(q, dp)])
     grid = np.concatenate([np.linspace(-5e6, 5e6, 2001), [0.0, 1e-9, -1e-9]])
     vals, slopes = (np.asarray(v).ravel() for v in f.map(grid.size)(grid))
@@ -109,33 +110,33 @@ def test_regularised_law_is_smooth_odd_and_increasing() -> None:
 
 
 def test_transition_pressure_is_inverse_of_flow_number() -> None:
-    p_tr = orifices.transition_pressure(0.8e-3, 850.0, 20e-6, 1000.0)
-    assert orifices.flow_number(0.8e-3, p_tr, 850.0, 20e-6) == pytest.approx(1000.0)
+    p_tr = orifice.transition_pressure(0.8e-3, 850.0, 20e-6, 1000.0)
+    assert orifice.flow_number(0.8e-3, p_tr, 850.0, 20e-6) == pytest.approx(1000.0)
 
 
 def test_catalogue_flow_coefficient() -> None:
-    cv = orifices.flow_coefficient_from_catalogue(40 / 60000, 35e5, 1e-3)
+    cv = orifice.flow_coefficient_from_catalogue(40 / 60000, 35e5, 1e-3)
     q = cv * 1e-3 * np.sqrt(35e5)
     assert q == pytest.approx(40 / 60000)
     with pytest.raises(ParameterError, match="x_max"):
-        orifices.flow_coefficient_from_catalogue(1e-3, 35e5, 0.0)
+        orifice.flow_coefficient_from_catalogue(1e-3, 35e5, 0.0)
 
 
 def test_four_way_valve_critical_centre_and_overlap() -> None:
     args = dict(p_S=200e5, p_T=0.0, p_A=80e5, p_B=60e5, c_v=2e-7)
-    QA, QB, QS, QT = orifices.four_way_valve_flows(0.0, **args)
+    QA, QB, QS, QT = four_way.four_way_valve_flows(0.0, **args)
     assert QA == 0 and QB == 0 and QS == 0 and QT == 0
-    QA, QB, QS, QT = orifices.four_way_valve_flows(3e-4, **args)
+    QA, QB, QS, QT = four_way.four_way_valve_flows(3e-4, **args)
     assert QA == pytest.approx(2e-7 * 3e-4 * np.sqrt(120e5))
     assert QB == pytest.approx(-2e-7 * 3e-4 * np.sqrt(60e5))
     assert QS == pytest.approx(QA) and QT == pytest.approx(-QB)
     # overlap: dead band of x_o, then the same law shifted (seed 001 eqs. 3.19-3.21)
     over = dict(args, x_PA=1e-4, x_AT=1e-4, x_PB=1e-4, x_BT=1e-4)
-    assert orifices.four_way_valve_flows(0.9e-4, **over)[0] == 0
-    assert orifices.four_way_valve_flows(4e-4, **over)[0] == pytest.approx(QA)
+    assert four_way.four_way_valve_flows(0.9e-4, **over)[0] == 0
+    assert four_way.four_way_valve_flows(4e-4, **over)[0] == pytest.approx(QA)
     # underlap: both edges open at null, supply leaks to tank through the bridge
     under = dict(args, x_PA=-5e-5, x_AT=-5e-5, x_PB=-5e-5, x_BT=-5e-5)
-    _, _, QS0, QT0 = orifices.four_way_valve_flows(0.0, **under)
+    _, _, QS0, QT0 = four_way.four_way_valve_flows(0.0, **under)
     assert QS0 > 0 and QT0 > 0
     # reverse flow when a port is above supply (seed 003 eq. 3-18a)
-    assert orifices.four_way_valve_flows(3e-4, **dict(args, p_A=250e5))[0] < 0
+    assert four_way.four_way_valve_flows(3e-4, **dict(args, p_A=250e5))[0] < 0

@@ -3,17 +3,17 @@
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import numpy as np
 import pytest
 
 import hydroservo as hs
 from hydroservo.cli import main
+from hydroservo.data import example_files
 from hydroservo.errors import ModelFileError
-from hydroservo.modelfile import model_to_toml, read_model
+from hydroservo.io import model_to_toml, read_model
 
-VALVE_CYLINDER = (Path(__file__).resolve().parents[1] / "docs" / "examples" / "valve_cylinder.toml").read_text()
+VALVE_CYLINDER = example_files()["valve_cylinder.toml"]
 
 
 @pytest.fixture

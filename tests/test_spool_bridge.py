@@ -1,9 +1,9 @@
-"""Seed 002 valve: the staged-slot bridge on a test bench, its component, identification and CLI.
+"""The staged-slot valve of MareAttarND on a test bench, its component, identification and CLI.
 
-The valve is hydroservo's example aerospace geometry
-(:mod:`hydroservo.parameters.mare_attar_002`; the paper publishes none), so
-these tests check properties of the model and the tools, not published values;
-the comparison with the paper's Table 2 is in docs/validation.md.
+The valve is hydroservo's example aerospace geometry (the parameter set
+``MareAttarND_example``; the paper publishes none), so these tests check
+properties of the model and the tools, not published values; the comparison
+with the paper's Table 2 is in docs/validation.md.
 """
 
 from __future__ import annotations
@@ -17,9 +17,8 @@ import numpy as np
 import pytest
 
 import hydroservo as hs
-from hydroservo.analysis.bench import (
+from hydroservo.analysis.static_bench import (
     Bench,
-    SpoolBridge,
     bench_curves,
     blocked_ports,
     flow_gain,
@@ -27,15 +26,21 @@ from hydroservo.analysis.bench import (
     temperature_table,
 )
 from hydroservo.cli import main
-from hydroservo.components import ConstantPressure, MareSpoolValve, Step
-from hydroservo.components.spool import DP_SMOOTH
+from hydroservo.components import ConstantPressure, StagedSlotValve, Step
+from hydroservo.data import example_files
 from hydroservo.errors import ParameterError
-from hydroservo.identification.bridge import LOW_GAIN, identify_bridge, noisy_curves
-from hydroservo.identification.files import read_bench_curves, read_spool_valve, spool_valve_toml, write_bench_curves
-from hydroservo.parameters.mare_attar_002 import EXAMPLE_BENCH, EXAMPLE_VALVE
+from hydroservo.identification.staged_slot import LOW_GAIN, identify_staged_slot, noisy_curves
+from hydroservo.io import (
+    read_bench_curves,
+    read_model,
+    read_staged_slot_valve,
+    staged_slot_valve_toml,
+    write_bench_curves,
+)
 
-VALVE = SpoolBridge.from_component(MareSpoolValve("v", **EXAMPLE_VALVE))
-BENCH = Bench.from_mapping(EXAMPLE_BENCH)
+VALVE, _BENCH = read_staged_slot_valve("aerospace-example")
+assert _BENCH is not None
+BENCH: Bench = _BENCH
 #: The start of the identification: every fitted parameter 30-40 % away from the truth.
 START_FACTORS = {
     "X_a0": 1.3,
@@ -60,7 +65,7 @@ def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
     return code, out.out, out.err
 
 
-def symmetric(lap: float = 0.4e-6) -> SpoolBridge:
+def symmetric(lap: float = 0.4e-6) -> StagedSlotValve:
     laps = {f"X_{i}0": lap for i in "abcd"} | {f"X_{i}0H": -100e-6 for i in "abcd"}
     return VALVE.replace(**laps)
 
@@ -83,15 +88,15 @@ def test_useport_pressure_below_half_supply_with_more_return_underlap() -> None:
 
 def test_bench_solver_balances_every_opening_including_null() -> None:
     X = np.concatenate([np.linspace(-1, 1, 401), [0.0, 1e-12, -1e-12]]) * BENCH.X_n
-    props = VALVE.props(-40.0, BENCH)
+    props = VALVE.fluid_properties(BENCH.P_s, BENCH.P_r, -40.0)
     P1, P2, lk = blocked_ports(VALVE, -40.0, BENCH, X)
     assert np.all(np.isfinite(P1)) and np.all((P1 >= 0) & (P1 <= BENCH.P_s)) and np.all(lk > 0)
-    qa, qb = VALVE.flow("a", X, BENCH.P_s, P1, props), VALVE.flow("b", X, P1, 0.0, props)
+    qa, qb = VALVE.orifice_flow("a", X, BENCH.P_s, P1, props), VALVE.orifice_flow("b", X, P1, 0.0, props)
     # blocked port 1: what a brings, b takes (to 1e-5 of the flow where P1 sits within 2e-5 Pa of P_r)
     assert np.max(np.abs(qa - qb) / (qa + qb)) < 1e-5
     Q_L, Pc = flow_gain(VALVE, -40.0, BENCH, X)
-    q = {i: VALVE.flow(i, X, *nodes, props) for i, nodes in (("a", (BENCH.P_s, Pc)), ("b", (Pc, 0.0)))}
-    q |= {i: VALVE.flow(i, X, *nodes, props) for i, nodes in (("c", (BENCH.P_s, Pc)), ("d", (Pc, 0.0)))}
+    q = {i: VALVE.orifice_flow(i, X, *nodes, props) for i, nodes in (("a", (BENCH.P_s, Pc)), ("b", (Pc, 0.0)))}
+    q |= {i: VALVE.orifice_flow(i, X, *nodes, props) for i, nodes in (("c", (BENCH.P_s, Pc)), ("d", (Pc, 0.0)))}
     assert np.max(np.abs(q["a"] + q["c"] - q["b"] - q["d"])) < 1e-9 * np.max(np.abs(Q_L))
     n = 401  # the sorted part: monotone characteristics
     assert np.all(np.diff(Q_L[:n]) > 0) and np.all(np.diff(P1[:n] - P2[:n]) >= 0)
@@ -117,14 +122,14 @@ def test_component_flows_are_the_bridge_law_and_differentiable_at_zero_drop() ->
     s.add(ConstantPressure("supply", p="3000 psi"))
     s.add(Step("pA", unit="Pa", amplitude="120 bar"))
     s.add(Step("pB", unit="Pa", amplitude="60 bar"))
-    s.add(MareSpoolValve("valve", **EXAMPLE_VALVE, T="32 degC"))
+    s.add(StagedSlotValve("valve", temperature="32 degC"))
     for src, dst in (("x.y", "valve.xv"), ("supply.p", "valve.pS"), ("pA.y", "valve.pA"), ("pB.y", "valve.pB")):
         s.connect(src, dst)
     res = s.simulate(t_end=1e-3, n_points=2)
-    props = VALVE.props(32.0, Bench(P_s=to_pa("3000 psi"), X_n=4e-4))
+    props = VALVE.fluid_properties(to_pa("3000 psi"), 0.0, 32.0)
     X, Ps, pA, pB = 10e-6, to_pa("3000 psi"), 120e5, 60e5
-    qa, qb = VALVE.flow("a", X, Ps, pA, props), VALVE.flow("b", X, pA, 0.0, props)
-    qc, qd = VALVE.flow("c", X, Ps, pB, props), VALVE.flow("d", X, pB, 0.0, props)
+    qa, qb = VALVE.orifice_flow("a", X, Ps, pA, props), VALVE.orifice_flow("b", X, pA, 0.0, props)
+    qc, qd = VALVE.orifice_flow("c", X, Ps, pB, props), VALVE.orifice_flow("d", X, pB, 0.0, props)
     assert res.get("valve.QA")[-1] == pytest.approx(qa - qb, rel=1e-9)
     assert res.get("valve.QS")[-1] == pytest.approx(qa + qc, rel=1e-9)
     assert res.get("valve.QT")[-1] == pytest.approx(qb + qd, rel=1e-9)
@@ -135,10 +140,10 @@ def test_component_flows_are_the_bridge_law_and_differentiable_at_zero_drop() ->
     dQ = ca.Function("dQ", list(u.values()), [ca.jacobian(QA, u["pA"])])
     slope = float(dQ(0.0, 100e5, 0.0, 100e5, 0.0))
     assert np.isfinite(slope) and slope < 0
-    h = 10.0 * DP_SMOOTH
+    h = 10.0 * comp.values["p_tr"]
 
     def q_A(pA: float) -> float:
-        return float(VALVE.flow("a", 0.0, 100e5, pA, props) - VALVE.flow("b", 0.0, pA, 0.0, props))
+        return float(VALVE.orifice_flow("a", 0.0, 100e5, pA, props) - VALVE.orifice_flow("b", 0.0, pA, 0.0, props))
 
     assert slope == pytest.approx((q_A(100e5 + h) - q_A(100e5 - h)) / (2 * h), rel=1e-3)
 
@@ -150,27 +155,27 @@ def to_pa(text: str) -> float:
 
 
 def test_mineral_oil_component_builds_symbolically() -> None:
-    comp = MareSpoolValve("v", fluid="iso-vg46", T="40 degC")
+    comp = StagedSlotValve("v", fluid="iso-vg46", temperature="40 degC")
     u = {k: ca.SX.sym(k) for k in ("xv", "pS", "pT", "pA", "pB")}
     T = ca.SX.sym("T")
-    out = comp.output_equations(0.0, {}, u, {**comp.values, "T": T})
+    out = comp.output_equations(0.0, {}, u, {**comp.values, "temperature": T})
     f = ca.Function("f", [*u.values(), T], [out["QS"]])
     assert float(f(0.0, 200e5, 0.0, 100e5, 100e5, 40.0)) > 0
 
 
 def test_valve_parameters_refuse_wrong_signs() -> None:
     with pytest.raises(ParameterError, match=r"X_a0H = .*expected ≤ 0"):
-        MareSpoolValve("v", X_a0H="5 um")
+        StagedSlotValve("v", X_a0H="5 um")
     with pytest.raises(ParameterError, match=r"v\.c = .*expected > 0"):
-        MareSpoolValve("v", c="-1 um")
+        StagedSlotValve("v", c="-1 um")
     with pytest.raises(ParameterError, match="w_H .* < w_L"):
-        MareSpoolValve("v", w_L="5 mm", w_H="4 mm").check()
+        StagedSlotValve("v", w_L="5 mm", w_H="4 mm").check()
     with pytest.raises(ParameterError, match="P_s > P_r"):
         Bench(P_s=1e5, X_n=1e-3, P_r=2e5)
 
 
-def _start() -> SpoolBridge:
-    return VALVE.replace(**{k: VALVE.params[k] * f for k, f in START_FACTORS.items()})
+def _start() -> StagedSlotValve:
+    return VALVE.replace(**{k: VALVE.values[k] * f for k, f in START_FACTORS.items()})
 
 
 def test_identification_round_trip_without_noise() -> None:
@@ -180,13 +185,13 @@ def test_identification_round_trip_without_noise() -> None:
     from the flow-gain curve; see hydroservo.identification.bridge), so the
     pair's mean is what must come back.
     """
-    res = identify_bridge(bench_curves(VALVE, -15.0, BENCH), _start())
+    res = identify_staged_slot(bench_curves(VALVE, -15.0, BENCH), _start())
     for name in LOW_GAIN:
-        assert res.valve.params[name] == pytest.approx(VALVE.params[name], rel=1e-3), name
+        assert res.valve.values[name] == pytest.approx(VALVE.values[name], rel=1e-3), name
     for a, b in (("X_a0H", "X_d0H"), ("X_b0H", "X_c0H")):
-        mean = 0.5 * (VALVE.params[a] + VALVE.params[b])
-        assert res.valve.params[a] == res.valve.params[b] == pytest.approx(mean, rel=1e-3)
-    assert res.valve.params["lambda_tH"] == pytest.approx(VALVE.params["lambda_tH"], rel=1e-3)
+        mean = 0.5 * (VALVE.values[a] + VALVE.values[b])
+        assert res.valve.values[a] == res.valve.values[b] == pytest.approx(mean, rel=1e-3)
+    assert res.valve.values["lambda_tH"] == pytest.approx(VALVE.values["lambda_tH"], rel=1e-3)
     assert max(abs(v) for v in res.errors.values()) < 2e-3
 
 
@@ -198,8 +203,8 @@ def test_identification_with_one_percent_noise_predicts_other_temperatures() -> 
     metrics, 3 % (3 standard deviations of the worst one, the high flow gain at -40 degC: 1.0 %).
     """
     data = noisy_curves(bench_curves(VALVE, -15.0, BENCH), 0.01, seed=7)
-    res = identify_bridge(data, _start())
-    p, true = res.valve.params, VALVE.params
+    res = identify_staged_slot(data, _start())
+    p, true = res.valve.values, VALVE.values
     for name in ("c", "Cq_inf", "lambda_tL"):
         assert p[name] == pytest.approx(true[name], rel=0.02), name
     for i in "abcd":
@@ -243,16 +248,16 @@ def test_characteristics_and_identify_cli(tmp_path: Path, capsys: pytest.Capture
     for f in data["files"].values():
         assert Path(f).stat().st_size > 0
     start = tmp_path / "start.toml"
-    start.write_text(spool_valve_toml(_start().params, "skydrol", None))
+    start.write_text(staged_slot_valve_toml(_start(), None))
     code, out, _ = run(
         capsys, "valve", "identify", data["files"]["T-15_flow_gain"], data["files"]["T-15_blocked_ports"],
         "--start", str(start), "--predict", "-40", "--out", str(tmp_path / "id"), "--json",
     )  # fmt: skip
     assert code == 0
     res = json.loads(out)
-    assert res["identified"]["c"] == pytest.approx(VALVE.params["c"], rel=1e-3)
-    comp, bench = read_spool_valve(res["files"]["parameters"])
-    assert comp.values["Cq_inf"] == pytest.approx(VALVE.params["Cq_inf"], rel=1e-3)
+    assert res["identified"]["c"] == pytest.approx(VALVE.values["c"], rel=1e-3)
+    comp, bench = read_staged_slot_valve(res["files"]["parameters"])
+    assert comp.values["Cq_inf"] == pytest.approx(VALVE.values["Cq_inf"], rel=1e-3)
     assert bench.P_s == pytest.approx(BENCH.P_s, rel=1e-14)
 
 
@@ -275,9 +280,8 @@ def test_spool_cli_bad_input_exits_2(
 
 
 def test_wrong_sign_lap_in_a_parameter_file_exits_2(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    params = dict(VALVE.params) | {"X_b0H": 3e-6}
     path = tmp_path / "v.toml"
-    path.write_text(spool_valve_toml(params, "skydrol", BENCH))
+    path.write_text(staged_slot_valve_toml(VALVE.replace(check=False, X_b0H=3e-6), BENCH))
     code, _, err = run(capsys, "valve", "characteristics", str(path), "--out", str(tmp_path))
     assert code == 2 and "X_b0H" in err and "expected ≤ 0" in err
     curves = tmp_path / "c.csv"
@@ -286,10 +290,10 @@ def test_wrong_sign_lap_in_a_parameter_file_exits_2(tmp_path: Path, capsys: pyte
     assert code == 2 and "P_1 and P_2" in err
 
 
-def test_example_model_file_simulates_the_valve_in_a_circuit() -> None:
-    from hydroservo.modelfile import read_model
-
-    system = read_model(Path(__file__).parents[1] / "docs" / "examples" / "mare_valve_cylinder.toml")
+def test_example_model_file_simulates_the_valve_in_a_circuit(tmp_path: Path) -> None:
+    path = tmp_path / "model.toml"
+    path.write_text(example_files()["staged_slot_valve_cylinder.toml"])
+    system = read_model(path)
     res = system.simulate(n_points=301)
     A_A = system["cyl"].values["A_A"]
     v_end, QA_end = res.get("load.v")[-1], res.get("valve.QA")[-1]

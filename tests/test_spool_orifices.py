@@ -10,8 +10,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from hydroservo import spool_orifices as so
 from hydroservo.errors import ParameterError
+from hydroservo.laws import leakage
+from hydroservo.laws import staged_slot as so
 
 GEO = {"r": 5e-6, "c": 2e-6, "n": 2, "w": 2e-3}
 FLUID = {"rho": 1000.0, "nu": 2e-5}
@@ -49,31 +50,31 @@ def test_unified_coefficient_tends_to_eq15_and_reduces_to_eq6() -> None:
 def test_flow_is_continuous_through_null() -> None:
     """C_q S (and so Q) has the same value from both sides of the critical opening (eq. 20's purpose)."""
     h = 1e-12
-    q = so.orifice_flow(np.array([-h, 0.0, h]), 7e6, **GEO, **FLUID, **FLOW)
+    q = so.slot_flow(np.array([-h, 0.0, h]), 7e6, **GEO, **FLUID, **FLOW)
     assert q[0] == pytest.approx(q[1], rel=1e-6) and q[2] == pytest.approx(q[1], rel=1e-6)
     # the geometry is C1 at null (Table 1: the rounded-edge length starts with zero slope) ...
     Xs = so.orifice_geometry(np.array([-1e-9, 0.0, 1e-9]), GEO["r"], GEO["c"], GEO["n"], GEO["w"])[0]
     assert (Xs[2] - Xs[1]) / 1e-9 < 1e-3 and Xs[0] == Xs[1]
     # ... and the flow increases monotonically with the opening through null
     X = np.linspace(-2e-5, 2e-5, 81)
-    assert np.all(np.diff(so.orifice_flow(X, 7e6, **GEO, **FLUID, **FLOW)) > 0)
+    assert np.all(np.diff(so.slot_flow(X, 7e6, **GEO, **FLUID, **FLOW)) > 0)
 
 
 def test_laminar_at_small_drops_and_odd_in_drop() -> None:
     dp = np.array([1.0, 2.0, 4.0])
-    q = so.orifice_flow(-1e-5, dp, **GEO, **FLUID, **FLOW)
+    q = so.slot_flow(-1e-5, dp, **GEO, **FLUID, **FLOW)
     np.testing.assert_allclose(q / q[0], dp, rtol=1e-4)  # tanh linear in lambda ~ sqrt(dp): Q ~ dp
-    assert so.orifice_flow(1e-5, -3e6, **GEO, **FLUID, **FLOW) == pytest.approx(
-        -so.orifice_flow(1e-5, 3e6, **GEO, **FLUID, **FLOW)
+    assert so.slot_flow(1e-5, -3e6, **GEO, **FLUID, **FLOW) == pytest.approx(
+        -so.slot_flow(1e-5, 3e6, **GEO, **FLUID, **FLOW)
     )
 
 
 def test_earlier_closed_orifice_laws() -> None:
     # Ellman eq. 7 at X = 0: k2 sqrt(dp); Eryilmaz eq. 8 at X = 0: k1 sqrt(dp) X0; leakage falls with closure
-    assert so.ellman_flow(0.0, 4e6, 1.0, 1e-9) == pytest.approx(1e-9 * 2e3)
-    assert so.ellman_flow(-1e-5, 4e6, 1e-6, 1e-9) > so.ellman_flow(1e-5, 4e6, 1e-6, 1e-9)
-    assert so.eryilmaz_flow(0.0, 4e6, 1e-5, 1e-9, 0.5) == pytest.approx(1e-9 * 2e3 * 1e-5)  # k1 sqrt(dp) X0
+    assert leakage.ellman_flow(0.0, 4e6, 1.0, 1e-9) == pytest.approx(1e-9 * 2e3)
+    assert leakage.ellman_flow(-1e-5, 4e6, 1e-6, 1e-9) > leakage.ellman_flow(1e-5, 4e6, 1e-6, 1e-9)
+    assert leakage.eryilmaz_flow(0.0, 4e6, 1e-5, 1e-9, 0.5) == pytest.approx(1e-9 * 2e3 * 1e-5)  # k1 sqrt(dp) X0
     # laminar gap eq. 10 with the continuity constant of eq. 11
-    K_g = so.laminar_gap_continuity(GEO["w"], GEO["c"], FLOW["Cq_inf"] / FLOW["lambda_t"])
-    q0 = so.laminar_gap_flow(0.0, 1e6, 0.02, GEO["n"], GEO["w"], GEO["c"], K_g)
+    K_g = leakage.laminar_gap_continuity(GEO["w"], GEO["c"], FLOW["Cq_inf"] / FLOW["lambda_t"])
+    q0 = leakage.laminar_gap_flow(0.0, 1e6, 0.02, GEO["n"], GEO["w"], GEO["c"], K_g)
     assert q0 == pytest.approx(GEO["n"] * GEO["w"] * GEO["c"] ** 3 / (12 * 0.02 * K_g) * 1e6)

@@ -1,4 +1,4 @@
-"""Seed 000 valve in systems, parameter files and the ``hydroservo valve`` commands."""
+"""The servo-solenoid valve of FerreiraND in systems, parameter files and the ``hydroservo valve`` commands."""
 
 from __future__ import annotations
 
@@ -9,11 +9,11 @@ import numpy as np
 import pytest
 
 import hydroservo as hs
-from hydroservo import pseudo_sections as ps
 from hydroservo.cli import main
 from hydroservo.components import ConstantPressure, PseudoSectionValve, Step
-from hydroservo.identification.files import read_component_file
-from hydroservo.modelfile import read_model
+from hydroservo.data import example_files, parameter_set
+from hydroservo.io import read_component_file, read_model
+from hydroservo.laws import pseudo_section as ps
 
 DATASHEET_TOML = """
 [datasheet]
@@ -53,9 +53,8 @@ def test_component_flows_are_the_published_law() -> None:
 
 @pytest.mark.parametrize("structure", ["variable", "fixed"])
 def test_builtin_servo_solenoid_loop_reaches_its_reference(structure: str) -> None:
-    from hydroservo.models.servo_solenoid import servo_solenoid_cylinder
-
-    system = servo_solenoid_cylinder(structure=structure)
+    system = hs.load_model("servo-solenoid-cylinder")
+    system.set("valve.structure", structure)
     res = system.simulate(n_points=201)
     x = res.get("x_mm")
     assert x[-1] == pytest.approx(50.0, abs=0.5)
@@ -98,8 +97,8 @@ def test_valve_fit_cli_json_and_parameter_file(tmp_path: Path, capsys: pytest.Ca
 
 def test_parameter_file_drops_into_a_model(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert run(capsys, "valve", "fit", "KBSDG4V-3", "--out", str(tmp_path))[0] == 0
-    model = Path(__file__).parents[1] / "docs" / "examples" / "servo_solenoid_cylinder.toml"
-    text = model.read_text().replace('file = "kbsdg4v3_valve.toml"', f'file = "{tmp_path / "valve.toml"}"')
+    text = example_files()["servo_solenoid_cylinder.toml"]
+    text = text.replace('file = "kbsdg4v3_valve.toml"', f'file = "{tmp_path / "valve.toml"}"')
     (tmp_path / "model.toml").write_text(text)
     system = read_model(tmp_path / "model.toml")
     assert type(system["valve"]).__name__ == "ServoSolenoidValve"
@@ -168,9 +167,8 @@ def test_datasheet_with_negative_flow_exits_2(tmp_path: Path, capsys: pytest.Cap
 
 def test_valve_fit_to_measured_curves_cli(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     from hydroservo.identification import fit_datasheet
-    from hydroservo.parameters import ferreira_000 as paper
 
-    true = fit_datasheet(paper.DATASHEET)
+    true = fit_datasheet(parameter_set("FerreiraND").table("datasheet"))
     x = np.linspace(-0.06, 0.06, 25)
     A_p, A_n = true.sections(x)
     rows = ["x_s [-],P_L [-],q_lk [L/min],Q_L [L/min]"]

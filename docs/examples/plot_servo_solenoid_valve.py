@@ -1,4 +1,4 @@
-"""Figures of the seed-000 servo-solenoid valve for the docs (analogues of the paper's Figs. 2-9 and 12).
+"""Figures of the servo-solenoid valve of FerreiraND for the docs (analogues of the paper's Figs. 2-9 and 12).
 
 Run: ``python docs/examples/plot_servo_solenoid_valve.py``; writes ``docs/img/ferreira_*.png``.
 """
@@ -7,19 +7,20 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
-
-from hydroservo import load_model, plotting
+from hydroservo import load_model
+from hydroservo.data import parameter_set
 from hydroservo.identification import fit_datasheet, fit_spool_dynamics, spool_response
-from hydroservo.parameters import ferreira_000 as paper
+from hydroservo.plotting import pseudo_section as plotting
+from hydroservo.validation.ferreira import bode_grid, published_dynamics
 
 IMG = Path(__file__).resolve().parents[1] / "img"
 
 
 def main() -> None:
-    var = fit_datasheet(paper.DATASHEET, "variable", "pressure-gain,leakage")
-    fix = fit_datasheet(paper.DATASHEET, "fixed", "pressure-gain,flow-gain")
-    ds = var.datasheet
+    datasheet = parameter_set("FerreiraND").table("datasheet")
+    var = fit_datasheet(datasheet, "variable", "pressure-gain,leakage").valve
+    fix = fit_datasheet(datasheet, "fixed", "pressure-gain,flow-gain").valve
+    ds = fit_datasheet(datasheet).datasheet
     plotting.plot_pseudo_sections(
         var,
         title="KBSDG4V-3, variable structure (k, gamma from K_p0 and q_lk0)",
@@ -38,9 +39,8 @@ def main() -> None:
         fix, ds.P_n, title="Fixed structure: load flow (cf. Figs. 8-9)", file=IMG / "ferreira_load_flow_fixed.png"
     )
     plotting.plot_pressure_flow(var, ds.P_s, file=IMG / "ferreira_pressure_flow.png")
-    dyn = {"omega_n": 1007.0, "zeta": 0.48, "L_v": 125.0, "L_a": 81184.0, "delay": 7.625e-4}
-    amps, freqs = np.array(paper.BODE_AMPLITUDES) / 100, np.array(paper.BODE_FREQUENCIES)
-    data = spool_response(dyn, amps, freqs, steps_per_period=512, label="published model")
+    amps, freqs = bode_grid()
+    data = spool_response(published_dynamics(), amps, freqs, steps_per_period=512, label="published model")
     fits = [fit_spool_dynamics(data, m) for m in ("rate-limited", "second-order", "first-order")]
     for f in fits:
         f.response.label = f"{f.model} fit"

@@ -21,13 +21,13 @@ import numpy as np
 
 from hydroservo.analysis import FrequencyResponse
 from hydroservo.identification import fit_spool_dynamics, spool_response
-from hydroservo.parameters import ferreira_000 as paper
+from hydroservo.validation.ferreira import bode_grid, published_dynamics
 
-PUBLISHED = {"omega_n": 1007.0, "zeta": 0.48, "L_v": 125.0, "L_a": 81184.0, "delay": 7.625e-4}
+PUBLISHED = published_dynamics()
 
 
 def main(n: int = 20, seed: int = 2026) -> None:
-    amps, freqs = np.array(paper.BODE_AMPLITUDES) / 100, np.array(paper.BODE_FREQUENCIES)
+    amps, freqs = bode_grid()
     clean = spool_response(PUBLISHED, amps, freqs, steps_per_period=512, label="published parameters")
     rng = np.random.default_rng(seed)
     rel = {k: [] for k in PUBLISHED}
@@ -51,7 +51,7 @@ def main(n: int = 20, seed: int = 2026) -> None:
             out = Path(__file__).resolve().parents[1] / "img" / "spool_fit_noise.png"
             noisy.plot(
                 [fit.response],
-                title="Seed 000 spool: noisy Bode data (0.3 dB) and the fitted model",
+                title="KBSDG4V-3 spool (FerreiraND): noisy Bode data (0.3 dB) and the fitted model",
                 file=out,
                 f_max=200.0,
             )

@@ -1,9 +1,9 @@
-"""Seed 002 identification proof: recover a known valve from noisy -15 degC curves, predict -40 and +32 degC.
+"""Identification proof for the staged-slot valve of MareAttarND: recover a known valve from noisy -15 degC curves, predict -40 and +32 degC.
 
 Run: ``python docs/examples/spool_identification_study.py [N]`` (default N = 20 noisy repetitions, ~2 min).
 
 The "true" valve is hydroservo's example aerospace geometry
-(``hydroservo.parameters.mare_attar_002.EXAMPLE_VALVE``, not published). Its
+(the parameter set ``MareAttarND_example``, not published). Its
 three test-bench curves at -15 degC (flow gain over +-X_n, pressure gain and
 leakage over +-6.25 % X_n, 401 openings each) get 1 % multiplicative Gaussian
 noise on every reading (the paper's flow-meter accuracy). Each repetition
@@ -22,20 +22,30 @@ from pathlib import Path
 
 import numpy as np
 
-from hydroservo import plotting
-from hydroservo.analysis.bench import METRICS, Bench, SpoolBridge, bench_curves, temperature_table
-from hydroservo.components import MareSpoolValve
-from hydroservo.identification.bridge import HIGH_GAIN, LOW_GAIN, identify_bridge, noisy_curves
-from hydroservo.parameters.mare_attar_002 import EXAMPLE_BENCH, EXAMPLE_VALVE, TABLE_2
+from hydroservo.analysis.static_bench import METRICS, bench_curves, temperature_table
+from hydroservo.data import parameter_set
+from hydroservo.identification.staged_slot import HIGH_GAIN, LOW_GAIN, identify_staged_slot, noisy_curves
+from hydroservo.io import read_staged_slot_valve
+from hydroservo.plotting import staged_slot as plotting
+from hydroservo.units import to_si
 
 IMG = Path(__file__).parents[1] / "img"
 TEMPS = [-15.0, -40.0, 32.0]
-PAIRS = {"X_a0H": "X_d0H", "X_b0H": "X_c0H"}  # fitted as one lap per pair (hydroservo.identification.bridge)
+PAIRS = {"X_a0H": "X_d0H", "X_b0H": "X_c0H"}  # fitted as one lap per pair (hydroservo.identification.staged_slot)
+
+
+def table_2() -> dict[str, dict[str, np.ndarray]]:
+    """Table 2 of MareAttarND: measured values and the model's relative errors, per metric."""
+    t2 = parameter_set("MareAttarND").table("table_2")
+    return {
+        k: {"measured": np.array(t2[k]["measured"]), "error": np.array([to_si(e, "") for e in t2[k]["error"]])}
+        for k in METRICS
+    }
 
 
 def main(n: int = 20, seed: int = 2026) -> None:
-    true = SpoolBridge.from_component(MareSpoolValve("valve", **EXAMPLE_VALVE))
-    bench = Bench.from_mapping(EXAMPLE_BENCH)
+    true, bench = read_staged_slot_valve("aerospace-example")
+    assert bench is not None
     clean = bench_curves(true, -15.0, bench)
     ref = temperature_table(true, bench, TEMPS)
     names = [k for k in LOW_GAIN + HIGH_GAIN if k not in ("w_L", "w_H", "X_c0H", "X_d0H")]
@@ -47,17 +57,17 @@ def main(n: int = 20, seed: int = 2026) -> None:
         fitted = names + list(PAIRS.values())
         signs = rng.choice([-1.0, 1.0], size=len(fitted))
         start = true.replace(
-            **{k: true.params[k] * (1 + s * rng.uniform(0.30, 0.40)) for k, s in zip(fitted, signs, strict=True)}
+            **{k: true.values[k] * (1 + s * rng.uniform(0.30, 0.40)) for k, s in zip(fitted, signs, strict=True)}
         )
-        res = identify_bridge(data, start)
+        res = identify_staged_slot(data, start)
         for k in names:
             if k in PAIRS:  # tied high-gain laps: what comes back is the pair's mean (not separable)
-                mean = 0.5 * (true.params[k] + true.params[PAIRS[k]])
-                err[k].append((res.valve.params[k] - mean) * 1e9)
+                mean = 0.5 * (true.values[k] + true.values[PAIRS[k]])
+                err[k].append((res.valve.values[k] - mean) * 1e9)
             elif k.startswith("X_"):  # laps: error in nm (a relative error of a lap near zero means little)
-                err[k].append((res.valve.params[k] - true.params[k]) * 1e9)
+                err[k].append((res.valve.values[k] - true.values[k]) * 1e9)
             else:
-                err[k].append(res.valve.params[k] / true.params[k] - 1)
+                err[k].append(res.valve.values[k] / true.values[k] - 1)
         table = temperature_table(res.valve, bench, TEMPS)
         for t in TEMPS[1:]:
             for k in METRICS:
@@ -83,9 +93,9 @@ def main(n: int = 20, seed: int = 2026) -> None:
         unit = "nm" if k.startswith("X_") else ""
         fmt = (lambda v: f"{v:+9.2f}") if unit else (lambda v: f"{v * 100:+8.2f}%")
         tv = (
-            f"{true.params[k] * 1e6:.4g} um"
+            f"{true.values[k] * 1e6:.4g} um"
             if k.startswith(("X_", "r", "c")) and k != "Cq_inf"
-            else f"{true.params[k]:.4g}"
+            else f"{true.values[k]:.4g}"
         )
         print(f"{k:10s} {tv:>12s} {fmt(e.mean())} {fmt(e.std())} {fmt(e[np.argmax(np.abs(e))])}")
 
@@ -95,13 +105,14 @@ def main(n: int = 20, seed: int = 2026) -> None:
             e = np.array(pred[(t, k)]) * 100
             print(f"{t:+5g} °C {label:44s} {e.mean():+7.2f}% {e.std():6.2f}% {e[np.argmax(np.abs(e))]:+7.2f}%")
 
-    print("\nTemperature trends from -15 °C: example valve vs seed 002 Table 2 (measured, and the paper's own model")
+    print("\nTemperature trends from -15 °C: example valve vs MareAttarND Table 2 (measured, and the paper's own model")
     print("as measured x (1 + its relative error))")
     head = ("example", "measured", "paper model")
     print(f"{'':44s}" + "".join(f"{h + ' ' + t:>22s}" for t in ("-40", "+32") for h in head))
+    published = table_2()
     for k, (label, _) in METRICS.items():
-        meas = np.array(TABLE_2[k]["measured"])
-        modl = meas * (1 + np.array(TABLE_2[k]["error"]))
+        meas = published[k]["measured"]
+        modl = meas * (1 + published[k]["error"])
         row = []
         for j, t in ((0, -40.0), (2, 32.0)):
             row += [ref["change"][t][k], meas[j] / meas[1] - 1, modl[j] / modl[1] - 1]

@@ -5,9 +5,35 @@
 >>> result = system.simulate(t_end=0.5)
 >>> round(float(result.get("p2", "psi")[0]))
 772
+
+The public namespaces, by layer (each imports only from the ones above it):
+
+==========================  ===================================================
+namespace                   what
+==========================  ===================================================
+``hs.units``, ``hs.errors``  units at the edges, SI inside; exceptions
+``hs.references``           the bibliography every docstring cites
+``hs.laws``                 published laws, pure functions (NumPy and CasADi)
+``hs.fluids``               hydraulic fluids as property sets
+``hs.components``           parts with parameters, states, ports, equations
+``hs.System``, ``Model``    components connected into one ODE; its solvers
+``hs.analysis``             frequency responses, static test benches
+``hs.identification``       parameters from datasheets, curves and Bode data
+``hs.io``                   every reader and writer; ``hs.load_model``
+``hs.data``                 published and example parameter sets, models
+``hs.validation``           published figures beside computed ones
+``hs.plotting``             the plots
+==========================  ===================================================
+
+Names are imported on first use, so that ``import hydroservo`` and the command
+line's ``--help`` stay fast (``docs/architecture.md``).
 """
 
-from hydroservo import components, fluids, friction, orifices
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
 from hydroservo.errors import (
     HydroservoError,
     ModelError,
@@ -17,11 +43,39 @@ from hydroservo.errors import (
     TrimError,
     UnitError,
 )
-from hydroservo.models import available_models, load_model
-from hydroservo.system import BatchResult, Model, Result, System
-from hydroservo.units import to_si, ureg
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
+
+#: Public name -> (module, attribute; None for the module itself)
+_LAZY: dict[str, tuple[str, str | None]] = {
+    "System": ("hydroservo.system", "System"),
+    "Model": ("hydroservo.system", "Model"),
+    "Result": ("hydroservo.system", "Result"),
+    "BatchResult": ("hydroservo.system", "BatchResult"),
+    "load_model": ("hydroservo.io.model_file", "load_model"),
+    "available_models": ("hydroservo.io.model_file", "available_models"),
+    "to_si": ("hydroservo.units", "to_si"),
+    "ureg": ("hydroservo.units", "ureg"),
+    **{
+        name: (f"hydroservo.{name}", None)
+        for name in (
+            "analysis",
+            "backend",
+            "components",
+            "data",
+            "errors",
+            "fluids",
+            "identification",
+            "io",
+            "laws",
+            "plotting",
+            "references",
+            "system",
+            "units",
+            "validation",
+        )
+    },
+}
 
 __all__ = [
     "System",
@@ -30,10 +84,20 @@ __all__ = [
     "BatchResult",
     "load_model",
     "available_models",
+    "analysis",
+    "backend",
     "components",
+    "data",
+    "errors",
     "fluids",
-    "orifices",
-    "friction",
+    "identification",
+    "io",
+    "laws",
+    "plotting",
+    "references",
+    "system",
+    "units",
+    "validation",
     "to_si",
     "ureg",
     "HydroservoError",
@@ -44,3 +108,38 @@ __all__ = [
     "SolverError",
     "TrimError",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _LAZY:
+        raise AttributeError(f"module 'hydroservo' has no attribute {name!r}")
+    module_name, attr = _LAZY[name]
+    module = importlib.import_module(module_name)
+    value = module if attr is None else getattr(module, attr)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+
+
+if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and editors
+    from hydroservo import (
+        analysis,
+        backend,
+        components,
+        data,
+        fluids,
+        identification,
+        io,
+        laws,
+        plotting,
+        references,
+        system,
+        units,
+        validation,
+    )
+    from hydroservo.io.model_file import available_models, load_model
+    from hydroservo.system import BatchResult, Model, Result, System
+    from hydroservo.units import to_si, ureg

@@ -1,4 +1,4 @@
-"""Exceptions raised by hydroservo.
+"""Exceptions and warnings raised by hydroservo.
 
 Every error a user can cause is a :class:`HydroservoError`; its message names
 what was wrong (file, option, component, parameter), the value given and what
@@ -15,6 +15,8 @@ __all__ = [
     "ModelFileError",
     "SolverError",
     "TrimError",
+    "FluidRangeWarning",
+    "RenamedWarning",
 ]
 
 
@@ -44,3 +46,11 @@ class SolverError(HydroservoError, RuntimeError):
 
 class TrimError(HydroservoError, RuntimeError):
     """No equilibrium was found."""
+
+
+class FluidRangeWarning(UserWarning):
+    """A fluid property was evaluated outside the range its model was fitted to."""
+
+
+class RenamedWarning(UserWarning):
+    """A parameter or component type was given under the name it had before it was renamed."""

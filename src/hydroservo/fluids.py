@@ -1,344 +1,210 @@
-"""Fluid properties: effective bulk modulus, density, wave speed.
+r"""Hydraulic fluids as property sets: density, viscosity and bulk modulus against pressure and temperature.
 
-Pure, vectorised functions (NumPy arrays or CasADi expressions), SI units.
-Each cites the seed document and equation it implements.
+* ``skydrol``: the parametric model of [MareAttarND] section 2.1,
+  eqs. (1)-(2), with the published Skydrol coefficients. The paper does not
+  print its reference state; hydroservo takes :math:`T_0` = 20 degC,
+  :math:`p_0` = 0 (atmospheric), :math:`\rho_0` = 1008 kg/m^3 and
+  :math:`\nu_0` = 19.39 cSt. Why: the reference temperature is the one free
+  choice that moves the model's own temperature ratios (the pressure and
+  density terms do not depend on it), and 20 degC puts the kinematic-viscosity
+  ratio between -40 and +70 degC at 71, near the paper's 66 (18.6 degC
+  would give 66 exactly); :math:`\rho_0` follows from a specific gravity of
+  1.004 at 25 degC, typical of Type IV phosphate-ester fluids (Skydrol LD-4
+  class); :math:`\nu_0` makes :math:`\nu` = 10.8 cSt at 38 degC (100 degF), the
+  typical value of the same class. ``docs/validation.md`` lists which of the
+  paper's statements the model meets.
+* ``iso-vg32``, ``iso-vg46``: generic mineral hydraulic oils (HM/HV, viscosity
+  index about 100): Walther's law through the ISO 3448 mid-points at 40 degC and
+  typical values at 100 degC, Barus pressure-viscosity coefficient 2e-8 1/Pa,
+  thermal expansion 7e-4 1/K, constant bulk modulus 1.6 GPa, 870/875 kg/m^3 at 15 degC.
+* User-defined fluids: :class:`MareFluid` or :class:`MineralOil` with your own values.
+
+The bulk modulus is always the isothermal tangent modulus consistent with the
+density model, :math:`K = -v\,(\partial v/\partial p)^{-1}`, which is the paper's
+argument for a parametric model.
 """
 
 from __future__ import annotations
 
 import warnings
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
-from hydroservo import _math as m
-from hydroservo.errors import ParameterError
+from hydroservo import backend as bk
+from hydroservo.errors import FluidRangeWarning, ParameterError
+from hydroservo.laws.fluid import (
+    SKYDROL_MARE,
+    dynamic_viscosity_mare,
+    kinematic_viscosity_walther,
+    specific_volume_mare,
+)
 
 __all__ = [
-    "EGGERTH_TABLE",
-    "bulk_modulus_lee",
-    "bulk_modulus_eggerth",
-    "eggerth_coefficients",
-    "density_linear",
-    "wave_speed",
-    "max_line_length",
-    "check_line_length",
-    "SKYDROL_MARE",
-    "specific_volume_mare",
-    "dynamic_viscosity_mare",
-    "kinematic_viscosity_walther",
+    "Fluid",
+    "MareFluid",
+    "MineralOil",
+    "FLUIDS",
+    "get_fluid",
+    "FluidRangeWarning",
+    "PROPERTIES",
 ]
 
-BAR = 1e5
-
-#: Eggerth (1980) coefficients, seed 001 Table 3.1:
-#: temperature [degC] -> (k1 [m^2/N], k2 [m^2/N], lambda [-]).
-EGGERTH_TABLE: dict[float, tuple[float, float, float]] = {
-    20.0: (4.943e-10, 1.9540e-10, 1.480),
-    50.0: (5.469e-10, 3.2785e-10, 1.258),
-    90.0: (5.762e-10, 4.7750e-10, 1.100),
+#: Properties every fluid provides, with their SI units.
+PROPERTIES = {
+    "density": "kg/m^3",
+    "specific_volume": "m^3/kg",
+    "kinematic_viscosity": "m^2/s",
+    "dynamic_viscosity": "Pa*s",
+    "bulk_modulus": "Pa",
 }
 
 
-def bulk_modulus_lee(
-    p: Any,
-    a1: float = 0.5,
-    a2: float = 90.0,
-    a3: float = 3.0,
-    E_max: float = 18000 * BAR,
-    p_max: float = 280 * BAR,
-) -> Any:
-    r"""Effective bulk modulus of a hydraulic cylinder after Lee & Lee (1990).
+@dataclass(frozen=True)
+class Fluid:
+    """Base class: a named fluid with a range of validity (temperatures in degC, pressures in Pa gauge)."""
 
-    .. math:: E'(p) = a_1 E_{max} \log_{10}\left(a_2 \frac{p}{p_{max}} + a_3\right)
+    name: str
+    description: str
+    T_range: tuple[float, float]
+    p_range: tuple[float, float]
 
-    Parameters
-    ----------
-    p : array_like
-        Gauge pressure [Pa]. Values below zero are taken as zero.
-    a1, a2, a3 : float
-        Fit constants [-]; defaults 0.5, 90, 3 as given with the equation.
-    E_max : float
-        Bulk modulus of the pure oil [Pa]; default 18000 bar.
-    p_max : float
-        Maximum pressure [Pa]; default 280 bar.
+    def check_range(self, p: Any, T: Any, strict: bool = False) -> None:
+        """Warn (or, with ``strict``, raise) when (p, T) leaves the validity range."""
+        p_arr, T_arr = np.atleast_1d(np.asarray(p, float)), np.atleast_1d(np.asarray(T, float))
+        msgs = []
+        if np.any(T_arr < self.T_range[0]) or np.any(T_arr > self.T_range[1]):
+            msgs.append(
+                f"temperature {T_arr.min():g}..{T_arr.max():g} degC outside {self.T_range[0]:g}..{self.T_range[1]:g} degC"
+            )
+        if np.any(p_arr < self.p_range[0]) or np.any(p_arr > self.p_range[1]):
+            msgs.append(
+                f"pressure {p_arr.min() / 1e6:g}..{p_arr.max() / 1e6:g} MPa outside "
+                f"{self.p_range[0] / 1e6:g}..{self.p_range[1] / 1e6:g} MPa"
+            )
+        if msgs:
+            text = f"fluid {self.name!r}: {'; '.join(msgs)} (the range its model holds in)"
+            if strict:
+                raise ParameterError(text)
+            warnings.warn(text, FluidRangeWarning, stacklevel=3)
 
-    Returns
-    -------
-    Effective bulk modulus [Pa].
+    def specific_volume(self, p: Any, T: Any) -> Any:
+        raise NotImplementedError
 
-    Notes
-    -----
-    Seed 001 eq. (3.2) prints :math:`a_1 E_{max}(a_2 p/p_{max} + a_3)`: the
-    logarithm was lost in the extraction. Without it the formula gives
-    1.35e10 Pa at zero pressure, ten times the modulus of pure oil; with the
-    decimal logarithm of Jelali & Kroll (2004, eq. 3.8) it rises from
-    4.29e8 Pa at 0 bar to 1.772e9 Pa at 280 bar, the expected shape.
+    def dynamic_viscosity(self, p: Any, T: Any) -> Any:
+        raise NotImplementedError
 
-    References
-    ----------
-    Seed 001 (Efe 2014) eq. (3.2); Jelali & Kroll, *Hydraulic Servo-systems*, 2004.
+    def dvdp(self, p: Any, T: Any) -> Any:
+        """Derivative of the specific volume with respect to pressure [m^3/kg/Pa]."""
+        raise NotImplementedError
 
-    Examples
-    --------
-    >>> round(float(bulk_modulus_lee(280e5)) / 1e5)
-    17716
+    def density(self, p: Any, T: Any) -> Any:
+        """[kg/m^3]"""
+        return 1.0 / self.specific_volume(p, T)
+
+    def kinematic_viscosity(self, p: Any, T: Any) -> Any:
+        """[m^2/s]"""
+        return self.dynamic_viscosity(p, T) * self.specific_volume(p, T)
+
+    def bulk_modulus(self, p: Any, T: Any) -> Any:
+        """Isothermal tangent bulk modulus consistent with the density model, -v/(dv/dp) [Pa]."""
+        return -self.specific_volume(p, T) / self.dvdp(p, T)
+
+    def properties(self, p: Any, T: Any, strict: bool = False) -> dict[str, Any]:
+        """All properties (SI) at pressures ``p`` [Pa] and temperatures ``T`` [degC], after a range check."""
+        self.check_range(p, T, strict)
+        return {name: getattr(self, name)(p, T) for name in PROPERTIES}
+
+
+@dataclass(frozen=True)
+class MareFluid(Fluid):
+    """A fluid of [MareAttarND] eqs. (1)-(2): specific volume and dynamic viscosity polynomial in (p, T)."""
+
+    v0: float = 1.0 / 1008.0
+    mu0: float = 19.39e-6 * 1008.0
+    T0: float = 20.0
+    p0: float = 0.0
+    coefficients: dict[str, float] = field(default_factory=lambda: dict(SKYDROL_MARE))
+
+    def _a(self) -> dict[str, float]:
+        return {k: self.coefficients[k] for k in ("a_p", "a_p2", "a_t", "a_t2", "a_pt")}
+
+    def specific_volume(self, p: Any, T: Any) -> Any:
+        return specific_volume_mare(p, T, self.v0, self.T0, self.p0, **self._a())
+
+    def dvdp(self, p: Any, T: Any) -> Any:
+        c = self.coefficients
+        return self.v0 * (c["a_p"] + 2.0 * c["a_p2"] * (p - self.p0) + c["a_pt"] * (T - self.T0))
+
+    def dynamic_viscosity(self, p: Any, T: Any) -> Any:
+        c = self.coefficients
+        return dynamic_viscosity_mare(p, T, self.mu0, self.T0, self.p0, c["b_p"], c["b_t"], c["b_t2"])
+
+
+@dataclass(frozen=True)
+class MineralOil(Fluid):
+    """A mineral oil: Walther viscosity-temperature law, Barus pressure-viscosity, constant bulk modulus.
+
+    :math:`\\rho = \\rho_{15} e^{p/K}/(1 + \\alpha_T (T - 15))`, so the tangent bulk modulus is exactly ``K``.
     """
-    pc = m.fmax(p, 0.0)
-    return a1 * E_max * m.log10(a2 * pc / p_max + a3)
+
+    nu_40: float = 32e-6
+    nu_100: float = 5.4e-6
+    rho_15: float = 870.0
+    alpha_T: float = 7e-4
+    K: float = 1.6e9
+    alpha_p: float = 2e-8
+
+    def specific_volume(self, p: Any, T: Any) -> Any:
+        return (1.0 + self.alpha_T * (T - 15.0)) * bk.exp(-p / self.K) / self.rho_15
+
+    def dvdp(self, p: Any, T: Any) -> Any:
+        return -self.specific_volume(p, T) / self.K
+
+    def dynamic_viscosity(self, p: Any, T: Any) -> Any:
+        nu_atm = kinematic_viscosity_walther(T, self.nu_40, self.nu_100)
+        return nu_atm / self.specific_volume(0.0, T) * bk.exp(self.alpha_p * p)
 
 
-def eggerth_coefficients(temperature: Any) -> tuple[Any, Any, Any]:
-    """Eggerth coefficients (k1 [m^2/N], k2 [m^2/N], lambda [-]) at ``temperature`` [degC].
-
-    Linear interpolation in temperature between the rows of seed 001
-    Table 3.1 (20, 50 and 90 degC). Outside that range the table is not
-    extrapolated: a :class:`~hydroservo.errors.ParameterError` is raised (for a
-    symbolic temperature the caller's parameter range does that check).
-    """
-    temps = sorted(EGGERTH_TABLE)
-    cols = np.array([EGGERTH_TABLE[T] for T in temps])
-    if m.is_symbolic(temperature):
-        k1, k2, lam = (m.interp(temperature, temps, cols[:, j]) for j in range(3))
-        return k1, k2, lam
-    if not (temps[0] <= temperature <= temps[-1]):
-        raise ParameterError(
-            f"temperature: {temperature} degC is outside Eggerth's table; "
-            f"expected {temps[0]:g} to {temps[-1]:g} degC (seed 001 Table 3.1)"
-        )
-    k1, k2, lam = (float(np.interp(temperature, temps, cols[:, j])) for j in range(3))
-    return k1, k2, lam
+def _skydrol() -> MareFluid:
+    T0, rho0 = 20.0, 1008.0
+    c = SKYDROL_MARE
+    # nu0 from nu(38 degC, 0 Pa) = 10.8 cSt through eqs. (1)-(2)
+    dT = 38.0 - T0
+    mu_ratio = 10.0 ** (c["b_t"] * dT + c["b_t2"] * dT * dT)
+    v_ratio = 1.0 + c["a_t"] * dT + c["a_t2"] * dT * dT
+    nu0 = 10.8e-6 / (mu_ratio * v_ratio)
+    return MareFluid(
+        "skydrol",
+        "Skydrol (Type IV phosphate ester), [MareAttarND] eqs. (1)-(2); reference 20 degC, 0 Pa, 1008 kg/m^3, "
+        f"{nu0 * 1e6:.3g} cSt",
+        (-55.0, 100.0),
+        (0.0, 40e6),
+        v0=1.0 / rho0,
+        mu0=nu0 * rho0,
+        T0=T0,
+    )
 
 
-def bulk_modulus_eggerth(
-    p: Any,
-    temperature: Any = 50.0,
-    p0: float = 10 * BAR,
-    p_min: float = 1 * BAR,
-) -> Any:
-    r"""Effective bulk modulus after Eggerth (1980).
-
-    .. math:: E'(p) = \frac{1}{k_1 + k_2 (p/p_0)^{-\lambda}}
-
-    Parameters
-    ----------
-    p : array_like
-        Gauge pressure [Pa].
-    temperature : float
-        Oil temperature [degC], 20 to 90; the coefficients of Table 3.1 are
-        interpolated linearly in temperature.
-    p0 : float
-        Reference pressure [Pa]; 10 bar as in the seed.
-    p_min : float
-        Pressure below which ``p`` is clipped [Pa]. The formula gives
-        :math:`E' \to 0` as :math:`p \to 0`, which makes chamber pressure
-        derivatives unbounded; 1 bar (``p0/10``) is the lower end of the
-        pressures for which such fits are made.
-
-    Returns
-    -------
-    Effective bulk modulus [Pa].
-
-    References
-    ----------
-    Seed 001 (Efe 2014) eq. (3.3) and Table 3.1.
-
-    Examples
-    --------
-    >>> round(float(bulk_modulus_eggerth(100e5, temperature=20.0)) / 1e9, 3)
-    1.997
-    """
-    k1, k2, lam = eggerth_coefficients(temperature)
-    pc = m.fmax(p, p_min)
-    return 1.0 / (k1 + k2 * (pc / p0) ** (-lam))
-
-
-def density_linear(p: Any, rho0: float, E: Any) -> Any:
-    r"""Density of a slightly compressible fluid at constant temperature.
-
-    .. math:: \rho = \rho_i + \frac{\rho_i}{E} p
-
-    Parameters
-    ----------
-    p : array_like
-        Gauge pressure [Pa].
-    rho0 : float
-        Density at zero gauge pressure [kg/m^3].
-    E : array_like
-        Bulk modulus [Pa].
-
-    References
-    ----------
-    Seed 001 eq. (3.15).
-    """
-    return rho0 * (1.0 + p / E)
-
-
-def wave_speed(E: Any, rho: Any) -> Any:
-    r"""Speed of pressure waves in a rigid line, :math:`c = \sqrt{E/\rho}` [m/s].
-
-    Parameters
-    ----------
-    E : array_like
-        (Effective) bulk modulus [Pa].
-    rho : array_like
-        Density [kg/m^3].
-
-    References
-    ----------
-    Seed 001 eq. (3.31), after Goodson & Leonard (1972).
-
-    Examples
-    --------
-    >>> round(float(wave_speed(1.5e9, 870.0)))
-    1313
-    """
-    return m.sqrt(E / rho)
-
-
-def max_line_length(c: float, f_max: float) -> float:
-    r"""Longest line that may be lumped into a chamber volume, :math:`l < c/(10 f_{max})` [m].
-
-    Parameters
-    ----------
-    c : float
-        Wave speed [m/s].
-    f_max : float
-        Highest frequency of interest [Hz].
-
-    References
-    ----------
-    Seed 001 eq. (3.30), after Jelali & Kroll (2004).
-    """
-    if f_max <= 0:
-        raise ParameterError(f"f_max: {f_max} Hz; expected a positive frequency")
-    return c / (10.0 * f_max)
-
-
-def check_line_length(length: float, c: float, f_max: float) -> bool:
-    """Warn if a line of ``length`` [m] is too long to be a lumped volume.
-
-    Returns True when the line satisfies seed 001 eq. (3.30), False (with a
-    :class:`UserWarning`) when a distributed line model would be needed.
-    """
-    limit = max_line_length(c, f_max)
-    if length >= limit:
-        warnings.warn(
-            f"line length {length:g} m exceeds c/(10 f_max) = {limit:.3g} m "
-            f"(c = {c:.4g} m/s, f_max = {f_max:g} Hz, seed 001 eq. 3.30): "
-            "it cannot be lumped into the chamber volume",
-            UserWarning,
-            stacklevel=2,
-        )
-        return False
-    return True
-
-
-#: Skydrol coefficients of seed 002 (Maré & Attar) section 2.1, eqs. (1)-(2): pressures in Pa, temperatures in degC.
-SKYDROL_MARE = {
-    "a_p": -7.33e-10,
-    "a_p2": 3.22e-18,
-    "a_t": 8.02e-4,
-    "a_t2": 6.22e-7,
-    "a_pt": -5.44e-12,
-    "b_p": 4.45e-9,
-    "b_t": -1.62e-2,
-    "b_t2": 9.62e-5,
+#: Built-in fluids by name.
+FLUIDS: dict[str, Fluid] = {
+    "skydrol": _skydrol(),
+    "iso-vg32": MineralOil("iso-vg32", "mineral hydraulic oil ISO VG 32 (VI about 100)", (-20.0, 100.0), (0.0, 40e6)),
+    "iso-vg46": MineralOil(
+        "iso-vg46",
+        "mineral hydraulic oil ISO VG 46 (VI about 100)",
+        (-15.0, 100.0),
+        (0.0, 40e6),
+        nu_40=46e-6,
+        nu_100=6.8e-6,
+        rho_15=875.0,
+    ),
 }
 
 
-def specific_volume_mare(
-    p: Any,
-    T: Any,
-    v0: Any,
-    T0: Any,
-    p0: Any = 0.0,
-    a_p: Any = SKYDROL_MARE["a_p"],
-    a_p2: Any = SKYDROL_MARE["a_p2"],
-    a_t: Any = SKYDROL_MARE["a_t"],
-    a_t2: Any = SKYDROL_MARE["a_t2"],
-    a_pt: Any = SKYDROL_MARE["a_pt"],
-) -> Any:
-    r"""Specific volume against pressure and temperature, seed 002 eq. (1) [m^3/kg].
-
-    .. math:: v = v_0(1 + a_p\Delta P + a_{p2}\Delta P^2 + a_t\Delta T + a_{t2}\Delta T^2 + a_{pt}\Delta P\Delta T)
-
-    with :math:`\Delta P = p - p_0`, :math:`\Delta T = T - T_0`. Defaults: the
-    Skydrol coefficients of section 2.1 (:data:`SKYDROL_MARE`).
-
-    Parameters
-    ----------
-    p : array_like
-        Pressure [Pa] (gauge, as the reference ``p0``).
-    T : array_like
-        Temperature [degC].
-    v0 : array_like
-        Specific volume at the reference state [m^3/kg].
-    T0 : array_like
-        Reference temperature [degC].
-    p0 : array_like
-        Reference pressure [Pa].
-    a_p, a_p2, a_t, a_t2, a_pt : array_like
-        Coefficients [1/Pa], [1/Pa^2], [1/degC], [1/degC^2], [1/(Pa degC)].
-    """
-    dp, dT = p - p0, T - T0
-    return v0 * (1.0 + a_p * dp + a_p2 * dp * dp + a_t * dT + a_t2 * dT * dT + a_pt * dp * dT)
-
-
-def dynamic_viscosity_mare(
-    p: Any,
-    T: Any,
-    mu0: Any,
-    T0: Any,
-    p0: Any = 0.0,
-    b_p: Any = SKYDROL_MARE["b_p"],
-    b_t: Any = SKYDROL_MARE["b_t"],
-    b_t2: Any = SKYDROL_MARE["b_t2"],
-) -> Any:
-    r"""Dynamic viscosity against pressure and temperature, seed 002 eq. (2) [Pa s].
-
-    .. math:: \mu = \mu_0\,10^{\,b_p\Delta P + b_t\Delta T + b_{t2}\Delta T^2}
-
-    Parameters
-    ----------
-    p : array_like
-        Pressure [Pa].
-    T : array_like
-        Temperature [degC].
-    mu0 : array_like
-        Dynamic viscosity at the reference state [Pa s].
-    T0, p0 : array_like
-        Reference temperature [degC] and pressure [Pa].
-    b_p, b_t, b_t2 : array_like
-        Coefficients [1/Pa], [1/degC], [1/degC^2] (default: Skydrol, :data:`SKYDROL_MARE`).
-    """
-    dT = T - T0
-    return mu0 * 10.0 ** (b_p * (p - p0) + b_t * dT + b_t2 * dT * dT)
-
-
-def kinematic_viscosity_walther(T: Any, nu_40: float, nu_100: float) -> Any:
-    r"""Kinematic viscosity of a mineral oil against temperature, Walther's law (ASTM D341) [m^2/s].
-
-    .. math:: \log_{10}\log_{10}(\nu + 0.7) = A - B\log_{10}(T + 273.15)
-
-    with :math:`\nu` in cSt and :math:`A, B` through the two catalogue points
-    :math:`\nu_{40}` and :math:`\nu_{100}` (ISO 3448 grades are rated at 40 degC).
-    Valid above about 2 cSt.
-
-    Parameters
-    ----------
-    T : array_like
-        Temperature [degC].
-    nu_40, nu_100 : float
-        Kinematic viscosity at 40 and 100 degC [m^2/s].
-
-    Examples
-    --------
-    >>> round(float(kinematic_viscosity_walther(40.0, 32e-6, 5.4e-6)) * 1e6, 6)
-    32.0
-    """
-    t1, t2 = np.log10(313.15), np.log10(373.15)
-    w1, w2 = np.log10(np.log10(nu_40 * 1e6 + 0.7)), np.log10(np.log10(nu_100 * 1e6 + 0.7))
-    B = (w1 - w2) / (t2 - t1)
-    A = w1 + B * t1
-    return (10.0 ** (10.0 ** (A - B * m.log10(T + 273.15))) - 0.7) * 1e-6
+def get_fluid(name: str) -> Fluid:
+    """A built-in fluid by name (:data:`FLUIDS`)."""
+    if name not in FLUIDS:
+        raise ParameterError(f"fluid {name!r}: unknown; built-in fluids: {', '.join(FLUIDS)}")
+    return FLUIDS[name]

@@ -3,55 +3,112 @@
 Every dimensional value that enters hydroservo from a user (a model file, the
 ``--set`` option, a keyword argument given as a string) passes through
 :func:`to_si`, which checks its dimension against the one the parameter
-declares and returns a plain float in SI base units.  Inside the package all
+declares and returns a plain float in SI base units. Inside the package all
 numbers are SI floats; only results and files carry unit names again.
+
+The unit registry (pint) is built on first use, not on import: a bare number
+never needs it, so ``import hydroservo`` and the command line's ``--help``
+stay fast. ``hydroservo.units.ureg`` is that registry.
 """
 
 from __future__ import annotations
 
 import functools
 import math
-from typing import Any
-
-import pint
+from typing import TYPE_CHECKING, Any
 
 from hydroservo.errors import UnitError
 
-__all__ = ["ureg", "to_si", "from_si", "si_unit", "format_quantity", "parse_quantity"]
+if TYPE_CHECKING:
+    import pint
 
-ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-# Hydraulic shorthands that pint does not define under these names.
-ureg.define("lpm = liter / minute = L_min")
-ureg.define("cps = hertz")
+__all__ = [
+    "registry",
+    "to_si",
+    "from_si",
+    "si_unit",
+    "format_quantity",
+    "parse_quantity",
+    "is_bare_number",
+    "check_unit",
+    "same_dimension",
+]
+
+
+@functools.cache
+def registry() -> pint.UnitRegistry:
+    """The unit registry, built on first use (about 0.3 s: pint and its definitions)."""
+    import pint
+
+    reg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    # Hydraulic shorthands that pint does not define under these names.
+    reg.define("lpm = liter / minute = L_min")
+    reg.define("cps = hertz")
+    return reg
+
+
+def __getattr__(name: str) -> Any:
+    if name == "ureg":
+        return registry()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 @functools.lru_cache(maxsize=512)
 def _unit(unit: str) -> pint.Unit:
     try:
-        return ureg.Unit(unit)
+        return registry().Unit(unit)
     except Exception as exc:  # pint raises several exception types
         raise UnitError(f"unknown unit {unit!r}: {exc}") from None
 
 
+def check_unit(unit: str) -> None:
+    """Raise :class:`UnitError` unless ``unit`` is a unit ("" is dimensionless)."""
+    if unit:
+        _unit(unit)
+
+
+def same_dimension(a: str, b: str) -> bool:
+    """Whether units ``a`` and ``b`` have the same dimension ("" for dimensionless)."""
+    if a == b:
+        return True
+    return bool(_unit(a).dimensionality == _unit(b).dimensionality)
+
+
+def is_bare_number(value: Any) -> bool:
+    """True for a number, or a string holding only a number (``"0.5"``)."""
+    if isinstance(value, bool):
+        return False
+    if isinstance(value, (int, float)):
+        return True
+    if isinstance(value, str):
+        try:
+            float(value)
+        except ValueError:
+            return False
+        return True
+    return False
+
+
 def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
     """Read ``value`` (number, ``"1500 psi"``, pint quantity) as a quantity."""
-    if isinstance(value, pint.Quantity):
+    reg = registry()
+    if isinstance(value, reg.Quantity):
         return value
     if isinstance(value, bool):
         raise UnitError(f"{what}: expected a number or a quantity such as '3 bar', got {value!r}")
     if isinstance(value, (int, float)):
-        return ureg.Quantity(float(value), "")
+        return reg.Quantity(float(value), "")
     if isinstance(value, str):
         text = value.strip()
         try:
-            q = ureg.Quantity(text)
+            q = reg.Quantity(text)
         except Exception as exc:
             raise UnitError(
                 f"{what}: cannot read {value!r} as a quantity ({exc}); "
                 "expected a number followed by a unit, e.g. '1500 psi' or '25.5 L/min'"
             ) from None
-        if not isinstance(q, pint.Quantity):  # a bare number in a string
-            q = ureg.Quantity(float(q), "")
+        if not isinstance(q, reg.Quantity):  # a bare number in a string
+            q = reg.Quantity(float(q), "")
         return q
     raise UnitError(f"{what}: expected a number or a quantity such as '3 bar', got {value!r}")
 
@@ -73,15 +130,31 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
     -------
     float
         Magnitude in ``unit``.
+
+    Examples
+    --------
+    >>> round(to_si("1500 psi", "Pa"))
+    10342136
+    >>> to_si(0.5, "m")
+    0.5
     """
+    if is_bare_number(value):  # a bare number, given as such or in a string, is SI: no registry needed
+        out = float(value)
+        if math.isnan(out):
+            raise UnitError(f"{what}: {value!r} is not a number")
+        return out
     q = parse_quantity(value, what=what)
     target = _unit(unit)
-    if q.unitless:  # a bare number, given as such or in a string, is SI
+    if str(q.units) == "dimensionless":  # no unit at all (a percent is a unit: "5 %" is 0.05)
         return float(q.magnitude)
     try:
         out = float(q.to(target).magnitude)
-    except pint.DimensionalityError:
-        expected = "dimensionless" if target.dimensionless else f"{target:~P} ({ureg.get_dimensionality(target)})"
+    except Exception as exc:  # pint.DimensionalityError
+        if type(exc).__name__ != "DimensionalityError":
+            raise
+        expected = (
+            "dimensionless" if target.dimensionless else f"{target:~P} ({registry().get_dimensionality(target)})"
+        )
         raise UnitError(f"{what}: {value!r} has the wrong dimension; expected {expected}") from None
     if math.isnan(out):
         raise UnitError(f"{what}: {value!r} is not a number")
@@ -90,9 +163,12 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
 
 def from_si(value: float, unit: str, to: str) -> float:
     """Convert an SI magnitude in ``unit`` to unit ``to``."""
-    return float(ureg.Quantity(value, _unit(unit)).to(_unit(to)).magnitude)
+    if unit == to:
+        return float(value)
+    return float(registry().Quantity(value, _unit(unit)).to(_unit(to)).magnitude)
 
 
+@functools.lru_cache(maxsize=512)
 def si_unit(unit: str) -> str:
     """Short printable form of a unit string (``"m^3/s"`` -> ``"m³/s"``)."""
     if unit == "":

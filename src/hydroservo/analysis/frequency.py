@@ -1,6 +1,6 @@
 r"""Amplitude-dependent frequency response of a nonlinear system, by simulation.
 
-Seed 000 section 6.1 (eqs. 41-42): drive the model with sines of several
+[FerreiraND] section 6.1 (eqs. 41-42): drive the model with sines of several
 amplitudes and frequencies, let the transient die out, extract the
 fundamental of the output and report gain [dB] and phase [deg]. For a
 nonlinear system (rate limits, saturations) the result depends on the
@@ -38,7 +38,6 @@ periodic orbit, :math:`dz_0/dp = (I - \Phi_z)^{-1}\Phi_p`, again exact.
 
 from __future__ import annotations
 
-import csv
 import math
 import os
 from collections.abc import Mapping, Sequence
@@ -49,8 +48,10 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
+from hydroservo.components.signals import Sine
 from hydroservo.errors import ModelError, ParameterError, SolverError
 from hydroservo.system.system import System
+from hydroservo.units import to_si
 
 __all__ = ["FrequencyResponse", "PeriodicResponse", "sine_response", "wrap_degrees"]
 
@@ -91,7 +92,6 @@ class FrequencyResponse:
         self.gain_db = np.asarray(self.gain_db, dtype=float).reshape(shape)
         self.phase_deg = np.asarray(self.phase_deg, dtype=float).reshape(shape)
 
-    # -- files ---------------------------------------------------------------
     def rows(self) -> list[tuple[float, float, float, float]]:
         """(frequency [Hz], amplitude [%], gain [dB], phase [deg]) per point."""
         return [
@@ -101,81 +101,11 @@ class FrequencyResponse:
         ]
 
     def to_csv(self, path: str | Path) -> Path:
-        """Write ``frequency [Hz], amplitude [%], gain [dB], phase [deg]``, the format :meth:`from_csv` reads."""
-        path = Path(path)
-        with path.open("w", newline="") as fh:
-            w = csv.writer(fh)
-            w.writerow(["frequency [Hz]", "amplitude [%]", "gain [dB]", "phase [deg]"])
-            for row in self.rows():
-                w.writerow([f"{v:.10g}" for v in row])
-        return path
+        """Write the Bode data as CSV (:func:`hydroservo.io.bode.write_bode`)."""
+        from hydroservo.io.bode import write_bode
 
-    @classmethod
-    def from_csv(cls, path: str | Path) -> FrequencyResponse:
-        """Read Bode data: one row per point, columns frequency, amplitude (% of stroke), gain (dB), phase (deg).
+        return write_bode(self, path)
 
-        Header names are matched by their first word (``frequency``,
-        ``amplitude``, ``gain``, ``phase``), units in brackets are checked when
-        given; the phase column may be missing or empty (gain-only data).
-        Points must form a full grid (every amplitude at every frequency).
-        """
-        path = Path(path)
-        try:
-            text = path.read_text()
-        except OSError as exc:
-            raise ParameterError(f"Bode file {str(path)!r}: {exc.strerror}") from None
-        reader = csv.reader(line for line in text.splitlines() if line.strip() and not line.startswith("#"))
-        try:
-            header = next(reader)
-        except StopIteration:
-            raise ParameterError(f"Bode file {str(path)!r} is empty") from None
-        expected = {"frequency": "hz", "amplitude": "%", "gain": "db", "phase": "deg"}
-        cols: dict[str, int] = {}
-        for i, name in enumerate(header):
-            word = name.strip().split("[")[0].strip().lower()
-            unit = name.split("[")[1].split("]")[0].strip().lower() if "[" in name else None
-            if word in expected:
-                if unit is not None and unit != expected[word]:
-                    raise ParameterError(
-                        f"Bode file {str(path)!r}, column {name.strip()!r}: expected unit [{expected[word]}]"
-                    )
-                cols[word] = i
-        missing = [k for k in ("frequency", "amplitude", "gain") if k not in cols]
-        if missing:
-            raise ParameterError(
-                f"Bode file {str(path)!r}: missing column(s) {', '.join(missing)}; expected "
-                "'frequency [Hz], amplitude [%], gain [dB], phase [deg]' (phase optional)"
-            )
-        data = []
-        for lineno, row in enumerate(reader, start=2):
-            try:
-                vals = [float(row[cols[k]]) for k in ("frequency", "amplitude", "gain")]
-                ph = row[cols["phase"]].strip() if "phase" in cols and cols["phase"] < len(row) else ""
-                vals.append(float(ph) if ph else math.nan)
-            except (ValueError, IndexError):
-                raise ParameterError(f"Bode file {str(path)!r}, row {lineno}: expected numbers, got {row}") from None
-            data.append(vals)
-        if not data:
-            raise ParameterError(f"Bode file {str(path)!r}: no data rows")
-        arr = np.array(data)
-        if np.any(arr[:, 0] <= 0) or np.any(arr[:, 1] <= 0):
-            raise ParameterError(f"Bode file {str(path)!r}: expected positive frequencies and amplitudes")
-        freqs = np.unique(arr[:, 0])
-        amps = np.unique(arr[:, 1])
-        gain = np.full((amps.size, freqs.size), np.nan)
-        phase = np.full_like(gain, np.nan)
-        for f, a, g, p in arr:
-            i, j = int(np.searchsorted(amps, a)), int(np.searchsorted(freqs, f))
-            gain[i, j], phase[i, j] = g, p
-        if np.any(np.isnan(gain)):
-            i, j = np.argwhere(np.isnan(gain))[0]
-            raise ParameterError(
-                f"Bode file {str(path)!r}: no gain at {amps[i]:g} % and {freqs[j]:g} Hz; expected every amplitude at "
-                "every frequency"
-            )
-        return cls(amps / 100.0, freqs, gain, phase, label=path.stem)
-
-    # -- plots -----------------------------------------------------------------
     def plot(
         self,
         others: Sequence[FrequencyResponse] = (),
@@ -184,48 +114,10 @@ class FrequencyResponse:
         file: str | Path | None = None,
         f_max: float | None = None,
     ) -> Any:
-        """Bode plot (gain and phase against frequency, one colour per amplitude).
+        """Bode plot, ``others`` dashed in the same colours (:func:`hydroservo.plotting.bode.plot_bode`)."""
+        from hydroservo.plotting.bode import plot_bode
 
-        ``others`` are drawn dashed in the same colours (e.g. a model against data).
-        """
-        import matplotlib
-
-        if file is not None:
-            matplotlib.use("Agg", force=False)
-        import matplotlib.pyplot as plt
-
-        fig, (ax_g, ax_p) = plt.subplots(2, 1, sharex=True, figsize=(7, 6))
-        colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-        styles = ["-", "--", ":", "-."]
-        for k, resp in enumerate([self, *others]):
-            for i, a in enumerate(resp.amplitudes):
-                kw: dict[str, Any] = {"color": colors[i % len(colors)]}
-                if k == 0:  # the reference (data): one legend entry per amplitude
-                    kw["label"] = f"±{100 * a:g} %" + (f" {resp.label}" if resp.label else "")
-                    if others:
-                        kw.update(marker="o", ms=3, ls="none")
-                else:  # models: one line style each, one legend entry per model
-                    kw["ls"] = styles[(k - 1) % len(styles)]
-                    if i == 0:
-                        kw["label"] = resp.label or f"model {k}"
-                ax_g.plot(resp.frequencies, resp.gain_db[i], **kw)
-                if np.any(np.isfinite(resp.phase_deg[i])):
-                    ax_p.plot(resp.frequencies, resp.phase_deg[i], **kw)
-        ax_g.set_ylabel("gain [dB]")
-        ax_p.set_ylabel("phase [deg]")
-        ax_p.set_xlabel("frequency [Hz]")
-        for ax in (ax_g, ax_p):
-            ax.grid(True, alpha=0.4)
-            if f_max:
-                ax.axvline(f_max, color="0.6", lw=0.8)
-        ax_g.legend(fontsize=8, ncol=2)
-        if title:
-            ax_g.set_title(title)
-        fig.tight_layout()
-        if file is not None:
-            fig.savefig(file, dpi=110)
-            plt.close(fig)
-        return fig
+        return plot_bode(self, others, title=title, file=file, f_max=f_max)
 
 
 class PeriodicResponse:
@@ -241,12 +133,10 @@ class PeriodicResponse:
         Signal whose fundamental is measured: a state, an output or an alias.
     steps_per_period : int
         Runge-Kutta steps per period (256: gains within about 1e-3 dB of a
-        tight-tolerance CVODES run for the seed-000 spool; check with a finer grid).
+        tight-tolerance CVODES run for the spool of [FerreiraND]; check with a finer grid).
     """
 
     def __init__(self, system: System, source: str, output: str, steps_per_period: int = 256) -> None:
-        from hydroservo.components.control import Sine
-
         if source not in system.components or not isinstance(system[source], Sine):
             raise ModelError(f"frequency response: {source!r} is not a Sine component of system {system.name!r}")
         if steps_per_period < 16:
@@ -422,7 +312,7 @@ def sine_response(
     steps_per_period: int = 256,
     label: str = "",
 ) -> FrequencyResponse:
-    """Amplitude-dependent frequency response of ``output`` to the Sine ``source`` (seed 000 eqs. 41-42).
+    """Amplitude-dependent frequency response of ``output`` to the Sine ``source`` ([FerreiraND] eqs. 41-42).
 
     Parameters
     ----------
@@ -447,10 +337,8 @@ def sine_response(
     -------
     FrequencyResponse
     """
-    from hydroservo.units import to_si
-
     engine = PeriodicResponse(system, source, output, steps_per_period)
-    P = engine.parameters(system._p(params), np.asarray(amplitudes), np.asarray(frequencies))
+    P = engine.parameters(system.parameter_vector(params), np.asarray(amplitudes), np.asarray(frequencies))
     H, _ = engine.response(P)
     H = H.reshape(len(amplitudes), len(frequencies))
     gain, phase = gain_phase(H, np.asarray(frequencies), to_si(delay, "s", what="delay"))

@@ -1,36 +1,59 @@
-"""Component library. Every component type is registered by its class name."""
+"""Component library: every component type, registered by its class name.
 
-from hydroservo.components.actuators import Cylinder
-from hydroservo.components.base import REGISTRY, Component, Option, Output, Param, Port, State
-from hydroservo.components.control import (
-    PID,
-    Amplifier,
-    Gain,
-    Lag,
-    Ramp,
-    Saturation,
-    Sine,
-    Square,
-    Step,
-    Sum,
-    Table,
-    Transducer,
+=====================  ==========================================================
+module                 components
+=====================  ==========================================================
+:mod:`.sources`        ConstantPressure, Tank, PressureTable
+:mod:`.volume`         Volume
+:mod:`.cylinder`       Cylinder
+:mod:`.mass`           Mass
+:mod:`.valves`         FourWayValve, PseudoSectionValve, ServoSolenoidValve,
+                       StagedSlotValve
+:mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
+                       TorqueMotor, FlapperNozzleSpool
+:mod:`.signals`        Step, Ramp, Sine, Square, Table
+:mod:`.control`        Sum, Gain, Lag, Saturation, PID, Amplifier, Transducer
+=====================  ==========================================================
+
+What a component is (declarations and equations): :mod:`.base`.
+"""
+
+from hydroservo.components.base import (
+    REGISTRY,
+    Component,
+    FromSet,
+    Option,
+    Output,
+    Param,
+    Port,
+    RenamedWarning,
+    State,
 )
-from hydroservo.components.hydraulics import ConstantPressure, PressureTable, Tank, Volume
-from hydroservo.components.mechanics import Mass
-from hydroservo.components.proportional import PseudoSectionValve, ServoSolenoidValve, SpoolRateLimited
-from hydroservo.components.servovalve import FlapperNozzleSpool, TorqueMotor
-from hydroservo.components.spool import MareSpoolValve
-from hydroservo.components.valves import FourWayValve, SpoolFirstOrder, SpoolSecondOrder
+from hydroservo.components.control import PID, Amplifier, Gain, Lag, Saturation, Sum, Transducer
+from hydroservo.components.cylinder import Cylinder
+from hydroservo.components.mass import Mass
+from hydroservo.components.signals import Ramp, Sine, Square, Step, Table
+from hydroservo.components.sources import ConstantPressure, PressureTable, Tank
+from hydroservo.components.spools import (
+    FlapperNozzleSpool,
+    SpoolFirstOrder,
+    SpoolRateLimited,
+    SpoolSecondOrder,
+    TorqueMotor,
+)
+from hydroservo.components.valves import FourWayValve, PseudoSectionValve, ServoSolenoidValve, StagedSlotValve
+from hydroservo.components.volume import Volume
 
 __all__ = [
     "REGISTRY",
     "Component",
+    "FromSet",
     "Param",
     "State",
     "Port",
     "Output",
     "Option",
+    "RenamedWarning",
     "Cylinder",
     "Mass",
     "ConstantPressure",
@@ -38,12 +61,12 @@ __all__ = [
     "PressureTable",
     "Volume",
     "FourWayValve",
-    "MareSpoolValve",
+    "PseudoSectionValve",
+    "ServoSolenoidValve",
+    "StagedSlotValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",
-    "PseudoSectionValve",
-    "ServoSolenoidValve",
     "TorqueMotor",
     "FlapperNozzleSpool",
     "Step",

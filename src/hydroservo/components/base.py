@@ -19,19 +19,28 @@ and below it writes two methods with CasADi expressions:
 
 ``x``, ``u``, ``p`` and ``y`` are mappings from the declared names to
 expressions. A component never sees another component: only its inputs.
+The equations call the published laws of :mod:`hydroservo.laws`; a component
+adds only what makes a law a part (ports, states, saturations, options).
+
+A parameter that was renamed keeps its old name as an alias (``RENAMED``):
+model files written before the rename still load, with a warning.
 """
 
 from __future__ import annotations
 
+import copy
+import functools
 import math
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any, ClassVar
+from typing import Any, ClassVar, Self
 
-from hydroservo.errors import ParameterError, UnitError
-from hydroservo.units import si_unit, to_si, ureg
+from hydroservo.data import parameter_set
+from hydroservo.errors import ParameterError, RenamedWarning, UnitError
+from hydroservo.units import check_unit, is_bare_number, si_unit, to_si
 
-__all__ = ["Param", "State", "Port", "Output", "Option", "Component", "SIGNAL"]
+__all__ = ["FromSet", "Param", "State", "Port", "Output", "Option", "Component", "SIGNAL", "REGISTRY", "register", "RenamedWarning"]
 
 #: Placeholder unit of signal blocks (sources, sums, gains): replaced by the
 #: block's ``unit`` argument, or by "" (dimensionless) when none is given.
@@ -39,10 +48,32 @@ SIGNAL = "@"
 
 
 @dataclass(frozen=True)
-class Param:
-    """A numeric parameter: symbolic in the compiled model, so it can be swept or fitted."""
+class FromSet:
+    """A default taken from a parameter set of :mod:`hydroservo.data`: one source for published values.
 
-    default: float
+    Converted to the parameter's SI unit on first use (the package's TOML files
+    and the unit registry are read then, not on import).
+    """
+
+    set_name: str
+    table: str
+    key: str
+
+
+@functools.cache
+def _from_set(ref: FromSet, unit: str) -> float:
+    return parameter_set(ref.set_name).si(ref.table, ref.key, unit)
+
+
+@dataclass(frozen=True)
+class Param:
+    """A numeric parameter: symbolic in the compiled model, so it can be swept or fitted.
+
+    ``default`` is an SI number, or a :class:`FromSet` reference to a published
+    (or example) parameter set of the package.
+    """
+
+    default: float | FromSet
     unit: str
     description: str
     min: float | None = None
@@ -63,6 +94,12 @@ class Param:
             rng = "any finite value"
         unit = si_unit(self.unit)
         return f"{rng} {unit}" if unit != "-" else rng
+
+    def si_default(self) -> float:
+        """The default in SI (a :class:`FromSet` resolved)."""
+        if isinstance(self.default, FromSet):
+            return _from_set(self.default, self.unit)
+        return float(self.default)
 
     def check(self, value: float, what: str, given: Any = None) -> float:
         ok = math.isfinite(value)
@@ -120,6 +157,8 @@ class Component:
     INPUTS: ClassVar[dict[str, Port]] = {}
     OUTPUTS: ClassVar[dict[str, Output]] = {}
     OPTIONS: ClassVar[dict[str, Option]] = {}
+    #: Former parameter names -> current names (accepted with a :class:`RenamedWarning`).
+    RENAMED: ClassVar[dict[str, str]] = {}
 
     def __init__(self, name: str, unit: str | None = None, **values: Any) -> None:
         if not name.isidentifier():
@@ -127,15 +166,17 @@ class Component:
         self.name = name
         self.unit = unit
         self._bind_signal_unit(unit or "")
-        self.values: dict[str, float] = {k: v.default for k, v in self.PARAMETERS.items()}
+        self.values: dict[str, float] = {k: v.si_default() for k, v in self.PARAMETERS.items()}
+        #: The text each parameter was given as, when it carried a unit ("1500 psi"): model files keep it.
+        self.given: dict[str, str] = {}
         self.option_values: dict[str, str] = {k: v.default for k, v in self.OPTIONS.items()}
         self.set(**values)
 
     def _bind_signal_unit(self, unit: str) -> None:
         """Give signal blocks a unit: every declared unit "@" becomes ``unit``."""
         try:
-            ureg.Unit(unit)
-        except Exception:
+            check_unit(unit)
+        except UnitError:
             raise ParameterError(f"{self.name}.unit = {unit!r}: not a unit") from None
 
         def sub(u: str) -> str:
@@ -154,13 +195,45 @@ class Component:
     def set(self, **values: Any) -> None:
         """Set parameters (numbers in SI, or strings/quantities with units) and options."""
         for key, value in values.items():
+            key = self.current_name(key)
             if key in self.OPTIONS:
                 self.set_option(key, value)
             else:
                 self.values[key] = self.parse(key, value)
+                if isinstance(value, str) and not is_bare_number(value):
+                    self.given[key] = value.strip()
+                else:
+                    self.given.pop(key, None)
+
+    def current_name(self, key: str) -> str:
+        """``key``, or the current name of a renamed parameter (with a :class:`RenamedWarning`)."""
+        if key in self.RENAMED and key not in self.PARAMETERS and key not in self.OPTIONS:
+            new = self.RENAMED[key]
+            warnings.warn(
+                f"{self.name}.{key}: {type(self).__name__}'s parameter {key!r} is now called {new!r}",
+                RenamedWarning,
+                stacklevel=3,
+            )
+            return new
+        return key
+
+    def replace(self, *, check: bool = True, **values: float) -> Self:
+        """A copy with some parameters replaced by SI values, checked against their ranges unless ``check`` is False
+        (an optimiser's trial points)."""
+        new = copy.copy(self)
+        new.values = dict(self.values)
+        new.given = {k: v for k, v in self.given.items() if k not in values}
+        new.option_values = dict(self.option_values)
+        for key, value in values.items():
+            if key not in self.PARAMETERS:
+                raise ParameterError(f"{self.name}.{key}: unknown parameter of {type(self).__name__}")
+            value = float(value)
+            new.values[key] = self.PARAMETERS[key].check(value, f"{self.name}.{key}") if check else value
+        return new
 
     def parse(self, key: str, value: Any) -> float:
         """Check and convert one parameter value to SI."""
+        key = self.current_name(key)
         what = f"{self.name}.{key}"
         if key not in self.PARAMETERS:
             known = ", ".join(sorted(self.PARAMETERS) + sorted(self.OPTIONS))
@@ -206,13 +279,20 @@ class Component:
 
 
 @dataclass
-class _Registry:
+class Registry:
+    """Component types by class name, and former names of renamed types."""
+
     types: dict[str, type[Component]] = field(default_factory=dict)
+    renamed: dict[str, str] = field(default_factory=dict)
 
     def register(self, cls: type[Component]) -> type[Component]:
         self.types[cls.__name__] = cls
         return cls
 
+    def resolve(self, name: str) -> type[Component] | None:
+        """The type registered as ``name`` (or under its former name), or None."""
+        return self.types.get(self.renamed.get(name, name))
 
-REGISTRY = _Registry()
+
+REGISTRY = Registry()
 register = REGISTRY.register

@@ -1,4 +1,4 @@
-r"""Pseudo-section parameters from datasheet values (seed 000, sections 3-5).
+r"""Pseudo-section parameters from datasheet values ([FerreiraND] sections 3-5).
 
 A datasheet gives the nominal flow :math:`Q_n` at a drop :math:`P_n` per
 metering edge and some of the three null characteristics: relative pressure
@@ -39,30 +39,27 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from scipy.optimize import brentq, least_squares
 
-from hydroservo import pseudo_sections as ps
+from hydroservo.components.valves.pseudo_section import PseudoSectionValve
 from hydroservo.errors import ParameterError
+from hydroservo.laws import pseudo_section as ps
 from hydroservo.units import from_si, to_si
 
 __all__ = [
     "CHARACTERISTICS",
-    "PARAMETER_UNITS",
-    "PAPER_UNITS",
     "Datasheet",
-    "PseudoSectionModel",
+    "PseudoSectionFit",
     "fit_datasheet",
-    "characteristics",
+    "fit_variable_structure",
+    "fit_fixed_structure",
+    "fitted_valve",
+    "deviations",
 ]
 
 #: Null characteristics that can be matched, with their datasheet field.
 CHARACTERISTICS = {"pressure-gain": "K_p0", "flow-gain": "K_q0", "leakage": "q_lk0"}
 
 _A = ps.PARAMETER_UNITS["gamma"]
-_A2 = ps.PARAMETER_UNITS["k3"]
-PARAMETER_UNITS = ps.PARAMETER_UNITS
-#: The units the paper prints them in.
-PAPER_UNITS = {k: {"": "", _A: "L/min/bar^0.5", _A2: "(L/min)^2/bar"}[u] for k, u in PARAMETER_UNITS.items()}
 
 _FIELDS = {
     "Q_n": ("m^3/s", "nominal flow at P_n per metering edge"),
@@ -139,38 +136,50 @@ class Datasheet:
         return out
 
 
+def fitted_valve(structure: str, params: Mapping[str, float], name: str = "valve") -> PseudoSectionValve:
+    """A :class:`~hydroservo.components.PseudoSectionValve` of ``structure`` with the pseudo-section ``params`` (SI)."""
+    return PseudoSectionValve(name, structure=structure).replace(check=False, **params)
+
+
 @dataclass
-class PseudoSectionModel:
-    """A fitted (or given) pseudo-section function of a matched symmetrical valve.
+class PseudoSectionFit:
+    """Pseudo-sections fitted to a datasheet or to measured curves: the valve, and what it was fitted to.
 
     Attributes
     ----------
-    structure : {"variable", "fixed"}
-    params : dict
-        Parameters in SI (:data:`PARAMETER_UNITS`).
+    valve : PseudoSectionValve
+        The fitted valve (its structure and parameters).
     datasheet : Datasheet or None
         What it was fitted to.
     match : tuple of str
-        The matched null characteristics.
+        The matched null characteristics (``("curves",)`` for a fit to curves).
     deviation : dict
         Relative deviation of each reproduced characteristic from the datasheet value.
     """
 
-    structure: str
-    params: dict[str, float]
+    valve: PseudoSectionValve
     datasheet: Datasheet | None = None
     match: tuple[str, ...] = ()
     deviation: dict[str, float] = field(default_factory=dict)
 
+    @property
+    def structure(self) -> str:
+        """``"variable"`` or ``"fixed"``."""
+        return self.valve.structure
+
+    @property
+    def params(self) -> dict[str, float]:
+        """The fitted parameters of the structure (SI, :data:`~hydroservo.laws.pseudo_section.PARAMETER_UNITS`)."""
+        return self.valve.section_parameters()
+
     def sections(self, x: Any) -> tuple[Any, Any]:
         """``(A_p(x), A_n(x))`` [m^3/s/Pa^0.5]."""
-        return ps.pseudo_sections(np.asarray(x, dtype=float), self.structure, self.params)
+        return self.valve.sections(x)
 
     def in_paper_units(self) -> dict[str, float]:
         """Parameters in the units the paper prints (L/min/bar^0.5, (L/min)^2/bar)."""
-        return {
-            k: from_si(v, PARAMETER_UNITS[k], PAPER_UNITS[k]) if PAPER_UNITS[k] else v for k, v in self.params.items()
-        }
+        units, shown = ps.PARAMETER_UNITS, ps.PRINTED_UNITS
+        return {k: from_si(v, units[k], shown[k]) if shown[k] else v for k, v in self.params.items()}
 
     def characteristics(self, P_n: float | None = None, P_s: float | None = None) -> dict[str, float]:
         """Reproduced Q_n, K_q0, K_p0, q_lk0 (SI); pressures default to the datasheet's."""
@@ -179,34 +188,7 @@ class PseudoSectionModel:
         P_s = P_s if P_s is not None else (ds.P_s if ds else None)
         if P_n is None or P_s is None:
             raise ParameterError("characteristics: give P_n and P_s (no datasheet attached)")
-        return characteristics(self.structure, self.params, P_n, P_s)
-
-    def check(self) -> None:
-        """Raise if a pseudo-section is negative (or its radicand) anywhere on [-1, 1]."""
-        ps.check_sections(self.structure, self.params)
-
-
-def characteristics(structure: str, params: Mapping[str, float], P_n: float, P_s: float) -> dict[str, float]:
-    """Static characteristics of a model, computed from its equations (SI).
-
-    ``Q_n`` = :math:`\\sqrt{P_n}A_p(1)` (eqs. 32, 34), ``Q_L1`` the load flow at
-    full opening with connected ports at :math:`2P_n` supply (eq. 9),
-    ``K_q0`` the slope of eq. (9) at null with :math:`P_s = 2P_n`, ``K_p0`` the
-    slope of eq. (13) at null, ``q_lk0`` eq. (27) at null and :math:`P_s`.
-    Slopes by central differences of step 1e-6.
-    """
-    h = 1e-6
-    x = np.array([-h, 0.0, h, 1.0])
-    A_p, A_n = ps.pseudo_sections(x, structure, dict(params))
-    QL = ps.load_flow_no_load(A_p, A_n, 2.0 * P_n)
-    PL = ps.relative_load_pressure(A_p, A_n)
-    return {
-        "Q_n": float(math.sqrt(P_n) * A_p[3]),
-        "Q_L1": float(QL[3]),
-        "K_q0": float((QL[2] - QL[0]) / (2 * h)),
-        "K_p0": float((PL[2] - PL[0]) / (2 * h)),
-        "q_lk0": float(ps.leakage_blocked(A_p[1], A_n[1], P_s)),
-    }
+        return self.valve.characteristics(P_n, P_s)
 
 
 def _parse_match(match: str | Iterable[str] | None, ds: Datasheet) -> tuple[str, str]:
@@ -230,7 +212,7 @@ def _parse_match(match: str | Iterable[str] | None, ds: Datasheet) -> tuple[str,
                 )
         if len(set(chosen)) != 2:
             raise ParameterError(
-                f"match = {','.join(chosen)!r}: expected exactly two of {', '.join(CHARACTERISTICS)}. Eq. (23) of seed 000, "
+                f"match = {','.join(chosen)!r}: expected exactly two of {', '.join(CHARACTERISTICS)}. Eq. (23) of FerreiraND, "
                 "K_q0 = q_lk0 K_p0 / 2, holds for any pseudo-sections, so the third follows from the other two"
             )
         for c in chosen:
@@ -255,7 +237,10 @@ def _null_section(ds: Datasheet, match: tuple[str, str]) -> tuple[float, float]:
     return A0, k  # type: ignore[return-value]
 
 
-def _fit_variable(ds: Datasheet, match: tuple[str, str]) -> dict[str, float]:
+def fit_variable_structure(ds: Datasheet, match: tuple[str, str]) -> dict[str, float]:
+    """Variable-structure parameters (eq. 24) matching Q_n and the two null characteristics ``match`` (SI)."""
+    from scipy.optimize import brentq  # SciPy's optimiser is imported where it is used
+
     gamma, k = _null_section(ds, match)
     target = ds.Q_n / math.sqrt(ds.P_n)  # A_p(1), eq. (32)
 
@@ -281,7 +266,10 @@ def _fit_variable(ds: Datasheet, match: tuple[str, str]) -> dict[str, float]:
     return {"k": float(k), "gamma": gamma, "alpha": alpha, "beta": beta, "x_t": x_t}
 
 
-def _fit_fixed(ds: Datasheet, match: tuple[str, str]) -> dict[str, float]:
+def fit_fixed_structure(ds: Datasheet, match: tuple[str, str]) -> dict[str, float]:
+    """Fixed-structure parameters (eq. 33) from eqs. (34), (39), (40) and the two characteristics ``match`` (SI)."""
+    from scipy.optimize import least_squares
+
     A0, k = _null_section(ds, match)
     c = ds.Q_n / math.sqrt(ds.P_n)
     S = k * A0 / 2.0  # dA_p/dx at null (eq. 26 with A_p = A_n = A0)
@@ -333,8 +321,8 @@ def fit_datasheet(
     datasheet: Datasheet | Mapping[str, Any],
     structure: str = "variable",
     match: str | Sequence[str] | None = None,
-) -> PseudoSectionModel:
-    """Pseudo-section parameters reproducing a datasheet (seed 000, sections 4.1-4.2).
+) -> PseudoSectionFit:
+    """Pseudo-section parameters reproducing a datasheet ([FerreiraND] sections 4.1-4.2).
 
     Parameters
     ----------
@@ -349,13 +337,13 @@ def fit_datasheet(
 
     Returns
     -------
-    PseudoSectionModel
+    PseudoSectionFit
         With ``deviation``: the relative error of every characteristic the
         datasheet gives, so the one that was not matched shows how far off it is.
 
     Examples
     --------
-    Seed 000 section 5, KBSDG4V-3, variable structure matching pressure gain and leakage:
+    [FerreiraND] section 5, KBSDG4V-3, variable structure matching pressure gain and leakage:
 
     >>> ds = {"Q_n": "25.5 L/min", "P_n": "35 bar", "K_q0": "28 L/min", "K_p0": 36.5,
     ...       "q_lk0": "1.36 L/min", "P_s": "70 bar"}
@@ -372,122 +360,14 @@ def fit_datasheet(
     if structure not in ps.STRUCTURES:
         raise ParameterError(f"structure = {structure!r}: expected one of {', '.join(ps.STRUCTURES)}")
     chosen = _parse_match(match, ds)
-    params = _fit_variable(ds, chosen) if structure == "variable" else _fit_fixed(ds, chosen)
-    model = PseudoSectionModel(structure, params, ds, chosen)
-    model.check()
-    got = model.characteristics()
-    model.deviation = {
-        key: got[key] / getattr(ds, key) - 1.0
-        for key in ("Q_n", "K_q0", "K_p0", "q_lk0")
-        if getattr(ds, key) is not None
-    }
-    return model
+    params = fit_variable_structure(ds, chosen) if structure == "variable" else fit_fixed_structure(ds, chosen)
+    fit = PseudoSectionFit(fitted_valve(structure, params), ds, chosen)
+    fit.valve.check_sections()
+    fit.deviation = deviations(fit, ds)
+    return fit
 
 
-def fit_curves(
-    curves: Mapping[str, Any],
-    datasheet: Datasheet | Mapping[str, Any],
-    structure: str = "variable",
-) -> PseudoSectionModel:
-    """Least-squares pseudo-sections from measured static curves (seed 000 section 5, Figs. 3-5).
-
-    The nominal flow is kept exact (eq. 32 or 34) and, for the fixed
-    structure, the far leakage of eq. (39) (the datasheet's ``x_far``,
-    ``q_lk_far``: default zero at full opening) nearly so; the remaining
-    parameters minimise the misfit of the measured curves: relative load pressure (eq. 13)
-    and leakage (eq. 27) with blocked ports at ``P_s``, and load flow (eq. 9)
-    with connected ports at ``P_n`` per edge when given. Each curve is scaled by
-    its largest magnitude, so each weighs alike.
-
-    Parameters
-    ----------
-    curves : mapping
-        ``x_s`` [-], ``P_L`` [-], ``q_lk`` [m^3/s] and optionally ``Q_L``
-        [m^3/s]; NaN marks a missing value.
-    datasheet : Datasheet or mapping
-        Gives ``Q_n``, ``P_n`` and ``P_s``; its null characteristics, if any,
-        are not used.
-    structure : {"variable", "fixed"}
-
-    Returns
-    -------
-    PseudoSectionModel
-        ``match == ("curves",)``; ``deviation`` holds the relative deviation of
-        each characteristic the datasheet gives and, as ``rms_P_L`` etc., the
-        RMS misfit of each curve relative to its largest value.
-    """
-    ds = datasheet if isinstance(datasheet, Datasheet) else Datasheet.from_mapping(datasheet, where="datasheet")
-    if structure not in ps.STRUCTURES:
-        raise ParameterError(f"structure = {structure!r}: expected one of {', '.join(ps.STRUCTURES)}")
-    x = np.asarray(curves["x_s"], dtype=float)
-    data = {k: np.asarray(curves[k], dtype=float) for k in ("P_L", "q_lk", "Q_L") if k in curves}
-    ok = {k: np.isfinite(v) & np.isfinite(x) for k, v in data.items()}
-    if ok["P_L"].sum() < 3 or ok["q_lk"].sum() < 3:
-        raise ParameterError("curves: expected at least 3 points of P_L and of q_lk")
-    scale = {k: float(np.max(np.abs(v[ok[k]]))) for k, v in data.items() if ok[k].any()}
-    # Start: the datasheet fit to the null characteristics read off the curves.
-    near = ok["P_L"] & (np.abs(data["P_L"]) < 0.5)
-    if near.sum() < 2:
-        raise ParameterError("curves: expected at least 2 points with |P_L| < 0.5 near null to read the pressure gain")
-    K_p0 = float(np.polyfit(x[near], np.arctanh(data["P_L"][near]), 1)[0])
-    q_lk0 = float(np.max(data["q_lk"][ok["q_lk"]]))
-    if not (K_p0 > 0 and q_lk0 > 0):
-        raise ParameterError(
-            f"curves: pressure gain {K_p0:.3g} and leakage {q_lk0:.3g} m^3/s read off the curves must be positive"
-        )
-    start = fit_datasheet(
-        Datasheet(Q_n=ds.Q_n, P_n=ds.P_n, P_s=ds.P_s, K_p0=K_p0, q_lk0=q_lk0), structure, "pressure-gain,leakage"
-    ).params
-    c = ds.Q_n / math.sqrt(ds.P_n)
-    if structure == "variable":
-        z0 = np.log([start["k"], start["gamma"]])
-    else:
-        z0 = np.array([start["k1"] / c, start["k3"] / c**2, start["k4"] / c**2, start["k5"] / c**2])
-
-    def params_of(z: np.ndarray) -> dict[str, float]:
-        if structure == "variable":
-            k, gamma = np.exp(z)
-            sub = Datasheet(Q_n=ds.Q_n, P_n=ds.P_n, P_s=ds.P_s, K_p0=k, q_lk0=gamma * math.sqrt(2 * ds.P_s))
-            return {k: float(v) for k, v in _fit_variable(sub, ("pressure-gain", "leakage")).items()}
-        k1, k3, k4, k5 = z[0] * c, z[1] * c**2, z[2] * c**2, z[3] * c**2
-        k2 = c + k1 - math.sqrt(max(k3 - k4 + k5, 0.0))  # eq. (34)
-        return {"k1": k1, "k2": k2, "k3": k3, "k4": k4, "k5": k5}
-
-    def residuals(z: np.ndarray) -> np.ndarray:
-        try:
-            p = params_of(z)
-        except ParameterError:
-            return np.full(sum(int(v.sum()) for v in ok.values()), 10.0)
-        A_p, A_n = ps.pseudo_sections(x, structure, p)
-        model = {
-            "P_L": ps.relative_load_pressure(A_p, A_n),
-            "q_lk": ps.leakage_blocked(A_p, A_n, ds.P_s),
-            "Q_L": ps.load_flow_no_load(A_p, A_n, 2.0 * ds.P_n),
-        }
-        res = [(model[k] - v)[ok[k]] / scale[k] for k, v in data.items() if ok[k].any()]
-        if structure == "fixed":  # eq. (39): the leakage far from null (default zero at x_s = 1), near-exact
-            far = ps.fixed_structure(-ds.x_far, **p) - ds.q_lk_far / (2.0 * math.sqrt(ds.P_s))
-            res.append(np.atleast_1d(100.0 * far / c))
-        return np.concatenate(res)
-
-    lower = np.array([-np.inf, 0.0, -np.inf, 1e-12]) if structure == "fixed" else -np.inf
-    sol = least_squares(residuals, z0, bounds=(lower, np.inf), xtol=1e-12, ftol=1e-12, max_nfev=2000)
-    params = params_of(sol.x)
-    model = PseudoSectionModel(structure, params, ds, ("curves",))
-    model.check()
-    A_p, A_n = model.sections(x)
-    fitted = {
-        "P_L": ps.relative_load_pressure(A_p, A_n),
-        "q_lk": ps.leakage_blocked(A_p, A_n, ds.P_s),
-        "Q_L": ps.load_flow_no_load(A_p, A_n, 2.0 * ds.P_n),
-    }
-    got = model.characteristics()
-    model.deviation = {
-        **{key: got[key] / getattr(ds, key) - 1.0 for key in ("Q_n", "K_q0", "K_p0", "q_lk0") if getattr(ds, key)},
-        **{
-            f"rms_{k}": float(np.sqrt(np.mean(((fitted[k] - v)[ok[k]] / scale[k]) ** 2)))
-            for k, v in data.items()
-            if ok[k].any()
-        },
-    }
-    return model
+def deviations(fit: PseudoSectionFit, ds: Datasheet) -> dict[str, float]:
+    """Relative deviation of each reproduced null characteristic (and Q_n) from the datasheet's value, where given."""
+    got = fit.characteristics()
+    return {key: got[key] / getattr(ds, key) - 1.0 for key in ("Q_n", "K_q0", "K_p0", "q_lk0") if getattr(ds, key)}

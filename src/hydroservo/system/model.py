@@ -16,7 +16,6 @@ from typing import Any
 
 import casadi as ca
 import numpy as np
-from scipy.optimize import least_squares
 
 from hydroservo.errors import ParameterError, SolverError, TrimError
 from hydroservo.system.result import BatchResult, Result
@@ -267,6 +266,8 @@ class Model:
         TrimError
             If the residual does not fall below ``tol`` (scaled rates, 1/s).
         """
+        from scipy.optimize import least_squares  # SciPy's optimiser is imported where it is used: import stays fast
+
         p = np.asarray(p, dtype=float)
         x = np.asarray(self.x0(p), dtype=float).ravel() if x_guess is None else np.asarray(x_guess, dtype=float)
         z0 = x / self.nominal

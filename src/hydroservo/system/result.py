@@ -106,25 +106,16 @@ class Result(_Signals):
         return df
 
     def to_csv(self, path: str | Path) -> Path:
-        """Write a CSV with the units in the column headers."""
-        path = Path(path)
-        self.to_pandas().to_csv(path, float_format="%.10g")
-        return path
+        """Write a CSV with the units in the column headers (:func:`hydroservo.io.results.write_csv`)."""
+        from hydroservo.io.results import write_csv
+
+        return write_csv(self, path)
 
     def to_mat(self, path: str | Path) -> Path:
-        """Write a MATLAB .mat file: one variable per signal (dots become underscores), plus ``t`` and ``units``."""
-        from scipy.io import savemat
+        """Write a MATLAB .mat file (:func:`hydroservo.io.results.write_mat`)."""
+        from hydroservo.io.results import write_mat
 
-        path = Path(path)
-        content: dict[str, Any] = {"t": self.t}
-        units = {}
-        for n, v in self.data.items():
-            key = n.replace(".", "_")
-            content[key] = v
-            units[key] = si_unit(self.units.get(n, ""))
-        content["units"] = units
-        savemat(path, content)
-        return path
+        return write_mat(self, path)
 
     def plot(
         self,
@@ -133,37 +124,14 @@ class Result(_Signals):
         title: str | None = None,
         file: str | Path | None = None,
     ) -> Figure:
-        """Plot signals against time, one panel per argument.
+        """Plot signals against time, one panel per argument (:func:`hydroservo.plotting.results.plot_result`).
 
         An argument may be a name or a list of names sharing a panel (same unit).
         ``units`` maps names to display units, e.g. ``{"y": "in"}``.
         """
-        import matplotlib
+        from hydroservo.plotting.results import plot_result
 
-        if file is not None:
-            matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
-        panels = [[n] if isinstance(n, str) else list(n) for n in (names or [[self.names[0]]])]
-        fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(7.5, 1.9 + 1.6 * len(panels)), squeeze=False)
-        for ax, panel in zip(axes[:, 0], panels):
-            labels = []
-            for n in panel:
-                unit = (units or {}).get(n)
-                shown = unit if unit else si_unit(self.units.get(n, ""))
-                ax.plot(self.t, self.get(n, unit), label=n)
-                labels.append(shown)
-            ax.set_ylabel(f"{' / '.join(panel)} [{labels[0]}]" if len(panel) == 1 else f"[{labels[0]}]")
-            if len(panel) > 1:
-                ax.legend(loc="best", fontsize="small")
-            ax.grid(True, alpha=0.3)
-        axes[-1, 0].set_xlabel("t [s]")
-        fig.suptitle(title or self.model)
-        fig.tight_layout()
-        if file is not None:
-            fig.savefig(file, dpi=110)
-            plt.close(fig)
-        return fig
+        return plot_result(self, *names, units=units, title=title, file=file)
 
 
 class BatchResult(_Signals):

@@ -1,0 +1,92 @@
+"""Command-line interface: a thin shell over the public API, one module per command group.
+
+=====================  ==========================================================
+module                 commands
+=====================  ==========================================================
+:mod:`.models`         ``models``, ``simulate``, ``export``
+:mod:`.valve`          ``valve fit``, ``valve bode``, ``valve fit-dynamics``
+:mod:`.valve_bench`    ``valve characteristics``, ``valve identify``
+:mod:`.fluid`          ``fluid``
+:mod:`.validate`       ``validate``
+:mod:`.examples`       ``examples``
+=====================  ==========================================================
+
+A command module imports the library when its command runs, not when the
+parser is built, so that ``--help`` and ``--version`` answer at once. Every
+error caused by the input (files, options, values) is printed as one message
+and exits with code 2; ``--debug`` shows the traceback instead.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import warnings
+from collections.abc import Sequence
+
+from hydroservo.cli import examples, fluid, models, validate, valve
+from hydroservo.errors import FluidRangeWarning, HydroservoError, RenamedWarning
+
+__all__ = ["main", "build_parser"]
+
+
+def build_parser() -> argparse.ArgumentParser:
+    from hydroservo import __version__
+
+    parser = argparse.ArgumentParser(
+        prog="hydroservo", description="Electro-hydraulic servo systems: simulate, export, validate."
+    )
+    parser.add_argument("--version", action="version", version=f"hydroservo {__version__}")
+    parser.add_argument("--debug", action="store_true", help="show tracebacks on errors")
+    sub = parser.add_subparsers(dest="command", required=True)
+    models.add_parsers(sub)
+    valve.add_parsers(sub)
+    fluid.add_parsers(sub)
+    validate.add_parsers(sub)
+    examples.add_parsers(sub)
+    return parser
+
+
+def _join_negative_values(argv: list[str]) -> list[str]:
+    """``--temperature -40,20`` -> ``--temperature=-40,20``: argparse would take -40,20 for an option."""
+    out: list[str] = []
+    it = iter(argv)
+    for tok in it:
+        if tok in ("--temperature", "--pressure", "--amplitudes", "--frequencies", "--predict", "--reference"):
+            nxt = next(it, None)
+            if nxt is not None and nxt.startswith("-") and len(nxt) > 1 and (nxt[1].isdigit() or nxt[1] == "."):
+                out.append(f"{tok}={nxt}")
+                continue
+            out.append(tok)
+            if nxt is not None:
+                out.append(nxt)
+            continue
+        out.append(tok)
+    return out
+
+
+def _show_warning(message: Warning | str, category: type[Warning], *args: object, **kwargs: object) -> None:
+    print(f"hydroservo: warning: {message}", file=sys.stderr)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(_join_negative_values(list(sys.argv[1:] if argv is None else argv)))
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("once", FluidRangeWarning)  # one line per message, not per call site
+            warnings.simplefilter("once", RenamedWarning)
+            warnings.showwarning = _show_warning
+            return int(args.func(args))
+    except BrokenPipeError:  # output piped into head & co.
+        sys.stderr.close()
+        return 0
+    except HydroservoError as exc:
+        if args.debug:
+            raise
+        print(f"hydroservo: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

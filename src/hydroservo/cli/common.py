@@ -1,0 +1,53 @@
+"""What every command group shares: reading lists of numbers, output folders, JSON output."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from hydroservo.errors import ParameterError
+
+__all__ = ["numbers", "frequencies", "outdir", "print_json"]
+
+
+def numbers(text: str, what: str) -> list[float]:
+    """Comma-separated numbers, e.g. ``5,25,50``; an error naming the option ``what`` otherwise."""
+    try:
+        vals = [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise ParameterError(f"{what} {text!r}: expected comma-separated numbers, e.g. 5,25,50") from None
+    if not vals:
+        raise ParameterError(f"{what} {text!r}: expected at least one number")
+    return vals
+
+
+def frequencies(text: str) -> np.ndarray:
+    """``START:STOP:STEP`` or a comma-separated list of frequencies [Hz]."""
+    if ":" in text:
+        parts = text.split(":")
+        try:
+            lo, hi, step = (float(p) for p in parts)
+        except ValueError:
+            raise ParameterError(f"--frequencies {text!r}: expected START:STOP:STEP in Hz, e.g. 10:300:10") from None
+        if not (0 < lo <= hi and step > 0):
+            raise ParameterError(f"--frequencies {text!r}: expected 0 < START <= STOP and STEP > 0 [Hz]")
+        return np.arange(lo, hi + step / 2, step)
+    vals = np.array(numbers(text, "--frequencies"))
+    if np.any(vals <= 0):
+        raise ParameterError(f"--frequencies {text!r}: expected positive frequencies [Hz]")
+    return vals
+
+
+def outdir(arg: str | None, default: str) -> Path:
+    """The output folder (``--out`` or ``default``), created if missing."""
+    out = Path(arg or default)
+    out.mkdir(parents=True, exist_ok=True)
+    return out
+
+
+def print_json(data: Any) -> None:
+    """Print ``data`` as indented JSON (NumPy numbers as floats)."""
+    print(json.dumps(data, indent=2, default=float))

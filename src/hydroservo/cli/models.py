@@ -1,0 +1,157 @@
+"""``hydroservo models``, ``simulate`` and ``export``: built-in systems and model files."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any
+
+from hydroservo.errors import HydroservoError, ParameterError
+
+__all__ = ["add_parsers", "load_with_sets"]
+
+
+def _parse_sets(items: Sequence[str]) -> list[tuple[str, str]]:
+    out = []
+    for item in items:
+        if "=" not in item:
+            raise ParameterError(f'--set {item!r}: expected COMPONENT.PARAMETER=VALUE, e.g. --set "load.W=3000 lbf"')
+        key, val = item.split("=", 1)
+        out.append((key.strip(), val.strip()))
+    return out
+
+
+def load_with_sets(name: str, sets: Sequence[str]) -> Any:
+    """A built-in model or model file with ``--set`` values applied."""
+    from hydroservo.io.model_file import load_model
+
+    system = load_model(name)
+    for key, val in _parse_sets(sets):
+        if key.count(".") != 1:
+            raise ParameterError(f"--set {key}={val}: expected COMPONENT.PARAMETER, e.g. load.W")
+        cname, pname = key.split(".")
+        if cname not in system.components:
+            raise ParameterError(
+                f"--set {key}={val}: no component {cname!r}; components: {', '.join(system.components)}"
+            )
+        comp = system.components[cname]
+        known = set(comp.PARAMETERS) | set(comp.OPTIONS) | set(comp.RENAMED)
+        if pname not in known:
+            names = ", ".join(list(comp.PARAMETERS) + list(comp.OPTIONS))
+            raise ParameterError(f"--set {key}={val}: {cname!r} has no parameter {pname!r}; parameters: {names}")
+        try:
+            system.set(key, val)
+        except HydroservoError as exc:
+            raise ParameterError(f"--set {key}={val}: {exc}") from None
+    return system
+
+
+def cmd_models(args: argparse.Namespace) -> int:
+    from hydroservo.io.model_file import builtin_models
+
+    models = builtin_models()
+    width = max(len(n) for n in models)
+    for name, meta in models.items():
+        source = f" [{meta['citation']}, {meta['status']}]" if meta["citation"] else ""
+        print(f"{name.ljust(width)}  {meta['description']}{source}\n{' ' * width}  validation: {meta['validation']}")
+    return 0
+
+
+def _default_panels(system: Any, result: Any) -> list[list[str]]:
+    if system.plots:
+        return list(system.plots)
+    if system.aliases:
+        return [[a] for a in list(system.aliases)[:8]]
+    return [[n] for n in result.names[: min(8, len(result.names))]]
+
+
+def _print_summary(system: Any, result: Any, t_end: float, wall: float, files: dict[str, str]) -> None:
+    print(
+        f"simulated {system.name!r} for {t_end:g} s in {wall * 1e3:.1f} ms "
+        f"(integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps)"
+    )
+    rows = [(n, s["unit"], s["final"], s["min"], s["max"]) for n, s in result.summary().items()]
+    w = max(len(r[0]) for r in rows)
+    print(f"{'signal'.ljust(w)}  {'unit':>8}  {'final':>12}  {'min':>12}  {'max':>12}")
+    for n, unit, fin, lo, hi in rows:
+        print(f"{n.ljust(w)}  {unit:>8}  {fin:>12.5g}  {lo:>12.5g}  {hi:>12.5g}")
+    print(f"wrote {files['csv']} and {files['plot']}")
+
+
+def cmd_simulate(args: argparse.Namespace) -> int:
+    from hydroservo.units import to_si
+
+    system = load_with_sets(args.model, args.set)
+    t_end = to_si(args.t_end, "s", what="--t-end") if args.t_end is not None else system.t_end
+    if not t_end > 0:
+        raise ParameterError(f"--t-end {args.t_end}: expected a positive duration")
+    start = time.perf_counter()
+    result = system.simulate(t_end=t_end, n_points=args.points, initial=args.initial, rtol=args.rtol)
+    wall = time.perf_counter() - start
+    out = Path(args.out or f"hydroservo-{system.name}")
+    out.mkdir(parents=True, exist_ok=True)
+    csv = result.to_csv(out / f"{system.name}.csv")
+    png = out / f"{system.name}.png"
+    title = f"{system.name}: simulated response"
+    result.plot(*_default_panels(system, result), units=system.plot_units, file=png, title=title)
+    files = {"csv": str(csv), "plot": str(png)}
+    if not args.json:
+        _print_summary(system, result, t_end, wall, files)
+        return 0
+    solver = {k: v for k, v in result.stats.items() if k != "wall_time_s"}
+    solver["integration_wall_time_s"] = result.stats["wall_time_s"]
+    report = {
+        "model": system.name,
+        "t_end_s": t_end,
+        "signals": result.summary(),
+        "solver": solver,
+        "wall_time_s": wall,
+        "files": files,
+    }
+    print(json.dumps(report, indent=2))
+    return 0
+
+
+def cmd_export(args: argparse.Namespace) -> int:
+    from hydroservo.io.model_file import model_to_toml
+
+    system = load_with_sets(args.model, args.set)
+    sys.stdout.write(model_to_toml(system))
+    return 0
+
+
+def add_parsers(sub: Any) -> None:
+    """Add ``models``, ``simulate`` and ``export``."""
+    p = sub.add_parser("models", help="list the built-in systems")
+    p.set_defaults(func=cmd_models)
+
+    p = sub.add_parser("simulate", help="simulate a built-in system or a TOML model file")
+    p.add_argument("model", metavar="NAME_OR_FILE")
+    p.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="PARAM=VALUE",
+        help='set a parameter or option, with units: --set "load.W=3000 lbf"',
+    )
+    p.add_argument("--t-end", default=None, metavar="T", help="duration, e.g. 2 or '500 ms'")
+    p.add_argument("--points", type=int, default=1001, help="number of output times (default 1001)")
+    p.add_argument(
+        "--initial",
+        choices=["parameters", "trim"],
+        default="parameters",
+        help="initial state from the parameters (default) or from an equilibrium",
+    )
+    p.add_argument("--rtol", type=float, default=1e-6, help="relative tolerance (default 1e-6)")
+    p.add_argument("--out", default=None, metavar="DIR", help="folder for CSV and PNG (default hydroservo-NAME)")
+    p.add_argument("--json", action="store_true", help="print signals, solver statistics and wall time as JSON")
+    p.set_defaults(func=cmd_simulate)
+
+    p = sub.add_parser("export", help="write a system as an editable TOML model file to stdout")
+    p.add_argument("model", metavar="NAME_OR_FILE")
+    p.add_argument("--set", action="append", default=[], metavar="PARAM=VALUE")
+    p.set_defaults(func=cmd_export)

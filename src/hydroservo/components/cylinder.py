@@ -1,0 +1,154 @@
+"""Hydraulic cylinders: two chambers whose pressures build up, a piston, end stops."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from hydroservo import backend as bk
+from hydroservo.components.base import Component, Option, Output, Param, Port, State, register
+from hydroservo.errors import ParameterError
+from hydroservo.laws.chamber import check_valve_floor, cylinder_volumes, pressure_rate
+from hydroservo.laws.fluid import bulk_modulus_eggerth, bulk_modulus_lee
+
+__all__ = ["Cylinder"]
+
+
+@register
+class Cylinder(Component):
+    r"""Double-acting cylinder, differential (``A_B < A_A``) or symmetric (``A_B = A_A``).
+
+    Chamber A is the piston (full-bore) side, B the rod side; positive ``x``
+    extends the rod, enlarging A. Chamber pressure dynamics, [Efe2014]
+    eqs. (3.32)-(3.41) and [FlightSimulatorND] eqs. (3-17), (3-19)
+    (:mod:`hydroservo.laws.chamber`):
+
+    .. math::
+        \dot p_A &= \frac{E'(p_A)}{V_A}\left(Q_A - A_A\dot x - Q_{Li} - Q_{LeA}\right),
+        \quad V_A = V_{A0} + k_V A_A x\\
+        \dot p_B &= \frac{E'(p_B)}{V_B}\left(Q_B + A_B\dot x + Q_{Li} - Q_{LeB}\right),
+        \quad V_B = V_{B0} - k_V A_B x
+
+    with internal leakage :math:`Q_{Li} = C_{Li}(p_A - p_B)` ([Efe2014] eq. 3.42) and
+    external leakage :math:`Q_{Le} = C_{Le} p`. ``V_A0``, ``V_B0`` are the
+    volumes at ``x = 0`` including dead volumes and the lines to the valve.
+    ``k_V`` = 1 makes the volumes follow the piston; 0 freezes them at
+    ``V_A0``, ``V_B0`` in the capacitance terms :math:`V/E'` (the displacement
+    flows :math:`A\dot x` stay), as [FlightSimulatorND] does in its final model
+    (section 3.2.2, eqs. 3-31, 3-32).
+
+    Effective bulk modulus (option ``bulk_modulus``): ``constant`` (``beta_e``),
+    ``lee`` ([Efe2014] eq. 3.2 with ``E_max``) or ``eggerth`` (eq. 3.3, Table
+    3.1 interpolated at ``temperature``).
+
+    Pressure floor (option ``pressure_floor``): ``check-valve`` models
+    replenishing check valves of instantaneous response, [FlightSimulatorND] eqs.
+    (3-29)-(3-30): a chamber at or below ``p_floor`` cannot lose pressure.
+
+    Output ``F`` is the hydraulic force on the piston in +x plus the end-stop
+    force (a spring-damper of stiffness ``k_stop`` beyond ``x_min``/``x_max``,
+    active only when ``k_stop`` > 0). Output ``m_oil`` is the oil mass in both
+    chambers ([Efe2014] eqs. 3.44-3.46); connect it to a mass's ``m_add`` to
+    count it in the moving mass.
+    """
+
+    RENAMED = {"beta": "beta_e"}
+
+    PARAMETERS = {
+        "A_A": Param(2e-3, "m^2", "piston area, side A", min=0.0, min_inclusive=False),
+        "A_B": Param(1e-3, "m^2", "annulus area, side B (rod side)", min=0.0, min_inclusive=False),
+        "V_A0": Param(
+            5e-4, "m^3", "volume of side A at x = 0, with dead volume and line", min=0.0, min_inclusive=False
+        ),
+        "V_B0": Param(
+            5e-4, "m^3", "volume of side B at x = 0, with dead volume and line", min=0.0, min_inclusive=False
+        ),
+        "k_V": Param(1.0, "", "1: volumes follow the piston; 0: frozen at V_A0, V_B0", min=0.0, max=1.0),
+        "C_Li": Param(0.0, "m^3/s/Pa", "internal leakage coefficient A to B", min=0.0),
+        "C_LeA": Param(0.0, "m^3/s/Pa", "external leakage coefficient of side A", min=0.0),
+        "C_LeB": Param(0.0, "m^3/s/Pa", "external leakage coefficient of side B", min=0.0),
+        "beta_e": Param(1.4e9, "Pa", "effective bulk modulus (option constant)", min=0.0, min_inclusive=False),
+        "E_max": Param(1.8e9, "Pa", "pure-oil bulk modulus (option lee)", min=0.0, min_inclusive=False),
+        "p_max": Param(280e5, "Pa", "maximum pressure (option lee)", min=0.0, min_inclusive=False),
+        "temperature": Param(50.0, "degC", "oil temperature (option eggerth)", min=20.0, max=90.0),
+        "rho": Param(870.0, "kg/m^3", "oil density (for m_oil)", min=0.0),
+        "p_floor": Param(0.0, "Pa", "lowest chamber pressure (option check-valve)"),
+        "x_min": Param(-0.1, "m", "end stop, retracted"),
+        "x_max": Param(0.1, "m", "end stop, extended"),
+        "k_stop": Param(0.0, "N/m", "end-stop stiffness (0: no end stops)", min=0.0),
+        "c_stop": Param(0.0, "N*s/m", "end-stop damping", min=0.0),
+        "pA0": Param(0.0, "Pa", "initial pressure, side A"),
+        "pB0": Param(0.0, "Pa", "initial pressure, side B"),
+    }
+    OPTIONS = {
+        "bulk_modulus": Option("constant", ("constant", "lee", "eggerth"), "effective bulk modulus law"),
+        "pressure_floor": Option("check-valve", ("check-valve", "none"), "replenishing check valves"),
+    }
+    STATES = {
+        "pA": State("Pa", "pressure, side A", initial="pA0", nominal=1e7),
+        "pB": State("Pa", "pressure, side B", initial="pB0", nominal=1e7),
+    }
+    INPUTS = {
+        "QA": Port("m^3/s", "flow into side A"),
+        "QB": Port("m^3/s", "flow into side B"),
+        "x": Port("m", "piston position"),
+        "v": Port("m/s", "piston velocity"),
+    }
+    OUTPUTS = {
+        "pA": Output("Pa", "pressure, side A"),
+        "pB": Output("Pa", "pressure, side B"),
+        "F": Output("N", "force on the piston in +x (hydraulic and end stops)"),
+        "m_oil": Output("kg", "oil mass in both chambers"),
+        "QLi": Output("m^3/s", "internal leakage A to B"),
+    }
+
+    def check(self) -> None:
+        v = self.values
+        if v["x_min"] >= v["x_max"]:
+            raise ParameterError(f"{self.name}.x_min = {v['x_min']:g} m: expected below x_max = {v['x_max']:g} m")
+        for side, area in (("A", "A_A"), ("B", "A_B")):
+            for end in ("x_min", "x_max"):
+                sign = 1.0 if side == "A" else -1.0
+                vol = v[f"V_{side}0"] + sign * v["k_V"] * v[area] * v[end]
+                if vol <= 0:
+                    raise ParameterError(
+                        f"{self.name}.V_{side}0 = {v[f'V_{side}0']:g} m³: chamber {side} would have volume {vol:g} m³ "
+                        f"at {end} = {v[end]:g} m; expected a positive volume over the stroke"
+                    )
+
+    def _bulk(self, pr: Any, p: Mapping[str, Any]) -> Any:
+        law = self.option("bulk_modulus")
+        if law == "constant":
+            return p["beta_e"]
+        if law == "lee":
+            return bulk_modulus_lee(pr, E_max=p["E_max"], p_max=p["p_max"])
+        return bulk_modulus_eggerth(pr, temperature=p["temperature"])
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        pA, pB = x["pA"], x["pB"]
+        out = {"pA": pA, "pB": pB, "QLi": p["C_Li"] * (pA - pB)}
+        pos = u["x"]
+        over = bk.fmax(pos - p["x_max"], 0.0)
+        under = bk.fmin(pos - p["x_min"], 0.0)
+        in_stop = bk.if_else(over - under > 0, 1.0, 0.0)
+        stop = -p["k_stop"] * (over + under) - p["c_stop"] * u["v"] * in_stop
+        out["F"] = pA * p["A_A"] - pB * p["A_B"] + stop
+        VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
+        out["m_oil"] = p["rho"] * (VA + VB)
+        return out
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        pA, pB = x["pA"], x["pB"]
+        pos, vel = u["x"], u["v"]
+        VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
+        QLi = y["QLi"]
+        dpA = pressure_rate(self._bulk(pA, p), VA, u["QA"] - p["A_A"] * vel - QLi - p["C_LeA"] * pA)
+        dpB = pressure_rate(self._bulk(pB, p), VB, u["QB"] + p["A_B"] * vel + QLi - p["C_LeB"] * pB)
+        if self.option("pressure_floor") == "check-valve":
+            dpA = check_valve_floor(pA, dpA, p["p_floor"])
+            dpB = check_valve_floor(pB, dpB, p["p_floor"])
+        return {"pA": dpA, "pB": dpB}

@@ -1,0 +1,78 @@
+"""Moving masses and their loads: weight, damping, spring, Stribeck friction."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from hydroservo import backend as bk
+from hydroservo.components.base import Component, Output, Param, Port, State, register
+from hydroservo.laws.friction import stribeck
+
+__all__ = ["Mass"]
+
+G = 9.80665
+
+
+@register
+class Mass(Component):
+    r"""Rigid mass on a line with weight, damping, spring and Stribeck friction.
+
+    .. math:: (m + m_{add})\ddot x = F + F_{ext} - W\sin\theta - F_f(\dot x) - k_{spring}(x - x_{spring})
+
+    with the Stribeck friction :math:`F_f` of [Efe2014] eq. (3.47) (viscous
+    coefficient ``B`` = :math:`\sigma`, ``F_c0``, ``F_s0``, ``c_s``; the sign is
+    smoothed as :math:`\tanh(\dot x/v_{reg})`), the weight ``W`` acting
+    downwards and :math:`\theta` (``incline``) the angle of the +x axis above
+    the horizontal (90 deg: +x points up). [Efe2014] eq. (3.43); [FlightSimulatorND] eq.
+    (3-26), where the weight-per-mass term "g" is :math:`W/M`.
+    ``m_add`` (input) is added mass such as a cylinder's oil ([Efe2014] eqs.
+    3.44-3.46).
+    """
+
+    RENAMED = {"k": "k_spring", "x_s": "x_spring"}
+
+    PARAMETERS = {
+        "m": Param(100.0, "kg", "moving mass", min=0.0, min_inclusive=False),
+        "W": Param(0.0, "N", "weight carried (acts downwards)", min=0.0),
+        "incline": Param(np.pi / 2, "rad", "angle of the +x axis above horizontal", min=-np.pi, max=np.pi),
+        "B": Param(0.0, "N*s/m", "viscous friction coefficient (sigma)", min=0.0),
+        "F_c0": Param(0.0, "N", "Coulomb friction", min=0.0),
+        "F_s0": Param(0.0, "N", "static friction above Coulomb", min=0.0),
+        "c_s": Param(0.01, "m/s", "Stribeck velocity", min=0.0, min_inclusive=False),
+        "v_reg": Param(1e-4, "m/s", "velocity over which the friction sign is smoothed", min=0.0, min_inclusive=False),
+        "k_spring": Param(0.0, "N/m", "spring stiffness", min=0.0),
+        "x_spring": Param(0.0, "m", "spring free position"),
+        "x0": Param(0.0, "m", "initial position"),
+        "v0": Param(0.0, "m/s", "initial velocity"),
+    }
+    STATES = {
+        "x": State("m", "position", initial="x0", nominal=0.1),
+        "v": State("m/s", "velocity", initial="v0", nominal=0.1),
+    }
+    INPUTS = {
+        "F": Port("N", "driving force in +x (e.g. a cylinder's F)", default=0.0),
+        "F_ext": Port("N", "external force in +x", default=0.0),
+        "m_add": Port("kg", "added moving mass", default=0.0),
+    }
+    OUTPUTS = {
+        "x": Output("m", "position"),
+        "v": Output("m/s", "velocity"),
+        "F_f": Output("N", "friction force (opposing motion)"),
+    }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        v = x["v"]
+        Ff = stribeck(v, p["B"], p["F_c0"], p["F_s0"], p["c_s"], p["v_reg"])
+        return {"x": x["x"], "v": v, "F_f": Ff}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        weight = p["W"] * bk.sin(p["incline"])
+        force = u["F"] + u["F_ext"] - weight - y["F_f"] - p["k_spring"] * (x["x"] - p["x_spring"])
+        return {"x": x["v"], "v": force / (p["m"] + u["m_add"])}

@@ -1,0 +1,148 @@
+"""Signal sources: steps, ramps, sines, square waves and time tables.
+
+Signal blocks carry the unit given as ``unit=`` when they are created
+(``Step("vi", unit="V", amplitude="2 V")``); without it they are
+dimensionless.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from hydroservo import backend as bk
+from hydroservo.components.base import SIGNAL, Component, Output, Param, register
+from hydroservo.errors import ParameterError
+
+__all__ = ["Step", "Ramp", "Sine", "Square", "Table", "SIGNAL_OUTPUT"]
+
+#: The output of every signal block.
+SIGNAL_OUTPUT = {"y": Output(SIGNAL, "signal")}
+
+
+@register
+class Step(Component):
+    """Step: ``offset`` before ``t_step``, ``offset + amplitude`` from ``t_step`` on."""
+
+    PARAMETERS = {
+        "amplitude": Param(1.0, SIGNAL, "step height"),
+        "t_step": Param(0.0, "s", "time of the step", min=0.0),
+        "offset": Param(0.0, SIGNAL, "value before the step"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": p["offset"] + bk.if_else(t >= p["t_step"], p["amplitude"], 0.0)}
+
+
+@register
+class Ramp(Component):
+    """Ramp of ``slope`` per second from ``t_start`` on, limited to ``limit`` in magnitude of change."""
+
+    PARAMETERS = {
+        "slope": Param(1.0, SIGNAL + "/s", "rate of change"),
+        "t_start": Param(0.0, "s", "start time", min=0.0),
+        "limit": Param(1e30, SIGNAL, "largest change from the offset", min=0.0),
+        "offset": Param(0.0, SIGNAL, "initial value"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        change = p["slope"] * bk.fmax(t - p["t_start"], 0.0)
+        change = bk.fmin(bk.fmax(change, -p["limit"]), p["limit"])
+        return {"y": p["offset"] + change}
+
+
+@register
+class Sine(Component):
+    """``offset + amplitude * sin(2 pi f (t - t_start) + phase)`` from ``t_start`` on."""
+
+    PARAMETERS = {
+        "amplitude": Param(1.0, SIGNAL, "amplitude"),
+        "frequency": Param(1.0, "Hz", "frequency", min=0.0),
+        "phase": Param(0.0, "rad", "phase at t_start"),
+        "t_start": Param(0.0, "s", "start time", min=0.0),
+        "offset": Param(0.0, SIGNAL, "offset"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        tau = t - p["t_start"]
+        wave = p["amplitude"] * bk.sin(2 * np.pi * p["frequency"] * tau + p["phase"])
+        return {"y": p["offset"] + bk.if_else(tau >= 0, wave, 0.0)}
+
+
+@register
+class Square(Component):
+    """Square wave of ``amplitude`` about ``offset``, positive first half-period, from ``t_start`` on."""
+
+    PARAMETERS = {
+        "amplitude": Param(1.0, SIGNAL, "amplitude"),
+        "frequency": Param(1.0, "Hz", "frequency", min=0.0, min_inclusive=False),
+        "t_start": Param(0.0, "s", "start time", min=0.0),
+        "offset": Param(0.0, SIGNAL, "offset"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        tau = t - p["t_start"]
+        phase = tau * p["frequency"]
+        frac = phase - bk.floor(phase)
+        wave = bk.if_else(frac < 0.5, p["amplitude"], -p["amplitude"])
+        return {"y": p["offset"] + bk.if_else(tau >= 0, wave, 0.0)}
+
+
+@register
+class Table(Component):
+    """Signal from a time table, linear between points, held outside.
+
+    ``times`` [s] and ``values`` (the block's unit) are equally long lists. To
+    take them from a CSV file use :func:`hydroservo.io.read_time_table`; a model
+    file names the file with ``file = "record.csv"`` (and ``column``), and
+    ``source`` keeps that name so that the model file can be written again.
+    """
+
+    PARAMETERS = {"scale": Param(1.0, "", "factor applied to the values")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def __init__(
+        self,
+        name: str,
+        times: Any = None,
+        values: Any = None,
+        source: Mapping[str, Any] | None = None,
+        **params: Any,
+    ) -> None:
+        super().__init__(name, **params)
+        self.source = None if source is None else dict(source)
+        if times is None or values is None:
+            raise ParameterError(f"{name}: a Table needs times and values (hydroservo.io.read_time_table reads a CSV)")
+        t = np.asarray(times, dtype=float).ravel()
+        v = np.asarray(values, dtype=float).ravel()
+        if t.size == 0 or t.size != v.size:
+            raise ParameterError(
+                f"{name}: times and values must be equally long and non-empty; got {t.size} and {v.size}"
+            )
+        if np.any(np.diff(t) <= 0):
+            raise ParameterError(f"{name}.times: expected strictly increasing times [s]")
+        self.times, self.table_values = t, v
+
+    def config(self) -> dict[str, Any]:
+        if self.source is not None:
+            return dict(self.source)
+        return {"times": self.times.tolist(), "values": self.table_values.tolist()}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": p["scale"] * bk.interp(t, self.times, self.table_values)}

@@ -1,0 +1,81 @@
+"""Pressure sources: supplies and tanks (pumps, relief and check valves follow in this module's kind)."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from hydroservo import backend as bk
+from hydroservo.components.base import Component, Output, Param, register
+from hydroservo.errors import ParameterError
+
+__all__ = ["ConstantPressure", "Tank", "PressureTable"]
+
+
+@register
+class ConstantPressure(Component):
+    """Ideal pressure source (pump with accumulators and pressure control).
+
+    [FlightSimulatorND] assumption (3): "a constant supply pressure is used".
+    """
+
+    PARAMETERS = {"p": Param(100e5, "Pa", "supply pressure (gauge)", min=0.0)}
+    OUTPUTS = {"p": Output("Pa", "supply pressure")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"p": p["p"]}
+
+
+@register
+class Tank(Component):
+    """Return line at constant pressure; [FlightSimulatorND] assumption (6): atmospheric (0 gauge)."""
+
+    PARAMETERS = {"p": Param(0.0, "Pa", "tank pressure (gauge)", min=-1e5)}
+    OUTPUTS = {"p": Output("Pa", "tank pressure")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"p": p["p"]}
+
+
+@register
+class PressureTable(Component):
+    """Supply pressure that follows a time table, linear between points, held outside.
+
+    [Efe2014] (section 4.1, V) measured the supply of the robot arm varying
+    between 25 and 35 bar and found that it matters; feed such a record here.
+    Set ``times`` [s] and ``pressures`` [Pa] as equally long lists.
+    """
+
+    PARAMETERS = {"scale": Param(1.0, "", "factor applied to the table", min=0.0)}
+    OUTPUTS = {"p": Output("Pa", "supply pressure")}
+
+    def __init__(self, name: str, times: Any = (0.0,), pressures: Any = (100e5,), **values: Any) -> None:
+        super().__init__(name, **values)
+        self.set_table(times, pressures)
+
+    def set_table(self, times: Any, pressures: Any) -> None:
+        t = np.asarray(times, dtype=float).ravel()
+        pr = np.asarray(pressures, dtype=float).ravel()
+        if t.size == 0 or t.size != pr.size:
+            raise ParameterError(
+                f"{self.name}: times and pressures must be equally long and non-empty; got {t.size} and {pr.size}"
+            )
+        if np.any(np.diff(t) <= 0):
+            raise ParameterError(f"{self.name}.times: expected strictly increasing times [s]")
+        if np.any(pr < 0):
+            raise ParameterError(f"{self.name}.pressures: expected gauge pressures ≥ 0 Pa, got min {pr.min():g} Pa")
+        self.times, self.pressures = t, pr
+
+    def config(self) -> dict[str, Any]:
+        return {"times": self.times.tolist(), "pressures": self.pressures.tolist()}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"p": p["scale"] * bk.interp(t, self.times, self.pressures)}

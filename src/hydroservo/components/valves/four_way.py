@@ -1,0 +1,128 @@
+"""Four-way spool valve with sharp edges: per-edge laps, clearance leakage, flow-gain and hysteresis tables ([Efe2014])."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from hydroservo import backend as bk
+from hydroservo.components.base import Component, Output, Param, Port, register
+from hydroservo.errors import ParameterError
+from hydroservo.laws.four_way import four_way_valve_flows
+from hydroservo.laws.orifice import transition_pressure
+
+__all__ = ["FourWayValve"]
+
+
+@register
+class FourWayValve(Component):
+    """Four-way spool valve: flows from spool position and port pressures.
+
+    Per-edge overlap (negative: underlap), optional clearance leakage, and the
+    flow-coefficient compensation :math:`K(x_v)` and hysteresis
+    :math:`H(x_v, d_f)` of [Efe2014] eqs. (3.22)-(3.23) as tables over the
+    relative spool position :math:`x_v/x_{v,max}`. With all overlaps zero and no
+    leakage it is the critical-centre valve of [FlightSimulatorND] (eqs. 3-18,
+    3-20, 3-22, 3-23, in their sign-correct form 3-18a and 3-23a). The flows
+    are :func:`hydroservo.laws.four_way.four_way_valve_flows`.
+
+    The turbulent law is regularised below the transition pressure at which
+    the flow number ([MareAttarND] eq. 4) with hydraulic diameter ``D_h``
+    reaches ``lambda_crit``; see :mod:`hydroservo.laws.orifice`.
+
+    Tables (lists, set in the constructor or model file): ``K_x``/``K`` and
+    ``H_x``/``H_opening``/``H_closing`` (``H_opening`` applies while
+    :math:`x_v \\dot x_v \\ge 0`). Defaults: 1 everywhere.
+    """
+
+    RENAMED = {"x_max": "xv_max"}
+    PARAMETERS = {
+        "c_v": Param(3.56e-4, "m^2/s/Pa^0.5", "flow coefficient per edge, Efe2014 eq. 3.9", min=0.0),
+        "xv_max": Param(1e-3, "m", "spool stroke (normalises the K and H tables)", min=0.0, min_inclusive=False),
+        "x_PA": Param(0.0, "m", "overlap of edge P-A (negative: underlap)"),
+        "x_AT": Param(0.0, "m", "overlap of edge A-T"),
+        "x_PB": Param(0.0, "m", "overlap of edge P-B"),
+        "x_BT": Param(0.0, "m", "overlap of edge B-T"),
+        "G_leak": Param(0.0, "m^3/s/Pa", "laminar clearance leakage conductance of each edge", min=0.0),
+        "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False),
+        "nu": Param(32e-6, "m^2/s", "kinematic viscosity (ISO VG 32 at 40 degC)", min=0.0, min_inclusive=False),
+        "D_h": Param(
+            1e-3, "m", "hydraulic diameter at which the laminar transition is evaluated", min=0.0, min_inclusive=False
+        ),
+        "lambda_crit": Param(1000.0, "", "critical flow number (MareAttarND eq. 4)", min=0.0, min_inclusive=False),
+    }
+    INPUTS = {
+        "xv": Port("m", "spool position"),
+        "vv": Port("m/s", "spool velocity (only for the hysteresis table)", default=0.0),
+        "pS": Port("Pa", "supply pressure"),
+        "pT": Port("Pa", "tank pressure", default=0.0),
+        "pA": Port("Pa", "pressure in line A"),
+        "pB": Port("Pa", "pressure in line B"),
+    }
+    OUTPUTS = {
+        "QA": Output("m^3/s", "flow out of port A into line A"),
+        "QB": Output("m^3/s", "flow out of port B into line B"),
+        "QS": Output("m^3/s", "flow drawn from supply"),
+        "QT": Output("m^3/s", "flow returned to tank"),
+    }
+
+    def __init__(self, name: str, tables: Mapping[str, Any] | None = None, **values: Any) -> None:
+        super().__init__(name, **values)
+        self.tables: dict[str, np.ndarray] = {
+            "K_x": np.array([-1.0, 1.0]),
+            "K": np.array([1.0, 1.0]),
+            "H_x": np.array([-1.0, 1.0]),
+            "H_opening": np.array([1.0, 1.0]),
+            "H_closing": np.array([1.0, 1.0]),
+        }
+        for key, val in (tables or {}).items():
+            if key not in self.tables:
+                raise ParameterError(f"{name}.tables.{key}: unknown table; known: {', '.join(self.tables)}")
+            self.tables[key] = np.asarray(val, dtype=float).ravel()
+        for xs, ys in (("K_x", ("K",)), ("H_x", ("H_opening", "H_closing"))):
+            grid = self.tables[xs]
+            if np.any(np.diff(grid) <= 0):
+                raise ParameterError(f"{name}.tables.{xs}: expected strictly increasing relative positions")
+            for y in ys:
+                if self.tables[y].size != grid.size:
+                    raise ParameterError(
+                        f"{name}.tables.{y}: {self.tables[y].size} values for {grid.size} points of {xs}"
+                    )
+                if np.any(self.tables[y] < 0) or np.any(self.tables[y] > 1.5):
+                    raise ParameterError(f"{name}.tables.{y}: expected factors between 0 and 1.5")
+
+    def config(self) -> dict[str, Any]:
+        return {"tables": {k: v.tolist() for k, v in self.tables.items()}} if self.has_tables() else {}
+
+    def has_tables(self) -> bool:
+        return any(np.any(self.tables[k] != 1.0) for k in ("K", "H_opening", "H_closing"))
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        xv = u["xv"]
+        K: Any = 1.0
+        if self.has_tables():
+            rel = xv / p["xv_max"]
+            h_open = bk.interp(rel, self.tables["H_x"], self.tables["H_opening"])
+            h_close = bk.interp(rel, self.tables["H_x"], self.tables["H_closing"])
+            K = bk.interp(rel, self.tables["K_x"], self.tables["K"]) * bk.if_else(xv * u["vv"] >= 0, h_open, h_close)
+        p_tr = transition_pressure(p["D_h"], p["rho"], p["nu"], p["lambda_crit"])
+        QA, QB, QS, QT = four_way_valve_flows(
+            xv,
+            u["pS"],
+            u["pT"],
+            u["pA"],
+            u["pB"],
+            p["c_v"],
+            p["x_PA"],
+            p["x_AT"],
+            p["x_PB"],
+            p["x_BT"],
+            p_tr,
+            p["G_leak"],
+            K,
+        )
+        return {"QA": QA, "QB": QB, "QS": QS, "QT": QT}

@@ -1,0 +1,42 @@
+"""Lumped volumes: a node where flows meet and pressure builds up."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from hydroservo.components.base import Component, Output, Param, Port, State, register
+from hydroservo.laws.chamber import pressure_rate
+
+__all__ = ["Volume"]
+
+
+@register
+class Volume(Component):
+    r"""Lumped volume node: :math:`\dot p = \frac{E}{V}\sum Q_{in}`.
+
+    [Efe2014] eq. (3.17) (:func:`hydroservo.laws.chamber.pressure_rate`). Up to
+    four flows may be connected; each is positive into the volume.
+    """
+
+    RENAMED = {"beta": "beta_e"}
+
+    PARAMETERS = {
+        "V": Param(1e-4, "m^3", "volume", min=0.0, min_inclusive=False),
+        "beta_e": Param(1.4e9, "Pa", "effective bulk modulus", min=0.0, min_inclusive=False),
+        "p0": Param(0.0, "Pa", "initial pressure"),
+    }
+    STATES = {"p": State("Pa", "pressure", initial="p0", nominal=1e7)}
+    INPUTS = {f"Q{i}": Port("m^3/s", f"flow {i} into the volume", default=0.0) for i in range(1, 5)}
+    OUTPUTS = {"p": Output("Pa", "pressure")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"p": x["p"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        q = u["Q1"] + u["Q2"] + u["Q3"] + u["Q4"]
+        return {"p": pressure_rate(p["beta_e"], p["V"], q)}

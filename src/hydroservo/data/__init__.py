@@ -1,0 +1,97 @@
+"""The package's own data: published parameter sets, example sets and built-in models, as TOML files.
+
+* ``parameters/NAME.toml``: a parameter set named after its source (the
+  citation key of :mod:`hydroservo.references`, plus a suffix for a second set
+  of the same source). Every value is written as its source prints it, in the
+  source's units ("0.1149 L/min/bar^0.5"); a ``[set]`` table says where it
+  comes from and whether it is ``published`` or an ``example`` (values chosen
+  by hydroservo where the source gives none).
+* ``models/NAME.toml``: the built-in systems, as model files
+  (:mod:`hydroservo.io.model_file`), in their source's units.
+* ``examples/``: the files the README's commands use (``hydroservo examples DIR``
+  copies them).
+
+This module only finds and parses the package's files (standard-library
+TOML, no unit registry); values are converted to SI by whoever uses them
+(:meth:`ParameterSet.si`), and user files are read by :mod:`hydroservo.io`.
+"""
+
+from __future__ import annotations
+
+import functools
+import tomllib
+from dataclasses import dataclass
+from importlib import resources
+from typing import Any
+
+from hydroservo.errors import ParameterError
+
+__all__ = ["ParameterSet", "parameter_set", "parameter_sets", "model_names", "model_text", "example_files"]
+
+_ROOT = resources.files("hydroservo.data")
+
+
+@dataclass(frozen=True)
+class ParameterSet:
+    """A parameter set of the package: its tables as printed, and where they come from."""
+
+    name: str
+    title: str
+    citation: str
+    status: str
+    where: str
+    tables: dict[str, Any]
+
+    def table(self, name: str) -> dict[str, Any]:
+        """Table ``name`` as printed (strings with units)."""
+        try:
+            return dict(self.tables[name])
+        except KeyError:
+            raise ParameterError(
+                f"parameter set {self.name!r} has no table {name!r}; tables: {', '.join(self.tables)}"
+            ) from None
+
+    def si(self, table: str, key: str, unit: str) -> float:
+        """Value ``key`` of ``table`` in the SI unit ``unit``."""
+        from hydroservo.units import to_si
+
+        entries = self.table(table)
+        if key not in entries:
+            raise ParameterError(f"parameter set {self.name!r}, [{table}]: no {key!r}")
+        return to_si(entries[key], unit, what=f"{self.name} [{table}] {key}")
+
+
+@functools.cache
+def parameter_set(name: str) -> ParameterSet:
+    """A parameter set of the package by name (:func:`parameter_sets`)."""
+    path = _ROOT / "parameters" / f"{name}.toml"
+    if not path.is_file():
+        raise ParameterError(f"no parameter set {name!r}; the package has {', '.join(parameter_sets())}")
+    data = tomllib.loads(path.read_text(encoding="utf-8"))
+    meta = data.pop("set")
+    return ParameterSet(name, meta["title"], meta["citation"], meta["status"], meta.get("where", ""), data)
+
+
+def parameter_sets() -> list[str]:
+    """Names of the package's parameter sets."""
+    return sorted(p.name[: -len(".toml")] for p in (_ROOT / "parameters").iterdir() if p.name.endswith(".toml"))
+
+
+def model_names() -> list[str]:
+    """Names of the built-in models, in the order ``hydroservo models`` lists them."""
+    names = [p.name[: -len(".toml")] for p in (_ROOT / "models").iterdir() if p.name.endswith(".toml")]
+    return sorted(names, key=lambda n: (n != "flight-simulator", n))
+
+
+def model_text(name: str) -> str:
+    """The model file of built-in model ``name``."""
+    path = _ROOT / "models" / f"{name}.toml"
+    if not path.is_file():
+        raise ParameterError(f"no built-in model {name!r}; built-in models: {', '.join(model_names())}")
+    return path.read_text(encoding="utf-8")
+
+
+def example_files() -> dict[str, str]:
+    """The example files the README uses: file name -> text."""
+    folder = _ROOT / "examples"
+    return {p.name: p.read_text(encoding="utf-8") for p in sorted(folder.iterdir(), key=lambda p: p.name) if p.is_file()}

@@ -1,0 +1,268 @@
+"""Model files: a system as human-readable TOML, every dimensional value with its unit.
+
+::
+
+    [model]
+    name = "valve-cylinder"
+    t_end = "1 s"
+    citation = "Efe2014"          # optional: where the model comes from (hydroservo.references)
+    status = "example"            # optional: published (a source's model) or example
+
+    [components.supply]
+    type = "ConstantPressure"
+    p = "210 bar"
+
+    [components.cyl]
+    type = "Cylinder"
+    A_A = "19.6 cm^2"
+    bulk_modulus = "lee"          # options are strings
+
+    [components.valve]
+    file = "valve.toml"           # a component parameter file; keys given here override it
+
+    [components.command]
+    type = "Table"
+    file = "record.csv"           # a Table's time table (CSV: time [s], then values)
+    column = "volts"
+
+    [connections]                 # input = output feeding it
+    "valve.pS" = "supply.p"
+
+    [initial]                     # optional: number, quantity or expression of parameters
+    "cyl.pA" = "50 bar"
+
+    [aliases]                     # optional: named expressions of signals
+    y = { expr = "-load.x", unit = "m", description = "retraction" }
+
+:func:`write_model` writes any system in this form and :func:`read_model`
+reads it back to the same system: a value given with a unit is written as it
+was given ("1500 psi"), any other in SI at full precision, so a round trip
+gives the same results. :func:`load_model` reads a built-in model by name or a
+model file by path.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from hydroservo.components.base import REGISTRY, Component
+from hydroservo.components.signals import Table
+from hydroservo.data import model_names, model_text
+from hydroservo.errors import HydroservoError, ModelFileError
+from hydroservo.io.component_file import read_component_file
+from hydroservo.io.tables import read_time_table
+from hydroservo.io.toml import read_toml, toml_key, toml_quantity, toml_string, toml_value
+from hydroservo.system import System
+from hydroservo.units import format_quantity, to_si
+
+__all__ = [
+    "read_model",
+    "write_model",
+    "model_to_toml",
+    "system_from_dict",
+    "load_model",
+    "builtin_models",
+    "available_models",
+]
+
+_SECTIONS = ("model", "components", "connections", "initial", "aliases")
+_META = ("citation", "status", "validation")
+
+
+def _component_lines(comp: Component) -> list[str]:
+    lines = [f"[components.{comp.name}]", f"type = {toml_string(type(comp).__name__)}"]
+    if comp.unit is not None:
+        lines.append(f"unit = {toml_string(comp.unit)}")
+    for key, opt in comp.OPTIONS.items():
+        lines.append(f"{key} = {toml_string(comp.option(key))}  # one of {', '.join(opt.choices)}")
+    for key, spec in comp.PARAMETERS.items():
+        text = toml_quantity(comp.values[key], spec.unit, comp.given.get(key))
+        lines.append(f"{key} = {text}  # {spec.description}")
+    for key, val in comp.config().items():
+        lines.append(f"{key} = {toml_value(val)}")
+    return lines
+
+
+def model_to_toml(system: System) -> str:
+    """The system as a TOML model file (text)."""
+    lines = [
+        f"# hydroservo model file: {system.name}",
+        "# Every dimensional value carries its unit; edit freely and run with `hydroservo simulate FILE`.",
+        "",
+        "[model]",
+        f"name = {toml_string(system.name)}",
+    ]
+    if system.description:
+        lines.append(f"description = {toml_string(system.description)}")
+    for key in _META:
+        if system.meta.get(key):
+            lines.append(f"{key} = {toml_string(system.meta[key])}")
+    lines.append(f"t_end = {toml_string(format_quantity(system.t_end, 's'))}")
+    if system.plots:
+        lines.append(f"plots = {toml_value(system.plots)}  # panels of signals for plots")
+    if system.plot_units:
+        lines.append(f"plot_units = {toml_value(system.plot_units)}")
+    for comp in system.components.values():
+        lines += ["", *_component_lines(comp)]
+    lines += ["", "[connections]  # input = the output that feeds it"]
+    for target, source in system.connections.items():
+        lines.append(f"{toml_string(target)} = {toml_string(source)}")
+    if system.initial:
+        lines += ["", "[initial]"]
+        for state, val in system.initial.items():
+            lines.append(f"{toml_string(state)} = {toml_value(system.initial_given.get(state, val))}")
+    if system.aliases:
+        lines += ["", "[aliases]"]
+        for name, alias in system.aliases.items():
+            entry = {"expr": alias.expr, "unit": alias.unit, "description": alias.description}
+            lines.append(f"{toml_key(name)} = {toml_value(entry)}")
+    return "\n".join(lines) + "\n"
+
+
+def write_model(system: System, path: str | Path) -> Path:
+    """Write ``system`` as a TOML model file."""
+    path = Path(path)
+    path.write_text(model_to_toml(system))
+    return path
+
+
+def read_model(path: str | Path) -> System:
+    """Read a TOML model file into a :class:`System`.
+
+    Raises
+    ------
+    ModelFileError
+        For a missing or malformed file, an unknown component type or parameter,
+        a value of the wrong dimension or out of range, or a bad connection; the
+        message names the file, the table and the key.
+    """
+    path = Path(path)
+    data = read_toml(path, "model file", ModelFileError)
+    system = system_from_dict(data, where=str(path), base=path.parent)
+    system.source = str(path)
+    return system
+
+
+def builtin_models() -> dict[str, dict[str, str]]:
+    """The built-in models: name -> description, citation, status and validation status."""
+    import tomllib
+
+    out = {}
+    for name in model_names():
+        meta = tomllib.loads(model_text(name)).get("model", {})
+        out[name] = {k: str(meta.get(k, "")) for k in ("description", *_META)}
+    return out
+
+
+def available_models() -> dict[str, str]:
+    """Names and descriptions of the built-in systems."""
+    return {name: meta["description"] for name, meta in builtin_models().items()}
+
+
+def load_model(name_or_path: str | Path) -> System:
+    """A built-in system by name (:func:`builtin_models`), or a system from a TOML model file."""
+    import tomllib
+
+    key = str(name_or_path)
+    if key in model_names():
+        system = system_from_dict(tomllib.loads(model_text(key)), where=f"built-in model {key!r}")
+        system.source = f"built-in:{key}"
+        return system
+    path = Path(key)
+    if path.suffix.lower() == ".toml" or path.exists():
+        return read_model(path)
+    raise ModelFileError(
+        f"{key!r} is neither a built-in model ({', '.join(model_names())}) nor a model file (.toml)"
+    )
+
+
+def _component_spec(spec: Any, ctx: str, base: Path | None) -> dict[str, Any]:
+    """A component table with its included parameter file (``file = "x.toml"``) merged in, or its time table read."""
+    if not isinstance(spec, dict):
+        raise ModelFileError(f"{ctx}: expected a table with a 'type' (one of {', '.join(sorted(REGISTRY.types))})")
+    if "file" not in spec:
+        return spec
+    file = Path(str(spec["file"]))
+    if not file.is_absolute() and base is not None:
+        file = base / file
+    try:
+        if file.suffix.lower() == ".toml":  # a component parameter file
+            return {**read_component_file(file), **{k: v for k, v in spec.items() if k != "file"}}
+        # a time table of a Table component
+        column = spec.get("column", 1)
+        times, values = read_time_table(file, column, what=ctx)
+    except HydroservoError as exc:
+        raise ModelFileError(f"{ctx}: {exc}") from None
+    rest = {k: v for k, v in spec.items() if k not in ("file", "column")}
+    source = {"file": str(spec["file"]), "column": column}
+    return {**rest, "times": times, "values": values, "source": source}
+
+
+def _add_components(system: System, comps: Any, where: str, base: Path | None) -> None:
+    if not isinstance(comps, dict) or not comps:
+        raise ModelFileError(f"{where}: no [components.NAME] tables; a model needs at least one component")
+    for cname, raw in comps.items():
+        ctx = f"{where}: [components.{cname}]"
+        spec = _component_spec(raw, ctx, base)
+        if "type" not in spec:
+            raise ModelFileError(f"{ctx}: missing 'type' (one of {', '.join(sorted(REGISTRY.types))})")
+        kind = spec["type"]
+        cls = REGISTRY.resolve(kind)
+        if cls is None:
+            raise ModelFileError(f"{ctx}: unknown component type {kind!r}; known: {', '.join(sorted(REGISTRY.types))}")
+        kwargs = {k: v for k, v in spec.items() if k != "type"}
+        if "source" in kwargs and cls is not Table:
+            raise ModelFileError(f"{ctx}: file {kwargs['source']['file']!r}: expected a component file (.toml)")
+        try:
+            system.add(cls(cname, **kwargs))
+        except (HydroservoError, TypeError) as exc:
+            raise ModelFileError(f"{ctx}: {exc}") from None
+
+
+def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | None = None) -> System:
+    """Build a system from the parsed contents of a model file.
+
+    A component table may name a component parameter file, ``file = "valve.toml"``
+    (relative to ``base``, the model file's folder), whose ``[component]`` table
+    supplies the type and parameters; keys in the model file override it. A
+    ``Table`` component may name a CSV time table the same way.
+    """
+    unknown = set(data) - set(_SECTIONS)
+    if unknown:
+        raise ModelFileError(
+            f"{where}: unknown section(s) {', '.join(sorted(unknown))}; expected {', '.join(_SECTIONS)}"
+        )
+    meta = data.get("model", {})
+    try:
+        t_end = to_si(meta.get("t_end", 1.0), "s", what="[model] t_end")
+    except HydroservoError as exc:
+        raise ModelFileError(f"{where}: {exc}") from None
+    system = System(str(meta.get("name", Path(where).stem)), str(meta.get("description", "")), t_end=t_end)
+    system.meta = {k: str(meta[k]) for k in _META if k in meta}
+    plots = meta.get("plots", [])
+    if not isinstance(plots, list) or not all(isinstance(p, (str, list)) for p in plots):
+        raise ModelFileError(f"{where}: [model] plots: expected a list of signal names or lists of names")
+    system.plots = [[p] if isinstance(p, str) else [str(n) for n in p] for p in plots]
+    system.plot_units = {str(k): str(v) for k, v in meta.get("plot_units", {}).items()}
+    _add_components(system, data.get("components"), where, base)
+    for target, source in data.get("connections", {}).items():
+        if not isinstance(source, str):
+            raise ModelFileError(f"{where}: [connections] {target!r}: expected the name of an output, got {source!r}")
+        try:
+            system.connect(source, target)
+        except HydroservoError as exc:
+            raise ModelFileError(f"{where}: [connections] {exc}") from None
+    try:
+        for state, val in data.get("initial", {}).items():
+            system.set_initial(state, val)
+        for name, alias in data.get("aliases", {}).items():
+            if isinstance(alias, str):
+                system.alias(name, alias)
+            elif isinstance(alias, dict) and "expr" in alias:
+                system.alias(name, alias["expr"], alias.get("unit", ""), alias.get("description", ""))
+            else:
+                raise ModelFileError(f"[aliases] {name}: expected an expression or {{ expr = ..., unit = ... }}")
+    except HydroservoError as exc:
+        raise ModelFileError(f"{where}: {exc}") from None
+    return system

@@ -1,0 +1,58 @@
+"""Published laws: pure functions, one per law, NumPy and CasADi alike, each cited to its equation.
+
+A law takes numbers (or arrays, or CasADi expressions) in SI units and returns
+numbers; it knows nothing of components, systems or files. Components call
+the laws in their equations; test benches and identification call the same
+laws on arrays. A new law goes into the module of its physical kind:
+
+=====================  ======================================================
+module                 laws
+=====================  ======================================================
+:mod:`.fluid`          bulk modulus (Lee & Lee, Eggerth), density, wave speed,
+                       line length; fluid properties against pressure and
+                       temperature (Maré & Attar eqs. 1-2, Walther)
+:mod:`.orifice`        the turbulent orifice law and its one regularisation at
+                       null; flow number, transition pressure; catalogue flow
+                       coefficient
+:mod:`.four_way`       the four-way bridge assembly; the sharp-edged spool
+                       valve with per-edge laps (Efe)
+:mod:`.pseudo_section` pseudo-section valve (Ferreira et al.)
+:mod:`.staged_slot`    staged-slot valve: unified open/closed orifice,
+                       laminar to turbulent (Maré & Attar)
+:mod:`.leakage`        earlier closed-orifice leakage laws (Ellman, Eryilmaz,
+                       laminar gap)
+:mod:`.spool_dynamics` first- and second-order spools, rate limits, delay
+:mod:`.torque_motor`   torque motor of a two-stage servovalve
+:mod:`.flapper_nozzle` flapper-nozzle stage driving the main spool
+:mod:`.chamber`        pressure build-up in volumes and cylinder chambers
+:mod:`.friction`       Stribeck friction
+=====================  ======================================================
+"""
+
+from hydroservo.laws import (
+    chamber,
+    flapper_nozzle,
+    fluid,
+    four_way,
+    friction,
+    leakage,
+    orifice,
+    pseudo_section,
+    spool_dynamics,
+    staged_slot,
+    torque_motor,
+)
+
+__all__ = [
+    "chamber",
+    "flapper_nozzle",
+    "fluid",
+    "four_way",
+    "friction",
+    "leakage",
+    "orifice",
+    "pseudo_section",
+    "spool_dynamics",
+    "staged_slot",
+    "torque_motor",
+]

@@ -1,0 +1,137 @@
+r"""The four-way valve as a bridge of four metering edges: one assembly for every four-way valve.
+
+Every four-way valve in hydroservo, whatever the law of its edges, is the
+Wheatstone bridge of [MareAttarND] Fig. 1: supply S to port A (edge PA, the
+paper's orifice a), A to tank T (AT, b), S to B (PB, c), B to T (BT, d).
+:func:`bridge_flows` turns the four edge flows into the port flows;
+:func:`four_way_valve_flows` is the bridge with sharp-edged spool edges and
+per-edge laps ([Efe2014] eqs. 3.18-3.23); the pseudo-section valve
+(:func:`hydroservo.laws.pseudo_section.valve_flows`) and the staged-slot valve
+(:func:`hydroservo.laws.staged_slot.staged_slot_valve_flows`) use the same assembly.
+
+Pure, vectorised functions (NumPy arrays or CasADi expressions), SI units.
+Citation keys in brackets are those of :mod:`hydroservo.references`.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from hydroservo.laws.orifice import opening, turbulent_flow
+
+__all__ = ["EDGES", "bridge_flows", "four_way_valve_flows"]
+
+#: The four metering edges: name -> (upstream node, downstream node, +1 if the edge opens with positive spool travel).
+#: Nodes: S supply, T tank (the paper's return R), A and B the use ports (the paper's 1 and 2).
+EDGES: dict[str, tuple[str, str, int]] = {
+    "PA": ("S", "A", +1),
+    "AT": ("A", "T", -1),
+    "PB": ("S", "B", -1),
+    "BT": ("B", "T", +1),
+}
+
+
+def bridge_flows(q_PA: Any, q_AT: Any, q_PB: Any, q_BT: Any) -> tuple[Any, Any, Any, Any]:
+    r"""Port flows of a four-way valve from the flows through its four metering edges.
+
+    .. math:: Q_A = q_{PA} - q_{AT}, \quad Q_B = q_{PB} - q_{BT}, \quad
+              Q_S = q_{PA} + q_{PB}, \quad Q_T = q_{AT} + q_{BT}
+
+    Parameters
+    ----------
+    q_PA, q_AT, q_PB, q_BT : array_like
+        Flow through each edge in the direction of :data:`EDGES` [m^3/s].
+
+    Returns
+    -------
+    (Q_A, Q_B, Q_S, Q_T) : tuple of array_like
+        Flows out of the valve into lines A and B, into the valve from
+        supply, and out of the valve to tank [m^3/s].
+
+    References
+    ----------
+    [MareAttarND] Fig. 1; [FerreiraND] eq. (3); [Efe2014] eqs. (3.19)-(3.20).
+
+    Examples
+    --------
+    >>> bridge_flows(3.0, 1.0, 0.5, 2.0)
+    (2.0, -1.5, 3.5, 3.0)
+    """
+    return q_PA - q_AT, q_PB - q_BT, q_PA + q_PB, q_AT + q_BT
+
+
+def four_way_valve_flows(
+    x_v: Any,
+    p_S: Any,
+    p_T: Any,
+    p_A: Any,
+    p_B: Any,
+    c_v: Any,
+    x_PA: Any = 0.0,
+    x_AT: Any = 0.0,
+    x_PB: Any = 0.0,
+    x_BT: Any = 0.0,
+    p_tr: Any = 0.0,
+    G_leak: Any = 0.0,
+    K: Any = 1.0,
+) -> tuple[Any, Any, Any, Any]:
+    r"""Flows of a four-way spool valve with sharp edges and per-edge overlap.
+
+    .. math::
+        Q_A &= c_v f(x_v - x_{PA})\,g(p_S - p_A) - c_v f(-x_v - x_{AT})\,g(p_A - p_T)\\
+        Q_B &= c_v f(-x_v - x_{PB})\,g(p_S - p_B) - c_v f(x_v - x_{BT})\,g(p_B - p_T)
+
+    with :math:`g(\Delta p) = \operatorname{sign}(\Delta p)\sqrt{|\Delta p|}`
+    regularised by :func:`~hydroservo.laws.orifice.signed_sqrt` and :math:`f` of
+    :func:`~hydroservo.laws.orifice.opening`, assembled by :func:`bridge_flows`.
+    Positive ``x_v`` connects P to A and B to T.
+
+    Parameters
+    ----------
+    x_v : array_like
+        Spool position [m].
+    p_S, p_T, p_A, p_B : array_like
+        Supply, tank and port pressures [Pa].
+    c_v : array_like
+        Flow coefficient [m^2/s/Pa^0.5]
+        (:func:`~hydroservo.laws.orifice.flow_coefficient_from_catalogue`).
+    x_PA, x_AT, x_PB, x_BT : array_like
+        Overlap of each control edge [m]; negative for underlap. Equal values
+        give [Efe2014] eqs. (3.19)-(3.20) with :math:`x_o`; zero gives the
+        critical-centre valve of [FlightSimulatorND] eqs. (3-18), (3-20),
+        (3-22), (3-23).
+    p_tr : array_like
+        Transition pressure of the regularisation [Pa].
+    G_leak : array_like
+        Laminar leakage conductance of each edge [m^3/s/Pa], in parallel with
+        the orifice (radial clearance leakage).
+    K : array_like
+        Flow-coefficient compensation :math:`K(x_v)H(x_v,d_f)` [-],
+        [Efe2014] eqs. (3.22)-(3.23).
+
+    Returns
+    -------
+    (Q_A, Q_B, Q_S, Q_T) : tuple of array_like
+        Flows out of the valve into lines A and B, into the valve from
+        supply, and out of the valve to tank [m^3/s].
+
+    References
+    ----------
+    [Efe2014] eqs. (3.18)-(3.23); [FlightSimulatorND] eqs. (3-18), (3-20), (3-22), (3-23).
+
+    Examples
+    --------
+    Critical-centre valve opened 0.25 mm, port A at 100 bar, port B at 50 bar,
+    210 bar supply: A receives :math:`c_v x\sqrt{110\,\mathrm{bar}}`, B returns
+    :math:`c_v x\sqrt{50\,\mathrm{bar}}` (L/min):
+
+    >>> QA, QB, QS, QT = four_way_valve_flows(2.5e-4, 210e5, 0.0, 100e5, 50e5, 3.5e-4)
+    >>> round(float(QA) * 6e4, 2), round(float(QB) * 6e4, 2)
+    (17.41, -11.74)
+    """
+    cvk = c_v * K
+    q_PA = turbulent_flow(cvk * opening(x_v - x_PA), p_S - p_A, p_tr) + G_leak * (p_S - p_A)
+    q_AT = turbulent_flow(cvk * opening(-x_v - x_AT), p_A - p_T, p_tr) + G_leak * (p_A - p_T)
+    q_PB = turbulent_flow(cvk * opening(-x_v - x_PB), p_S - p_B, p_tr) + G_leak * (p_S - p_B)
+    q_BT = turbulent_flow(cvk * opening(x_v - x_BT), p_B - p_T, p_tr) + G_leak * (p_B - p_T)
+    return bridge_flows(q_PA, q_AT, q_PB, q_BT)

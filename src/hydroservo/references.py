@@ -1,0 +1,54 @@
+"""The bibliography: every source hydroservo cites, by its AuthorYear key.
+
+Docstrings cite a key in brackets with the equation, ``[FerreiraND] eq. (24)``;
+parameter sets (:mod:`hydroservo.data`), built-in models and validation rows
+name theirs. The entries are ``references.bib`` in the package, BibTeX.
+
+>>> from hydroservo import references
+>>> references.entry("Efe2014")["year"]
+'2014'
+"""
+
+from __future__ import annotations
+
+import functools
+import re
+from importlib import resources
+
+__all__ = ["entries", "entry", "keys", "cite"]
+
+
+@functools.cache
+def entries() -> dict[str, dict[str, str]]:
+    """Every entry of ``references.bib``: key -> fields (``type`` is the entry type)."""
+    text = resources.files("hydroservo").joinpath("references.bib").read_text(encoding="utf-8")
+    out: dict[str, dict[str, str]] = {}
+    for match in re.finditer(r"@(\w+)\{([^,\s]+),(.*?)\n\}", text, flags=re.S):
+        kind, key, body = match.groups()
+        fields = {"type": kind.lower()}
+        for f in re.finditer(r"(\w+)\s*=\s*\{(.*?)\},?\s*$", body, flags=re.M | re.S):
+            fields[f.group(1).lower()] = " ".join(f.group(2).split())
+        out[key] = fields
+    return out
+
+
+def keys() -> list[str]:
+    """The citation keys."""
+    return list(entries())
+
+
+def entry(key: str) -> dict[str, str]:
+    """The fields of entry ``key``."""
+    try:
+        return entries()[key]
+    except KeyError:
+        raise KeyError(f"no reference {key!r}; keys: {', '.join(entries())}") from None
+
+
+def cite(key: str) -> str:
+    """A one-line citation: authors, year, title, where."""
+    e = entry(key)
+    authors = e.get("author", "Anonymous").replace(" and ", ", ")
+    year = e.get("year", "n.d.")
+    where = e.get("journal") or e.get("booktitle") or e.get("school") or e.get("publisher") or e.get("type", "")
+    return f"{authors} ({year}). {e.get('title', '')}. {where}.".replace("..", ".")
