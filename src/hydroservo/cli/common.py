@@ -1,14 +1,18 @@
-"""What every command group shares: reading lists of numbers, output folders, JSON output."""
+"""What every command group shares: reading lists of numbers, output folders, JSON output.
+
+NumPy is imported by the functions that need it, so that building the parser stays fast.
+"""
 
 from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from hydroservo.errors import ParameterError
+
+if TYPE_CHECKING:
+    import numpy as np
 
 __all__ = ["numbers", "frequencies", "outdir", "print_json"]
 
@@ -26,6 +30,7 @@ def numbers(text: str, what: str) -> list[float]:
 
 def frequencies(text: str) -> np.ndarray:
     """``START:STOP:STEP`` or a comma-separated list of frequencies [Hz]."""
+    import numpy as np
     if ":" in text:
         parts = text.split(":")
         try:

@@ -7,8 +7,6 @@ import json
 import warnings
 from typing import Any
 
-import numpy as np
-
 from hydroservo.errors import ParameterError
 from hydroservo.units import from_si, parse_quantity, to_si
 
@@ -49,6 +47,8 @@ def _values(text: str, unit: str, default_unit: str, what: str) -> list[float]:
 
 
 def cmd_fluid(args: argparse.Namespace) -> int:
+    import numpy as np
+
     from hydroservo.fluids import PROPERTIES, get_fluid
 
     fluid = get_fluid(args.fluid)

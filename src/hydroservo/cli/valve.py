@@ -7,13 +7,14 @@ from __future__ import annotations
 import argparse
 import json
 from pathlib import Path
-from typing import Any
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from hydroservo.cli import valve_bench
 from hydroservo.cli.common import frequencies, numbers, outdir
 from hydroservo.errors import ParameterError
+
+if TYPE_CHECKING:
+    import numpy as np
 
 __all__ = ["add_parsers"]
 
@@ -160,6 +161,8 @@ def _dynamics(source: str) -> tuple[str, dict[str, Any]]:
 
 
 def _crossing(freqs: np.ndarray, y: np.ndarray, level: float) -> float | None:
+    import numpy as np
+
     below = np.flatnonzero(y < level)
     if not below.size or below[0] == 0:
         return None
@@ -178,6 +181,8 @@ def _bandwidths(resp: Any) -> dict[str, dict[str, float | None]]:
 
 
 def cmd_bode(args: argparse.Namespace) -> int:
+    import numpy as np
+
     from hydroservo.identification.spool_dynamics import spool_response
 
     model, params = _dynamics(args.params)

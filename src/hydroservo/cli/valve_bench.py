@@ -7,8 +7,6 @@ import json
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from hydroservo.cli.common import numbers, outdir
 from hydroservo.errors import ParameterError
 
@@ -110,6 +108,8 @@ def _print_identification(res: Any, start: Any, names: list[str], fixed: tuple[s
 
 
 def cmd_identify(args: argparse.Namespace) -> int:
+    import numpy as np
+
     from hydroservo.analysis.static_bench import bench_curves, temperature_table
     from hydroservo.identification.staged_slot import HIGH_GAIN, LOW_GAIN, identify_staged_slot
     from hydroservo.io.component_file import read_staged_slot_valve, staged_slot_valve_toml

@@ -1,0 +1,53 @@
+"""Start-up time: ``import hydroservo``, ``hydroservo --version`` and ``--help`` against a bare interpreter.
+
+Run: ``python benchmarks/bench_startup.py [REPEATS]`` (default 15). Each
+command runs as a fresh process, alternating with the baseline (``python -c
+pass``) in the same loop, so that machine load affects both alike; prints the
+median and the spread of wall times, and each median's excess over the
+baseline's. The budget (issue 9, on an idle machine): ``import hydroservo``
+under 0.4 s, ``--version`` and ``--help`` under 0.3 s.
+"""
+
+from __future__ import annotations
+
+import shutil
+import statistics
+import subprocess
+import sys
+import time
+
+PY = sys.executable
+CLI = shutil.which("hydroservo") or ""
+
+COMMANDS = {
+    "baseline: python -c pass": [PY, "-c", "pass"],
+    "import hydroservo": [PY, "-c", "import hydroservo"],
+    "import hydroservo; first use of hs.System": [PY, "-c", "import hydroservo as hs; hs.System"],
+    "hydroservo --version": [CLI, "--version"] if CLI else [PY, "-m", "hydroservo", "--version"],
+    "hydroservo --help": [CLI, "--help"] if CLI else [PY, "-m", "hydroservo", "--help"],
+    "hydroservo validate --help": [CLI, "validate", "--help"] if CLI else [PY, "-m", "hydroservo", "validate", "--help"],
+}
+
+
+def wall(argv: list[str]) -> float:
+    start = time.perf_counter()
+    subprocess.run(argv, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return time.perf_counter() - start
+
+
+def main(repeats: int = 15) -> None:
+    times: dict[str, list[float]] = {name: [] for name in COMMANDS}
+    for argv in COMMANDS.values():  # warm the file cache
+        wall(argv)
+    for _ in range(repeats):
+        for name, argv in COMMANDS.items():
+            times[name].append(wall(argv))
+    base = statistics.median(times["baseline: python -c pass"])
+    print(f"{repeats} runs each, wall time [s]: median (min - max); excess over the bare interpreter")
+    for name, ts in times.items():
+        med = statistics.median(ts)
+        print(f"  {name:44s} {med:6.3f} ({min(ts):.3f} - {max(ts):.3f})   +{med - base:.3f}   x{med / base:.1f}")
+
+
+if __name__ == "__main__":
+    main(int(sys.argv[1]) if len(sys.argv) > 1 else 15)
