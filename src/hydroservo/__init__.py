@@ -43,8 +43,7 @@ from hydroservo.errors import (
     TrimError,
     UnitError,
 )
-
-__version__ = "0.2.0"
+from hydroservo.version import __version__
 
 #: Public name -> (module, attribute; None for the module itself)
 _LAZY: dict[str, tuple[str, str | None]] = {
@@ -78,6 +77,7 @@ _LAZY: dict[str, tuple[str, str | None]] = {
 }
 
 __all__ = [
+    "__version__",
     "System",
     "Model",
     "Result",

@@ -26,13 +26,12 @@ from collections.abc import Sequence
 
 from hydroservo.cli import examples, fluid, models, validate, valve
 from hydroservo.errors import FluidRangeWarning, HydroservoError, RenamedWarning
+from hydroservo.version import __version__
 
 __all__ = ["main", "build_parser"]
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from hydroservo import __version__
-
     parser = argparse.ArgumentParser(
         prog="hydroservo", description="Electro-hydraulic servo systems: simulate, export, validate."
     )

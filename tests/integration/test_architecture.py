@@ -1,0 +1,134 @@
+"""The layers of docs/architecture.md hold: imports go down, never up, and no module imports itself round a cycle.
+
+Every ``import hydroservo.x`` in the package is read from the source (module
+level and inside functions; ``if TYPE_CHECKING:`` blocks are not imports). A
+module may import its own layer and the layers below. Imports inside a
+function that go up are allowed only where the architecture says why
+(:data:`DELEGATIONS`): convenience methods of result objects that hand over
+to the io and plotting layers when called.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+PACKAGE = Path(__file__).resolve().parents[2] / "src" / "hydroservo"
+
+#: Layer of each top-level module or package, bottom (0) to top.
+LAYERS = {
+    "errors": 0,
+    "units": 0,
+    "backend": 0,
+    "references": 0,
+    "data": 0,
+    "version": 0,
+    "laws": 1,
+    "fluids": 2,
+    "components": 3,
+    "system": 4,
+    "analysis": 5,
+    "identification": 6,
+    "io": 7,
+    "plotting": 7,
+    "validation": 8,
+    "cli": 9,
+    "__init__": 10,
+    "__main__": 10,
+}
+
+#: Upward imports allowed inside functions: (importing module, imported top-level package).
+DELEGATIONS = {
+    ("hydroservo.system.result", "io"),  # Result.to_csv / to_mat
+    ("hydroservo.system.result", "plotting"),  # Result.plot
+    ("hydroservo.analysis.frequency", "io"),  # FrequencyResponse.to_csv
+    ("hydroservo.analysis.frequency", "plotting"),  # FrequencyResponse.plot
+}
+
+
+def _modules() -> dict[str, Path]:
+    out = {}
+    for path in PACKAGE.rglob("*.py"):
+        rel = path.relative_to(PACKAGE.parent).with_suffix("")
+        parts = list(rel.parts)
+        if parts[-1] == "__init__" and len(parts) > 2:
+            parts = parts[:-1]
+        out[".".join(parts)] = path
+    return out
+
+
+def _imports(path: Path) -> list[tuple[str, bool]]:
+    """(imported hydroservo module, inside a function) for every import of the file."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    found: list[tuple[str, bool]] = []
+
+    def visit(node: ast.AST, in_function: bool) -> None:
+        if isinstance(node, ast.If) and "TYPE_CHECKING" in ast.unparse(node.test):
+            return
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            in_function = True
+        if isinstance(node, ast.Import):
+            found.extend((a.name, in_function) for a in node.names if a.name.startswith("hydroservo"))
+        elif isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("hydroservo"):
+            if node.module == "hydroservo":  # from hydroservo import x: x is a module of the package
+                found.extend((f"hydroservo.{a.name}", in_function) for a in node.names)
+            else:
+                found.append((node.module, in_function))
+        for child in ast.iter_child_nodes(node):
+            visit(child, in_function)
+
+    visit(tree, False)
+    return found
+
+
+def _top(module: str) -> str:
+    parts = module.split(".")
+    if len(parts) == 1 or (len(parts) == 2 and parts[1] not in LAYERS):  # the package itself, or a name it defines
+        return "__init__"
+    return parts[1]
+
+
+MODULES = _modules()
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_imports_go_down(module: str) -> None:
+    own = _top(module) if module != "hydroservo" else "__init__"
+    if module == "hydroservo.__main__":
+        own = "__main__"
+    assert own in LAYERS, f"{module}: no layer in LAYERS (docs/architecture.md)"
+    for target, in_function in _imports(MODULES[module]):
+        top = _top(target)
+        if LAYERS[top] <= LAYERS[own] or own in ("__init__", "__main__"):
+            continue
+        allowed = in_function and (module, top) in DELEGATIONS
+        assert allowed, f"{module} (layer {own}) imports {target} (layer {top}), which is above it"
+
+
+def test_no_import_cycles() -> None:
+    graph = {
+        m: {t for t, in_function in _imports(p) if not in_function and t in MODULES and t != m}
+        for m, p in MODULES.items()
+    }
+    # a package's own __init__ re-exporting its modules is not a cycle of theirs
+    for m in graph:
+        graph[m] = {t for t in graph[m] if not m.startswith(t + ".")}
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(m: str) -> None:
+        state[m] = 1
+        stack.append(m)
+        for t in sorted(graph[m]):
+            if state.get(t) == 1:
+                raise AssertionError("import cycle: " + " -> ".join([*stack[stack.index(t) :], t]))
+            if t not in state:
+                visit(t)
+        stack.pop()
+        state[m] = 2
+
+    for m in sorted(graph):
+        if m not in state:
+            visit(m)
