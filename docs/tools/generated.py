@@ -63,7 +63,8 @@ def fill(text: str, blocks: dict[str, str]) -> str:
         pattern = re.compile(re.escape(start) + r".*?" + re.escape(end), re.S)
         if not pattern.search(text):
             raise KeyError(f"no generated block {name!r}")
-        text = pattern.sub(lambda m, body=body: f"{start}\n{body}\n{end}", text)
+        block = f"{start}\n{body}\n{end}"
+        text = pattern.sub(lambda m, block=block: block, text)
     return text
 
 
