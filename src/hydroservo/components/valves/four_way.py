@@ -8,7 +8,8 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Output, Param, Port, register
+from hydroservo.components.base import Component, Param, Port, register
+from hydroservo.components.valves.ports import FLOW_OUTPUTS, PRESSURE_PORTS
 from hydroservo.errors import ParameterError
 from hydroservo.laws.four_way import four_way_valve_flows
 from hydroservo.laws.orifice import transition_pressure
@@ -56,17 +57,9 @@ class FourWayValve(Component):
     INPUTS = {
         "xv": Port("m", "spool position"),
         "vv": Port("m/s", "spool velocity (only for the hysteresis table)", default=0.0),
-        "pS": Port("Pa", "supply pressure"),
-        "pT": Port("Pa", "tank pressure", default=0.0),
-        "pA": Port("Pa", "pressure in line A"),
-        "pB": Port("Pa", "pressure in line B"),
+        **PRESSURE_PORTS,
     }
-    OUTPUTS = {
-        "QA": Output("m^3/s", "flow out of port A into line A"),
-        "QB": Output("m^3/s", "flow out of port B into line B"),
-        "QS": Output("m^3/s", "flow drawn from supply"),
-        "QT": Output("m^3/s", "flow returned to tank"),
-    }
+    OUTPUTS = dict(FLOW_OUTPUTS)
 
     def __init__(self, name: str, tables: Mapping[str, Any] | None = None, **values: Any) -> None:
         super().__init__(name, **values)

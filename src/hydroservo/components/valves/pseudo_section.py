@@ -21,8 +21,9 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, FromSet, Option, Output, Param, Port, register
+from hydroservo.components.base import Component, FromSet, Option, Param, Port, register
 from hydroservo.components.spools.rate_limited import SpoolRateLimited
+from hydroservo.components.valves.ports import FLOW_OUTPUTS, PRESSURE_PORTS
 from hydroservo.errors import ParameterError
 from hydroservo.laws import pseudo_section as ps
 
@@ -61,18 +62,6 @@ _SECTION_PARAMS = {
     "k4": Param(_fixed("k4"), _A2, "fixed structure k4"),
     "k5": Param(_fixed("k5"), _A2, "fixed structure k5", min=0.0),
     "p_tr": Param(1e4, "Pa", "regularisation pressure of the square root (numerical only)", min=0.0),
-}
-_PRESSURE_PORTS = {
-    "pS": Port("Pa", "supply pressure"),
-    "pT": Port("Pa", "tank pressure", default=0.0),
-    "pA": Port("Pa", "pressure in line A (port 1)"),
-    "pB": Port("Pa", "pressure in line B (port 2)"),
-}
-_FLOW_OUTPUTS = {
-    "QA": Output("m^3/s", "flow out of port A (port 1) into line A"),
-    "QB": Output("m^3/s", "flow out of port B (port 2) into line B"),
-    "QS": Output("m^3/s", "flow drawn from supply"),
-    "QT": Output("m^3/s", "flow returned to tank"),
 }
 _STRUCTURE = Option("variable", ps.STRUCTURES, "pseudo-section family: eq. (24) variable or eq. (33) fixed")
 
@@ -148,8 +137,8 @@ class PseudoSectionValve(_Sections):
     """
 
     PARAMETERS = dict(_SECTION_PARAMS)
-    INPUTS = {"xs": Port("", "normalised spool position, -1 to 1"), **_PRESSURE_PORTS}
-    OUTPUTS = dict(_FLOW_OUTPUTS)
+    INPUTS = {"xs": Port("", "normalised spool position, -1 to 1"), **PRESSURE_PORTS}
+    OUTPUTS = dict(FLOW_OUTPUTS)
     OPTIONS = {"structure": _STRUCTURE}
 
     def check(self) -> None:
@@ -171,8 +160,8 @@ class ServoSolenoidValve(_Sections, SpoolRateLimited):
     """
 
     PARAMETERS = {**SpoolRateLimited.PARAMETERS, **_SECTION_PARAMS}
-    INPUTS = {**SpoolRateLimited.INPUTS, **_PRESSURE_PORTS}
-    OUTPUTS = {**SpoolRateLimited.OUTPUTS, **_FLOW_OUTPUTS}
+    INPUTS = {**SpoolRateLimited.INPUTS, **PRESSURE_PORTS}
+    OUTPUTS = {**SpoolRateLimited.OUTPUTS, **FLOW_OUTPUTS}
     OPTIONS = {**SpoolRateLimited.OPTIONS, "structure": _STRUCTURE}
 
     def check(self) -> None:

@@ -19,7 +19,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import REGISTRY, Component, FromSet, Option, Output, Param, Port, register
+from hydroservo.components.base import REGISTRY, Component, FromSet, Option, Param, Port, register
+from hydroservo.components.valves.ports import FLOW_OUTPUTS, PRESSURE_PORTS
 from hydroservo.errors import ParameterError
 from hydroservo.fluids import FLUIDS, Fluid, get_fluid
 from hydroservo.laws.staged_slot import BRIDGE, BRIDGE_PARAMETERS, staged_slot_orifice_flow, staged_slot_valve_flows
@@ -65,17 +66,9 @@ class StagedSlotValve(Component):
     PARAMETERS = _parameters()
     INPUTS = {
         "xv": Port("m", "spool position from hydraulic null"),
-        "pS": Port("Pa", "supply pressure"),
-        "pT": Port("Pa", "tank pressure", default=0.0),
-        "pA": Port("Pa", "pressure in line A (use port 1)"),
-        "pB": Port("Pa", "pressure in line B (use port 2)"),
+        **PRESSURE_PORTS,
     }
-    OUTPUTS = {
-        "QA": Output("m^3/s", "flow out of port A into line A"),
-        "QB": Output("m^3/s", "flow out of port B into line B"),
-        "QS": Output("m^3/s", "flow drawn from supply"),
-        "QT": Output("m^3/s", "flow returned to tank"),
-    }
+    OUTPUTS = dict(FLOW_OUTPUTS)
     OPTIONS = {"fluid": Option("skydrol", tuple(FLUIDS), "hydraulic fluid (hydroservo.fluids)")}
 
     @property
