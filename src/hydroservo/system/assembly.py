@@ -9,6 +9,7 @@ algebraic loop, and a true loop is reported with its chain of components).
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import casadi as ca
@@ -85,91 +86,114 @@ class _Assembler:
         return self.out[cname]
 
 
-def assemble(system: System) -> tuple[Any, ...]:
-    """The arguments of :class:`~hydroservo.system.model.Model` for ``system``."""
-    if not system.components:
-        raise ModelError(f"system {system.name!r} has no components")
-    asm = _Assembler(system)
+@dataclass
+class _Columns:
+    """Named expressions with units and descriptions: the states or the outputs of the model."""
+
+    names: list[str] = field(default_factory=list)
+    exprs: list[Any] = field(default_factory=list)
+
+    def add(self, name: str, expr: Any) -> None:
+        self.names.append(name)
+        self.exprs.append(ca.SX(expr))
+
+    def vector(self) -> Any:
+        return ca.vertcat(*self.exprs) if self.exprs else ca.SX(0, 1)
+
+
+def _check_connections(system: System) -> None:
     for target, source in system.connections.items():
         for ref in (target, source):
-            c, s = ref.split(".")
+            c = ref.split(".")[0]
             if c not in system.components:
                 raise ModelError(f"connection {source!r} -> {target!r}: no component {c!r}")
 
-    state_names: list[str] = []
-    xs: list[ca.SX] = []
-    rhs: list[ca.SX] = []
-    units: dict[str, str] = {}
-    descriptions: dict[str, str] = {}
-    nominal: list[float] = []
-    for cname, comp in system.components.items():
-        y = asm.outputs(cname)
-        if comp.STATES:
-            der = comp.state_equations(asm.t, asm.x[cname], _Inputs(asm, cname), asm.p[cname], y)
-            if set(der) != set(comp.STATES):
-                raise ModelError(
-                    f"{type(comp).__name__}.state_equations returned {sorted(der)}, declared {sorted(comp.STATES)}"
-                )
-            for sname, spec in comp.STATES.items():
-                full = f"{cname}.{sname}"
-                state_names.append(full)
-                xs.append(asm.x[cname][sname])
-                rhs.append(ca.SX(der[sname]))
-                units[full] = spec.unit
-                descriptions[full] = spec.description
-                nominal.append(spec.nominal)
 
-    # outputs (that are not states of the same name) and aliases
-    out_names: list[str] = []
-    out_exprs: list[ca.SX] = []
-    signals: dict[str, Any] = {n: x for n, x in zip(state_names, xs)}
+def _states(asm: _Assembler, units: dict[str, str], descriptions: dict[str, str]) -> tuple[_Columns, _Columns, list[float]]:
+    """The states (symbols), their rates and their nominal magnitudes, component by component."""
+    states, rates, nominal = _Columns(), _Columns(), []
+    for cname, comp in asm.system.components.items():
+        y = asm.outputs(cname)
+        if not comp.STATES:
+            continue
+        der = comp.state_equations(asm.t, asm.x[cname], _Inputs(asm, cname), asm.p[cname], y)
+        if set(der) != set(comp.STATES):
+            raise ModelError(
+                f"{type(comp).__name__}.state_equations returned {sorted(der)}, declared {sorted(comp.STATES)}"
+            )
+        for sname, spec in comp.STATES.items():
+            full = f"{cname}.{sname}"
+            states.add(full, asm.x[cname][sname])
+            rates.add(full, der[sname])
+            units[full], descriptions[full] = spec.unit, spec.description
+            nominal.append(spec.nominal)
+    return states, rates, nominal
+
+
+def _outputs(
+    asm: _Assembler, states: _Columns, params: dict[str, Any], units: dict[str, str], descriptions: dict[str, str]
+) -> _Columns:
+    """The outputs that are not states of the same name, then the aliases (expressions of signals)."""
+    system = asm.system
+    outputs = _Columns()
+    signals: dict[str, Any] = dict(zip(states.names, states.exprs, strict=True))
     for cname, comp in system.components.items():
         for oname, spec in comp.OUTPUTS.items():
             full = f"{cname}.{oname}"
-            expr = asm.out[cname][oname]
-            signals[full] = expr
+            signals[full] = asm.out[cname][oname]
             if full in units:  # an output that is the state itself
                 continue
-            out_names.append(full)
-            out_exprs.append(expr)
-            units[full] = spec.unit
-            descriptions[full] = spec.description
-    params = {f"{c}.{k}": s for c, d in asm.p.items() for k, s in d.items()}
+            outputs.add(full, signals[full])
+            units[full], descriptions[full] = spec.unit, spec.description
     for aname, alias in system.aliases.items():
         if aname in signals:
             raise ModelError(f"alias {aname!r} clashes with a signal name")
-        expr = evaluate(alias.expr, {**signals, **params}, what=f"alias {aname!r}")
-        out_names.append(aname)
-        out_exprs.append(ca.SX(expr))
-        units[aname] = alias.unit
-        descriptions[aname] = alias.description or alias.expr
+        outputs.add(aname, evaluate(alias.expr, {**signals, **params}, what=f"alias {aname!r}"))
+        units[aname], descriptions[aname] = alias.unit, alias.description or alias.expr
+    return outputs
 
-    # initial conditions, symbolic in the parameters
-    x0: list[Any] = []
-    for full in state_names:
+
+def _initial_state(asm: _Assembler, states: _Columns, params: dict[str, Any]) -> _Columns:
+    """Initial conditions, symbolic in the parameters: the system's, else each state's declared one."""
+    system = asm.system
+    x0 = _Columns()
+    for full in states.names:
         cname, sname = full.split(".")
         if full in system.initial:
             val = evaluate(system.initial[full], params, what=f"initial condition of {full!r}")
         else:
             init = system.components[cname].STATES[sname].initial
             val = asm.p[cname][init] if isinstance(init, str) else float(init)
-        x0.append(ca.SX(val))
+        x0.add(full, val)
+    return x0
 
-    param_names = list(params)
+
+def assemble(system: System) -> tuple[Any, ...]:
+    """The arguments of :class:`~hydroservo.system.model.Model` for ``system``."""
+    if not system.components:
+        raise ModelError(f"system {system.name!r} has no components")
+    _check_connections(system)
+    asm = _Assembler(system)
+    units: dict[str, str] = {}
+    descriptions: dict[str, str] = {}
+    states, rates, nominal = _states(asm, units, descriptions)
+    params = {f"{c}.{k}": sym for c, d in asm.p.items() for k, sym in d.items()}
+    outputs = _outputs(asm, states, params, units, descriptions)
+    x0 = _initial_state(asm, states, params)
     param_units = {
         f"{c}.{k}": spec.unit for c, comp in system.components.items() for k, spec in comp.PARAMETERS.items()
     }
     return (
         system.name,
         asm.t,
-        ca.vertcat(*xs) if xs else ca.SX(0, 1),
-        ca.vertcat(*[params[n] for n in param_names]) if params else ca.SX(0, 1),
-        ca.vertcat(*rhs) if rhs else ca.SX(0, 1),
-        ca.vertcat(*out_exprs) if out_exprs else ca.SX(0, 1),
-        ca.vertcat(*x0) if x0 else ca.SX(0, 1),
-        state_names,
-        param_names,
-        out_names,
+        states.vector(),
+        ca.vertcat(*params.values()) if params else ca.SX(0, 1),
+        rates.vector(),
+        outputs.vector(),
+        x0.vector(),
+        states.names,
+        list(params),
+        outputs.names,
         units,
         descriptions,
         np.array(nominal, dtype=float),
