@@ -16,7 +16,7 @@ from hydroservo.analysis import FrequencyResponse, sine_response
 from hydroservo.components import Sine, SpoolRateLimited
 from hydroservo.errors import ParameterError
 from hydroservo.identification import fit_spool_dynamics, spool_response
-from hydroservo.io import read_bode
+from hydroservo.io import read_bode, write_bode
 from hydroservo.laws.spool_dynamics import rate_limited_spool_acceleration as rate_limited_spool
 from hydroservo.validation.ferreira import bode_grid, published_dynamics
 
@@ -111,7 +111,7 @@ def test_lower_fidelities_are_fitted_by_the_same_routine(published_bode: Frequen
 
 
 def test_bode_csv_round_trip_and_bad_files(tmp_path, published_bode: FrequencyResponse) -> None:
-    path = published_bode.to_csv(tmp_path / "bode.csv")
+    path = write_bode(published_bode, tmp_path / "bode.csv")
     back = read_bode(path)
     np.testing.assert_allclose(back.gain_db, published_bode.gain_db, rtol=1e-9)
     np.testing.assert_allclose(back.amplitudes, AMPS)

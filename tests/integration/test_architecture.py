@@ -43,7 +43,6 @@ LAYERS = {
 DELEGATIONS = {
     ("hydroservo.system.result", "io"),  # Result.to_csv / to_mat
     ("hydroservo.system.result", "plotting"),  # Result.plot
-    ("hydroservo.analysis.frequency", "io"),  # FrequencyResponse.to_csv
     ("hydroservo.analysis.frequency", "plotting"),  # FrequencyResponse.plot
 }
 

@@ -100,12 +100,6 @@ class FrequencyResponse:
             for j, f in enumerate(self.frequencies)
         ]
 
-    def to_csv(self, path: str | Path) -> Path:
-        """Write the Bode data as CSV (:func:`hydroservo.io.bode.write_bode`)."""
-        from hydroservo.io.bode import write_bode
-
-        return write_bode(self, path)
-
     def plot(
         self,
         others: Sequence[FrequencyResponse] = (),

@@ -184,6 +184,7 @@ def cmd_bode(args: argparse.Namespace) -> int:
     import numpy as np
 
     from hydroservo.identification.spool_dynamics import spool_response
+    from hydroservo.io.bode import write_bode
 
     model, params = _dynamics(args.params)
     amps = np.array(numbers(args.amplitudes, "--amplitudes")) / 100.0
@@ -191,7 +192,7 @@ def cmd_bode(args: argparse.Namespace) -> int:
     resp = spool_response(params, amps, freqs, model, label=model)
     stem = Path(args.params).stem
     out = outdir(args.out, f"hydroservo-bode-{stem}")
-    csv_path = resp.to_csv(out / "bode.csv")
+    csv_path = write_bode(resp, out / "bode.csv")
     resp.plot(title=f"{stem}: spool position / command ({model})", file=out / "bode.png")
     files = {"csv": str(csv_path), "plot": str(out / "bode.png")}
     if args.json:

@@ -3,14 +3,27 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
-    from hydroservo.system.result import Result
+    import numpy as np
+    import pandas as pd
 
 __all__ = ["write_csv", "write_mat"]
+
+
+class Result(Protocol):
+    """What the writers read of a result (:class:`hydroservo.system.Result` is one)."""
+
+    t: np.ndarray
+    units: dict[str, str]
+
+    @property
+    def data(self) -> dict[str, np.ndarray]: ...
+
+    def to_pandas(self) -> pd.DataFrame: ...
 
 
 def write_csv(result: Result, path: str | Path) -> Path:

@@ -4,12 +4,21 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, Protocol
 
 import numpy as np
 
-from hydroservo.analysis.frequency import FrequencyResponse
 from hydroservo.plotting import finish, pyplot
+
+
+class FrequencyResponse(Protocol):
+    """What the plot reads of a frequency response (:class:`hydroservo.analysis.FrequencyResponse` is one)."""
+
+    amplitudes: np.ndarray
+    frequencies: np.ndarray
+    gain_db: np.ndarray
+    phase_deg: np.ndarray
+    label: str
 
 __all__ = ["plot_bode"]
 

@@ -4,15 +4,28 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from hydroservo.plotting import finish, pyplot
 from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
-    from hydroservo.system.result import Result
+    import numpy as np
 
 __all__ = ["plot_result"]
+
+
+class Result(Protocol):
+    """What the plot reads of a result (:class:`hydroservo.system.Result` is one)."""
+
+    t: np.ndarray
+    model: str
+    units: dict[str, str]
+
+    @property
+    def names(self) -> list[str]: ...
+
+    def get(self, name: str, unit: str | None = None) -> np.ndarray: ...
 
 
 def plot_result(

@@ -10,18 +10,26 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
 import casadi as ca
 import numpy as np
 
+from hydroservo.components.base import Component
 from hydroservo.errors import ModelError
 from hydroservo.system.expressions import evaluate
 
-if TYPE_CHECKING:
-    from hydroservo.system.system import System
+__all__ = ["Structure", "assemble"]
 
-__all__ = ["assemble"]
+
+class Structure(Protocol):
+    """What the assembly reads of a system (:class:`~hydroservo.system.System` is one)."""
+
+    name: str
+    components: dict[str, Component]
+    connections: dict[str, str]
+    aliases: Mapping[str, Any]
+    initial: Mapping[str, str | float]
 
 
 class _Inputs(Mapping[str, Any]):
@@ -41,7 +49,7 @@ class _Inputs(Mapping[str, Any]):
 
 
 class _Assembler:
-    def __init__(self, system: System) -> None:
+    def __init__(self, system: Structure) -> None:
         self.system = system
         self.t = ca.SX.sym("t")
         self.p: dict[str, dict[str, ca.SX]] = {}
@@ -101,7 +109,7 @@ class _Columns:
         return ca.vertcat(*self.exprs) if self.exprs else ca.SX(0, 1)
 
 
-def _check_connections(system: System) -> None:
+def _check_connections(system: Structure) -> None:
     for target, source in system.connections.items():
         for ref in (target, source):
             c = ref.split(".")[0]
@@ -168,7 +176,7 @@ def _initial_state(asm: _Assembler, states: _Columns, params: dict[str, Any]) ->
     return x0
 
 
-def assemble(system: System) -> tuple[Any, ...]:
+def assemble(system: Structure) -> tuple[Any, ...]:
     """The arguments of :class:`~hydroservo.system.model.Model` for ``system``."""
     if not system.components:
         raise ModelError(f"system {system.name!r} has no components")
