@@ -1,7 +1,8 @@
 """Fluid properties: effective bulk modulus, density, wave speed.
 
 Pure, vectorised functions (NumPy arrays or CasADi expressions), SI units.
-Each cites the seed document and equation it implements.
+Each cites the source and equation it implements; citation keys in brackets are those of
+:mod:`hydroservo.references`.
 """
 
 from __future__ import annotations
@@ -128,7 +129,7 @@ def bulk_modulus_eggerth(
         Oil temperature [degC], 20 to 90; the coefficients of Table 3.1 are
         interpolated linearly in temperature.
     p0 : float
-        Reference pressure [Pa]; 10 bar as in the seed.
+        Reference pressure [Pa]; 10 bar as in [Efe2014].
     p_min : float
         Pressure below which ``p`` is clipped [Pa]. The formula gives
         :math:`E' \to 0` as :math:`p \to 0`, which makes chamber pressure
