@@ -152,7 +152,8 @@ def short_orifice_coefficient(X: Any, D_h: Any, lam: Any) -> np.ndarray:
 
 def _eq16(cq: float, x_over_dlam: float) -> float:
     """Residual of [MareAttarND] eq. (16) with Re = C_q lambda."""
-    return cq**-2 - (13.74 * np.sqrt(x_over_dlam / cq) + 1.5)
+    residual: float = cq**-2 - (13.74 * np.sqrt(x_over_dlam / cq) + 1.5)
+    return residual
 
 
 def continuity_constant(Cq_inf: Any, lambda_t: Any, w: Any, c: Any) -> Any:

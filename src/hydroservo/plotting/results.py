@@ -4,12 +4,14 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 from hydroservo.plotting import finish, pyplot
 from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
     from hydroservo.system.result import Result
 
 __all__ = ["plot_result"]
@@ -21,7 +23,7 @@ def plot_result(
     units: dict[str, str] | None = None,
     title: str | None = None,
     file: str | Path | None = None,
-) -> Any:
+) -> Figure:
     """Plot signals of ``result`` against time, one panel per argument.
 
     An argument may be a name or a list of names sharing a panel (same unit).

@@ -18,6 +18,7 @@ from hydroservo.errors import ModelError
 from hydroservo.system.expressions import evaluate
 
 if TYPE_CHECKING:
+    from hydroservo.components.base import Output, State
     from hydroservo.system.system import System
 
 __all__ = ["assemble"]
@@ -102,6 +103,7 @@ def assemble(system: System) -> tuple[Any, ...]:
     units: dict[str, str] = {}
     descriptions: dict[str, str] = {}
     nominal: list[float] = []
+    spec: State | Output  # a state's declaration, then an output's
     for cname, comp in system.components.items():
         y = asm.outputs(cname)
         if comp.STATES:
