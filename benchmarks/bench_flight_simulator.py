@@ -1,4 +1,4 @@
-"""Speed of the engine on the seed-003 2-second step response, against a plain SciPy baseline.
+"""Speed of the engine on the [FlightSimulatorND] 2-second step response, against a plain SciPy baseline.
 
 Run: ``python benchmarks/bench_flight_simulator.py``
 
@@ -75,7 +75,7 @@ def main() -> dict[str, float]:
 
     out: dict[str, float] = {"build_s": build}
     print(f"model build (CasADi graph, once): {build * 1e3:.1f} ms")
-    print("2-s step response of seed 003, 1001 output times, best of several runs:")
+    print("2-s step response of FlightSimulatorND, 1001 output times, best of several runs:")
 
     t_e, y_e = engine(1e-6)
     t_l, y_l = lsoda(1e-6, 1e-10)

@@ -1,4 +1,4 @@
-"""Speed of the seed-002 test-bench characteristics: one valve, one temperature, every test.
+"""Speed of the [MareAttarND] test-bench characteristics: one valve, one temperature, every test.
 
 Run: ``python benchmarks/bench_spool_characteristics.py``
 

@@ -1,4 +1,4 @@
-"""Speed of the seed-000 amplitude-dependent Bode fit (3 amplitudes x 30 frequencies).
+"""Speed of the [FerreiraND] amplitude-dependent Bode fit (3 amplitudes x 30 frequencies).
 
 Run: ``python benchmarks/bench_valve_bode_fit.py``
 
@@ -9,7 +9,7 @@ Run: ``python benchmarks/bench_valve_bode_fit.py``
    * hydroservo: periodic orbit by shooting, fixed-step RK4, mapped over threads.
    Their largest gain difference is printed (it is the baseline's residual transient).
 2. The complete fit of eq. (43) from a start 35-40 % away from the published
-   values (seed 000: 1007 rad/s, 0.48, 125 1/s, 81184 1/s^2), then the delay.
+   values ([FerreiraND]: 1007 rad/s, 0.48, 125 1/s, 81184 1/s^2), then the delay.
    The issue's floor: under 20 s on a 2-core machine.
 """
 

@@ -1,9 +1,9 @@
-"""Seed-003 actuator loop written out by hand: a plain-Python right-hand side for SciPy.
+"""The [FlightSimulatorND] actuator loop written out by hand: a plain-Python right-hand side for SciPy.
 
 An independent implementation of the same equations as the built-in
-``flight-simulator`` system (seed 003 eqs. 3-7, 3-16 re-derived, 3-26,
+``flight-simulator`` system ([FlightSimulatorND] eqs. 3-7, 3-16 re-derived, 3-26,
 3-27/3-28 in the sign-correct form 3-18a/3-23a, 3-29/3-30, 3-31, 3-32, 3-35
-in the seed's form, 3-37), in SI, with the same orifice regularisation. It
+in the dissertation's form, 3-37), in SI, with the same orifice regularisation. It
 serves as the baseline of the speed benchmark and as a cross-check of the
 engine's assembly of components (tests/test_flight_simulator.py).
 """
@@ -55,7 +55,7 @@ def _g(dp: float, p_tr: float) -> float:
 
 
 def rhs(t: float, s: np.ndarray, p: dict[str, float], vi: float) -> np.ndarray:
-    """State s = [y, ydot, P1, P2, xf, xf', xv, xv', xv'', Eo], seed variables in SI."""
+    """State s = [y, ydot, P1, P2, xf, xf', xv, xv', xv'', Eo], the dissertation's variables in SI."""
     y, yd, P1, P2, xf, vf, xv, vv, av, Eo = s
     Ei = vi - p["Gf"] * y
     dEo = Ei - Eo / p["RC"]

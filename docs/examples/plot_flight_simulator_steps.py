@@ -1,4 +1,4 @@
-"""Step responses of the seed-003 flight-simulator actuator, +2 V (retraction) and -2 V (extension).
+"""Step responses of the [FlightSimulatorND] flight-simulator actuator, +2 V (retraction) and -2 V (extension).
 
 Run: ``python docs/examples/plot_flight_simulator_steps.py`` (writes docs/img/flight_simulator_steps.png).
 """
@@ -29,7 +29,7 @@ for ax, lab in zip(axes, ["spool x_v [in]", "velocity ydot [in/s]", "displacemen
 axes[0].legend(loc="upper right", fontsize="small")
 axes[3].legend(loc="upper right", fontsize="x-small", ncol=3)
 axes[-1].set_xlabel("t [s]")
-fig.suptitle("Seed 003 flight-simulator actuator: command steps of ±2 V (positive retracts)")
+fig.suptitle("FlightSimulatorND flight-simulator actuator: command steps of ±2 V (positive retracts)")
 fig.tight_layout()
 out = Path(__file__).resolve().parents[1] / "img" / "flight_simulator_steps.png"
 fig.savefig(out, dpi=100)

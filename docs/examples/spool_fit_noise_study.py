@@ -1,8 +1,8 @@
-"""Spread of the seed-000 Bode-fit estimates with 0.3 dB of noise on the gains.
+"""Spread of the [FerreiraND] Bode-fit estimates with 0.3 dB of noise on the gains.
 
 Run: ``python docs/examples/spool_fit_noise_study.py [N]`` (default N = 20 fits, about a minute).
 
-Data: the rate-limited spool model with the published parameters (seed 000
+Data: the rate-limited spool model with the published parameters ([FerreiraND]
 section 6), +-5/25/50 % of stroke, 10-300 Hz in 10 Hz steps, simulated on a
 finer grid (512 RK4 steps per period) than the fit uses (256). Each repetition
 adds independent Gaussian noise of standard deviation 0.3 dB to every gain

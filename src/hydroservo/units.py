@@ -40,7 +40,7 @@ def registry() -> pint.UnitRegistry:
     """The unit registry, built on first use (about 0.3 s: pint and its definitions)."""
     import pint
 
-    reg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    reg: pint.UnitRegistry[Any] = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     # Hydraulic shorthands that pint does not define under these names.
     reg.define("lpm = liter / minute = L_min")
     reg.define("cps = hertz")
@@ -101,7 +101,7 @@ def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
     if isinstance(value, str):
         text = value.strip()
         try:
-            q = reg.Quantity(text)
+            q: pint.Quantity[Any] = reg.Quantity(text)
         except Exception as exc:
             raise UnitError(
                 f"{what}: cannot read {value!r} as a quantity ({exc}); "

@@ -43,7 +43,7 @@ import os
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import casadi as ca
 import numpy as np
@@ -194,7 +194,8 @@ class PeriodicResponse:
             if name == "sens" and self._sens is None:
                 z0, p, zT, c = self._z0, self._p, self._zT, self._c
                 self._sens = ca.Function("sens", [z0, p], [ca.jacobian(zT, p), ca.jacobian(c, z0), ca.jacobian(c, p)])
-            fun = {"period": self._period, "coef": self._coef, "sens": self._sens}[name]
+            # cast: the sensitivities, the one optional entry, are built just above when asked for
+            fun = cast(ca.Function, {"period": self._period, "coef": self._coef, "sens": self._sens}[name])
             self._maps[key] = fun.map(n, "thread", self.threads)
         return self._maps[key]
 

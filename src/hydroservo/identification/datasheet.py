@@ -232,7 +232,7 @@ def _null_section(ds: Datasheet, match: tuple[str, str]) -> tuple[float, float]:
         A0 = ds.q_lk0 / math.sqrt(2.0 * ds.P_s)  # type: ignore[operator]
         k = ds.K_p0 if "pressure-gain" in s else ds.K_q0 / (A0 * math.sqrt(ds.P_n))  # type: ignore[operator]
     else:
-        k = ds.K_p0  # type: ignore[assignment]
+        k = ds.K_p0
         A0 = ds.K_q0 / (k * math.sqrt(ds.P_n))  # type: ignore[operator]
     return A0, k  # type: ignore[return-value]
 

@@ -111,8 +111,8 @@ def _check_params(model: str, params: Mapping[str, Any], what: str) -> dict[str,
 
 def spool_response(
     params: Mapping[str, Any],
-    amplitudes: Sequence[float],
-    frequencies: Sequence[float],
+    amplitudes: Sequence[float] | np.ndarray,
+    frequencies: Sequence[float] | np.ndarray,
     model: str = "rate-limited",
     steps_per_period: int = 256,
     label: str = "",

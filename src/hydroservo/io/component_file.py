@@ -112,6 +112,7 @@ def read_staged_slot_valve(source: str | Path) -> tuple[StagedSlotValve, Bench |
     built-in name (:data:`STAGED_SLOT_VALVES`). The bench is None when the file has none.
     """
     key = str(source)
+    bench_data: Any  # the [bench] table as read, checked below
     if key in STAGED_SLOT_VALVES:
         pset = parameter_set(STAGED_SLOT_VALVES[key])
         values, bench_data, where = pset.table("valve"), pset.table("bench"), f"built-in {key}"

@@ -1,7 +1,8 @@
 """Fluid properties: effective bulk modulus, density, wave speed.
 
 Pure, vectorised functions (NumPy arrays or CasADi expressions), SI units.
-Each cites the seed document and equation it implements.
+Each cites the source and equation it implements; citation keys in brackets are those of
+:mod:`hydroservo.references`.
 """
 
 from __future__ import annotations
@@ -31,7 +32,7 @@ __all__ = [
 
 BAR = 1e5
 
-#: Eggerth (1980) coefficients, [Efe2014] Table 3.1:
+#: Coefficients of [Eggerth1980], [Efe2014] Table 3.1:
 #: temperature [degC] -> (k1 [m^2/N], k2 [m^2/N], lambda [-]).
 EGGERTH_TABLE: dict[float, tuple[float, float, float]] = {
     20.0: (4.943e-10, 1.9540e-10, 1.480),
@@ -48,7 +49,7 @@ def bulk_modulus_lee(
     E_max: float = 18000 * BAR,
     p_max: float = 280 * BAR,
 ) -> Any:
-    r"""Effective bulk modulus of a hydraulic cylinder after Lee & Lee (1990).
+    r"""Effective bulk modulus of a hydraulic cylinder after [LeeLee1990], [Efe2014] eq. (3.2).
 
     .. math:: E'(p) = a_1 E_{max} \log_{10}\left(a_2 \frac{p}{p_{max}} + a_3\right)
 
@@ -72,12 +73,12 @@ def bulk_modulus_lee(
     [Efe2014] eq. (3.2) prints :math:`a_1 E_{max}(a_2 p/p_{max} + a_3)`: the
     logarithm was lost in the extraction. Without it the formula gives
     1.35e10 Pa at zero pressure, ten times the modulus of pure oil; with the
-    decimal logarithm of Jelali & Kroll (2004, eq. 3.8) it rises from
+    decimal logarithm of [JelaliKroll2004] (eq. 3.8) it rises from
     4.29e8 Pa at 0 bar to 1.772e9 Pa at 280 bar, the expected shape.
 
     References
     ----------
-    [Efe2014] eq. (3.2); Jelali & Kroll, *Hydraulic Servo-systems*, 2004.
+    [Efe2014] eq. (3.2), after [LeeLee1990]; the logarithm: [JelaliKroll2004].
 
     Examples
     --------
@@ -89,12 +90,39 @@ def bulk_modulus_lee(
 
 
 def eggerth_coefficients(temperature: Any) -> tuple[Any, Any, Any]:
-    """Eggerth coefficients (k1 [m^2/N], k2 [m^2/N], lambda [-]) at ``temperature`` [degC].
+    r"""Eggerth coefficients (k1 [m^2/N], k2 [m^2/N], lambda [-]) at ``temperature`` [degC].
 
     Linear interpolation in temperature between the rows of [Efe2014]
     Table 3.1 (20, 50 and 90 degC). Outside that range the table is not
     extrapolated: a :class:`~hydroservo.errors.ParameterError` is raised (for a
     symbolic temperature the caller's parameter range does that check).
+
+    Parameters
+    ----------
+    temperature : float or CasADi expression
+        Oil temperature [degC], 20 to 90.
+
+    Returns
+    -------
+    (k1, k2, lam) : tuple
+        The coefficients :math:`k_1` [m^2/N] and :math:`k_2` [m^2/N] and the
+        exponent :math:`\lambda` [-] of :func:`bulk_modulus_eggerth`.
+
+    Raises
+    ------
+    ParameterError
+        A numeric temperature outside 20 to 90 degC.
+
+    References
+    ----------
+    [Efe2014] Table 3.1, after [Eggerth1980].
+
+    Examples
+    --------
+    Halfway between the 20 and 50 degC rows:
+
+    >>> eggerth_coefficients(35.0)
+    (5.206e-10, 2.61625e-10, 1.369)
     """
     temps = sorted(EGGERTH_TABLE)
     cols = np.array([EGGERTH_TABLE[T] for T in temps])
@@ -116,7 +144,7 @@ def bulk_modulus_eggerth(
     p0: float = 10 * BAR,
     p_min: float = 1 * BAR,
 ) -> Any:
-    r"""Effective bulk modulus after Eggerth (1980).
+    r"""Effective bulk modulus after [Eggerth1980], [Efe2014] eq. (3.3).
 
     .. math:: E'(p) = \frac{1}{k_1 + k_2 (p/p_0)^{-\lambda}}
 
@@ -128,7 +156,7 @@ def bulk_modulus_eggerth(
         Oil temperature [degC], 20 to 90; the coefficients of Table 3.1 are
         interpolated linearly in temperature.
     p0 : float
-        Reference pressure [Pa]; 10 bar as in the seed.
+        Reference pressure [Pa]; 10 bar as in [Efe2014].
     p_min : float
         Pressure below which ``p`` is clipped [Pa]. The formula gives
         :math:`E' \to 0` as :math:`p \to 0`, which makes chamber pressure
@@ -141,7 +169,7 @@ def bulk_modulus_eggerth(
 
     References
     ----------
-    [Efe2014] eq. (3.3) and Table 3.1.
+    [Efe2014] eq. (3.3) and Table 3.1, after [Eggerth1980].
 
     Examples
     --------
@@ -167,9 +195,21 @@ def density_linear(p: Any, rho0: float, E: Any) -> Any:
     E : array_like
         Bulk modulus [Pa].
 
+    Returns
+    -------
+    array_like
+        Density [kg/m^3].
+
     References
     ----------
     [Efe2014] eq. (3.15).
+
+    Examples
+    --------
+    A mineral oil of 870 kg/m^3 and 1.5 GPa at 150 bar is 1 % denser:
+
+    >>> round(float(density_linear(150e5, 870.0, 1.5e9)), 1)
+    878.7
     """
     return rho0 * (1.0 + p / E)
 
@@ -184,9 +224,14 @@ def wave_speed(E: Any, rho: Any) -> Any:
     rho : array_like
         Density [kg/m^3].
 
+    Returns
+    -------
+    array_like
+        Wave speed [m/s].
+
     References
     ----------
-    [Efe2014] eq. (3.31), after Goodson & Leonard (1972).
+    [Efe2014] eq. (3.31), after [GoodsonLeonard1972].
 
     Examples
     --------
@@ -204,11 +249,28 @@ def max_line_length(c: float, f_max: float) -> float:
     c : float
         Wave speed [m/s].
     f_max : float
-        Highest frequency of interest [Hz].
+        Highest frequency of interest [Hz], > 0.
+
+    Returns
+    -------
+    float
+        Length limit [m].
+
+    Raises
+    ------
+    ParameterError
+        ``f_max`` not positive.
 
     References
     ----------
-    [Efe2014] eq. (3.30), after Jelali & Kroll (2004).
+    [Efe2014] eq. (3.30), after [JelaliKroll2004].
+
+    Examples
+    --------
+    Waves at 1313 m/s and frequencies up to 100 Hz:
+
+    >>> max_line_length(1313.0, 100.0)
+    1.313
     """
     if f_max <= 0:
         raise ParameterError(f"f_max: {f_max} Hz; expected a positive frequency")
@@ -218,8 +280,34 @@ def max_line_length(c: float, f_max: float) -> float:
 def check_line_length(length: float, c: float, f_max: float) -> bool:
     """Warn if a line of ``length`` [m] is too long to be a lumped volume.
 
-    Returns True when the line satisfies [Efe2014] eq. (3.30), False (with a
-    :class:`UserWarning`) when a distributed line model would be needed.
+    Parameters
+    ----------
+    length : float
+        Line length [m].
+    c : float
+        Wave speed [m/s] (:func:`wave_speed`).
+    f_max : float
+        Highest frequency of interest [Hz], > 0.
+
+    Returns
+    -------
+    bool
+        True when the line satisfies [Efe2014] eq. (3.30), False (with a
+        :class:`UserWarning`) when a distributed line model would be needed.
+
+    Warns
+    -----
+    UserWarning
+        ``length`` is not below :func:`max_line_length`.
+
+    References
+    ----------
+    [Efe2014] eq. (3.30), after [JelaliKroll2004].
+
+    Examples
+    --------
+    >>> check_line_length(0.5, 1313.0, 100.0)
+    True
     """
     limit = max_line_length(c, f_max)
     if length >= limit:
@@ -280,6 +368,24 @@ def specific_volume_mare(
         Reference pressure [Pa].
     a_p, a_p2, a_t, a_t2, a_pt : array_like
         Coefficients [1/Pa], [1/Pa^2], [1/degC], [1/degC^2], [1/(Pa degC)].
+
+    Returns
+    -------
+    array_like
+        Specific volume [m^3/kg].
+
+    References
+    ----------
+    [MareAttarND] eq. (1) and section 2.1; the Skydrol data: [SAEAIR1362].
+
+    Examples
+    --------
+    The density drop of Skydrol from -40 to +70 degC at atmospheric pressure,
+    8.5 % in [MareAttarND] section 2.1 (reference state at 20 degC):
+
+    >>> v = [specific_volume_mare(0.0, T, 1e-3, 20.0) for T in (-40.0, 70.0)]
+    >>> round(float(1 - v[0] / v[1]) * 100, 1)  # percent
+    8.4
     """
     dp, dT = p - p0, T - T0
     return v0 * (1.0 + a_p * dp + a_p2 * dp * dp + a_t * dT + a_t2 * dT * dT + a_pt * dp * dT)
@@ -311,18 +417,37 @@ def dynamic_viscosity_mare(
         Reference temperature [degC] and pressure [Pa].
     b_p, b_t, b_t2 : array_like
         Coefficients [1/Pa], [1/degC], [1/degC^2] (default: Skydrol, :data:`SKYDROL_MARE`).
+
+    Returns
+    -------
+    array_like
+        Dynamic viscosity [Pa s].
+
+    References
+    ----------
+    [MareAttarND] eq. (2) and section 2.1; the Skydrol data: [SAEAIR1362].
+
+    Examples
+    --------
+    From 0 to 30 MPa the published :math:`b_p` raises the viscosity by 10^0.1335
+    at any temperature; [MareAttarND] section 2.1 states that at 10 degC it
+    doubles (see :mod:`hydroservo.validation.mare_attar`):
+
+    >>> mu = [dynamic_viscosity_mare(p, 10.0, 1e-2, 20.0) for p in (0.0, 30e6)]
+    >>> round(float(mu[1] / mu[0]), 2)
+    1.36
     """
     dT = T - T0
     return mu0 * 10.0 ** (b_p * (p - p0) + b_t * dT + b_t2 * dT * dT)
 
 
 def kinematic_viscosity_walther(T: Any, nu_40: float, nu_100: float) -> Any:
-    r"""Kinematic viscosity of a mineral oil against temperature, Walther's law (ASTM D341) [m^2/s].
+    r"""Kinematic viscosity of a mineral oil against temperature, Walther's law [ASTMD341] [m^2/s].
 
     .. math:: \log_{10}\log_{10}(\nu + 0.7) = A - B\log_{10}(T + 273.15)
 
     with :math:`\nu` in cSt and :math:`A, B` through the two catalogue points
-    :math:`\nu_{40}` and :math:`\nu_{100}` (ISO 3448 grades are rated at 40 degC).
+    :math:`\nu_{40}` and :math:`\nu_{100}` (the ISO viscosity grades of [ISO3448] are rated at 40 degC).
     Valid above about 2 cSt.
 
     Parameters
@@ -331,6 +456,15 @@ def kinematic_viscosity_walther(T: Any, nu_40: float, nu_100: float) -> Any:
         Temperature [degC].
     nu_40, nu_100 : float
         Kinematic viscosity at 40 and 100 degC [m^2/s].
+
+    Returns
+    -------
+    array_like
+        Kinematic viscosity [m^2/s].
+
+    References
+    ----------
+    [ASTMD341]; viscosity grades: [ISO3448].
 
     Examples
     --------

@@ -122,6 +122,10 @@ def variable_structure(x: Any, k: Any, gamma: Any, alpha: Any, beta: Any, x_t: A
     A_p : array_like
         Pseudo-section [m^3/s/Pa^0.5].
 
+    References
+    ----------
+    [FerreiraND] eqs. (24)-(29).
+
     Examples
     --------
     The KBSDG4V-3 of [FerreiraND] (section 5), in the paper's units L/min/bar^0.5:
@@ -148,14 +152,19 @@ def fixed_structure(x: Any, k1: Any, k2: Any, k3: Any, k4: Any, k5: Any) -> Any:
     x : array_like
         Normalised spool position [-].
     k1, k2 : array_like
-        [m^3/s/Pa^0.5].
+        Coefficients of the hyperbola [m^3/s/Pa^0.5].
     k3, k4, k5 : array_like
-        [m^6/s^2/Pa]; the radicand must stay non-negative on [-1, 1].
+        Coefficients of the radicand [m^6/s^2/Pa]; the radicand must stay
+        non-negative on [-1, 1].
 
     Returns
     -------
     A_p : array_like
         Pseudo-section [m^3/s/Pa^0.5].
+
+    References
+    ----------
+    [FerreiraND] eqs. (33)-(37).
 
     Examples
     --------
@@ -180,9 +189,32 @@ def pseudo_sections(x: Any, structure: str, params: dict[str, Any]) -> tuple[Any
     x : array_like
         Normalised spool position [-].
     structure : {"variable", "fixed"}
-        Eq. (24) or eq. (33).
+        Eq. (24) or eq. (33) [-].
     params : dict
-        The structure's parameters (:data:`PARAMETER_NAMES`), SI.
+        The structure's parameters (:data:`PARAMETER_NAMES`) in the units of
+        :data:`PARAMETER_UNITS` [SI].
+
+    Returns
+    -------
+    (A_p, A_n) : tuple of array_like
+        Opening and closing pseudo-sections [m^3/s/Pa^0.5], :math:`A_n(x) = A_p(-x)`.
+
+    Raises
+    ------
+    ParameterError
+        An unknown ``structure``.
+
+    References
+    ----------
+    [FerreiraND] eqs. (2), (24), (33).
+
+    Examples
+    --------
+    At null both sections are gamma (here in the paper's L/min/bar^0.5):
+
+    >>> p = dict(k=36.5, gamma=0.1149, alpha=4.241, beta=6.877e-2, x_t=3.858e-2)
+    >>> [round(float(a), 4) for a in pseudo_sections(0.0, "variable", p)]
+    [0.1149, 0.1149]
     """
     if structure not in _LAWS:
         raise ParameterError(f"structure = {structure!r}: expected one of {', '.join(STRUCTURES)}")
@@ -213,6 +245,18 @@ def valve_flows(
     Q_1, Q_2, Q_s, Q_t : array_like
         Flow out of port 1 and port 2, drawn from supply, returned to tank
         [m^3/s] (eq. 3).
+
+    References
+    ----------
+    [FerreiraND] eqs. (1)-(3).
+
+    Examples
+    --------
+    Ports at half supply: each port flow is :math:`(A_{s1} - A_{1t})\sqrt{P_s/2}`
+    (unit sections and 2 Pa here, for round numbers):
+
+    >>> [float(q) for q in valve_flows(3.0, 1.0, 1.0, 3.0, 2.0, 0.0, 1.0, 1.0)]
+    [2.0, -2.0, 4.0, 4.0]
     """
     return bridge_flows(
         turbulent_flow(A_s1, P_s - P_1, p_tr),
@@ -225,15 +269,65 @@ def valve_flows(
 def matched_valve_flows(
     A_p: Any, A_n: Any, P_s: Any, P_t: Any, P_1: Any, P_2: Any, p_tr: Any = 0.0
 ) -> tuple[Any, Any, Any, Any]:
-    """Flows of a matched, symmetrical valve, [FerreiraND] eqs. (2)-(3): :func:`valve_flows`
-    with :math:`A_{s1} = A_{2t} = A_p` and :math:`A_{s2} = A_{1t} = A_n`."""
+    r"""Flows of a matched, symmetrical valve, [FerreiraND] eqs. (2)-(3): :func:`valve_flows`
+    with :math:`A_{s1} = A_{2t} = A_p` and :math:`A_{s2} = A_{1t} = A_n`.
+
+    Parameters
+    ----------
+    A_p, A_n : array_like
+        Opening and closing pseudo-sections at the spool position [m^3/s/Pa^0.5].
+    P_s, P_t, P_1, P_2 : array_like
+        Supply, tank and outlet-port pressures [Pa].
+    p_tr : array_like
+        Regularisation pressure of the root [Pa] (0: eq. 1 exactly).
+
+    Returns
+    -------
+    Q_1, Q_2, Q_s, Q_t : array_like
+        Flow out of port 1 and port 2, drawn from supply, returned to tank [m^3/s].
+
+    References
+    ----------
+    [FerreiraND] eqs. (1)-(3).
+
+    Examples
+    --------
+    >>> [float(q) for q in matched_valve_flows(3.0, 1.0, 2.0, 0.0, 1.0, 1.0)]
+    [2.0, -2.0, 4.0, 4.0]
+    """
     return valve_flows(A_p, A_n, A_n, A_p, P_s, P_t, P_1, P_2, p_tr)
 
 
 def load_flow_no_load(A_p: Any, A_n: Any, P_s: Any) -> Any:
     r"""Load flow with the ports connected (:math:`P_L = 0`), [FerreiraND] eq. (9) [m^3/s].
 
-    :math:`Q_L = \sqrt{P_s/2}\,(A_p - A_n)`.
+    .. math:: Q_L = \sqrt{P_s/2}\,(A_p - A_n)
+
+    Parameters
+    ----------
+    A_p, A_n : array_like
+        Opening and closing pseudo-sections at the spool position [m^3/s/Pa^0.5].
+    P_s : array_like
+        Supply pressure [Pa].
+
+    Returns
+    -------
+    array_like
+        Load flow [m^3/s].
+
+    References
+    ----------
+    [FerreiraND] eqs. (6)-(9).
+
+    Examples
+    --------
+    The published fixed-structure KBSDG4V-3 at full stroke and 70 bar supply
+    (paper units: L/min/bar^0.5, bar, L/min) passes its nominal 25.5 L/min:
+
+    >>> p = dict(k1=-2.142, k2=5.818e-3, k3=4.604, k4=-5.554e-2, k5=1.534e-2)
+    >>> A_p, A_n = pseudo_sections(1.0, "fixed", p)
+    >>> round(float(load_flow_no_load(A_p, A_n, 70.0)), 2)
+    25.5
     """
     return bk.sqrt(P_s / 2.0) * (A_p - A_n)
 
@@ -241,8 +335,31 @@ def load_flow_no_load(A_p: Any, A_n: Any, P_s: Any) -> Any:
 def relative_load_pressure(A_p: Any, A_n: Any) -> Any:
     r"""Relative load pressure with blocked ports, [FerreiraND] eq. (13) [-].
 
-    :math:`\bar P_L = (A_p^2 - A_n^2)/(A_p^2 + A_n^2)`, where
-    :math:`\bar P_L = (P_1 - P_2)/P_s`.
+    .. math:: \bar P_L = \frac{A_p^2 - A_n^2}{A_p^2 + A_n^2}, \qquad \bar P_L = (P_1 - P_2)/P_s
+
+    Parameters
+    ----------
+    A_p, A_n : array_like
+        Opening and closing pseudo-sections at the spool position [m^3/s/Pa^0.5].
+
+    Returns
+    -------
+    array_like
+        :math:`\bar P_L` [-], in [-1, 1].
+
+    References
+    ----------
+    [FerreiraND] eqs. (10)-(13), (25).
+
+    Examples
+    --------
+    With the exponential core of the variable structure, :math:`\bar P_L = \tanh(k x_s)`
+    (eq. 25); the KBSDG4V-3 (k = 36.5) at 1 % of stroke:
+
+    >>> p = dict(k=36.5, gamma=0.1149, alpha=4.241, beta=6.877e-2, x_t=3.858e-2)
+    >>> A_p, A_n = pseudo_sections(0.01, "variable", p)
+    >>> round(float(relative_load_pressure(A_p, A_n)), 4), round(float(np.tanh(0.365)), 4)
+    (0.3496, 0.3496)
     """
     return (A_p**2 - A_n**2) / (A_p**2 + A_n**2)
 
@@ -250,8 +367,33 @@ def relative_load_pressure(A_p: Any, A_n: Any) -> Any:
 def leakage_blocked(A_p: Any, A_n: Any, P_s: Any) -> Any:
     r"""Leakage (supply) flow with blocked ports, [FerreiraND] eq. (27) [m^3/s].
 
-    :math:`q_{lk} = 2\sqrt{P_s}\,A_pA_n/\sqrt{A_p^2 + A_n^2}`; from eqs. (13),
-    (16) and (17) with the pressures of eq. (11).
+    .. math:: q_{lk} = \frac{2\sqrt{P_s}\,A_pA_n}{\sqrt{A_p^2 + A_n^2}}
+
+    from eqs. (13), (16) and (17) with the pressures of eq. (11).
+
+    Parameters
+    ----------
+    A_p, A_n : array_like
+        Opening and closing pseudo-sections at the spool position [m^3/s/Pa^0.5].
+    P_s : array_like
+        Supply pressure [Pa].
+
+    Returns
+    -------
+    array_like
+        Leakage flow [m^3/s].
+
+    References
+    ----------
+    [FerreiraND] eqs. (11)-(17), (27)-(29).
+
+    Examples
+    --------
+    At null, :math:`q_{lk0} = \gamma\sqrt{2P_s}` (eq. 29): the KBSDG4V-3 leaks
+    1.360 L/min at 70 bar (paper units: L/min/bar^0.5, bar, L/min):
+
+    >>> round(float(leakage_blocked(0.1149, 0.1149, 70.0)), 3)
+    1.36
     """
     return 2.0 * bk.sqrt(P_s) * A_p * A_n / bk.sqrt(A_p**2 + A_n**2)
 
@@ -264,6 +406,34 @@ def load_flow(A_p: Any, A_n: Any, P_s: Any, P_L: Any) -> Any:
     valid for :math:`|\bar P_L| \le 1` with the outlet flows equal (a
     symmetrical actuator, eq. 4: :math:`P_1 + P_2 = P_s`). Gives the
     pressure-flow family of a datasheet.
+
+    Parameters
+    ----------
+    A_p, A_n : array_like
+        Opening and closing pseudo-sections at the spool position [m^3/s/Pa^0.5].
+    P_s : array_like
+        Supply pressure [Pa].
+    P_L : array_like
+        Relative load pressure :math:`(P_1 - P_2)/P_s` [-], in [-1, 1].
+
+    Returns
+    -------
+    array_like
+        Load flow [m^3/s].
+
+    References
+    ----------
+    [FerreiraND] eqs. (4), (11), (21).
+
+    Examples
+    --------
+    The published fixed-structure KBSDG4V-3 at full stroke and 70 bar
+    (paper units) at half the supply as load pressure:
+
+    >>> p = dict(k1=-2.142, k2=5.818e-3, k3=4.604, k4=-5.554e-2, k5=1.534e-2)
+    >>> A_p, A_n = pseudo_sections(1.0, "fixed", p)
+    >>> round(float(load_flow(A_p, A_n, 70.0, 0.0)), 2), round(float(load_flow(A_p, A_n, 70.0, 0.5)), 2)
+    (25.5, 18.03)
     """
     return A_p * bk.sqrt(P_s / 2.0 * (1.0 - P_L)) - A_n * bk.sqrt(P_s / 2.0 * (1.0 + P_L))
 
@@ -294,7 +464,28 @@ def sections_from_measurements(
     Returns
     -------
     A_p, A_n : ndarray
-        [m^3/s/Pa^0.5].
+        Opening and closing pseudo-sections [m^3/s/Pa^0.5]; NaN where
+        :math:`|\bar P_L| \ge` ``max_abs_PL``.
+
+    Raises
+    ------
+    ParameterError
+        A non-positive ``P_s`` or a negative leakage flow.
+
+    References
+    ----------
+    [FerreiraND] eqs. (16)-(17) and Fig. 3.
+
+    Examples
+    --------
+    The blocked-port curves of a valve give its sections back
+    (:func:`relative_load_pressure`, :func:`leakage_blocked`; paper units):
+
+    >>> p = dict(k=36.5, gamma=0.1149, alpha=4.241, beta=6.877e-2, x_t=3.858e-2)
+    >>> A_p, A_n = pseudo_sections(np.array([-0.01, 0.0, 0.01]), "variable", p)
+    >>> P_L, q_lk = relative_load_pressure(A_p, A_n), leakage_blocked(A_p, A_n, 70.0)
+    >>> bool(np.allclose(sections_from_measurements(P_L, q_lk, 70.0), (A_p, A_n)))
+    True
     """
     P_L = np.asarray(P_L, dtype=float)
     q_lk = np.asarray(q_lk, dtype=float)
@@ -315,6 +506,35 @@ def check_sections(structure: str, params: Mapping[str, float]) -> None:
     Below 0.1 % of the largest section a negative value is taken as rounding of
     printed parameters (the published fixed set reaches -1e-4 of it at x_s = -1);
     components clip it to zero.
+
+    Parameters
+    ----------
+    structure : {"variable", "fixed"}
+        Eq. (24) or eq. (33) [-].
+    params : mapping
+        The structure's parameters (:data:`PARAMETER_NAMES`) in the units of
+        :data:`PARAMETER_UNITS` [SI] (or any consistent units).
+
+    Returns
+    -------
+    None
+        Returns only when the sections are valid.
+
+    Raises
+    ------
+    ParameterError
+        A negative pseudo-section or radicand on [-1, 1], or a variable-structure
+        parameter out of its range (eq. 24: k, gamma, alpha > 0, x_t in (0, 1)).
+
+    References
+    ----------
+    [FerreiraND] eqs. (24), (33).
+
+    Examples
+    --------
+    The published fixed set passes (paper units):
+
+    >>> check_sections("fixed", dict(k1=-2.142, k2=5.818e-3, k3=4.604, k4=-5.554e-2, k5=1.534e-2))
     """
     x = np.linspace(-1.0, 1.0, 2001)
     if structure == "fixed":

@@ -20,7 +20,7 @@ How the extracted text was read
   at large closure with the :math:`K_g` of eq. (19); the tests check that limit.
 * Table 1's :math:`K_g` uses the hydraulic diameter of the closed passage,
   :math:`D_h = 2wc/(w + c)` (eq. 13), a constant, as eq. (19) says.
-* Eqs. (14) and (16) (Merritt's short orifice) use :math:`Re = C_q\lambda`
+* Eqs. (14) and (16) (Merritt's short orifice, [Merritt1967]) use :math:`Re = C_q\lambda`
   (eq. 5), so they are implicit in :math:`C_q`; :func:`short_orifice_coefficient`
   solves them.
 * Eq. (11), :math:`K_g = c(w + c)/(48\delta_\lambda w)`, is the continuity
@@ -68,7 +68,23 @@ def discharge_coefficient_open(lam: Any, Cq_inf: Any, lambda_t: Any, alpha: Any 
     lambda_t : array_like
         Transition flow number [-].
     alpha : array_like
-        Shape factor (1: the unified model of eq. 20).
+        Shape factor [-] (1: the unified model of eq. 20; module notes).
+
+    Returns
+    -------
+    array_like
+        Flow coefficient :math:`C_q` [-].
+
+    References
+    ----------
+    [MareAttarND] eq. (6).
+
+    Examples
+    --------
+    At the transition flow number the coefficient is :math:`\tanh 1 = 76\,\%` of its turbulent limit:
+
+    >>> round(float(discharge_coefficient_open(8.0, 0.65, 8.0)) / 0.65, 4)
+    0.7616
     """
     return Cq_inf * bk.tanh(alpha * lam / lambda_t)
 
@@ -94,6 +110,29 @@ def short_orifice_coefficient(X: Any, D_h: Any, lam: Any) -> np.ndarray:
         Hydraulic diameter of the passage [m].
     lam : array_like
         Flow number [-], > 0.
+
+    Returns
+    -------
+    ndarray
+        Flow coefficient :math:`C_q` [-], the shape of the broadcast arguments.
+
+    Raises
+    ------
+    ParameterError
+        A closure, hydraulic diameter or flow number not positive.
+
+    References
+    ----------
+    [MareAttarND] eqs. (5), (14)-(17), after [Merritt1967] (whom [MareAttarND] cite as Merritt, 1968).
+
+    Examples
+    --------
+    The two limits: small closure (eq. 17) and large closure (eq. 15,
+    :math:`D_h\lambda/(64|X|)` = 4.6875e-4 here):
+
+    >>> cq = short_orifice_coefficient([1e-9, 1e-3], 3e-6, [1e3, 10.0])
+    >>> round(float(cq[0]), 3), round(float(cq[1]), 7)
+    (0.814, 0.0004687)
     """
     from scipy.optimize import brentq  # SciPy's optimiser is imported only where a closed orifice is solved
 
@@ -113,7 +152,8 @@ def short_orifice_coefficient(X: Any, D_h: Any, lam: Any) -> np.ndarray:
 
 def _eq16(cq: float, x_over_dlam: float) -> float:
     """Residual of [MareAttarND] eq. (16) with Re = C_q lambda."""
-    return cq**-2 - (13.74 * np.sqrt(x_over_dlam / cq) + 1.5)
+    residual: float = cq**-2 - (13.74 * np.sqrt(x_over_dlam / cq) + 1.5)
+    return residual
 
 
 def continuity_constant(Cq_inf: Any, lambda_t: Any, w: Any, c: Any) -> Any:
@@ -125,13 +165,29 @@ def continuity_constant(Cq_inf: Any, lambda_t: Any, w: Any, c: Any) -> Any:
     Parameters
     ----------
     Cq_inf : array_like
-        [-].
+        Turbulent limit of the flow coefficient [-].
     lambda_t : array_like
-        [-].
+        Transition flow number [-].
     w : array_like
         Slot width [m].
     c : array_like
         Radial clearance [m].
+
+    Returns
+    -------
+    array_like
+        :math:`K_g` [1/m].
+
+    References
+    ----------
+    [MareAttarND] eqs. (13), (19).
+
+    Examples
+    --------
+    A 4 mm slot, 1.5 um clearance, :math:`C_{q\infty} = 0.65`, :math:`\lambda_t = 8`:
+
+    >>> round(float(continuity_constant(0.65, 8.0, 4e-3, 1.5e-6)))
+    1733983
     """
     return 32.0 * (w + c) * Cq_inf / (w * c * lambda_t)
 
@@ -150,9 +206,27 @@ def discharge_coefficient(X_i: Any, lam: Any, Cq_inf: Any, lambda_t: Any, K_g: A
     lam : array_like
         Flow number of the orifice [-].
     Cq_inf, lambda_t : array_like
-        [-].
+        Turbulent limit of the flow coefficient and transition flow number [-].
     K_g : array_like
         Continuity constant (eq. 19) [1/m].
+
+    Returns
+    -------
+    array_like
+        Flow coefficient :math:`C_{qi}` [-].
+
+    References
+    ----------
+    [MareAttarND] eqs. (6), (18)-(20).
+
+    Examples
+    --------
+    Open and critical orifices follow eq. (6); a closure of 1 um divides the
+    argument of tanh by :math:`1 + K_g|X_i|`:
+
+    >>> Kg = continuity_constant(0.65, 8.0, 4e-3, 1.5e-6)
+    >>> [round(float(cq), 4) for cq in discharge_coefficient(np.array([1e-6, 0.0, -1e-6]), 8.0, 0.65, 8.0, Kg)]
+    [0.495, 0.495, 0.2277]
     """
     return Cq_inf * bk.tanh(lam / (lambda_t * (1.0 + 0.5 * K_g * (bk.fabs(X_i) - X_i))))
 
@@ -161,7 +235,7 @@ def orifice_geometry(X_i: Any, r: Any, c: Any, n: Any, w: Any) -> tuple[Any, Any
     r"""Typical length, area and hydraulic diameter of orifice i, [MareAttarND] Table 1.
 
     Open (:math:`X_i > 0`): :math:`X_{si} = \sqrt{X_i^2 + (2r + c)^2} - 2r` (the
-    rounded edge of radius r and the clearance c, after Lebrun); closed or
+    rounded edge of radius r and the clearance c, after [Lebrun1986]); closed or
     critical: :math:`X_{si} = c`. Then :math:`S_i = nwX_{si}` and
     :math:`D_{hi} = 2wX_{si}/(w + X_{si})`. Continuous in value and slope at
     :math:`X_i = 0`.
@@ -182,7 +256,20 @@ def orifice_geometry(X_i: Any, r: Any, c: Any, n: Any, w: Any) -> tuple[Any, Any
     Returns
     -------
     X_s, S, D_h : array_like
-        [m], [m^2], [m].
+        Typical length [m], flow area [m^2] and hydraulic diameter [m].
+
+    References
+    ----------
+    [MareAttarND] Table 1, eq. (13), Fig. 2, after [Lebrun1986].
+
+    Examples
+    --------
+    Closed or critical the length is the clearance; opened 10 um it is
+    :math:`\sqrt{X^2 + (2r + c)^2} - 2r`:
+
+    >>> X_s, S, D_h = orifice_geometry(np.array([0.0, 1e-5]), 2e-6, 1.5e-6, 2, 4e-3)
+    >>> [round(float(x) * 1e6, 3) for x in X_s]  # um
+    [1.5, 7.413]
     """
     open_len = bk.sqrt(X_i * X_i + (2.0 * r + c) ** 2) - 2.0 * r
     X_s = bk.if_else(X_i > 0, open_len, c + 0.0 * X_i)
@@ -231,6 +318,11 @@ def slot_flow(
         the one regularisation of every orifice law), so that exact derivatives
         exist at zero drop (in a simulated system).
 
+    Returns
+    -------
+    array_like
+        Flow through the orifice in the direction of the pressure drop [m^3/s].
+
     Notes
     -----
     For small drops the flow is laminar, :math:`Q \propto \Delta P` (the tanh
@@ -244,6 +336,15 @@ def slot_flow(
     References
     ----------
     [MareAttarND] Table 1, eqs. (4), (19), (20).
+
+    Examples
+    --------
+    Two 4 mm slots at 100 bar, Skydrol-like density and viscosity: closed by
+    1 um, critical, and open 0.1 mm (L/min):
+
+    >>> q = slot_flow(np.array([-1e-6, 0.0, 1e-4]), 10e6, 2e-6, 1.5e-6, 2, 4e-3, 1000.0, 1e-5, 0.65, 8.0)
+    >>> [round(float(x) * 6e4, 4) for x in q]
+    [0.0635, 0.0662, 4.2425]
     """
     _, S, D_h = orifice_geometry(X_i, r, c, n, w)
     u = bk.sqrt(2.0 / rho * smooth_abs(dp, p_tr))
@@ -303,7 +404,7 @@ def staged_slot_orifice_flow(
     Parameters
     ----------
     i : str
-        "a", "b", "c" or "d" (:data:`BRIDGE`).
+        Orifice name [-]: "a", "b", "c" or "d" (:data:`BRIDGE`).
     X : array_like
         Valve opening (spool position from hydraulic null) [m].
     p_up, p_down : array_like

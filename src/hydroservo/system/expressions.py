@@ -73,7 +73,7 @@ def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expressio
             return -val if isinstance(node.op, ast.USub) else val
         if isinstance(node, ast.BinOp):
             a, b = ev(node.left), ev(node.right)
-            ops = {
+            ops: dict[type[ast.operator], Callable[[], Any]] = {
                 ast.Add: lambda: a + b,
                 ast.Sub: lambda: a - b,
                 ast.Mult: lambda: a * b,

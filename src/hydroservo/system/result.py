@@ -83,7 +83,8 @@ class Result(_Signals):
         values = self[name]
         if unit is None:
             return values
-        return np.asarray(from_si(1.0, self.units.get(name, ""), unit)) * values
+        scaled: np.ndarray = np.asarray(from_si(1.0, self.units.get(name, ""), unit)) * values
+        return scaled
 
     def summary(self) -> dict[str, dict[str, Any]]:
         """Unit, final, minimum and maximum value of every signal."""
