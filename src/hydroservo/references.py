@@ -20,12 +20,12 @@ __all__ = ["entries", "entry", "keys", "cite"]
 
 @functools.cache
 def entries() -> dict[str, dict[str, str]]:
-    """Every entry of ``references.bib``: key -> fields (``type`` is the entry type)."""
+    """Every entry of ``references.bib``: key -> fields (``entrytype`` is the BibTeX entry type)."""
     text = resources.files("hydroservo").joinpath("references.bib").read_text(encoding="utf-8")
     out: dict[str, dict[str, str]] = {}
     for match in re.finditer(r"@(\w+)\{([^,\s]+),(.*?)\n\}", text, flags=re.S):
         kind, key, body = match.groups()
-        fields = {"type": kind.lower()}
+        fields = {"entrytype": kind.lower()}
         for f in re.finditer(r"(\w+)\s*=\s*\{(.*?)\},?\s*$", body, flags=re.M | re.S):
             fields[f.group(1).lower()] = " ".join(f.group(2).split())
         out[key] = fields
@@ -46,9 +46,13 @@ def entry(key: str) -> dict[str, str]:
 
 
 def cite(key: str) -> str:
-    """A one-line citation: authors, year, title, where."""
+    """A one-line citation: authors (year). Title. Where — the parts the entry has.
+
+    >>> cite("Efe2014")
+    'Efe, Yalcin (2014). Dynamic Model of a Hydraulic Servo System for a Manipulator Robot. KTH Royal Institute of Technology.'
+    """
     e = entry(key)
-    authors = e.get("author", "Anonymous").replace(" and ", ", ")
-    year = e.get("year", "n.d.")
-    where = e.get("journal") or e.get("booktitle") or e.get("school") or e.get("publisher") or e.get("type", "")
-    return f"{authors} ({year}). {e.get('title', '')}. {where}.".replace("..", ".")
+    authors = e.get("author", "Anonymous").replace(" and ", "; ")
+    where = e.get("journal") or e.get("booktitle") or e.get("school") or e.get("publisher") or e.get("type")
+    parts = [f"{authors} ({e.get('year', 'n.d.')})", e.get("title"), where]
+    return ". ".join(p.rstrip(".") for p in parts if p) + "."

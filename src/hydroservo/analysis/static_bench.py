@@ -24,14 +24,14 @@ The metrics of [MareAttarND] Table 2 (:func:`table2_metrics`) are defined here a
   pressure null (where :math:`P_1 = P_2`);
 * pressure gain over ±40 % :math:`P_s`: 80 % divided by the opening span (in
   % :math:`X_n`) over which :math:`P_L` goes from -40 % to +40 % of :math:`P_s - P_r`
-  (the ARP490 definition);
+  (hydroservo's definition; the paper names the metric only);
 * low and high flow gains, % :math:`Q_n` / % :math:`X_n`: least-squares slopes of
   :math:`Q_L` over two ranges of :math:`|X|/X_n` (default 5-20 % and 40-100 %),
   the mean of the two polarities;
 * useport pressure at null, % :math:`P_s`: :math:`(P_1 - P_r)/(P_s - P_r)` at the pressure null.
 
 :math:`Q_n` is the rated flow of :class:`Bench`; when not given, the no-load
-flow at :math:`X_n` and the rating temperature (38 degC, ARP490's 100 degF).
+flow at :math:`X_n` and the rating temperature (default 38 degC, i.e. 100 degF, hydroservo's choice).
 """
 
 from __future__ import annotations

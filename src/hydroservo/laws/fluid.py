@@ -71,10 +71,12 @@ def bulk_modulus_lee(
     Notes
     -----
     [Efe2014] eq. (3.2) prints :math:`a_1 E_{max}(a_2 p/p_{max} + a_3)`: the
-    logarithm was lost in the extraction. Without it the formula gives
-    1.35e10 Pa at zero pressure, ten times the modulus of pure oil; with the
-    decimal logarithm of [JelaliKroll2004] (eq. 3.8) it rises from
-    4.29e8 Pa at 0 bar to 1.772e9 Pa at 280 bar, the expected shape.
+    logarithm was lost in the extraction (hydroservo's reading). Without it the
+    formula gives 1.35e10 Pa at zero pressure, ten times the modulus of pure
+    oil, growing without bound; with a decimal logarithm (the form found in
+    the literature Efe draws on, e.g. [JelaliKroll2004], which the sources at
+    hand do not print) it rises from 4.29e8 Pa at 0 bar to 1.772e9 Pa at
+    280 bar, the shape of an effective bulk modulus.
 
     References
     ----------

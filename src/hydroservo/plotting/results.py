@@ -4,13 +4,14 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from hydroservo.plotting import finish, pyplot
 from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
     import numpy as np
+    from matplotlib.figure import Figure
 
 __all__ = ["plot_result"]
 
@@ -34,7 +35,7 @@ def plot_result(
     units: dict[str, str] | None = None,
     title: str | None = None,
     file: str | Path | None = None,
-) -> Any:
+) -> Figure:
     """Plot signals of ``result`` against time, one panel per argument.
 
     An argument may be a name or a list of names sharing a panel (same unit).

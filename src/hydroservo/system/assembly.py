@@ -25,11 +25,20 @@ __all__ = ["Structure", "assemble"]
 class Structure(Protocol):
     """What the assembly reads of a system (:class:`~hydroservo.system.System` is one)."""
 
-    name: str
-    components: dict[str, Component]
-    connections: dict[str, str]
-    aliases: Mapping[str, Any]
-    initial: Mapping[str, str | float]
+    @property
+    def name(self) -> str: ...
+
+    @property
+    def components(self) -> Mapping[str, Component]: ...
+
+    @property
+    def connections(self) -> Mapping[str, str]: ...
+
+    @property
+    def aliases(self) -> Mapping[str, Any]: ...
+
+    @property
+    def initial(self) -> Mapping[str, str | float]: ...
 
 
 class _Inputs(Mapping[str, Any]):
