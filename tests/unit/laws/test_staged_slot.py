@@ -11,7 +11,6 @@ import numpy as np
 import pytest
 
 from hydroservo.errors import ParameterError
-from hydroservo.laws import leakage
 from hydroservo.laws import staged_slot as so
 
 GEO = {"r": 5e-6, "c": 2e-6, "n": 2, "w": 2e-3}
@@ -67,14 +66,3 @@ def test_laminar_at_small_drops_and_odd_in_drop() -> None:
     assert so.slot_flow(1e-5, -3e6, **GEO, **FLUID, **FLOW) == pytest.approx(
         -so.slot_flow(1e-5, 3e6, **GEO, **FLUID, **FLOW)
     )
-
-
-def test_earlier_closed_orifice_laws() -> None:
-    # Ellman eq. 7 at X = 0: k2 sqrt(dp); Eryilmaz eq. 8 at X = 0: k1 sqrt(dp) X0; leakage falls with closure
-    assert leakage.ellman_flow(0.0, 4e6, 1.0, 1e-9) == pytest.approx(1e-9 * 2e3)
-    assert leakage.ellman_flow(-1e-5, 4e6, 1e-6, 1e-9) > leakage.ellman_flow(1e-5, 4e6, 1e-6, 1e-9)
-    assert leakage.eryilmaz_flow(0.0, 4e6, 1e-5, 1e-9, 0.5) == pytest.approx(1e-9 * 2e3 * 1e-5)  # k1 sqrt(dp) X0
-    # laminar gap eq. 10 with the continuity constant of eq. 11
-    K_g = leakage.laminar_gap_continuity(GEO["w"], GEO["c"], FLOW["Cq_inf"] / FLOW["lambda_t"])
-    q0 = leakage.laminar_gap_flow(0.0, 1e6, 0.02, GEO["n"], GEO["w"], GEO["c"], K_g)
-    assert q0 == pytest.approx(GEO["n"] * GEO["w"] * GEO["c"] ** 3 / (12 * 0.02 * K_g) * 1e6)
