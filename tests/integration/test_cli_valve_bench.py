@@ -17,6 +17,7 @@ from hydroservo.components import StagedSlotValve
 from hydroservo.io import read_staged_slot_valve, staged_slot_valve_toml
 
 
+@pytest.mark.slow
 def test_characteristics_and_identify_cli(
     tmp_path: Path, cli, aerospace_valve: StagedSlotValve, aerospace_bench: Bench, staged_slot_start: StagedSlotValve
 ) -> None:

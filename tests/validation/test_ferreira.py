@@ -80,6 +80,7 @@ def test_identification_round_trip(published_bode: FrequencyResponse) -> None:
     assert fit.max_gain_error(200.0) < 1e-3
 
 
+@pytest.mark.slow
 def test_validation_table_of_seed_000() -> None:
     from hydroservo.validation import validate
 

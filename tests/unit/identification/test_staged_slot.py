@@ -14,6 +14,7 @@ from hydroservo.components import StagedSlotValve
 from hydroservo.identification.staged_slot import LOW_GAIN, identify_staged_slot, noisy_curves
 
 
+@pytest.mark.slow
 def test_identification_round_trip_without_noise(
     aerospace_valve: StagedSlotValve, aerospace_bench: Bench, staged_slot_start: StagedSlotValve
 ) -> None:
@@ -34,6 +35,7 @@ def test_identification_round_trip_without_noise(
     assert max(abs(v) for v in res.errors.values()) < 2e-3
 
 
+@pytest.mark.slow
 def test_identification_with_one_percent_noise_predicts_other_temperatures(
     aerospace_valve: StagedSlotValve, aerospace_bench: Bench, staged_slot_start: StagedSlotValve
 ) -> None:
