@@ -31,9 +31,11 @@ def test_retraction_faster_than_extension_and_steady_state_linear() -> None:
     runs = {v: s.simulate(t_end=6.0, params={"source.amplitude": v}) for v in (1.0, 2.0, -2.0)}
     vmax = {v: np.max(np.abs(r["ydot"])) for v, r in runs.items()}
     assert vmax[2.0] > vmax[-2.0]  # weight aids retraction (section 4.3.2)
-    # steady state: y = V_i / G_f (loop with integrating actuator), for either sign
+    # steady state: y = V_i / G_f (loop with integrating actuator), for either sign; the potentiometer reads
+    # G_f y = -G_f x, so the model's feedback gain is -G_f (Appendix C: G_f = 0.278 V/in)
+    G_f = -s["feedback"].values["G"]
     for v, r in runs.items():
-        assert r.get("y", "in")[-1] == pytest.approx(v / 0.278, rel=0.02)
+        assert r["y"][-1] == pytest.approx(v / G_f, rel=0.02)
 
 
 def test_variants_run() -> None:

@@ -4,13 +4,18 @@ from __future__ import annotations
 
 import pytest
 
+from hydroservo.data import parameter_set
 from hydroservo.laws.friction import stribeck
+from hydroservo.units import to_si
 
-# Simulated column of Table 5.2 with c_s = 0.01, F_v = 280, F_c0 = 78, F_s0 = 5.
+EFE = parameter_set("Efe2014")
+# Simulated column of Table 5.2 with its friction parameters c_s, F_v, F_c0, F_s0, as the parameter set holds them.
 # The table prints two decimals, so the tolerance is half a unit in the last place.
-TABLE_5_2 = [(0.165, 124.20), (0.123, 112.44), (0.078, 99.84), (0.048, 91.48), (0.022, 84.71), (0.01, 82.64)]
+TABLE_5_2 = list(zip(EFE.table("table_5_2")["velocity"], EFE.table("table_5_2")["simulated"], strict=True))
 
 
 @pytest.mark.parametrize(("v", "force"), TABLE_5_2)
-def test_stribeck_reproduces_table_5_2(v: float, force: float) -> None:
-    assert stribeck(v, 280.0, 78.0, 5.0, 0.01) == pytest.approx(force, abs=0.005)
+def test_stribeck_reproduces_table_5_2(v: str, force: str) -> None:
+    c_s, F_v = EFE.si("stribeck", "c_s", "m/s"), EFE.si("stribeck", "F_v", "N*s/m")
+    F_c0, F_s0 = EFE.si("stribeck", "F_c0", "N"), EFE.si("stribeck", "F_s0", "N")
+    assert stribeck(to_si(v, "m/s"), F_v, F_c0, F_s0, c_s) == pytest.approx(to_si(force, "N"), abs=0.005)

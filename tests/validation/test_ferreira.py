@@ -5,10 +5,11 @@ package's parameter set ``FerreiraND`` (one source for the printed values).
 The paper prints four significant digits; the tolerance is one unit in the
 last printed digit (alpha = 4.2415 is printed 4.241: truncated, not rounded).
 
-The published fit (section 6, the parameter set ``FerreiraND``): omega_n =
-1007 rad/s, xi = 0.48, L_v = 125 1/s, L_a = 81184 1/s^2, delay 7.625e-4 s.
-The manufacturer's curves are not available, so identification is proven on
-data generated from these values.
+The published spool dynamics (section 6: omega_n, xi, L_v, L_a and the
+delay) are the ``[dynamics]`` table of the same parameter set
+(:func:`hydroservo.validation.ferreira.published_dynamics`). The
+manufacturer's curves are not available, so identification is proven on data
+generated from these values.
 """
 
 from __future__ import annotations
@@ -21,7 +22,6 @@ from hydroservo.components import PseudoSectionValve
 from hydroservo.data import parameter_set
 from hydroservo.identification import fit_datasheet, fit_spool_dynamics
 from hydroservo.laws import pseudo_section as ps
-from hydroservo.units import to_si
 from hydroservo.validation import printed_digit
 from hydroservo.validation.ferreira import published_dynamics
 
@@ -47,20 +47,21 @@ def test_fixed_structure_published_parameters(ferreira_printed: dict[str, dict[s
 
 def test_published_sets_reproduce_the_datasheet(ferreira_published: dict[str, dict[str, float]]) -> None:
     """The printed parameters themselves give the datasheet values (to their printed precision)."""
-    P_n, P_s = to_si("35 bar", "Pa"), to_si("70 bar", "Pa")
+    P_n, P_s = PAPER.si("datasheet", "P_n", "Pa"), PAPER.si("datasheet", "P_s", "Pa")
     var = (
         PseudoSectionValve("v", structure="variable")
         .replace(**ferreira_published["variable"])
         .characteristics(P_n, P_s)
     )
     fix = PseudoSectionValve("v", structure="fixed").replace(**ferreira_published["fixed"]).characteristics(P_n, P_s)
-    lpm = to_si("1 L/min", "m^3/s")
-    assert var["Q_n"] / lpm == pytest.approx(25.5, rel=2e-4)
-    assert var["K_p0"] == pytest.approx(36.5, rel=1e-9)
-    assert var["q_lk0"] / lpm == pytest.approx(1.36, rel=5e-4)
-    assert fix["Q_n"] / lpm == pytest.approx(25.5, rel=2e-4)
-    assert fix["K_q0"] / lpm == pytest.approx(28.0, rel=5e-4)
-    assert fix["K_p0"] == pytest.approx(36.5, rel=5e-4)
+    Q_n, K_q0, q_lk0 = (PAPER.si("datasheet", k, "m^3/s") for k in ("Q_n", "K_q0", "q_lk0"))
+    K_p0 = PAPER.si("datasheet", "K_p0", "")
+    assert var["Q_n"] == pytest.approx(Q_n, rel=2e-4)
+    assert var["K_p0"] == pytest.approx(K_p0, rel=1e-9)
+    assert var["q_lk0"] == pytest.approx(q_lk0, rel=5e-4)
+    assert fix["Q_n"] == pytest.approx(Q_n, rel=2e-4)
+    assert fix["K_q0"] == pytest.approx(K_q0, rel=5e-4)
+    assert fix["K_p0"] == pytest.approx(K_p0, rel=5e-4)
     # zero leakage and zero leakage slope at x_s = 1 (eqs. 39-40): A_n(1) and its slope vanish
     p = ferreira_published["fixed"]
     h = 1e-5
@@ -72,7 +73,8 @@ def test_published_sets_reproduce_the_datasheet(ferreira_published: dict[str, di
 # -- spool dynamics, section 6 -------------------------------------------------------
 def test_identification_round_trip(published_bode: FrequencyResponse) -> None:
     """Seed 000 eq. 43 from a start 35-40 % away from every value: recover all within 1 % (issue floor)."""
-    start = {"omega_n": 1007 * 1.35, "zeta": 0.48 * 0.65, "L_v": 125 * 1.4, "L_a": 81184 * 0.6}
+    factors = {"omega_n": 1.35, "zeta": 0.65, "L_v": 1.4, "L_a": 0.6}
+    start = {k: PUBLISHED[k] * f for k, f in factors.items()}
     fit = fit_spool_dynamics(published_bode, "rate-limited", start)
     for k, v in PUBLISHED.items():
         assert fit.params[k] == pytest.approx(v, rel=1e-2), k

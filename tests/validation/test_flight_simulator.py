@@ -2,10 +2,21 @@
 
 from __future__ import annotations
 
+import tomllib
+
 import pytest
 
 import hydroservo as hs
+from hydroservo.data import model_text
 from hydroservo.validation import format_checks, regressions, validate
+
+IN, LBF = 0.0254, 4.4482216152605  # m per inch, N per pound-force (exact by definition)
+
+
+def appendix_c(component: str, name: str) -> float:
+    """The number of a value of the built-in model file, which holds Appendix C as printed (in its units)."""
+    text = tomllib.loads(model_text("flight-simulator"))["components"][component][name]
+    return float(text.split()[0])
 
 
 @pytest.fixture(scope="module")
@@ -15,15 +26,16 @@ def checks():
 
 def test_appendix_c_conversions() -> None:
     s = hs.load_model("flight-simulator")
-    # c_v = Cd sqrt(2/rho) w = 104.5 * 2.36 in^3/(s lbf^0.5); 1 in^3/(s lbf^0.5) = 7.7704e-6 m^2/(s Pa^0.5)
-    assert s["valve"].values["c_v"] == pytest.approx(
-        104.5 * 2.36 * 0.0254**3 / 4.4482216152605**0.5 * 0.0254**-1 * 0.0254, rel=1e-12
-    )
-    assert s["cyl"].values["A_A"] == pytest.approx(8.29 * 0.0254**2)
-    assert s["load"].values["m"] == pytest.approx(16.6 * 4.4482216152605 / 0.0254)
-    # Appendix D: P2 starts at W/A2 = 772 psi (pot Q14 = W/(2000 A2) = 0.386)
+    # c_v = Cd sqrt(2/rho) w = 104.5 in^2/(lbf^0.5 s) x 2.36 in: Appendix C prints the two factors, the model file
+    # holds only their product, so they are typed here to check it; 1 in^3/(s lbf^0.5) = 7.7704e-6 m^2/(s Pa^0.5)
+    assert appendix_c("valve", "c_v") == pytest.approx(104.5 * 2.36, rel=1e-12)
+    assert s["valve"].values["c_v"] == pytest.approx(appendix_c("valve", "c_v") * IN**3 / LBF**0.5, rel=1e-12)
+    # the model's SI values are Appendix C's converted with the exact inch and pound-force
+    assert s["cyl"].values["A_A"] == pytest.approx(appendix_c("cyl", "A_A") * IN**2)  # A2 = 8.29 in^2
+    assert s["load"].values["m"] == pytest.approx(appendix_c("load", "m") * LBF / IN)  # M = 16.6 lbf s^2/in
+    # Appendix D: P2 starts at W/A2 = 6400 lbf / 8.29 in^2 = 772 psi (pot Q14 = W/(2000 A2) = 0.386)
     r = s.simulate(t_end=0.01, n_points=2)
-    assert r.get("p2", "psi")[0] == pytest.approx(6400 / 8.29)
+    assert r.get("p2", "psi")[0] == pytest.approx(appendix_c("load", "W") / appendix_c("cyl", "A_A"))
 
 
 @pytest.mark.parametrize(

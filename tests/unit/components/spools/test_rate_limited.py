@@ -21,10 +21,11 @@ def test_limiters_have_unit_gain_at_the_origin(rate_limited_spool_system) -> Non
     wn, z = PUBLISHED["omega_n"], PUBLISHED["zeta"]
     np.testing.assert_allclose(A, [[0.0, 1.0], [-(wn**2), -2 * z * wn]], rtol=1e-12)
     # and the limits themselves: acceleration saturates at L_a, velocity demand at L_v
-    acc = rate_limited_spool(1.0, 0.0, 0.0, wn, z, 125.0, 81184.0)
-    assert acc == pytest.approx(81184.0)
-    v_l = rate_limited_spool(1e9, 0.0, 0.0, 1.0, 0.5, 125.0, 1e30)  # 2 zeta wn (v_l - 0) with a huge demand
-    assert v_l == pytest.approx(125.0, rel=1e-6)
+    L_v, L_a = PUBLISHED["L_v"], PUBLISHED["L_a"]
+    acc = rate_limited_spool(1.0, 0.0, 0.0, wn, z, L_v, L_a)
+    assert acc == pytest.approx(L_a)
+    v_l = rate_limited_spool(1e9, 0.0, 0.0, 1.0, 0.5, L_v, 1e30)  # 2 zeta wn (v_l - 0) with a huge demand
+    assert v_l == pytest.approx(L_v, rel=1e-6)
 
 
 def test_pade_delay_matches_the_exact_delay_in_the_band(rate_limited_spool_system) -> None:
