@@ -22,6 +22,7 @@ from hydroservo.data import example_files, parameter_set
 from hydroservo.identification import spool_response
 from hydroservo.io import read_staged_slot_valve
 from hydroservo.laws import pseudo_section as ps
+from hydroservo.validation import Check, validate
 from hydroservo.validation.ferreira import bode_grid, published_dynamics
 
 CliRun = Callable[..., tuple[int, str, str]]
@@ -38,6 +39,24 @@ def cli(capsys: pytest.CaptureFixture[str]) -> CliRun:
         return code, out.out, out.err
 
     return run
+
+
+# -- validation rows --------------------------------------------------------------
+@pytest.fixture(scope="session")
+def validated() -> Callable[[str], list[Check]]:
+    """``validated(name)`` is ``hydroservo.validation.validate(name)``, computed once per session.
+
+    The rows' tests (validation/test_rows.py) and the detailed tests of each source share one computation
+    (about 5 s for servo-solenoid-cylinder). Checks are frozen; each call returns a new list.
+    """
+    cache: dict[str, list[Check]] = {}
+
+    def get(name: str) -> list[Check]:
+        if name not in cache:
+            cache[name] = validate(name)
+        return list(cache[name])
+
+    return get
 
 
 # -- small systems ----------------------------------------------------------------

@@ -83,9 +83,12 @@ def test_identification_round_trip(published_bode: FrequencyResponse) -> None:
 
 
 @pytest.mark.slow
-def test_validation_table_of_seed_000() -> None:
-    from hydroservo.validation import validate
+def test_validation_table_of_ferreira(validated) -> None:
+    """``hydroservo validate servo-solenoid-cylinder``: every row gives the verdict it expects.
 
-    checks = validate("servo-solenoid-cylinder")
+    Nothing of FerreiraND is "NOT reproduced": every printed value is reproduced, and the unmatched K_q0 and the
+    "typically 200 Hz" bandwidth are information rows (hydroservo/validation/ferreira.py says why).
+    """
+    checks = validated("servo-solenoid-cylinder")
     assert {c.verdict for c in checks} <= {"reproduced", "info"}
-    assert sum(c.verdict == "reproduced" for c in checks) == 15
+    assert {c.row.key: c.verdict for c in checks} == {c.row.key: c.row.expected for c in checks}

@@ -8,7 +8,7 @@ import pytest
 
 import hydroservo as hs
 from hydroservo.data import model_text
-from hydroservo.validation import format_checks, regressions, validate
+from hydroservo.validation import format_checks, regressions
 
 IN, LBF = 0.0254, 4.4482216152605  # m per inch, N per pound-force (exact by definition)
 
@@ -19,9 +19,9 @@ def appendix_c(component: str, name: str) -> float:
     return float(text.split()[0])
 
 
-@pytest.fixture(scope="module")
-def checks():
-    return {c.quantity: c for c in validate("flight-simulator")}
+@pytest.fixture
+def checks(validated):
+    return {c.quantity: c for c in validated("flight-simulator")}
 
 
 def test_appendix_c_conversions() -> None:
