@@ -12,7 +12,7 @@ def test_fluid_cli(cli) -> None:
     assert code == 0
     data = json.loads(out)
     assert len(data["values"]) == 4 and data["units"]["kinematic_viscosity"] == "cSt"
-    row = data["values"][2]  # 20 degC, 0 Pa: the reference state
+    row = data["values"][2]  # 20 degC, 0 Pa: hydroservo's reference state of Skydrol (hydroservo.fluids; none printed)
     assert row["density"] == pytest.approx(1008.0) and row["temperature_degC"] == 20.0
     code, _, err = cli("fluid", "density", "--temperature", "150", "--strict")
     assert code == 2

@@ -1,4 +1,4 @@
-"""Stribeck friction against Table 5.2 of Efe2014 (simulated column)."""
+"""Stribeck friction (eq. 3.47) against Table 5.2 of Efe2014 (simulated column), from the parameter set Efe2014."""
 
 from __future__ import annotations
 

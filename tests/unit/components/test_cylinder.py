@@ -61,7 +61,7 @@ def test_bulk_modulus_options_and_volume_variation_run() -> None:
         assert np.all(np.isfinite(r["cyl.pA"]))
     cold = closed_cylinder(bulk_modulus="eggerth", temperature=20.0).simulate(t_end=0.2)
     hot = closed_cylinder(bulk_modulus="eggerth", temperature=90.0).simulate(t_end=0.2)
-    assert np.ptp(hot["load.x"]) > np.ptp(cold["load.x"])  # hot oil is softer (seed 001 Fig. 3.1): larger motion
+    assert np.ptp(hot["load.x"]) > np.ptp(cold["load.x"])  # hot oil is softer (Efe2014 Fig. 3.1): larger motion
 
 
 def test_cylinder_end_stop_and_oil_mass() -> None:

@@ -39,11 +39,11 @@ def test_identification_round_trip_without_noise(
 def test_identification_with_one_percent_noise_predicts_other_temperatures(
     aerospace_valve: StagedSlotValve, aerospace_bench: Bench, staged_slot_start: StagedSlotValve
 ) -> None:
-    """1 % noise on every reading (seed 002's flow-meter accuracy).
+    """1 % noise on every reading (MareAttarND's flow-meter accuracy).
 
-    Tolerances: 2 % (the issue's floor) for c, C_q_inf and lambda_tL; for the laps and r, 3 standard
-    deviations of the 20-repetition study in docs/validation.md (8 nm and 2 % there); for the predicted
-    metrics, 3 % (3 standard deviations of the worst one, the high flow gain at -40 degC: 1.0 %).
+    Tolerances: 2 % (the floor the identification is held to) for c, C_q_inf and lambda_tL; for the laps
+    and r, 3 standard deviations of the 20-repetition study in docs/validation.md (8 nm and 2 % there); for
+    the predicted metrics, 3 % (3 standard deviations of the worst one, the high flow gain at -40 degC: 1.0 %).
     """
     valve, bench = aerospace_valve, aerospace_bench
     data = noisy_curves(bench_curves(valve, -15.0, bench), 0.01, seed=7)

@@ -30,9 +30,9 @@ def test_valve_compensation_and_hysteresis_tables() -> None:
     p_tr = transition_pressure(1e-3, 870.0, 32e-6, 1000.0)
     assert plain == pytest.approx(1e-7 * 5e-4 * np.sqrt(100e5) * (1 + (p_tr / 100e5) ** 2) ** -0.25, rel=1e-9)
     k = {"K_x": [-1.0, 0.0, 1.0], "K": [0.8, 0.6, 0.8]}
-    assert flow(k, 0.0) == pytest.approx(0.7 * plain, rel=1e-6)  # K(0.5) = 0.7, seed 001 eq. 3.22
+    assert flow(k, 0.0) == pytest.approx(0.7 * plain, rel=1e-6)  # K(0.5) = 0.7, Efe2014 eq. 3.22
     h = {"H_x": [-1.0, 1.0], "H_opening": [1.0, 1.0], "H_closing": [0.9, 0.9]}
     assert flow(h, +0.01) == pytest.approx(plain, rel=1e-6)  # opening
-    assert flow(h, -0.01) == pytest.approx(0.9 * plain, rel=1e-6)  # closing, eq. 3.23
+    assert flow(h, -0.01) == pytest.approx(0.9 * plain, rel=1e-6)  # closing, Efe2014 eq. 3.23
     with pytest.raises(ParameterError, match="tables.K"):
         c.FourWayValve("v", tables={"K_x": [0.0, 1.0], "K": [1.0]})
