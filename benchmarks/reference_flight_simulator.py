@@ -5,7 +5,7 @@ An independent implementation of the same equations as the built-in
 3-27/3-28 in the sign-correct form 3-18a/3-23a, 3-29/3-30, 3-31, 3-32, 3-35
 in the dissertation's form, 3-37), in SI, with the same orifice regularisation. It
 serves as the baseline of the speed benchmark and as a cross-check of the
-engine's assembly of components (tests/test_flight_simulator.py).
+engine's assembly of components (tests/integration/test_builtin_models.py).
 """
 
 from __future__ import annotations

@@ -1,0 +1,183 @@
+"""Fixtures shared by the unit, integration and validation tests.
+
+The suite runs with ``--import-mode=importlib`` (pyproject.toml), so test
+modules cannot import one another: what several of them need lives here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import hydroservo as hs
+from hydroservo import components as c
+from hydroservo.analysis import FrequencyResponse
+from hydroservo.analysis.static_bench import Bench
+from hydroservo.cli import main
+from hydroservo.components import StagedSlotValve
+from hydroservo.data import example_files, parameter_set
+from hydroservo.identification import spool_response
+from hydroservo.io import read_staged_slot_valve
+from hydroservo.laws import pseudo_section as ps
+from hydroservo.validation import Check, validate
+from hydroservo.validation.ferreira import bode_grid, published_dynamics
+
+CliRun = Callable[..., tuple[int, str, str]]
+
+
+# -- the command line -----------------------------------------------------------
+@pytest.fixture
+def cli(capsys: pytest.CaptureFixture[str]) -> CliRun:
+    """``cli("valve", "fit", ...)`` runs ``hydroservo valve fit ...`` in-process: (exit code, stdout, stderr)."""
+
+    def run(*argv: str) -> tuple[int, str, str]:
+        code = main(list(argv))
+        out = capsys.readouterr()
+        return code, out.out, out.err
+
+    return run
+
+
+# -- validation rows --------------------------------------------------------------
+@pytest.fixture(scope="session")
+def validated() -> Callable[[str], list[Check]]:
+    """``validated(name)`` is ``hydroservo.validation.validate(name)``, computed once per session.
+
+    The rows' tests (validation/test_rows.py) and the detailed tests of each source share one computation
+    (about 5 s for servo-solenoid-cylinder). Checks are frozen; each call returns a new list.
+    """
+    cache: dict[str, list[Check]] = {}
+
+    def get(name: str) -> list[Check]:
+        if name not in cache:
+            cache[name] = validate(name)
+        return list(cache[name])
+
+    return get
+
+
+# -- small systems ----------------------------------------------------------------
+@pytest.fixture
+def driven() -> Callable[..., hs.System]:
+    """A factory: ``block`` with its input ``port`` fed by the output ``y`` of ``source`` (t_end 1 s)."""
+
+    def build(block: c.Component, source: c.Component, port: str = "u") -> hs.System:
+        s = hs.System("driven", t_end=1.0)
+        s.add(source)
+        s.add(block)
+        s.connect(f"{source.name}.y", f"{block.name}.{port}")
+        return s
+
+    return build
+
+
+@pytest.fixture
+def spring_mass() -> Callable[..., hs.System]:
+    """A factory: a 2 kg mass on an 800 N/m spring released from 10 mm (omega_n = 20 rad/s), extra Mass values."""
+
+    def build(**kw: object) -> hs.System:
+        s = hs.System("spring-mass")
+        s.add(c.Mass("load", m=2.0, k_spring=800.0, x0=0.01, incline=0.0, **kw))
+        return s
+
+    return build
+
+
+@pytest.fixture
+def rate_limited_spool_system() -> Callable[..., hs.System]:
+    """A factory: the rate-limited spool of FerreiraND Fig. 11 (component defaults) driven by a sine ``u``."""
+
+    def build(delay_model: str = "none") -> hs.System:
+        s = hs.System("spool")
+        s.add(c.Sine("u"))
+        s.add(c.SpoolRateLimited("spool", delay_model=delay_model))
+        s.connect("u.y", "spool.u")
+        return s
+
+    return build
+
+
+@pytest.fixture
+def valve_cylinder_file(tmp_path: Path) -> Path:
+    """The example model file ``valve_cylinder.toml`` written to a temporary folder."""
+    path = tmp_path / "vc.toml"
+    path.write_text(example_files()["valve_cylinder.toml"])
+    return path
+
+
+# -- FerreiraND: the servo-solenoid valve -------------------------------------------
+@pytest.fixture
+def ferreira_published() -> dict[str, dict[str, float]]:
+    """The pseudo-section parameters FerreiraND section 5 prints, per structure, in SI (parameter set FerreiraND)."""
+    pset = parameter_set("FerreiraND")
+    return {
+        structure: {k: pset.si(structure, k, ps.PARAMETER_UNITS[k]) for k in ps.PARAMETER_NAMES[structure]}
+        for structure in ("variable", "fixed")
+    }
+
+
+@pytest.fixture
+def ferreira_printed() -> dict[str, dict[str, str]]:
+    """The same parameters as printed ("0.1149 L/min/bar^0.5"), per structure."""
+    pset = parameter_set("FerreiraND")
+    return {
+        structure: {k: str(pset.table(structure)[k]) for k in ps.PARAMETER_NAMES[structure]}
+        for structure in ("variable", "fixed")
+    }
+
+
+@pytest.fixture(scope="session")
+def published_bode() -> FrequencyResponse:
+    """Bode data of the published spool dynamics (FerreiraND section 6) on the grid of Fig. 10.
+
+    Twice the integration grid of the fit (512 steps per period), so that a fit does not see its own numbers.
+    """
+    amps, freqs = bode_grid()
+    return spool_response(published_dynamics(), amps, freqs, steps_per_period=512)
+
+
+# -- MareAttarND: the staged-slot valve (hydroservo's example geometry) -------------------------
+#: The start of the identification: every fitted parameter 30-40 % away from the truth.
+STAGED_SLOT_START_FACTORS = {
+    "X_a0": 1.3,
+    "X_b0": 0.7,
+    "X_c0": 1.35,
+    "X_d0": 0.65,
+    "r": 0.7,
+    "c": 1.3,
+    "Cq_inf": 0.7,
+    "lambda_tL": 1.4,
+    "X_a0H": 1.3,
+    "X_b0H": 0.7,
+    "X_c0H": 0.7,
+    "X_d0H": 1.3,
+    "lambda_tH": 0.65,
+}
+
+
+@pytest.fixture(scope="session")
+def aerospace_example() -> tuple[StagedSlotValve, Bench]:
+    """The built-in staged-slot valve ``aerospace-example`` (parameter set MareAttarND_example) and its bench."""
+    valve, bench = read_staged_slot_valve("aerospace-example")
+    assert bench is not None
+    return valve, bench
+
+
+@pytest.fixture(scope="session")
+def aerospace_valve(aerospace_example: tuple[StagedSlotValve, Bench]) -> StagedSlotValve:
+    return aerospace_example[0]
+
+
+@pytest.fixture(scope="session")
+def aerospace_bench(aerospace_example: tuple[StagedSlotValve, Bench]) -> Bench:
+    return aerospace_example[1]
+
+
+@pytest.fixture(scope="session")
+def staged_slot_start(aerospace_valve: StagedSlotValve) -> StagedSlotValve:
+    """The example valve with every identified parameter moved 30-40 % away (the start of an identification)."""
+    values: dict[str, Any] = aerospace_valve.values
+    return aerospace_valve.replace(**{k: values[k] * f for k, f in STAGED_SLOT_START_FACTORS.items()})

@@ -1,0 +1,60 @@
+"""The general commands: ``hydroservo models``, ``simulate``, ``export``, ``validate``, and bad input."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+
+def test_cli_simulate_json(tmp_path, cli) -> None:
+    code, out, _ = cli(
+        "simulate", "flight-simulator", "--set", "load.W=3000 lbf", "--t-end", "0.5", "--out", str(tmp_path), "--json"
+    )
+    assert code == 0
+    data = json.loads(out)
+    assert data["signals"]["p2"]["unit"] == "Pa"
+    assert data["signals"]["p2"]["max"] > 0
+    assert "nsteps" in data["solver"] and data["wall_time_s"] > 0
+    assert (tmp_path / "flight-simulator.csv").exists() and (tmp_path / "flight-simulator.png").exists()
+    first = (tmp_path / "flight-simulator.csv").read_text().splitlines()[0]
+    assert "y [m]" in first and "p2 [Pa]" in first
+
+
+def test_cli_export_then_simulate(tmp_path, cli) -> None:
+    code, text, _ = cli("export", "flight-simulator")
+    assert code == 0
+    path = tmp_path / "fs.toml"
+    path.write_text(text)
+    code, out, _ = cli("simulate", str(path), "--t-end", "0.2", "--out", str(tmp_path))
+    assert code == 0
+    assert "simulated 'flight-simulator'" in out
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["simulate", "flight-simulator", "--set", "cyl.A_A=3 bar"], "wrong dimension"),
+        (["simulate", "flight-simulator", "--set", "cyl.V_A0=-3 in^3"], "expected > 0"),
+        (["simulate", "flight-simulator", "--set", "load.mass=3 kg"], "has no parameter 'mass'"),
+        (["simulate", "flight-simulator", "--set", "nope.m=3 kg"], "no component 'nope'"),
+        (["simulate", "flight-simulator", "--set", "load.m"], "expected COMPONENT.PARAMETER=VALUE"),
+        (["simulate", "no-such-model"], "neither a built-in model"),
+        (["simulate", "flight-simulator", "--t-end", "2 bar"], "--t-end"),
+        (["validate", "nothing"], "no validation"),
+    ],
+)
+def test_cli_bad_input_exit_2(argv, message, cli, tmp_path) -> None:
+    code, _, err = cli(*([*argv, "--out", str(tmp_path)] if argv[0] == "simulate" else argv))
+    assert code == 2
+    assert message in err and "Traceback" not in err
+
+
+def test_cli_models_and_validate(cli) -> None:
+    code, out, _ = cli("models")
+    assert code == 0
+    assert "flight-simulator" in out
+    code, out, _ = cli("validate", "flight-simulator", "--json")
+    assert code == 0
+    rows = json.loads(out)["flight-simulator"]
+    assert {r["verdict"] for r in rows} >= {"reproduced", "NOT reproduced"}

@@ -1,0 +1,83 @@
+"""The cylinder (hydroservo.components.cylinder): end stops, oil mass, mass conservation, leakage, bulk modulus."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import hydroservo as hs
+from hydroservo import components as c
+
+
+def closed_cylinder(**cyl: object) -> hs.System:
+    """A cylinder with blocked ports, its rod pushed by a sinusoidal force."""
+    s = hs.System("closed-cylinder")
+    values: dict[str, object] = dict(A_A=2e-3, A_B=1.2e-3, V_A0=4e-4, V_B0=3e-4, beta_e=1.2e9, pA0=50e5, pB0=50e5)
+    values.update(pressure_floor="none", **cyl)
+    s.add(c.Cylinder("cyl", **values))
+    s.add(c.Mass("load", m=20.0, incline=0.0, B=2000.0))
+    s.add(c.Sine("force", unit="N", amplitude=4000.0, frequency=5.0))
+    s.add(c.Sum("sum", unit="N", gain1=1.0, gain2=1.0))
+    s.connect("force.y", "sum.u1")
+    s.connect("cyl.F", "sum.u2")
+    s.connect("sum.y", "load.F")
+    s.connect("load.x", "cyl.x")
+    s.connect("load.v", "cyl.v")
+    s.add(c.Step("blocked", unit="m^3/s", amplitude=0.0))  # blocked ports: zero flow
+    s.connect("blocked.y", "cyl.QA", "cyl.QB")
+    return s
+
+
+def test_closed_cylinder_conserves_mass() -> None:
+    # Constant bulk modulus: d(ln V)/dt = -dp/dt / beta, so V exp(p/beta) is the oil
+    # mass (over rho at zero pressure) and must stay constant in each chamber.
+    s = closed_cylinder()
+    r = s.simulate(t_end=0.6, n_points=601, rtol=1e-10, atol=1e-12)
+    beta = 1.2e9
+    VA = 4e-4 + 2e-3 * r["load.x"]
+    VB = 3e-4 - 1.2e-3 * r["load.x"]
+    mA = VA * np.exp(r["cyl.pA"] / beta)
+    mB = VB * np.exp(r["cyl.pB"] / beta)
+    assert np.ptp(r["load.x"]) > 1e-4  # the piston really moved
+    np.testing.assert_allclose(mA, mA[0], rtol=1e-8)
+    np.testing.assert_allclose(mB, mB[0], rtol=1e-8)
+
+
+def test_internal_leakage_conserves_total_volume_flow() -> None:
+    # With leakage A -> B and frozen volumes the leak leaves A and enters B:
+    # (VA/beta) dpA/dt + (VB/beta) dpB/dt = -(A_A - A_B) v
+    s = closed_cylinder(C_Li=2e-12, k_V=0.0)
+    r = s.simulate(t_end=0.5, n_points=501, rtol=1e-10, atol=1e-12)
+    beta = 1.2e9
+    lhs = 4e-4 / beta * r["cyl.pA"] + 3e-4 / beta * r["cyl.pB"]
+    rhs = lhs[0] - (2e-3 - 1.2e-3) * (r["load.x"] - r["load.x"][0])
+    np.testing.assert_allclose(lhs, rhs, atol=1e-12)
+
+
+def test_bulk_modulus_options_and_volume_variation_run() -> None:
+    for law in ("constant", "lee", "eggerth"):
+        s = closed_cylinder(bulk_modulus=law, temperature=40.0, k_V=1.0)
+        r = s.simulate(t_end=0.2)
+        assert np.all(np.isfinite(r["cyl.pA"]))
+    cold = closed_cylinder(bulk_modulus="eggerth", temperature=20.0).simulate(t_end=0.2)
+    hot = closed_cylinder(bulk_modulus="eggerth", temperature=90.0).simulate(t_end=0.2)
+    assert np.ptp(hot["load.x"]) > np.ptp(cold["load.x"])  # hot oil is softer (Efe2014 Fig. 3.1): larger motion
+
+
+def test_cylinder_end_stop_and_oil_mass() -> None:
+    s = hs.System("stop")
+    s.add(
+        c.Cylinder(
+            "cyl", A_A=1e-3, A_B=5e-4, V_A0=2e-4, V_B0=2e-4, x_max=0.05, k_stop=1e7, c_stop=1e4, pA0=100e5, rho=870.0
+        )
+    )
+    s.add(c.Mass("load", m=50.0, incline=0.0))
+    s.add(c.Step("q", unit="m^3/s", amplitude=0.0))
+    s.connect("q.y", "cyl.QA", "cyl.QB")
+    s.connect("cyl.F", "load.F")
+    s.connect("load.x", "cyl.x")
+    s.connect("load.v", "cyl.v")
+    s.connect("cyl.m_oil", "load.m_add")
+    r = s.simulate(t_end=1.0)
+    assert r["load.x"].max() < 0.05 + 0.01  # held by the stop (10 mm of stop compression at most)
+    assert r["cyl.m_oil"][0] == pytest.approx(870.0 * 4e-4)

@@ -1,0 +1,38 @@
+"""The four-way valve component (hydroservo.components.valves.four_way): compensation and hysteresis tables."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import hydroservo as hs
+from hydroservo import components as c
+from hydroservo.errors import ParameterError
+from hydroservo.laws.orifice import transition_pressure
+
+
+def test_valve_compensation_and_hysteresis_tables() -> None:
+    def flow(tables: dict, vv: float) -> float:
+        s = hs.System("valve")
+        s.add(c.FourWayValve("valve", c_v=1e-7, xv_max=1e-3, tables=tables))
+        s.add(c.Step("xv", unit="m", amplitude=5e-4))
+        s.add(c.Step("vv", unit="m/s", amplitude=vv))
+        s.add(c.ConstantPressure("sup", p=100e5))
+        s.add(c.Tank("tank"))
+        s.connect("xv.y", "valve.xv")
+        s.connect("vv.y", "valve.vv")
+        s.connect("sup.p", "valve.pS")
+        s.connect("tank.p", "valve.pT", "valve.pA", "valve.pB")
+        return float(s.simulate(t_eval=[0.0, 0.1])["valve.QA"][-1])
+
+    plain = flow({}, 0.0)
+    # turbulent law with the default laminar transition (flow number 1000, D_h 1 mm, 32 cSt, 870 kg/m^3)
+    p_tr = transition_pressure(1e-3, 870.0, 32e-6, 1000.0)
+    assert plain == pytest.approx(1e-7 * 5e-4 * np.sqrt(100e5) * (1 + (p_tr / 100e5) ** 2) ** -0.25, rel=1e-9)
+    k = {"K_x": [-1.0, 0.0, 1.0], "K": [0.8, 0.6, 0.8]}
+    assert flow(k, 0.0) == pytest.approx(0.7 * plain, rel=1e-6)  # K(0.5) = 0.7, Efe2014 eq. 3.22
+    h = {"H_x": [-1.0, 1.0], "H_opening": [1.0, 1.0], "H_closing": [0.9, 0.9]}
+    assert flow(h, +0.01) == pytest.approx(plain, rel=1e-6)  # opening
+    assert flow(h, -0.01) == pytest.approx(0.9 * plain, rel=1e-6)  # closing, Efe2014 eq. 3.23
+    with pytest.raises(ParameterError, match="tables.K"):
+        c.FourWayValve("v", tables={"K_x": [0.0, 1.0], "K": [1.0]})
