@@ -2,7 +2,7 @@
 
 The true valve is hydroservo's example aerospace geometry (the parameter set
 ``MareAttarND_example``; the paper publishes none); the start is every
-identified parameter 30-40 % away (conftest.STAGED_SLOT_START_FACTORS).
+identified parameter 30-40 % away (the example guess.toml, conftest.staged_slot_start).
 """
 
 from __future__ import annotations
