@@ -18,3 +18,46 @@ def test_round_trip_builtin_and_user_model(tmp_path: Path, valve_cylinder_file: 
         r1, r2 = system.simulate(), again.simulate()
         for name in r1.names:
             np.testing.assert_array_equal(r1[name], r2[name])
+
+
+def test_export_keeps_the_units_values_were_given_in() -> None:
+    # Appendix C of FlightSimulatorND is in psi, in^2, lbf: the exported model file shows them so.
+    text = model_to_toml(hs.load_model("flight-simulator"))
+    for line in ('p = "1500 psi"', 'A_A = "8.29 in^2"', 'W = "6400 lbf"', 'K1 = "0.031 in*lbf/mA"'):
+        assert line in text, line
+
+
+OLD_NAMES = """
+[model]
+name = "old names"
+t_end = "10 ms"
+
+[components.command]
+type = "Step"
+amplitude = 0.5
+
+[components.spool]
+type = "SpoolFirstOrder"
+T = "15 ms"        # now tau
+x_max = "1 mm"     # now xv_max
+
+[components.valve]
+type = "MareSpoolValve"   # now StagedSlotValve
+T = "-15 degC"            # now temperature
+
+[connections]
+"spool.u" = "command.y"
+"""
+
+
+def test_model_files_with_former_names_load_with_one_warning_each(tmp_path: Path, cli) -> None:  # type: ignore[no-untyped-def]
+    path = tmp_path / "old.toml"
+    path.write_text(OLD_NAMES)
+    code, out, err = cli("export", str(path), "--set", "valve.T=-40")
+    assert code == 0
+    lines = err.strip().splitlines()
+    assert len(lines) == 3, err  # T and x_max of the spool, T of the valve: once each, though valve.T is set twice
+    assert all(line.startswith("hydroservo: warning:") and "is now called" in line for line in lines)
+    system = read_model(path)
+    assert system["spool"].values["tau"] == 0.015 and system["spool"].values["xv_max"] == 0.001
+    assert 'type = "StagedSlotValve"' in out and 'temperature = "-40.0 degC"' in out and "\nT = " not in out

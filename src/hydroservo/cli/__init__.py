@@ -64,8 +64,17 @@ def _join_negative_values(argv: list[str]) -> list[str]:
     return out
 
 
-def _show_warning(message: Warning | str, category: type[Warning], *args: object, **kwargs: object) -> None:
-    print(f"hydroservo: warning: {message}", file=sys.stderr)
+class _WarningPrinter:
+    """Prints each warning once, as one line: the same message from several call sites is one message."""
+
+    def __init__(self) -> None:
+        self.shown: set[str] = set()
+
+    def __call__(self, message: Warning | str, category: type[Warning], *args: object, **kwargs: object) -> None:
+        text = str(message)
+        if text not in self.shown:
+            self.shown.add(text)
+            print(f"hydroservo: warning: {text}", file=sys.stderr)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -73,9 +82,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(_join_negative_values(list(sys.argv[1:] if argv is None else argv)))
     try:
         with warnings.catch_warnings():
-            warnings.simplefilter("once", FluidRangeWarning)  # one line per message, not per call site
-            warnings.simplefilter("once", RenamedWarning)
-            warnings.showwarning = _show_warning
+            warnings.simplefilter("always", FluidRangeWarning)  # the printer shows each message once
+            warnings.simplefilter("always", RenamedWarning)
+            warnings.showwarning = _WarningPrinter()
             return int(args.func(args))
     except BrokenPipeError:  # output piped into head & co.
         sys.stderr.close()
