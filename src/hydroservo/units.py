@@ -9,12 +9,21 @@ numbers are SI floats; only results and files carry unit names again.
 The unit registry (pint) is built on first use, not on import: a bare number
 never needs it, so ``import hydroservo`` and the command line's ``--help``
 stay fast. ``hydroservo.units.ureg`` is that registry.
+
+Quantity strings are read by a small grammar before pint sees them, so that no
+input can make the parser evaluate unbounded arithmetic (pint alone would
+evaluate ``"10**10**10 kg"`` and never return): a quantity is one finite
+number followed by a unit; a unit is names (``psi``, ``L``, ``degC``, ``%``),
+numbers as factors (``1/s``), ``*``, ``/``, ``^`` or ``**`` with a plain
+exponent of magnitude at most 12, and parentheses nested at most 4 deep;
+200 characters at most.
 """
 
 from __future__ import annotations
 
 import functools
 import math
+import re
 from typing import TYPE_CHECKING, Any
 
 from hydroservo.errors import UnitError
@@ -30,6 +39,7 @@ __all__ = [
     "format_quantity",
     "parse_quantity",
     "is_bare_number",
+    "split_quantity",
     "check_unit",
     "same_dimension",
 ]
@@ -53,8 +63,51 @@ def __getattr__(name: str) -> Any:
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
+#: The longest quantity or unit text read [characters].
+MAX_TEXT = 200
+#: The largest exponent a unit may carry (``m^3``, ``Pa^0.5``).
+MAX_EXPONENT = 12
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+_TOKEN = re.compile(r"\s+|\*\*|\^|\*|/|\(|\)|[-+]|(?:\d+\.?\d*|\.\d+)|[^\W\d][\w°µΩ]*|[%°µΩ]")
+
+
+def _unit_tokens(unit: str) -> list[str]:
+    """The tokens of a unit text, or a UnitError if it is not a unit of the grammar (module notes)."""
+    if len(unit) > MAX_TEXT:
+        raise UnitError(f"unit {unit[:40]!r}...: {len(unit)} characters; expected at most {MAX_TEXT}")
+    tokens: list[str] = []
+    pos = 0
+    while pos < len(unit):
+        match = _TOKEN.match(unit, pos)
+        if match is None:
+            raise UnitError(f"unit {unit!r}: unexpected {unit[pos]!r} at character {pos + 1}")
+        if not match.group().isspace():
+            tokens.append(match.group())
+        pos = match.end()
+    depth = 0
+    for i, tok in enumerate(tokens):
+        if tok in ("-", "+") and (i == 0 or tokens[i - 1] not in ("**", "^")):
+            raise UnitError(f"unit {unit!r}: a sign may stand only before an exponent")
+        depth += (tok == "(") - (tok == ")")
+        if depth < 0 or depth > 4:
+            raise UnitError(f"unit {unit!r}: unbalanced or too deeply nested parentheses")
+        if tok in ("**", "^"):
+            rest = tokens[i + 1 : i + 3]
+            sign = bool(rest) and rest[0] in ("-", "+")
+            exponent = rest[1] if sign and len(rest) > 1 else (rest[0] if rest else "")
+            follows = tokens[i + 3] if sign and len(tokens) > i + 3 else (tokens[i + 2] if len(tokens) > i + 2 else "")
+            if not _NUMBER.fullmatch(exponent) or abs(float(exponent)) > MAX_EXPONENT or follows in ("**", "^"):
+                raise UnitError(
+                    f"unit {unit!r}: expected a plain exponent of magnitude at most {MAX_EXPONENT} after {tok!r}"
+                )
+    if depth != 0:
+        raise UnitError(f"unit {unit!r}: unbalanced parentheses")
+    return tokens
+
+
 @functools.lru_cache(maxsize=512)
 def _unit(unit: str) -> pint.Unit:
+    _unit_tokens(unit)
     try:
         return registry().Unit(unit)
     except Exception as exc:  # pint raises several exception types
@@ -89,6 +142,23 @@ def is_bare_number(value: Any) -> bool:
     return False
 
 
+def split_quantity(text: str, *, what: str = "value") -> tuple[float, str]:
+    """``"1500 psi"`` -> ``(1500.0, "psi")``: a finite number and the unit text after it (module notes)."""
+    stripped = text.strip()
+    if len(stripped) > MAX_TEXT:
+        raise UnitError(f"{what}: {stripped[:40]!r}... has {len(stripped)} characters; expected at most {MAX_TEXT}")
+    match = _NUMBER.match(stripped)
+    if match is None:
+        raise UnitError(
+            f"{what}: cannot read {text!r} as a quantity; expected a number followed by a unit, "
+            "e.g. '1500 psi' or '25.5 L/min'"
+        )
+    magnitude = float(match.group())
+    if not math.isfinite(magnitude):
+        raise UnitError(f"{what}: {text!r}: the number is not finite; expected a finite number")
+    return magnitude, stripped[match.end() :].strip()
+
+
 def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
     """Read ``value`` (number, ``"1500 psi"``, pint quantity) as a quantity."""
     reg = registry()
@@ -99,14 +169,11 @@ def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
     if isinstance(value, (int, float)):
         return reg.Quantity(float(value), "")
     if isinstance(value, str):
-        text = value.strip()
+        magnitude, unit = split_quantity(value, what=what)
         try:
-            q: pint.Quantity[Any] = reg.Quantity(text)
-        except Exception as exc:
-            raise UnitError(
-                f"{what}: cannot read {value!r} as a quantity ({exc}); "
-                "expected a number followed by a unit, e.g. '1500 psi' or '25.5 L/min'"
-            ) from None
+            q: pint.Quantity[Any] = reg.Quantity(magnitude, _unit(unit) if unit else "")
+        except UnitError as exc:
+            raise UnitError(f"{what}: {exc}; expected a number followed by a unit, e.g. '1500 psi'") from None
         if not isinstance(q, reg.Quantity):  # a bare number in a string
             q = reg.Quantity(float(q), "")
         return q
