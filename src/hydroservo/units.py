@@ -229,10 +229,14 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
 
 
 def from_si(value: float, unit: str, to: str) -> float:
-    """Convert an SI magnitude in ``unit`` to unit ``to``."""
+    """Convert an SI magnitude in ``unit`` to unit ``to``; a UnitError if their dimensions differ."""
     if unit == to:
         return float(value)
-    return float(registry().Quantity(value, _unit(unit)).to(_unit(to)).magnitude)
+    source, target = _unit(unit), _unit(to)
+    try:
+        return float(registry().Quantity(value, source).to(target).magnitude)
+    except Exception as exc:  # pint.DimensionalityError, offset-unit errors
+        raise UnitError(f"cannot express {si_unit(unit)} in {to!r}: {type(exc).__name__}") from None
 
 
 @functools.lru_cache(maxsize=512)

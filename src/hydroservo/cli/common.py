@@ -14,7 +14,9 @@ from hydroservo.errors import ParameterError
 if TYPE_CHECKING:
     import numpy as np
 
-__all__ = ["numbers", "frequencies", "outdir", "print_json"]
+    from hydroservo.io.files import OutputFolder
+
+__all__ = ["numbers", "frequencies", "add_output_options", "output_folder", "print_json"]
 
 
 def numbers(text: str, what: str) -> list[float]:
@@ -46,11 +48,17 @@ def frequencies(text: str) -> np.ndarray:
     return vals
 
 
-def outdir(arg: str | None, default: str) -> Path:
-    """The output folder (``--out`` or ``default``), created if missing."""
-    out = Path(arg or default)
-    out.mkdir(parents=True, exist_ok=True)
-    return out
+def add_output_options(p: Any, default: str) -> None:
+    """``--out DIR`` and ``--force`` of a command that writes files."""
+    p.add_argument("--out", default=None, metavar="DIR", help=f"folder for the files written (default {default})")
+    p.add_argument("--force", action="store_true", help="replace files of the same names in that folder")
+
+
+def output_folder(args: Any, default: str) -> OutputFolder:
+    """The command's output folder (``--out`` or ``default``): written all or nothing, nothing replaced unasked."""
+    from hydroservo.io.files import OutputFolder, safe_name
+
+    return OutputFolder(Path(args.out) if args.out else Path(safe_name(default)), force=args.force)
 
 
 def print_json(data: Any) -> None:

@@ -6,28 +6,20 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from hydroservo.errors import ParameterError
-
 __all__ = ["add_parsers"]
 
 
 def cmd_examples(args: argparse.Namespace) -> int:
     from hydroservo.data import example_files
+    from hydroservo.io.files import OutputFolder
 
     files = example_files()
-    out = Path(args.dir)
-    if out.exists() and not out.is_dir():
-        raise ParameterError(f"examples {args.dir!r}: exists and is not a folder; expected a folder to write into")
-    existing = [name for name in files if (out / name).exists()]
-    if existing and not args.force:
-        raise ParameterError(
-            f"examples {args.dir!r}: {', '.join(existing)} already exist; expected a new or empty folder "
-            "(--force replaces them)"
-        )
-    out.mkdir(parents=True, exist_ok=True)
-    for name, text in files.items():
-        (out / name).write_text(text, encoding="utf-8")
-    print(f"wrote {len(files)} example files to {out}: {', '.join(files)}")
+    out = OutputFolder(Path(args.dir), force=args.force, what="examples")
+    out.expect(list(files))
+    with out:
+        for name, text in files.items():
+            out.file(name).write_text(text, encoding="utf-8")
+    print(f"wrote {len(files)} example files to {args.dir}: {', '.join(files)}")
     return 0
 
 

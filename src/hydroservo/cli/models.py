@@ -7,9 +7,9 @@ import json
 import sys
 import time
 from collections.abc import Sequence
-from pathlib import Path
 from typing import Any
 
+from hydroservo.cli.common import add_output_options, output_folder
 from hydroservo.errors import HydroservoError, ParameterError
 
 __all__ = ["add_parsers", "load_with_sets"]
@@ -69,6 +69,25 @@ def _default_panels(system: Any, result: Any) -> list[list[str]]:
     return [[n] for n in result.names[: min(8, len(result.names))]]
 
 
+def _check_plots(system: Any, panels: list[list[str]]) -> None:
+    """Refuse, before the run, plot panels naming unknown signals and plot units of the wrong dimension."""
+    from hydroservo.units import from_si
+
+    model = system.build()
+    signals = set(model.state_names) | set(model.output_names)
+    where = system.source or system.name
+    for name in (n for panel in panels for n in panel):
+        if name not in signals:
+            raise ParameterError(f"{where}: [model] plots: no signal {name!r}; signals: {', '.join(sorted(signals))}")
+    for name, unit in system.plot_units.items():
+        if name not in signals:
+            raise ParameterError(f"{where}: [model] plot_units: no signal {name!r}")
+        try:
+            from_si(1.0, model.units.get(name, ""), unit)
+        except HydroservoError as exc:
+            raise ParameterError(f"{where}: [model] plot_units {name} = {unit!r}: {exc}") from None
+
+
 def _print_summary(system: Any, result: Any, t_end: float, wall: float, files: dict[str, str]) -> None:
     print(
         f"simulated {system.name!r} for {t_end:g} s in {wall * 1e3:.1f} ms "
@@ -83,22 +102,26 @@ def _print_summary(system: Any, result: Any, t_end: float, wall: float, files: d
 
 
 def cmd_simulate(args: argparse.Namespace) -> int:
+    from hydroservo.io.files import safe_name
     from hydroservo.units import to_si
 
     system = load_with_sets(args.model, args.set)
     t_end = to_si(args.t_end, "s", what="--t-end") if args.t_end is not None else system.t_end
     if not t_end > 0:
         raise ParameterError(f"--t-end {args.t_end}: expected a positive duration")
+    name = safe_name(system.name)
+    out = output_folder(args, f"hydroservo-{name}")
+    out.expect([f"{name}.csv", f"{name}.png"])
+    if system.plots:
+        _check_plots(system, system.plots)
     start = time.perf_counter()
     result = system.simulate(t_end=t_end, n_points=args.points, initial=args.initial, rtol=args.rtol)
     wall = time.perf_counter() - start
-    out = Path(args.out or f"hydroservo-{system.name}")
-    out.mkdir(parents=True, exist_ok=True)
-    csv = result.to_csv(out / f"{system.name}.csv")
-    png = out / f"{system.name}.png"
-    title = f"{system.name}: simulated response"
-    result.plot(*_default_panels(system, result), units=system.plot_units, file=png, title=title)
-    files = {"csv": str(csv), "plot": str(png)}
+    with out:
+        result.to_csv(out.file(f"{name}.csv"))
+        title = f"{system.name}: simulated response"
+        result.plot(*_default_panels(system, result), units=system.plot_units, file=out.file(f"{name}.png"), title=title)
+    files = {"csv": out.final(f"{name}.csv"), "plot": out.final(f"{name}.png")}
     if not args.json:
         _print_summary(system, result, t_end, wall, files)
         return 0
@@ -147,7 +170,7 @@ def add_parsers(sub: Any) -> None:
         help="initial state from the parameters (default) or from an equilibrium",
     )
     p.add_argument("--rtol", type=float, default=1e-6, help="relative tolerance (default 1e-6)")
-    p.add_argument("--out", default=None, metavar="DIR", help="folder for CSV and PNG (default hydroservo-NAME)")
+    add_output_options(p, "hydroservo-NAME")
     p.add_argument("--json", action="store_true", help="print signals, solver statistics and wall time as JSON")
     p.set_defaults(func=cmd_simulate)
 

@@ -10,11 +10,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from hydroservo.cli import valve_bench
-from hydroservo.cli.common import frequencies, numbers, outdir
+from hydroservo.cli.common import add_output_options, frequencies, numbers, output_folder
 from hydroservo.errors import ParameterError
 
 if TYPE_CHECKING:
     import numpy as np
+
+    from hydroservo.io.files import OutputFolder
 
 __all__ = ["add_parsers"]
 
@@ -30,7 +32,10 @@ def _shown(values: dict[str, float]) -> dict[str, float]:
 
 
 # -- valve fit -------------------------------------------------------------------
-def _fit_plots(fit: Any, curves: Any, out: Path, title: str) -> dict[str, str]:
+_FIT_FILES = ("pseudo_sections", "null_characteristics", "load_flow", "pressure_flow")
+
+
+def _fit_plots(fit: Any, curves: Any, out: OutputFolder, title: str) -> dict[str, str]:
     from hydroservo.laws.pseudo_section import sections_from_measurements
     from hydroservo.plotting import pseudo_section as plots
 
@@ -39,12 +44,11 @@ def _fit_plots(fit: Any, curves: Any, out: Path, title: str) -> dict[str, str]:
     if curves is not None:
         A_p, A_n = sections_from_measurements(curves["P_L"], curves["q_lk"], ds.P_s)
         measured_sections = {"x_s": curves["x_s"], "A_p": A_p, "A_n": A_n}
-    plots.plot_pseudo_sections(valve, measured=measured_sections, title=title, file=out / "pseudo_sections.png")
-    plots.plot_null_characteristics(valve, ds.P_s, measured=curves, file=out / "null_characteristics.png")
-    plots.plot_load_flow(valve, ds.P_n, measured=curves, title=title, file=out / "load_flow.png")
-    plots.plot_pressure_flow(valve, ds.P_s, file=out / "pressure_flow.png")
-    names = ("pseudo_sections", "null_characteristics", "load_flow", "pressure_flow")
-    return {k: str(out / f"{k}.png") for k in names}
+    plots.plot_pseudo_sections(valve, measured=measured_sections, title=title, file=out.file("pseudo_sections.png"))
+    plots.plot_null_characteristics(valve, ds.P_s, measured=curves, file=out.file("null_characteristics.png"))
+    plots.plot_load_flow(valve, ds.P_n, measured=curves, title=title, file=out.file("load_flow.png"))
+    plots.plot_pressure_flow(valve, ds.P_s, file=out.file("pressure_flow.png"))
+    return {k: out.final(f"{k}.png") for k in _FIT_FILES}
 
 
 def _fit_parameter_file(fit: Any, name: str, what: str, shown: dict[str, float]) -> str:
@@ -108,13 +112,15 @@ def cmd_fit(args: argparse.Namespace) -> int:
     fit = fit_curves(curves, ds, args.structure) if curves is not None else fit_datasheet(ds, args.structure, args.match)
     name = ds.name or Path(str(args.datasheet)).stem
     slug = "".join(ch if ch.isalnum() or ch in "-_" else "-" for ch in Path(str(args.datasheet)).stem)
-    out = outdir(args.out, f"hydroservo-valve-{slug}")
+    out = output_folder(args, f"hydroservo-valve-{slug}")
+    out.expect([f"{k}.png" for k in _FIT_FILES] + ["valve.toml"])
     what = "least squares on the measured curves" if curves is not None else f"matching {' and '.join(fit.match)}"
-    paths = _fit_plots(fit, curves, out, f"{name}: {fit.structure} structure, {what}")
     shown = _shown(fit.characteristics())
     given = _shown({k: getattr(ds, k) for k in _NULL if getattr(ds, k) is not None})
-    (out / "valve.toml").write_text(_fit_parameter_file(fit, name, what, shown))
-    paths["parameters"] = str(out / "valve.toml")
+    with out:
+        paths = _fit_plots(fit, curves, out, f"{name}: {fit.structure} structure, {what}")
+        out.file("valve.toml").write_text(_fit_parameter_file(fit, name, what, shown))
+    paths["parameters"] = out.final("valve.toml")
     if not args.json:
         _print_fit(fit, name, what, shown, given, curves)
         print(f"wrote {', '.join(paths.values())}")
@@ -191,10 +197,12 @@ def cmd_bode(args: argparse.Namespace) -> int:
     freqs = frequencies(args.frequencies)
     resp = spool_response(params, amps, freqs, model, label=model)
     stem = Path(args.params).stem
-    out = outdir(args.out, f"hydroservo-bode-{stem}")
-    csv_path = write_bode(resp, out / "bode.csv")
-    resp.plot(title=f"{stem}: spool position / command ({model})", file=out / "bode.png")
-    files = {"csv": str(csv_path), "plot": str(out / "bode.png")}
+    out = output_folder(args, f"hydroservo-bode-{stem}")
+    out.expect(["bode.csv", "bode.png"])
+    with out:
+        write_bode(resp, out.file("bode.csv"))
+        resp.plot(title=f"{stem}: spool position / command ({model})", file=out.file("bode.png"))
+    files = {"csv": out.final("bode.csv"), "plot": out.final("bode.png")}
     if args.json:
         report = {
             "model": model,
@@ -215,7 +223,7 @@ def cmd_bode(args: argparse.Namespace) -> int:
             f"  ±{amp:>6}: -3 dB at {'>' + str(freqs[-1]) if f3 is None else f'{f3:.1f}'} Hz, "
             f"-90 deg at {'>' + str(freqs[-1]) if f90 is None else f'{f90:.1f}'} Hz"
         )
-    print(f"wrote {csv_path} and {out / 'bode.png'}")
+    print(f"wrote {files['csv']} and {files['plot']}")
     return 0
 
 
@@ -261,17 +269,17 @@ def cmd_fit_dynamics(args: argparse.Namespace) -> int:
     data = read_bode(args.bode)
     models = list(SPOOL_MODELS) if args.model == "all" else [args.model]
     start = _start(args.start)
-    out = outdir(args.out, f"hydroservo-fit-{Path(args.bode).stem}")
+    out = output_folder(args, f"hydroservo-fit-{Path(args.bode).stem}")
+    out.expect(["fit.png"] + [f"spool_{m}.toml" for m in models])
     fits = {m: fit_spool_dynamics(data, m, start if len(models) == 1 else None) for m in models}
     data.label = "data"
     first = fits[models[0]]
     title = f"{Path(args.bode).stem}: Bode data and fitted models"
-    first.data.plot([f.response for f in fits.values()], title=title, file=out / "fit.png", f_max=200.0)
-    files = {"plot": str(out / "fit.png")}
-    for m, fit in fits.items():
-        path = out / f"spool_{m}.toml"
-        path.write_text(_spool_file(fit, args.bode))
-        files[f"parameters_{m}"] = str(path)
+    with out:
+        first.data.plot([f.response for f in fits.values()], title=title, file=out.file("fit.png"), f_max=200.0)
+        for m, fit in fits.items():
+            out.file(f"spool_{m}.toml").write_text(_spool_file(fit, args.bode))
+    files = {"plot": out.final("fit.png"), **{f"parameters_{m}": out.final(f"spool_{m}.toml") for m in fits}}
     if args.json:
         print(json.dumps({"fits": {m: f.summary() for m, f in fits.items()}, "files": files}, indent=2, default=float))
         return 0
@@ -313,7 +321,7 @@ def add_parsers(sub: Any) -> None:
         metavar="CSV",
         help="measured x_s, P_L, q_lk (and Q_L): fit them by least squares instead of the null characteristics",
     )
-    p.add_argument("--out", default=None, metavar="DIR")
+    add_output_options(p, "a folder named after the input")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_fit)
 
@@ -325,7 +333,7 @@ def add_parsers(sub: Any) -> None:
     p.add_argument(
         "--frequencies", default="10:300:10", metavar="F", help="START:STOP:STEP or list [Hz] (default 10:300:10)"
     )
-    p.add_argument("--out", default=None, metavar="DIR")
+    add_output_options(p, "a folder named after the input")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_bode)
 
@@ -333,7 +341,7 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("bode", metavar="BODE.csv")
     p.add_argument("--model", choices=["rate-limited", "second-order", "first-order", "all"], default="rate-limited")
     p.add_argument("--start", default=None, metavar="NAME=VALUE,...", help="starting values, e.g. 'omega_n=700 rad/s'")
-    p.add_argument("--out", default=None, metavar="DIR")
+    add_output_options(p, "a folder named after the input")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_fit_dynamics)
 

@@ -5,10 +5,13 @@ from __future__ import annotations
 import argparse
 import json
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from hydroservo.cli.common import numbers, outdir
+from hydroservo.cli.common import add_output_options, numbers, output_folder
 from hydroservo.errors import ParameterError
+
+if TYPE_CHECKING:
+    from hydroservo.io.files import OutputFolder
 
 __all__ = ["add_parsers"]
 
@@ -43,12 +46,17 @@ def _json_table(table: dict[str, Any]) -> dict[str, Any]:
     }
 
 
-def _characteristics_plots(valve: Any, curves: list[Any], bench: Any, reference: float, out: Path, stem: str) -> str:
+_CHARACTERISTICS_PLOTS = ("characteristics", "pressure_flow", "discharge_coefficient")
+
+
+def _characteristics_plots(
+    valve: Any, curves: list[Any], bench: Any, reference: float, out: OutputFolder, stem: str
+) -> str:
     from hydroservo.analysis.static_bench import pressure_flow
     from hydroservo.plotting import staged_slot as plots
 
     title = f"{stem}: {valve.fluid.name}, P_s = {bench.P_s / 1e5:.4g} bar, X_n = {bench.X_n * 1e3:g} mm"
-    plots.plot_bench_characteristics(curves, title=title, file=out / "characteristics.png")
+    plots.plot_bench_characteristics(curves, title=title, file=out.file("characteristics.png"))
     openings = [f * bench.X_n for f in (-1.0, -0.5, -0.25, -0.1, 0.1, 0.25, 0.5, 1.0)]
     P_L, Q_L = pressure_flow(valve, reference, bench, openings)
     plots.plot_pressure_flow_family(
@@ -57,9 +65,9 @@ def _characteristics_plots(valve: Any, curves: list[Any], bench: Any, reference:
         openings,
         bench,
         title=f"{stem}: pressure-flow at {reference:g} °C",
-        file=out / "pressure_flow.png",
+        file=out.file("pressure_flow.png"),
     )
-    plots.plot_discharge_coefficient(valve.bridge_parameters(), file=out / "discharge_coefficient.png")
+    plots.plot_discharge_coefficient(valve.bridge_parameters(), file=out.file("discharge_coefficient.png"))
     return title
 
 
@@ -75,15 +83,18 @@ def cmd_characteristics(args: argparse.Namespace) -> int:
     if args.points < 21:
         raise ParameterError(f"--points {args.points}: expected at least 21 openings")
     stem = Path(args.params).stem
-    out = outdir(args.out, f"hydroservo-characteristics-{stem}")
+    out = output_folder(args, f"hydroservo-characteristics-{stem}")
+    tables = [f"T{t:g}_{name}.csv" for t in temps for name in ("flow_gain", "blocked_ports")]
+    out.expect(tables + [f"{k}.png" for k in _CHARACTERISTICS_PLOTS])
     curves = [bench_curves(valve, t, bench, n=args.points, strict=args.strict) for t in temps]
     table = temperature_table(valve, bench, temps, args.reference)
     files: dict[str, str] = {}
-    for c in curves:
-        for path in write_bench_curves(c, out, stem=f"T{c.temperature:g}_"):
-            files[path.stem] = str(path)
-    title = _characteristics_plots(valve, curves, bench, table["reference"], out, stem)
-    files.update({k: str(out / f"{k}.png") for k in ("characteristics", "pressure_flow", "discharge_coefficient")})
+    with out:
+        for c in curves:
+            for path in write_bench_curves(c, out.folder, stem=f"T{c.temperature:g}_"):
+                files[path.stem] = out.final(path.name)
+        title = _characteristics_plots(valve, curves, bench, table["reference"], out, stem)
+    files.update({k: out.final(f"{k}.png") for k in _CHARACTERISTICS_PLOTS})
     if args.json:
         print(json.dumps({"valve": str(args.params), **_json_table(table), "files": files}, indent=2))
         return 0
@@ -124,24 +135,25 @@ def cmd_identify(args: argparse.Namespace) -> int:
         raise ParameterError(f"--weights {args.weights!r}: expected two non-negative numbers W_P,W_LK")
     fixed: tuple[str, ...] = () if args.fit_widths else ("w_L", "w_H")
     res = identify_staged_slot(data, start, weights=(weights[0], weights[1]), high_laps=args.high_laps, fixed=fixed)
-    out = outdir(args.out, f"hydroservo-identify-{Path(args.curves[0]).stem}")
+    out = output_folder(args, f"hydroservo-identify-{Path(args.curves[0]).stem}")
+    out.expect(["identified.toml", "identification.png"])
     header = (
         f"Identified by hydroservo from {', '.join(Path(c).name for c in args.curves)} at {data.temperature:g} degC\n"
         f"(MareAttarND eqs. 21-24); max relative errors: "
         + ", ".join(f"{k} {v * 100:.2f} %" for k, v in res.errors.items())
     )
-    param_file = out / "identified.toml"
-    param_file.write_text(staged_slot_valve_toml(res.valve, data.bench, header=header))
     temps = [data.temperature] + (_temperatures(args.predict, "--predict") if args.predict else [])
     model = [bench_curves(res.valve, t, data.bench) for t in temps]
-    title = "Identified model and the curves it was identified from"
-    plot_bench_characteristics(model, measured=data, title=title, file=out / "identification.png")
     table = temperature_table(res.valve, data.bench, temps, data.temperature)
-    files = {"parameters": str(param_file), "plot": str(out / "identification.png")}
+    title = "Identified model and the curves it was identified from"
+    with out:
+        out.file("identified.toml").write_text(staged_slot_valve_toml(res.valve, data.bench, header=header))
+        plot_bench_characteristics(model, measured=data, title=title, file=out.file("identification.png"))
+    files = {"parameters": out.final("identified.toml"), "plot": out.final("identification.png")}
     names = [n for n in LOW_GAIN + HIGH_GAIN if n not in fixed]
     if not args.json:
         _print_identification(res, start, names, fixed, table, len(args.curves))
-        print(f"wrote {param_file} and {out / 'identification.png'}")
+        print(f"wrote {files['parameters']} and {files['plot']}")
         return 0
     report = {
         "temperature_degC": data.temperature,
@@ -167,7 +179,7 @@ def add_parsers(vsub: Any) -> None:
     p.add_argument("--reference", type=float, default=None, metavar="T", help="changes from (default: first)")
     p.add_argument("--points", type=int, default=401, help="openings per test (default 401)")
     p.add_argument("--strict", action="store_true", help="refuse temperatures outside the fluid model's range")
-    p.add_argument("--out", default=None, metavar="DIR")
+    add_output_options(p, "a folder named after the input")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_characteristics)
 
@@ -181,6 +193,6 @@ def add_parsers(vsub: Any) -> None:
     p.add_argument("--high-laps", choices=["pairs", "orifice"], default="pairs")
     p.add_argument("--fit-widths", action="store_true", help="also fit w_L and w_H (not separable from C_q_inf)")
     p.add_argument("--strict", action="store_true")
-    p.add_argument("--out", default=None, metavar="DIR")
+    add_output_options(p, "a folder named after the input")
     p.add_argument("--json", action="store_true")
     p.set_defaults(func=cmd_identify)

@@ -19,6 +19,7 @@ import numpy as np
 
 from hydroservo.analysis.frequency import FrequencyResponse
 from hydroservo.errors import ParameterError
+from hydroservo.io.files import read_text
 
 __all__ = ["read_bode", "write_bode"]
 
@@ -43,10 +44,7 @@ def read_bode(path: str | Path) -> FrequencyResponse:
     """
 
     path = Path(path)
-    try:
-        text = path.read_text()
-    except OSError as exc:
-        raise ParameterError(f"Bode file {str(path)!r}: {exc.strerror}") from None
+    text = read_text(path, "Bode file")
     reader = csv.reader(line for line in text.splitlines() if line.strip() and not line.startswith("#"))
     try:
         header = next(reader)

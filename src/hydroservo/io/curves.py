@@ -29,6 +29,7 @@ import numpy as np
 
 from hydroservo.analysis.static_bench import Bench, BenchCurves
 from hydroservo.errors import ParameterError
+from hydroservo.io.files import read_text
 from hydroservo.units import from_si, to_si
 
 __all__ = ["read_csv_table", "read_static_curves", "read_bench_curves", "write_bench_curves"]
@@ -48,10 +49,7 @@ def read_csv_table(
     """
     path = Path(path)
     where = f"{what} {str(path)!r}"
-    try:
-        lines = [line for line in path.read_text().splitlines() if line.strip()]
-    except OSError as exc:
-        raise ParameterError(f"{where}: cannot read ({exc.strerror})") from None
+    lines = [line for line in read_text(path, what).splitlines() if line.strip()]
     meta: dict[str, str] = {}
     for line in lines:
         if line.startswith("#") and "=" in line:

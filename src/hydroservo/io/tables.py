@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from hydroservo.errors import ParameterError
+from hydroservo.io.files import read_text
 
 __all__ = ["read_time_table"]
 
@@ -19,11 +20,8 @@ def read_time_table(path: str | Path, column: str | int = 1, what: str = "table"
     names the reader in error messages (e.g. the component that asked).
     """
     path = Path(path)
-    try:
-        with path.open(newline="") as fh:
-            rows = [r for r in csv.reader(fh) if r and not r[0].lstrip().startswith("#")]
-    except OSError as exc:
-        raise ParameterError(f"{what}.file: cannot read {str(path)!r}: {exc.strerror}") from None
+    text = read_text(path, f"{what}.file")
+    rows = [r for r in csv.reader(text.splitlines()) if r and not r[0].lstrip().startswith("#")]
     if not rows:
         raise ParameterError(f"{what}.file: {str(path)!r} is empty")
     header = rows[0]

@@ -8,6 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from hydroservo.errors import HydroservoError, ParameterError
+from hydroservo.io.files import read_text
 from hydroservo.units import format_quantity
 
 __all__ = ["read_toml", "toml_string", "toml_key", "toml_value", "toml_quantity", "toml_table"]
@@ -15,11 +16,7 @@ __all__ = ["read_toml", "toml_string", "toml_key", "toml_value", "toml_quantity"
 
 def read_toml(path: str | Path, what: str, error: type[HydroservoError] = ParameterError) -> dict[str, Any]:
     """Parse a TOML file; an unreadable or malformed file raises ``error`` naming ``what`` and the path."""
-    path = Path(path)
-    try:
-        text = path.read_text()
-    except OSError as exc:
-        raise error(f"{what} {str(path)!r}: cannot read ({exc.strerror})") from None
+    text = read_text(path, what, error)
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

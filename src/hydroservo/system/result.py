@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, UnitError
 from hydroservo.units import from_si, si_unit
 
 if TYPE_CHECKING:
@@ -83,7 +83,14 @@ class Result(_Signals):
         values = self[name]
         if unit is None:
             return values
-        scaled: np.ndarray = np.asarray(from_si(1.0, self.units.get(name, ""), unit)) * values
+        own = self.units.get(name, "")
+        try:
+            factor = from_si(1.0, own, unit)
+        except UnitError:
+            raise UnitError(
+                f"signal {name!r} of {self.model!r} is in {si_unit(own)}: cannot show it in {unit!r}"
+            ) from None
+        scaled: np.ndarray = np.asarray(factor) * values
         return scaled
 
     def summary(self) -> dict[str, dict[str, Any]]:
