@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Option, Output, Param, Port, State, register
+from hydroservo.components.base import VACUUM, Component, Option, Output, Param, Port, State, register
 from hydroservo.errors import ParameterError
 from hydroservo.laws.chamber import check_valve_floor, cylinder_volumes, pressure_rate
 from hydroservo.laws.fluid import bulk_modulus_eggerth, bulk_modulus_lee
@@ -72,13 +72,13 @@ class Cylinder(Component):
         "p_max": Param(280e5, "Pa", "maximum pressure (option lee)", min=0.0, min_inclusive=False),
         "temperature": Param(50.0, "degC", "oil temperature (option eggerth)", min=20.0, max=90.0),
         "rho": Param(870.0, "kg/m^3", "oil density (for m_oil)", min=0.0),
-        "p_floor": Param(0.0, "Pa", "lowest chamber pressure (option check-valve)"),
+        "p_floor": Param(0.0, "Pa", "lowest chamber pressure (option check-valve)", min=VACUUM),
         "x_min": Param(-0.1, "m", "end stop, retracted"),
         "x_max": Param(0.1, "m", "end stop, extended"),
         "k_stop": Param(0.0, "N/m", "end-stop stiffness (0: no end stops)", min=0.0),
         "c_stop": Param(0.0, "N*s/m", "end-stop damping", min=0.0),
-        "pA0": Param(0.0, "Pa", "initial pressure, side A"),
-        "pB0": Param(0.0, "Pa", "initial pressure, side B"),
+        "pA0": Param(0.0, "Pa", "initial pressure, side A", min=VACUUM),
+        "pB0": Param(0.0, "Pa", "initial pressure, side B", min=VACUUM),
     }
     OPTIONS = {
         "bulk_modulus": Option("constant", ("constant", "lee", "eggerth"), "effective bulk modulus law"),

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Output, Param, register
+from hydroservo.components.base import VACUUM, Component, Output, Param, register
 from hydroservo.errors import ParameterError
 
 __all__ = ["ConstantPressure", "Tank", "PressureTable"]
@@ -34,7 +34,7 @@ class ConstantPressure(Component):
 class Tank(Component):
     """Return line at constant pressure; [FlightSimulatorND] assumption (6): atmospheric (0 gauge)."""
 
-    PARAMETERS = {"p": Param(0.0, "Pa", "tank pressure (gauge)", min=-1e5)}
+    PARAMETERS = {"p": Param(0.0, "Pa", "tank pressure (gauge)", min=VACUUM)}
     OUTPUTS = {"p": Output("Pa", "tank pressure")}
 
     def output_equations(
@@ -66,6 +66,8 @@ class PressureTable(Component):
             raise ParameterError(
                 f"{self.name}: times and pressures must be equally long and non-empty; got {t.size} and {pr.size}"
             )
+        if not (np.all(np.isfinite(t)) and np.all(np.isfinite(pr))):
+            raise ParameterError(f"{self.name}: times and pressures must be finite numbers")
         if np.any(np.diff(t) <= 0):
             raise ParameterError(f"{self.name}.times: expected strictly increasing times [s]")
         if np.any(pr < 0):

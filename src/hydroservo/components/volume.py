@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import Component, Output, Param, Port, State, register
+from hydroservo.components.base import VACUUM, Component, Output, Param, Port, State, register
 from hydroservo.laws.chamber import pressure_rate
 
 __all__ = ["Volume"]
@@ -24,7 +24,7 @@ class Volume(Component):
     PARAMETERS = {
         "V": Param(1e-4, "m^3", "volume", min=0.0, min_inclusive=False),
         "beta_e": Param(1.4e9, "Pa", "effective bulk modulus", min=0.0, min_inclusive=False),
-        "p0": Param(0.0, "Pa", "initial pressure"),
+        "p0": Param(0.0, "Pa", "initial pressure", min=VACUUM),
     }
     STATES = {"p": State("Pa", "pressure", initial="p0", nominal=1e7)}
     INPUTS = {f"Q{i}": Port("m^3/s", f"flow {i} into the volume", default=0.0) for i in range(1, 5)}
