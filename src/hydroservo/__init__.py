@@ -36,6 +36,7 @@ from typing import TYPE_CHECKING, Any
 
 from hydroservo.errors import (
     HydroservoError,
+    ImplausibleResultError,
     ModelError,
     ModelFileError,
     ParameterError,
@@ -107,6 +108,7 @@ __all__ = [
     "ModelFileError",
     "SolverError",
     "TrimError",
+    "ImplausibleResultError",
 ]
 
 

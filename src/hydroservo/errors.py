@@ -15,6 +15,7 @@ __all__ = [
     "ModelFileError",
     "SolverError",
     "TrimError",
+    "ImplausibleResultError",
     "FluidRangeWarning",
     "RenamedWarning",
 ]
@@ -46,6 +47,10 @@ class SolverError(HydroservoError, RuntimeError):
 
 class TrimError(HydroservoError, RuntimeError):
     """No equilibrium was found."""
+
+
+class ImplausibleResultError(HydroservoError):
+    """A result crossed a physical bound and the caller asked for strictness (``--strict``)."""
 
 
 class FluidRangeWarning(UserWarning):

@@ -10,7 +10,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from hydroservo.cli.common import add_output_options, output_folder
-from hydroservo.errors import HydroservoError, ParameterError
+from hydroservo.errors import HydroservoError, ImplausibleResultError, ParameterError
 
 __all__ = ["add_parsers", "load_with_sets"]
 
@@ -101,10 +101,35 @@ def _print_summary(system: Any, result: Any, t_end: float, wall: float, files: d
     print(f"wrote {files['csv']} and {files['plot']}")
 
 
+def _check_solver_options(args: argparse.Namespace) -> None:
+    """Refuse --rtol and --points before anything is loaded or built."""
+    from hydroservo.system.integration import MAX_POINTS, SolverSettings
+
+    try:
+        SolverSettings(rtol=args.rtol)
+    except ParameterError as exc:
+        raise ParameterError(f"--rtol {args.rtol}: {exc}") from None
+    if not 2 <= args.points <= MAX_POINTS:
+        raise ParameterError(f"--points {args.points}: expected a whole number of output times from 2 to {MAX_POINTS}")
+
+
+def _report_warnings(result: Any, strict: bool) -> None:
+    """Print the physical bounds the run crossed; with --strict, refuse the result (exit 2, nothing written)."""
+    if strict and result.warnings:
+        lines = "\n  ".join(str(w) for w in result.warnings)
+        raise ImplausibleResultError(
+            f"--strict: the result of {result.model!r} is physically implausible "
+            f"({len(result.warnings)} bound(s) crossed; margins: docs/reliability.md):\n  {lines}"
+        )
+    for w in result.warnings:
+        print(f"hydroservo: warning: {w}", file=sys.stderr)
+
+
 def cmd_simulate(args: argparse.Namespace) -> int:
     from hydroservo.io.files import safe_name
     from hydroservo.units import to_si
 
+    _check_solver_options(args)
     system = load_with_sets(args.model, args.set)
     t_end = to_si(args.t_end, "s", what="--t-end") if args.t_end is not None else system.t_end
     if not t_end > 0:
@@ -117,6 +142,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     start = time.perf_counter()
     result = system.simulate(t_end=t_end, n_points=args.points, initial=args.initial, rtol=args.rtol)
     wall = time.perf_counter() - start
+    _report_warnings(result, args.strict)
     with out:
         result.to_csv(out.file(f"{name}.csv"))
         title = f"{system.name}: simulated response"
@@ -133,6 +159,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         "signals": result.summary(),
         "solver": solver,
         "wall_time_s": wall,
+        "warnings": [w.to_dict() for w in result.warnings],
         "files": files,
     }
     print(json.dumps(report, indent=2))
@@ -170,6 +197,11 @@ def add_parsers(sub: Any) -> None:
         help="initial state from the parameters (default) or from an equilibrium",
     )
     p.add_argument("--rtol", type=float, default=1e-6, help="relative tolerance (default 1e-6)")
+    p.add_argument(
+        "--strict",
+        action="store_true",
+        help="refuse a physically implausible result (exit 2, nothing written) instead of warning",
+    )
     add_output_options(p, "hydroservo-NAME")
     p.add_argument("--json", action="store_true", help="print signals, solver statistics and wall time as JSON")
     p.set_defaults(func=cmd_simulate)

@@ -8,6 +8,9 @@ A component is a small class. At the top it declares
 * ``OUTPUTS``: name -> :class:`Output` (unit),
 * ``OPTIONS``: name -> :class:`Option` (structural choices, such as a
   bulk-modulus law, that change the equations rather than a number in them),
+* ``LIMITS``: signal -> :class:`Limit` (bounds no real circuit crosses, such
+  as a chamber pressure below vacuum or a piston beyond its stops; every run
+  is checked against them),
 
 and below it writes two methods with CasADi expressions:
 
@@ -40,7 +43,21 @@ from hydroservo.data import parameter_set
 from hydroservo.errors import ParameterError, RenamedWarning, UnitError
 from hydroservo.units import check_unit, is_bare_number, si_unit, to_si
 
-__all__ = ["VACUUM", "FromSet", "Param", "State", "Port", "Output", "Option", "Component", "SIGNAL", "REGISTRY", "register", "RenamedWarning"]
+__all__ = [
+    "VACUUM",
+    "FromSet",
+    "Param",
+    "State",
+    "Port",
+    "Output",
+    "Option",
+    "Limit",
+    "Component",
+    "SIGNAL",
+    "REGISTRY",
+    "register",
+    "RenamedWarning",
+]
 
 #: Gauge pressure of a perfect vacuum [Pa]: no absolute pressure lies below it.
 VACUUM = -101325.0
@@ -152,6 +169,36 @@ class Option:
     description: str
 
 
+@dataclass(frozen=True)
+class Limit:
+    """A physical bound on one of the component's states, outputs or inputs, checked after every run.
+
+    ``kind`` is
+
+    * ``"source"``: a pressure a source imposes; the highest of all sources over
+      the run is the circuit's pressure ceiling;
+    * ``"pressure"``: the pressure of a closed volume, flagged above the ceiling
+      or below vacuum by more than the margins;
+    * ``"travel"``: a position between the parameters named ``lower`` and
+      ``upper`` (end stops), flagged beyond them by more than the margin;
+    * ``"volume"``: flagged at or below zero.
+
+    ``hint`` is added to the warning: what in the component lets the bound be crossed.
+    The margins are stated in :mod:`hydroservo.system.plausibility`.
+    """
+
+    kind: str
+    lower: str | None = None
+    upper: str | None = None
+    hint: str = ""
+
+    def __post_init__(self) -> None:
+        if self.kind not in ("source", "pressure", "travel", "volume"):
+            raise ValueError(f"Limit kind {self.kind!r}: expected source, pressure, travel or volume")
+        if (self.kind == "travel") != (self.lower is not None and self.upper is not None):
+            raise ValueError("a travel limit needs lower and upper parameters, and only a travel limit has them")
+
+
 class Component:
     """Base class of all components. See the module docstring."""
 
@@ -160,6 +207,7 @@ class Component:
     INPUTS: ClassVar[dict[str, Port]] = {}
     OUTPUTS: ClassVar[dict[str, Output]] = {}
     OPTIONS: ClassVar[dict[str, Option]] = {}
+    LIMITS: ClassVar[dict[str, Limit]] = {}
     #: Former parameter names -> current names (accepted with a :class:`RenamedWarning`).
     RENAMED: ClassVar[dict[str, str]] = {}
 

@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import VACUUM, Component, Option, Output, Param, Port, State, register
+from hydroservo.components.base import VACUUM, Component, Limit, Option, Output, Param, Port, State, register
 from hydroservo.errors import ParameterError
 from hydroservo.laws.chamber import check_valve_floor, cylinder_volumes, pressure_rate
 from hydroservo.laws.fluid import bulk_modulus_eggerth, bulk_modulus_lee
@@ -46,10 +46,15 @@ class Cylinder(Component):
     (3-29)-(3-30): a chamber at or below ``p_floor`` cannot lose pressure.
 
     Output ``F`` is the hydraulic force on the piston in +x plus the end-stop
-    force (a spring-damper of stiffness ``k_stop`` beyond ``x_min``/``x_max``,
-    active only when ``k_stop`` > 0). Output ``m_oil`` is the oil mass in both
+    force: a spring-damper (``k_stop``, ``c_stop``) acting beyond ``x_min``/``x_max``;
+    with both 0 there are no end stops. Output ``m_oil`` is the oil mass in both
     chambers ([Efe2014] eqs. 3.44-3.46); connect it to a mass's ``m_add`` to
-    count it in the moving mass.
+    count it in the moving mass. Outputs ``VA``, ``VB`` are the volumes of the
+    pressure equations.
+
+    Every run is checked against the cylinder's physical bounds (``LIMITS``,
+    :mod:`hydroservo.system.plausibility`): chamber pressures between vacuum and
+    the supply (with margins), the piston within its stops, positive volumes.
     """
 
     RENAMED = {"beta": "beta_e"}
@@ -75,7 +80,7 @@ class Cylinder(Component):
         "p_floor": Param(0.0, "Pa", "lowest chamber pressure (option check-valve)", min=VACUUM),
         "x_min": Param(-0.1, "m", "end stop, retracted"),
         "x_max": Param(0.1, "m", "end stop, extended"),
-        "k_stop": Param(0.0, "N/m", "end-stop stiffness (0: no end stops)", min=0.0),
+        "k_stop": Param(0.0, "N/m", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
         "c_stop": Param(0.0, "N*s/m", "end-stop damping", min=0.0),
         "pA0": Param(0.0, "Pa", "initial pressure, side A", min=VACUUM),
         "pB0": Param(0.0, "Pa", "initial pressure, side B", min=VACUUM),
@@ -100,6 +105,17 @@ class Cylinder(Component):
         "F": Output("N", "force on the piston in +x (hydraulic and end stops)"),
         "m_oil": Output("kg", "oil mass in both chambers"),
         "QLi": Output("m^3/s", "internal leakage A to B"),
+        "VA": Output("m^3", "volume of side A in the pressure equation"),
+        "VB": Output("m^3", "volume of side B in the pressure equation"),
+    }
+    LIMITS = {
+        "pA": Limit("pressure", hint="option pressure_floor = check-valve holds the chamber at p_floor"),
+        "pB": Limit("pressure", hint="option pressure_floor = check-valve holds the chamber at p_floor"),
+        "x": Limit(
+            "travel", "x_min", "x_max", hint="no end stops when k_stop and c_stop are 0, soft ones when k_stop is small"
+        ),
+        "VA": Limit("volume"),
+        "VB": Limit("volume"),
     }
 
     def check(self) -> None:
@@ -137,14 +153,15 @@ class Cylinder(Component):
         out["F"] = pA * p["A_A"] - pB * p["A_B"] + stop
         VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
         out["m_oil"] = p["rho"] * (VA + VB)
+        out["VA"], out["VB"] = VA, VB
         return out
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         pA, pB = x["pA"], x["pB"]
-        pos, vel = u["x"], u["v"]
-        VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
+        vel = u["v"]
+        VA, VB = y["VA"], y["VB"]
         QLi = y["QLi"]
         dpA = pressure_rate(self._bulk(pA, p), VA, u["QA"] - p["A_A"] * vel - QLi - p["C_LeA"] * pA)
         dpB = pressure_rate(self._bulk(pB, p), VB, u["QB"] + p["A_B"] * vel + QLi - p["C_LeB"] * pB)

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import VACUUM, Component, Output, Param, register
+from hydroservo.components.base import VACUUM, Component, Limit, Output, Param, register
 from hydroservo.errors import ParameterError
 
 __all__ = ["ConstantPressure", "Tank", "PressureTable"]
@@ -23,6 +23,7 @@ class ConstantPressure(Component):
 
     PARAMETERS = {"p": Param(100e5, "Pa", "supply pressure (gauge)", min=0.0)}
     OUTPUTS = {"p": Output("Pa", "supply pressure")}
+    LIMITS = {"p": Limit("source")}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
@@ -36,6 +37,7 @@ class Tank(Component):
 
     PARAMETERS = {"p": Param(0.0, "Pa", "tank pressure (gauge)", min=VACUUM)}
     OUTPUTS = {"p": Output("Pa", "tank pressure")}
+    LIMITS = {"p": Limit("source")}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
@@ -54,6 +56,7 @@ class PressureTable(Component):
 
     PARAMETERS = {"scale": Param(1.0, "", "factor applied to the table", min=0.0)}
     OUTPUTS = {"p": Output("Pa", "supply pressure")}
+    LIMITS = {"p": Limit("source")}
 
     def __init__(self, name: str, times: Any = (0.0,), pressures: Any = (100e5,), **values: Any) -> None:
         super().__init__(name, **values)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import VACUUM, Component, Output, Param, Port, State, register
+from hydroservo.components.base import VACUUM, Component, Limit, Output, Param, Port, State, register
 from hydroservo.laws.chamber import pressure_rate
 
 __all__ = ["Volume"]
@@ -27,6 +27,7 @@ class Volume(Component):
         "p0": Param(0.0, "Pa", "initial pressure", min=VACUUM),
     }
     STATES = {"p": State("Pa", "pressure", initial="p0", nominal=1e7)}
+    LIMITS = {"p": Limit("pressure")}
     INPUTS = {f"Q{i}": Port("m^3/s", f"flow {i} into the volume", default=0.0) for i in range(1, 5)}
     OUTPUTS = {"p": Output("Pa", "pressure")}
 

@@ -18,6 +18,7 @@ import numpy as np
 from hydroservo.components.base import Component
 from hydroservo.errors import ModelError
 from hydroservo.system.expressions import evaluate
+from hydroservo.system.plausibility import Watched
 
 __all__ = ["Structure", "assemble"]
 
@@ -185,6 +186,34 @@ def _initial_state(asm: _Assembler, states: _Columns, params: dict[str, Any]) ->
     return x0
 
 
+def _limits(asm: _Assembler) -> list[tuple[Watched, Any, Any, Any]]:
+    """Every declared :class:`~hydroservo.components.base.Limit`: what is watched, its expression and bounds.
+
+    A limit on an input watches the signal connected to it (a cylinder's
+    position is its load's ``x``); an unconnected input is not watched.
+    """
+    system = asm.system
+    found: list[tuple[Watched, Any, Any, Any]] = []
+    nan = ca.SX(float("nan"))
+    for cname, comp in system.components.items():
+        for sig, lim in comp.LIMITS.items():
+            if sig in comp.STATES:
+                name, expr = f"{cname}.{sig}", asm.x[cname][sig]
+            elif sig in comp.OUTPUTS:
+                name, expr = f"{cname}.{sig}", asm.out[cname][sig]
+            elif sig in comp.INPUTS:
+                source = system.connections.get(f"{cname}.{sig}")
+                if source is None:
+                    continue
+                name, expr = source, asm.input(cname, sig)
+            else:
+                raise ModelError(f"{type(comp).__name__} declares a limit on {sig!r}, which is not one of its signals")
+            lo = asm.p[cname][lim.lower] if lim.lower else nan
+            hi = asm.p[cname][lim.upper] if lim.upper else nan
+            found.append((Watched(name, lim.kind, cname, lim.lower, lim.upper, lim.hint), expr, lo, hi))
+    return found
+
+
 def assemble(system: Structure) -> tuple[Any, ...]:
     """The arguments of :class:`~hydroservo.system.model.Model` for ``system``."""
     if not system.components:
@@ -215,4 +244,5 @@ def assemble(system: Structure) -> tuple[Any, ...]:
         descriptions,
         np.array(nominal, dtype=float),
         param_units,
+        _limits(asm),
     )

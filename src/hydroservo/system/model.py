@@ -1,6 +1,7 @@
 """A built model: CasADi functions of one ODE, and the solvers that run it.
 
-This is the only module that knows about integrators. States are integrated
+This is the only module that builds integrators (their settings and
+messages: :mod:`hydroservo.system.integration`). States are integrated
 in scaled form, :math:`z = x / x_{nom}`, where every component declares the
 nominal magnitude of its states; so one scalar absolute tolerance means the
 same thing for a pressure of 1e7 Pa and a spool position of 1e-5 m.
@@ -8,9 +9,10 @@ same thing for a pressure of 1e7 Pa and a spool position of 1e-5 m.
 
 from __future__ import annotations
 
+import math
 import os
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
@@ -18,20 +20,12 @@ import casadi as ca
 import numpy as np
 
 from hydroservo.errors import ParameterError, SolverError, TrimError
+from hydroservo.system.integration import SolverSettings, captured, failure_point, output_grid, translate
+from hydroservo.system.plausibility import Implausible, Watched, check
 from hydroservo.system.result import BatchResult, Result
 from hydroservo.units import si_unit
 
 __all__ = ["Model"]
-
-_REASONS = {
-    "CV_TOO_MUCH_WORK": "the step limit was reached (very stiff dynamics or a diverging state; raise max_steps)",
-    "CV_CONV_FAILURE": "the Newton corrector did not converge (a discontinuity or a singular Jacobian)",
-    "CV_ERR_FAILURE": "the error test failed repeatedly (a discontinuity or a state blowing up)",
-    "CV_TOO_CLOSE": "the output times are too close together",
-    "CV_RHSFUNC_FAIL": "the right-hand side could not be evaluated (NaN or Inf)",
-    "CV_REPTD_RHSFUNC_ERR": "the right-hand side repeatedly gave NaN or Inf",
-}
-
 
 class Model:
     """Compiled ODE of a :class:`~hydroservo.system.system.System`.
@@ -62,6 +56,7 @@ class Model:
         descriptions: dict[str, str],
         nominal: np.ndarray,
         parameter_units: dict[str, str],
+        limits: Sequence[tuple[Watched, Any, Any, Any]] = (),
     ) -> None:
         self.name = name
         self.state_names = state_names
@@ -82,33 +77,63 @@ class Model:
         self._dae = {"x": z, "t": t, "p": p, "ode": fz}
         self._fz = ca.Function("fz", [t, z, p], [fz])
         self._jz = ca.Function("jz", [t, z, p], [ca.jacobian(fz, z)])
+        #: Signals under a physical limit, checked after every run (:mod:`hydroservo.system.plausibility`).
+        self.watched = [w for w, *_ in limits]
+        columns: list[list[Any]] = [[], [], []]
+        for _, value, lower, upper in limits:
+            for col, expr in zip(columns, (value, lower, upper), strict=True):
+                col.append(ca.SX(expr))
+        bounds = [ca.vertcat(*col) if col else ca.SX(0, 1) for col in columns]
+        self._limits = ca.Function("limits", [t, x, p], bounds, ["t", "x", "p"], ["value", "lower", "upper"])
         self._integrators: dict[Any, ca.Function] = {}
         self._maps: dict[int, ca.Function] = {}
+        self._limit_maps: dict[int, ca.Function] = {}
+        self._batch_maps: dict[tuple[int, int], ca.Function] = {}
 
     # -- helpers -----------------------------------------------------------
-    def _integrator(self, grid: np.ndarray, rtol: float, atol: float, max_steps: int) -> ca.Function:
-        key = (grid.tobytes(), rtol, atol, max_steps)
+    def _integrator(self, grid: np.ndarray, settings: SolverSettings) -> ca.Function:
+        steps = settings.steps_per_interval(grid.size - 1)
+        key = (grid.tobytes(), settings.rtol, settings.atol, steps)
         if key not in self._integrators:
             if len(self._integrators) > 16:
                 self._integrators.clear()
-            opts = {"abstol": atol, "reltol": rtol, "max_num_steps": max_steps, "disable_internal_warnings": True}
+                self._batch_maps.clear()
+            opts = {
+                "abstol": settings.atol,
+                "reltol": settings.rtol,
+                "max_num_steps": steps,
+                "disable_internal_warnings": True,
+            }
             self._integrators[key] = ca.integrator(
                 "sim", "cvodes", self._dae, float(grid[0]), [float(g) for g in grid], opts
             )
         return self._integrators[key]
 
-    @staticmethod
-    def _grid(t_end: float, t_eval: Sequence[float] | None, n_points: int) -> np.ndarray:
-        if t_eval is not None:
-            grid = np.asarray(t_eval, dtype=float).ravel()
-            if grid.size < 2 or np.any(np.diff(grid) <= 0):
-                raise ParameterError("t_eval: expected at least two strictly increasing times [s]")
-            return grid
-        if not (t_end > 0 and np.isfinite(t_end)):
-            raise ParameterError(f"t_end = {t_end!r} s: expected a positive, finite duration")
-        if n_points < 2:
-            raise ParameterError(f"n_points = {n_points}: expected at least 2")
-        return np.linspace(0.0, t_end, int(n_points))
+    def _interval_integrator(self, settings: SolverSettings, steps: int) -> ca.Function:
+        """One output interval at a time, in normalised time: parameters ``[p, t0, h]``, tau from 0 to 1.
+        Used to locate a failure; CVODES' own messages are kept (they give the time and step at failure)."""
+        key = ("interval", settings.rtol, settings.atol, steps)
+        if key not in self._integrators:
+            z, t, p, fz = self._dae["x"], self._dae["t"], self._dae["p"], self._dae["ode"]
+            tau, t0, h = ca.SX.sym("tau"), ca.SX.sym("t0"), ca.SX.sym("h")
+            dae = {"x": z, "t": tau, "p": ca.vertcat(p, t0, h), "ode": h * ca.substitute(fz, t, t0 + tau * h)}
+            opts = {"abstol": settings.atol, "reltol": settings.rtol, "max_num_steps": steps}
+            self._integrators[key] = ca.integrator("interval", "cvodes", dae, 0.0, 1.0, opts)
+        return self._integrators[key]
+
+    def _check_parameters(self, p: Any) -> np.ndarray:
+        vec = np.asarray(p, dtype=float).ravel()
+        if vec.size != self.np:
+            raise ParameterError(f"parameter vector of {self.name!r}: {vec.size} values; expected {self.np}")
+        if not np.all(np.isfinite(vec)):
+            k = int(np.argmax(~np.isfinite(vec)))
+            raise ParameterError(f"{self.parameter_names[k]} = {vec[k]!r}: expected a finite value")
+        return vec
+
+    def _check_initial(self, x0: np.ndarray) -> None:
+        if not np.all(np.isfinite(x0)):
+            bad = [f"{n} = {v!r}" for n, v in zip(self.state_names, x0) if not np.isfinite(v)]
+            raise ParameterError(f"initial state of {self.name!r} is not finite: {', '.join(bad)}")
 
     def initial_state(
         self, p: np.ndarray, initial: str | Mapping[str, float] = "parameters", t0: float = 0.0
@@ -153,46 +178,125 @@ class Model:
         p : array
             Parameter vector (SI) in the order of :attr:`parameter_names`.
         t_eval : sequence of float, optional
-            Output times [s]; the first is the initial time.
+            Output times [s], strictly increasing, at most 100 001; the first is the initial time.
         n_points : int
-            Number of equally spaced output times when ``t_eval`` is not given.
+            Number of equally spaced output times when ``t_eval`` is not given (2 to 100 001).
         rtol, atol : float
-            Relative tolerance, and absolute tolerance on states scaled by their
-            nominal magnitude.
+            Relative tolerance (1e-14 to 0.1), and absolute tolerance (above 0, at most 1)
+            on states scaled by their nominal magnitude.
+        max_steps : int
+            Step budget of the run, shared out over the output intervals (at least 500
+            each): a hopeless parameter set fails in about this many steps.
         initial : "parameters", "trim" or mapping
             Initial state, see :meth:`initial_state`.
 
         Raises
         ------
+        ParameterError
+            If a setting, a parameter or the initial state is not acceptable.
         SolverError
-            If the integrator fails; the message gives the time, the state and the reason.
+            If the integrator fails; the message gives the time, the state, the
+            reason and the fastest mode of the model there.
         """
-        grid = self._grid(t_end, t_eval, n_points)
-        p = np.asarray(p, dtype=float)
+        grid = output_grid(t_end, t_eval, n_points)
+        settings = SolverSettings(rtol, atol, max_steps)
+        p = self._check_parameters(p)
         x0 = self.initial_state(p, initial, t0=float(grid[0]))
-        if not np.all(np.isfinite(x0)):
-            bad = [n for n, v in zip(self.state_names, x0) if not np.isfinite(v)]
-            raise SolverError(f"initial state is not finite in {', '.join(bad)}")
+        self._check_initial(x0)
         if self.nx == 0:  # nothing to integrate: a system of sources and algebraic blocks
             return self._result(grid, np.zeros((0, grid.size)), p, {"wall_time_s": 0.0})
-        integ = self._integrator(grid, rtol, atol, max_steps)
+        integ = self._integrator(grid, settings)
         start = time.perf_counter()
         try:
-            xf = integ(x0=x0 / self.nominal, p=p)["xf"]
+            with captured():
+                xf = integ(x0=x0 / self.nominal, p=p)["xf"]
         except RuntimeError as exc:
-            raise self._diagnose(str(exc), grid, x0, p, rtol, atol, max_steps) from None
+            raise self._diagnose(str(exc), grid, x0, p, settings) from None
         wall = time.perf_counter() - start
         X = np.asarray(xf, dtype=float) * self.nominal[:, None]
         if not np.all(np.isfinite(X)):
             k = int(np.argmax(~np.all(np.isfinite(X), axis=0)))
             bad = [n for n, v in zip(self.state_names, X[:, k]) if not np.isfinite(v)]
-            raise SolverError(f"the solution became NaN/Inf at t = {grid[k]:.6g} s in {', '.join(bad)}")
+            raise SolverError(
+                f"integration of {self.name!r}: the solution became NaN/Inf between t = {grid[k - 1]:.6g} s "
+                f"and {grid[k]:.6g} s in {', '.join(bad)}. {self._hint(float(grid[k - 1]), X[:, k - 1], p)}"
+            )
         stats = {k: v for k, v in integ.stats().items() if not k.endswith("B") and isinstance(v, (int, float))}
         stats = {
             k: stats[k] for k in ("nsteps", "nfevals", "nlinsetups", "netfails", "nniters", "nncfails") if k in stats
         }
         stats["wall_time_s"] = wall
         return self._result(grid, X, p, stats)
+
+    def _diagnose(
+        self, message: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, settings: SolverSettings
+    ) -> SolverError:
+        """Where and why a run failed, at the cost of one more integration.
+
+        The run is repeated one output interval at a time, so the last state
+        reached is known, and CVODES may say at what time and step size it gave
+        up; the model linearised at that state names the fastest mode.
+        """
+        reason = translate(message)
+        steps = settings.steps_per_interval(grid.size - 1)
+        step = self._interval_integrator(settings, steps)
+        z = x0 / self.nominal
+        printed, k, failed = "", 0, False
+        for k in range(grid.size - 1):
+            h = float(grid[k + 1] - grid[k])
+            try:
+                with captured() as out:
+                    nxt = np.asarray(step(x0=z, p=np.concatenate([p, [grid[k], h]]))["xf"], dtype=float).ravel()
+            except RuntimeError as exc:
+                printed, reason, failed = out.getvalue(), translate(str(exc)), True
+                break
+            if not np.all(np.isfinite(nxt)):
+                reason, failed = "the solution became NaN or Inf", True
+                break
+            z = nxt
+        x = z * self.nominal
+        if not failed:
+            return SolverError(
+                f"integration of {self.name!r} failed: {reason}; repeated one output interval at a time it did "
+                f"not fail, so the failure depends on the step history: tighten rtol or refine the output grid"
+            )
+        t0, t1 = float(grid[k]), float(grid[k + 1])
+        where = f"integration of {self.name!r} failed between t = {t0:.6g} s and {t1:.6g} s: {reason}"
+        tau, h_tau = failure_point(printed)
+        if tau is not None:
+            where += f"; CVODES stopped at t = {t0 + tau * (t1 - t0):.6g} s"
+            if h_tau is not None:
+                where += f" with a step of {abs(h_tau) * (t1 - t0):.3g} s"
+            elif "TOO_MUCH_WORK" in message or "budget" in reason:
+                where += f" after {steps} steps in this interval (mean step {max(tau, 0.0) * (t1 - t0) / steps:.3g} s)"
+        return SolverError(f"{where}. {self._hint(t0, x, p)}")
+
+    def _hint(self, t: float, x: np.ndarray, p: np.ndarray) -> str:
+        """The state changing fastest at (t, x), and the fastest mode of the model linearised there."""
+        rates = np.asarray(self.f(t, x, p), dtype=float).ravel() / self.nominal
+        k = int(np.argmax(np.abs(np.where(np.isfinite(rates), rates, np.inf))))
+        unit = si_unit(self.units.get(self.state_names[k], ""))
+        text = (
+            f"At t = {t:.6g} s the state changing fastest was {self.state_names[k]} = {x[k]:.6g} {unit} "
+            f"(rate {rates[k] * self.nominal[k]:.3g} {unit}/s)"
+        )
+        A = np.asarray(self._jz(t, x / self.nominal, p), dtype=float)
+        if not np.all(np.isfinite(A)):
+            return text + "; the Jacobian there is not finite."
+        lam, vec = np.linalg.eig(A)
+        i = int(np.argmax(np.abs(lam)))
+        weight = np.abs(vec[:, i])
+        names = [self.state_names[j] for j in np.argsort(-weight) if weight[j] > 0.3 * weight.max()][:3]
+        text += (
+            f"; the fastest mode of the model linearised there has an eigenvalue of {lam[i]:.3g} 1/s "
+            f"(time scale {1 / abs(lam[i]):.3g} s), mostly in {', '.join(names)}"
+        )
+        grow = int(np.argmax(lam.real))
+        if lam[grow].real > 1e-6 * abs(lam[i]):
+            text += f"; the model is unstable there (a mode grows at {lam[grow].real:.3g} 1/s)"
+        if all(si_unit(self.units.get(n, "")) == "Pa" for n in names):
+            text += "; fast pressure modes come from small volumes, a large bulk modulus or large areas"
+        return text + "."
 
     def _result(self, grid: np.ndarray, X: np.ndarray, p: np.ndarray, stats: dict[str, Any]) -> Result:
         nt = grid.size
@@ -205,50 +309,24 @@ class Model:
             return {n: Y[i] for i, n in enumerate(self.output_names)}
 
         params = dict(zip(self.parameter_names, p.tolist()))
-        return Result(grid, data, dict(self.units), dict(self.descriptions), stats, params, self.name, outputs)
+        result = Result(grid, data, dict(self.units), dict(self.descriptions), stats, params, self.name, outputs)
+        result.warnings = self.plausibility(grid, X, p)
+        return result
+
+    def plausibility(self, grid: np.ndarray, X: np.ndarray, p: np.ndarray) -> list[Implausible]:
+        """The physical bounds one run crossed (:mod:`hydroservo.system.plausibility`)."""
+        if not self.watched:
+            return []
+        n = grid.size
+        if n not in self._limit_maps:
+            self._limit_maps[n] = self._limits.map(n)
+        V, LO, HI = (np.asarray(a, dtype=float) for a in self._limit_maps[n](grid[None, :], X, p[:, None]))
+        return check(grid, self.watched, V, LO, HI)
 
     def _outputs_map(self, n: int) -> ca.Function:
         if n not in self._maps:
             self._maps[n] = self.outputs.map(n)
         return self._maps[n]
-
-    def _diagnose(
-        self, message: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, rtol: float, atol: float, max_steps: int
-    ) -> SolverError:
-        """Locate a failure: the last output time reached, and the state changing fastest there."""
-        flag = next((k for k in _REASONS if k in message), None)
-        reason = _REASONS[flag] if flag else message.strip().splitlines()[-1][:300]
-
-        def reach(k: int) -> np.ndarray | None:
-            """States at grid[:k + 1], or None if the integrator fails before grid[k]."""
-            if k == 0:
-                return x0[:, None]
-            opts = {"abstol": atol, "reltol": rtol, "max_num_steps": max_steps, "disable_internal_warnings": True}
-            sub = ca.integrator("diag", "cvodes", self._dae, float(grid[0]), [float(g) for g in grid[: k + 1]], opts)
-            try:
-                return np.asarray(sub(x0=x0 / self.nominal, p=p)["xf"], dtype=float) * self.nominal[:, None]
-            except RuntimeError:
-                return None
-
-        lo, hi = 0, grid.size - 1  # grid[lo] is reached, grid[hi] is not
-        states = x0[:, None]
-        while hi - lo > 1:
-            mid = (lo + hi) // 2
-            got = reach(mid)
-            if got is None or not np.all(np.isfinite(got)):
-                hi = mid
-            else:
-                lo, states = mid, got
-        last_t, last_x = float(grid[lo]), states[:, -1]
-        rates = np.asarray(self.f(last_t, last_x, p), dtype=float).ravel() / self.nominal
-        k = int(np.argmax(np.abs(np.where(np.isfinite(rates), rates, np.inf))))
-        name = self.state_names[k]
-        unit = si_unit(self.units.get(name, ""))
-        return SolverError(
-            f"integration of {self.name!r} failed at t = {last_t:.6g} to {float(grid[hi]):.6g} s: {reason}. "
-            f"At t = {last_t:.6g} s the fastest-changing state was {name} = {last_x[k]:.6g} {unit} "
-            f"(rate {rates[k] * self.nominal[k]:.3g} {unit}/s)."
-        )
 
     # -- equilibrium -------------------------------------------------------
     def trim(
@@ -302,7 +380,7 @@ class Model:
         self,
         t_end: float,
         p_base: np.ndarray,
-        sets: Mapping[str, Sequence[float]],
+        sets: Mapping[str, Sequence[float] | np.ndarray],
         *,
         n_points: int = 201,
         t_eval: Sequence[float] | None = None,
@@ -310,62 +388,145 @@ class Model:
         atol: float = 1e-8,
         max_steps: int = 100_000,
         threads: int | None = None,
+        failed: Mapping[int, str] | None = None,
+        progress: Callable[[int, int], None] | None = None,
     ) -> BatchResult:
-        """Run the model once per parameter set, the integrator mapped over all sets.
+        """Run the model once per parameter set, the integrator mapped over the sets.
 
         ``sets`` maps parameter names to equally long sequences of SI values;
         other parameters keep ``p_base``. Runs are spread over ``threads``
         threads (default: all cores). Initial states follow the parameters.
         Outputs other than states are computed when first accessed.
+
+        Each run succeeds or fails on its own: a run that fails (or that
+        ``failed`` already marks as invalid, index -> reason) has NaN signals
+        and its reason in :attr:`BatchResult.failed`; the others keep their
+        results. Runs go in chunks; a chunk in which a run fails is split until
+        the failing runs are isolated. ``progress(done, total)`` is called after
+        every chunk.
         """
-        grid = self._grid(t_end, t_eval, n_points)
-        lengths = {len(v) for v in sets.values()}
-        if len(lengths) != 1:
-            raise ParameterError(f"batch: parameter sequences must be equally long; got lengths {sorted(lengths)}")
-        n = lengths.pop()
-        P = np.tile(np.asarray(p_base, dtype=float)[:, None], (1, n))
-        for name, vals in sets.items():
-            if name not in self.parameter_names:
-                raise ParameterError(f"batch: unknown parameter {name!r}")
-            P[self.parameter_names.index(name)] = np.asarray(vals, dtype=float)
-        X0 = np.asarray(self.x0.map(n)(P), dtype=float) / self.nominal[:, None]
+        grid = output_grid(t_end, t_eval, n_points)
+        settings = SolverSettings(rtol, atol, max_steps)
+        if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int) or threads < 1):
+            raise ParameterError(f"threads = {threads!r}: expected a whole number of threads, at least 1")
+        P = self._batch_parameters(self._check_parameters(p_base), sets)
+        n, nt = P.shape[1], grid.size
+        failures = {int(k): str(v) for k, v in (failed or {}).items()}
+        good = np.array([i not in failures for i in range(n)])
+        X0 = np.full((self.nx, n), np.nan)
+        if good.any():
+            X0[:, good] = np.asarray(self.x0.map(int(good.sum()))(P[:, good]), dtype=float).reshape(self.nx, -1)
+        for j in np.flatnonzero(good & ~np.all(np.isfinite(X0), axis=0)).tolist():
+            bad = [nm for nm, v in zip(self.state_names, X0[:, j]) if not np.isfinite(v)]
+            failures[j] = f"initial state not finite in {', '.join(bad)}"
+        todo = [i for i in range(n) if i not in failures]
         nthreads = threads or os.cpu_count() or 1
-        integ = self._integrator(grid, rtol, atol, max_steps)
-        fmap = integ.map(n, "thread", nthreads)
+        X = np.full((self.nx, n, nt), np.nan)
         start = time.perf_counter()
-        try:
-            xf = fmap(x0=X0, p=P)["xf"]
-        except RuntimeError as exc:
-            raise SolverError(
-                f"batch run of {self.name!r} failed in one of {n} runs: {str(exc).strip().splitlines()[-1][:300]}"
-            ) from None
+        if self.nx == 0:
+            X = np.zeros((0, n, nt))
+        else:
+            integ = self._integrator(grid, settings)
+            chunk = max(4 * nthreads, min(64, len(todo)))
+            done = len(failures)
+            for c0 in range(0, len(todo), chunk):
+                part = todo[c0 : c0 + chunk]
+                self._solve_runs(integ, part, X0 / self.nominal[:, None], P, X, failures, nthreads)
+                done += len(part)
+                if progress is not None:
+                    progress(done, n)
+            X *= self.nominal[:, None, None]
         wall = time.perf_counter() - start
-        nt = grid.size
-        X = np.asarray(xf, dtype=float).reshape(self.nx, n, nt) * self.nominal[:, None, None]
-        data = {name: X[i] for i, name in enumerate(self.state_names)}
+        for i in todo:
+            if i not in failures and not np.all(np.isfinite(X[:, i])):
+                k = int(np.argmax(~np.all(np.isfinite(X[:, i]), axis=0)))
+                bad = [nm for nm, v in zip(self.state_names, X[:, i, k]) if not np.isfinite(v)]
+                failures[i] = f"the solution became NaN/Inf at t = {grid[k]:.6g} s in {', '.join(bad)}"
+        for i in failures:
+            X[:, i] = np.nan
+        data = {name: X[j] for j, name in enumerate(self.state_names)}
         fy = self._outputs_map(nt) if self.output_names else None
 
         def outputs() -> dict[str, np.ndarray]:
             if fy is None:
                 return {}
-            Y = np.stack(
-                [np.asarray(fy(grid[None, :], X[:, k, :], P[:, k : k + 1]), dtype=float) for k in range(n)], axis=1
-            )
-            return {name: Y[i] for i, name in enumerate(self.output_names)}
+            Y = np.full((len(self.output_names), n, nt), np.nan)
+            for k in range(n):
+                if k not in failures:
+                    Y[:, k] = np.asarray(fy(grid[None, :], X[:, k, :], P[:, k : k + 1]), dtype=float)
+            return {name: Y[j] for j, name in enumerate(self.output_names)}
 
-        bad = ~np.all(np.isfinite(X), axis=(0, 2))
-        if np.any(bad):
-            raise SolverError(f"batch run of {self.name!r}: runs {np.flatnonzero(bad)[:10].tolist()} returned NaN/Inf")
-        params = {name: P[i] for i, name in enumerate(self.parameter_names)}
-        return BatchResult(
-            grid,
-            data,
-            dict(self.units),
-            params,
-            {"wall_time_s": wall, "runs": n, "threads": nthreads},
-            self.name,
-            outputs,
-        )
+        params = {name: P[j] for j, name in enumerate(self.parameter_names)}
+        warnings = {}
+        for k in range(n):
+            if k not in failures:
+                found = self.plausibility(grid, X[:, k, :], P[:, k])
+                if found:
+                    warnings[k] = found
+        stats = {
+            "wall_time_s": wall,
+            "runs": n,
+            "failed": len(failures),
+            "implausible": len(warnings),
+            "threads": nthreads,
+        }
+        result = BatchResult(grid, data, dict(self.units), params, stats, self.name, outputs, dict(sorted(failures.items())))
+        result.warnings = warnings
+        return result
+
+    def _batch_parameters(self, p_base: np.ndarray, sets: Mapping[str, Sequence[float] | np.ndarray]) -> np.ndarray:
+        """The parameter matrix (parameters x runs) of a batch."""
+        if not sets:
+            raise ParameterError("batch: no parameters to vary; give a mapping name -> sequence of values")
+        columns: dict[str, np.ndarray] = {}
+        for name, vals in sets.items():
+            if name not in self.parameter_names:
+                raise ParameterError(f"batch: unknown parameter {name!r} of {self.name!r}")
+            if isinstance(vals, (str, bytes)) or not hasattr(vals, "__len__"):
+                raise ParameterError(f"batch: {name} = {vals!r}: expected a sequence of values, one per run")
+            try:
+                columns[name] = np.asarray(vals, dtype=float).ravel()
+            except (TypeError, ValueError):
+                raise ParameterError(f"batch: {name}: expected numbers (SI), one per run") from None
+        lengths = {name: col.size for name, col in columns.items()}
+        if len(set(lengths.values())) != 1:
+            shown = ", ".join(f"{k}: {v}" for k, v in lengths.items())
+            raise ParameterError(f"batch: the sequences must be equally long; got {shown}")
+        n = next(iter(lengths.values()))
+        if n == 0:
+            raise ParameterError(f"batch: {', '.join(lengths)}: empty sequences, no run to make")
+        P = np.tile(p_base[:, None], (1, n))
+        for name, col in columns.items():
+            P[self.parameter_names.index(name)] = col
+        return P
+
+    def _solve_runs(
+        self,
+        integ: ca.Function,
+        runs: list[int],
+        Z0: np.ndarray,
+        P: np.ndarray,
+        X: np.ndarray,
+        failures: dict[int, str],
+        nthreads: int,
+    ) -> None:
+        """Integrate ``runs`` together; if one fails, halve until it stands alone and record why."""
+        size = len(runs)
+        key = (id(integ), size)
+        if key not in self._batch_maps:
+            self._batch_maps[key] = integ.map(size, "thread", min(nthreads, size))
+        try:
+            with captured():
+                xf = self._batch_maps[key](x0=Z0[:, runs], p=P[:, runs])["xf"]
+        except RuntimeError as exc:
+            if size == 1:
+                failures[runs[0]] = translate(str(exc))
+                return
+            half = math.ceil(size / 2)
+            self._solve_runs(integ, runs[:half], Z0, P, X, failures, nthreads)
+            self._solve_runs(integ, runs[half:], Z0, P, X, failures, nthreads)
+            return
+        X[:, runs, :] = np.asarray(xf, dtype=float).reshape(self.nx, size, -1)
 
     # -- code generation ---------------------------------------------------
     def generate_c(self, filename: str | Path = "model.c") -> Path:

@@ -8,12 +8,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from hydroservo.errors import ParameterError, UnitError
+from hydroservo.errors import ParameterError, SolverError, UnitError
 from hydroservo.units import from_si, si_unit
 
 if TYPE_CHECKING:
     import pandas as pd
     from matplotlib.figure import Figure
+
+    from hydroservo.system.plausibility import Implausible
 
 __all__ = ["Result", "BatchResult"]
 
@@ -77,6 +79,8 @@ class Result(_Signals):
         self.stats = stats
         self.params = params
         self.model = model
+        #: Physical bounds the run crossed (:mod:`hydroservo.system.plausibility`); empty if none.
+        self.warnings: list[Implausible] = []
 
     def get(self, name: str, unit: str | None = None) -> np.ndarray:
         """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``)."""
@@ -143,7 +147,14 @@ class Result(_Signals):
 
 
 class BatchResult(_Signals):
-    """Many runs: ``result["load.x"]`` has shape (runs, times); ``result.params`` the values per run."""
+    """Many runs: ``result["load.x"]`` has shape (runs, times); ``result.params`` the values per run.
+
+    Runs fail on their own: :attr:`failed` maps the index of each failed run
+    to its reason (its signals are NaN), :attr:`ok` marks the runs that
+    succeeded, and :meth:`failed_params` gives a failed run's parameters to
+    repeat it with :meth:`~hydroservo.system.System.simulate`, which says
+    where and why it fails.
+    """
 
     def __init__(
         self,
@@ -154,16 +165,48 @@ class BatchResult(_Signals):
         stats: dict[str, Any],
         model: str,
         outputs: Callable[[], dict[str, np.ndarray]] | None = None,
+        failed: dict[int, str] | None = None,
     ) -> None:
         self.t, self._data, self.units, self.params, self.stats, self.model = t, data, units, params, stats, model
         self._outputs = outputs
+        self.failed: dict[int, str] = dict(failed or {})
+        #: Physical bounds crossed, by run (:mod:`hydroservo.system.plausibility`).
+        self.warnings: dict[int, list[Implausible]] = {}
 
     def __len__(self) -> int:
         return int(self.stats["runs"])
 
+    @property
+    def ok(self) -> np.ndarray:
+        """True for every run that succeeded."""
+        mask = np.ones(len(self), dtype=bool)
+        mask[list(self.failed)] = False
+        return mask
+
+    def failed_params(self, k: int) -> dict[str, float]:
+        """Parameters (SI) of run ``k``."""
+        return {n: float(v[k]) for n, v in self.params.items()}
+
+    def summary(self) -> str:
+        """One line: how many runs succeeded and failed, and the most common reasons."""
+        n, bad = len(self), len(self.failed)
+        text = f"{n - bad} of {n} runs succeeded ({len(self.warnings)} with physically implausible results), {bad} failed"
+        if bad:
+            reasons: dict[str, int] = {}
+            for r in self.failed.values():
+                reasons[r] = reasons.get(r, 0) + 1
+            common = sorted(reasons.items(), key=lambda kv: -kv[1])[:3]
+            text += ": " + "; ".join(f"{c} x {r}" for r, c in common)
+        return text
+
     def run(self, k: int) -> Result:
         """Run ``k`` as a :class:`Result`."""
-        return Result(
+        if not -len(self) <= k < len(self):
+            raise ParameterError(f"run {k}: the batch has runs 0 to {len(self) - 1}")
+        k %= len(self)
+        if k in self.failed:
+            raise SolverError(f"run {k} of the batch of {self.model!r} failed: {self.failed[k]}")
+        result = Result(
             self.t,
             {n: v[k] for n, v in self.data.items()},
             self.units,
@@ -172,3 +215,5 @@ class BatchResult(_Signals):
             {n: float(v[k]) for n, v in self.params.items()},
             self.model,
         )
+        result.warnings = list(self.warnings.get(k, []))
+        return result

@@ -222,16 +222,87 @@ class System:
     def batch(
         self, param_sets: Mapping[str, Iterable[Any]], t_end: float | str | None = None, **kwargs: Any
     ) -> BatchResult:
-        """Many runs at once; see :meth:`hydroservo.system.model.Model.batch`."""
+        """Many runs at once; see :meth:`hydroservo.system.model.Model.batch`.
+
+        ``param_sets`` maps "comp.param" to equally long sequences of values
+        (units allowed). A value out of range, of the wrong unit or breaking a
+        component's cross-parameter check fails its own run, with the reason in
+        :attr:`BatchResult.failed`; the other runs go ahead.
+        """
         model = self.build()
         t = self.t_end if t_end is None else to_si(t_end, "s", what="t_end")
-        sets = {k: [self.parse_parameters({k: v})[k] for v in vals] for k, vals in param_sets.items()}
-        return model.batch(t, self.parameter_vector(None), sets, **kwargs)
+        columns: dict[str, list[Any]] = {}
+        for key, vals in (param_sets or {}).items():
+            cname, pname = split_name(key, "parameter")
+            comp = self[cname]
+            pname = comp.current_name(pname)
+            if pname in comp.OPTIONS:
+                raise ParameterError(f"batch: {cname}.{pname} is an option (structural): set it with System.set")
+            if pname not in comp.PARAMETERS:
+                comp.parse(pname, 0.0)  # raises the unknown-parameter error, with the known names
+            if isinstance(vals, (str, bytes)) or not isinstance(vals, Iterable):
+                raise ParameterError(f"batch: {cname}.{pname} = {vals!r}: expected a sequence of values, one per run")
+            columns[f"{cname}.{pname}"] = list(vals)
+        if not columns:
+            raise ParameterError("batch: no parameters to vary; give a mapping 'comp.param' -> sequence of values")
+        lengths = {k: len(v) for k, v in columns.items()}
+        if len(set(lengths.values())) != 1:
+            shown = ", ".join(f"{k}: {v}" for k, v in lengths.items())
+            raise ParameterError(f"batch: the sequences must be equally long; got {shown}")
+        n = next(iter(lengths.values()))
+        if n == 0:
+            raise ParameterError(f"batch: {', '.join(columns)}: empty sequences, no run to make")
+        invalid: dict[int, str] = {}
+        si: dict[str, np.ndarray] = {}
+        for key, vals in columns.items():
+            cname, pname = key.split(".", 1)
+            column = np.full(n, np.nan)
+            for i, val in enumerate(vals):
+                try:
+                    column[i] = self[cname].parse(pname, val)
+                except HydroservoError as exc:
+                    invalid.setdefault(i, str(exc))
+            si[key] = column
+        for i in range(n):
+            if i not in invalid:
+                try:
+                    self.check_components({key: float(col[i]) for key, col in si.items()}, only_changed=True)
+                except HydroservoError as exc:
+                    invalid[i] = str(exc)
+        return model.batch(t, self.parameter_vector(None), si, failed=invalid, **kwargs)
 
     def parameter_vector(self, params: Mapping[str, Any] | None = None) -> np.ndarray:
         """The parameter vector of the built model (SI, in :attr:`Model.parameter_names` order):
-        the components' values, with ``params`` ("comp.param" -> value, units allowed) applied."""
+        the components' values, with ``params`` ("comp.param" -> value, units allowed) applied.
+
+        Every entry point goes through here, so ranges and the components'
+        cross-parameter checks (a stroke that fits the chamber volumes, a
+        deadband inside the travel) hold for ``simulate(params=...)``,
+        ``trim``, values changed by :meth:`set` after a first build, and the
+        analysis and identification tools alike.
+
+        Raises
+        ------
+        ParameterError
+            Naming the parameter, its value and what was expected.
+        """
         model = self.build()
+        given = self.parse_parameters(params)
+        self.check_components(given)
         values = self.parameter_values()
-        values.update(self.parse_parameters(params))
+        values.update(given)
         return np.array([values[n] for n in model.parameter_names], dtype=float)
+
+    def check_components(self, overrides: Mapping[str, float] | None = None, *, only_changed: bool = False) -> None:
+        """Run every component's cross-parameter check (or, with ``only_changed``, those of the components
+        ``overrides`` touches), with ``overrides`` ("comp.param" -> SI value) applied."""
+        by_comp: dict[str, dict[str, Any]] = {}
+        for key, val in (overrides or {}).items():
+            cname, pname = key.split(".", 1)
+            by_comp.setdefault(cname, {})[pname] = val
+        for cname, comp in self.components.items():
+            changed = by_comp.get(cname)
+            if changed:
+                comp.replace(**changed).check()
+            elif not only_changed:
+                comp.check()

@@ -1,0 +1,139 @@
+"""Integrator settings, checked once for every entry point, and what CVODES says translated.
+
+The settings a user gives (tolerances, step budget, output grid) are checked
+here before any integrator is built, so a bad one is refused with its name and
+value instead of failing inside SUNDIALS. CVODES reports failures as return
+flags and prints its own lines; :func:`captured` keeps those lines off the
+user's terminal and :func:`translate` turns a flag into a sentence.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import math
+import re
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from hydroservo.errors import ParameterError
+
+__all__ = ["MAX_POINTS", "SolverSettings", "output_grid", "captured", "translate", "failure_point"]
+
+#: Largest output grid [points]: 100 001 points of 20 signals are 16 MB; a million would be gigabytes.
+MAX_POINTS = 100_001
+
+#: Least number of steps CVODES may take between two output times, whatever the total budget.
+MIN_STEPS_PER_INTERVAL = 500
+
+_REASONS = {
+    "CV_TOO_MUCH_WORK": "the step budget was used up (the dynamics are too fast for the time span, or a state diverges)",
+    "CV_CONV_FAILURE": "the Newton corrector did not converge (a discontinuity or a singular Jacobian)",
+    "CV_ERR_FAILURE": "the error test failed repeatedly (a discontinuity or a state blowing up)",
+    "CV_TOO_CLOSE": "the output times are too close together",
+    "CV_RHSFUNC_FAIL": "the right-hand side could not be evaluated (NaN or Inf)",
+    "CV_REPTD_RHSFUNC_ERR": "the right-hand side repeatedly gave NaN or Inf",
+    "CV_FIRST_RHSFUNC_ERR": "the right-hand side gave NaN or Inf at the initial state",
+    "CV_UNREC_RHSFUNC_ERR": "the right-hand side gave NaN or Inf and the step could not be retried",
+    "CV_LSETUP_FAIL": "the Jacobian could not be factorised (a singular or NaN Jacobian)",
+    "CV_LSOLVE_FAIL": "the linear solve failed (a singular or NaN Jacobian)",
+    "CV_TOO_MANY_STEPS": "the step budget was used up",
+}
+
+
+@dataclass(frozen=True)
+class SolverSettings:
+    """Tolerances and step budget of one run, checked on construction.
+
+    ``rtol`` is relative; ``atol`` applies to states scaled by their nominal
+    magnitude (so it is dimensionless). ``max_steps`` is the step budget of the
+    whole run, shared out over the output intervals (each gets at least
+    :data:`MIN_STEPS_PER_INTERVAL`): a hopeless set fails within about
+    ``max_steps`` steps rather than ``max_steps`` per output point.
+    """
+
+    rtol: float = 1e-6
+    atol: float = 1e-8
+    max_steps: int = 100_000
+
+    def __post_init__(self) -> None:
+        rtol, atol, steps = self.rtol, self.atol, self.max_steps
+        if not _real(rtol) or not 1e-14 <= rtol <= 0.1:
+            raise ParameterError(
+                f"rtol = {rtol!r}: expected a relative tolerance between 1e-14 and 0.1 (typically 1e-6)"
+            )
+        if not _real(atol) or not 0 < atol <= 1.0:
+            raise ParameterError(
+                f"atol = {atol!r}: expected an absolute tolerance above 0 and at most 1 "
+                "(it applies to states scaled by their nominal magnitude; typically 1e-8)"
+            )
+        if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or not 100 <= steps <= 10**9:
+            raise ParameterError(f"max_steps = {steps!r}: expected a whole number of steps from 100 to 1e9")
+
+    def steps_per_interval(self, n_intervals: int) -> int:
+        """The most steps CVODES may take between two output times."""
+        return max(MIN_STEPS_PER_INTERVAL, math.ceil(self.max_steps / max(n_intervals, 1)))
+
+
+def _real(value: Any) -> bool:
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool) and math.isfinite(value)
+
+
+def output_grid(t_end: float, t_eval: Sequence[float] | None, n_points: int) -> np.ndarray:
+    """The output times: ``t_eval`` as given, or ``n_points`` equally spaced over [0, t_end]."""
+    if t_eval is not None:
+        try:
+            grid = np.asarray(t_eval, dtype=float).ravel()
+        except (TypeError, ValueError):
+            raise ParameterError("t_eval: expected a sequence of times [s]") from None
+        if not np.all(np.isfinite(grid)):
+            k = int(np.argmax(~np.isfinite(grid)))
+            raise ParameterError(f"t_eval[{k}] = {grid[k]!r}: expected finite times [s]")
+        if grid.size < 2 or grid.size > MAX_POINTS:
+            raise ParameterError(f"t_eval: {grid.size} times; expected 2 to {MAX_POINTS}")
+        if np.any(np.diff(grid) <= 0):
+            k = int(np.argmax(np.diff(grid) <= 0))
+            raise ParameterError(
+                f"t_eval[{k + 1}] = {grid[k + 1]:g} s after t_eval[{k}] = {grid[k]:g} s: expected strictly increasing times"
+            )
+        return grid
+    if not _real(t_end) or not t_end > 0:
+        raise ParameterError(f"t_end = {t_end!r} s: expected a positive, finite duration")
+    if isinstance(n_points, bool) or not isinstance(n_points, (int, np.integer)) or not 2 <= n_points <= MAX_POINTS:
+        raise ParameterError(f"n_points = {n_points!r}: expected a whole number from 2 to {MAX_POINTS}")
+    return np.linspace(0.0, float(t_end), int(n_points))
+
+
+@contextlib.contextmanager
+def captured() -> Iterator[io.StringIO]:
+    """Collect what CasADi and CVODES print (they print through Python's streams) instead of showing it."""
+    buffer = io.StringIO()
+    with contextlib.redirect_stdout(buffer), contextlib.redirect_stderr(buffer):
+        yield buffer
+
+
+def translate(message: str) -> str:
+    """A sentence for the CVODES return flag in a CasADi error message."""
+    flag = next((k for k in _REASONS if k in message), None)
+    if flag is not None:
+        return _REASONS[flag]
+    lines = [line for line in message.strip().splitlines() if line.strip()]
+    return "the integrator stopped: " + (lines[-1][:200] if lines else "no reason given")
+
+
+_AT = re.compile(r"At t\s*=\s*([-+0-9.eE]+)(?:\s*,|\s+and\s+h\s*=\s*([-+0-9.eE]+))")
+
+
+def failure_point(printed: str) -> tuple[float | None, float | None]:
+    """Time and step size CVODES printed when it gave up ("At t = ... and h = ..."), if it did."""
+    found = _AT.findall(printed)
+    if not found:
+        return None, None
+    t, h = found[-1]
+    try:
+        return float(t), (float(h) if h else None)
+    except ValueError:
+        return None, None
