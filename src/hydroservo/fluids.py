@@ -40,6 +40,7 @@ from hydroservo.laws.fluid import (
     kinematic_viscosity_walther,
     specific_volume_mare,
 )
+from hydroservo.units import ABSOLUTE_ZERO, VACUUM
 
 __all__ = [
     "Fluid",
@@ -71,8 +72,19 @@ class Fluid:
     p_range: tuple[float, float]
 
     def check_range(self, p: Any, T: Any, strict: bool = False) -> None:
-        """Warn (or, with ``strict``, raise) when (p, T) leaves the validity range."""
+        """Refuse states no fluid can be in (non-finite values, temperatures at or below absolute zero,
+        pressures below vacuum); warn (or, with ``strict``, raise) when (p, T) leaves the validity range."""
         p_arr, T_arr = np.atleast_1d(np.asarray(p, float)), np.atleast_1d(np.asarray(T, float))
+        if not (np.all(np.isfinite(p_arr)) and np.all(np.isfinite(T_arr))):
+            raise ParameterError(f"fluid {self.name!r}: pressures and temperatures must be finite numbers")
+        if np.any(T_arr <= ABSOLUTE_ZERO):
+            raise ParameterError(
+                f"fluid {self.name!r}: temperature {T_arr.min():g} degC; expected above absolute zero ({ABSOLUTE_ZERO} degC)"
+            )
+        if np.any(p_arr < VACUUM):
+            raise ParameterError(
+                f"fluid {self.name!r}: pressure {p_arr.min():g} Pa (gauge); expected at least vacuum ({VACUUM:g} Pa gauge)"
+            )
         msgs = []
         if np.any(T_arr < self.T_range[0]) or np.any(T_arr > self.T_range[1]):
             msgs.append(

@@ -32,6 +32,8 @@ if TYPE_CHECKING:
     import pint
 
 __all__ = [
+    "VACUUM",
+    "ABSOLUTE_ZERO",
     "registry",
     "to_si",
     "from_si",
@@ -43,6 +45,11 @@ __all__ = [
     "check_unit",
     "same_dimension",
 ]
+
+#: Gauge pressure of a perfect vacuum [Pa]: pressures are gauge inside hydroservo, and none lies below this.
+VACUUM = -101325.0
+#: Absolute zero in degrees Celsius, the unit of temperatures inside hydroservo: none lies at or below it.
+ABSOLUTE_ZERO = -273.15
 
 
 @functools.cache

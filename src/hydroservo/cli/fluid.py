@@ -62,7 +62,16 @@ def cmd_fluid(args: argparse.Namespace) -> int:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         fluid.check_range(P, T, strict=args.strict)
-    values = {p: np.asarray(getattr(fluid, p)(P, T), dtype=float) for p in props}
+    with np.errstate(all="ignore"):
+        values = {p: np.asarray(getattr(fluid, p)(P, T), dtype=float) for p in props}
+    for p in props:
+        bad = ~np.isfinite(values[p]) | (values[p] <= 0)
+        if bad.any():
+            i, j = np.argwhere(bad)[0]
+            raise ParameterError(
+                f"fluid {fluid.name!r}: no physical {p.replace('_', ' ')} at {temps[i]:g} degC and {press[j]:g} Pa "
+                f"(the model gives {values[p][i, j]:g}); --temperature and --pressure are far outside its range"
+            )
     shown = {p: values[p] * from_si(1.0, PROPERTIES[p], _SHOW[p]) for p in props}
     if args.json:
         rows: list[dict[str, Any]] = []

@@ -113,16 +113,30 @@ def _check_solver_options(args: argparse.Namespace) -> None:
         raise ParameterError(f"--points {args.points}: expected a whole number of output times from 2 to {MAX_POINTS}")
 
 
-def _report_warnings(result: Any, strict: bool) -> None:
-    """Print the physical bounds the run crossed; with --strict, refuse the result (exit 2, nothing written)."""
-    if strict and result.warnings:
-        lines = "\n  ".join(str(w) for w in result.warnings)
+def _warnings(result: Any) -> list[str]:
+    """The physical bounds the run crossed, and signals (such as aliases) that are not finite."""
+    import numpy as np
+
+    found = [str(w) for w in result.warnings]
+    for name, values in result.data.items():
+        bad = ~np.isfinite(values)
+        if bad.any():
+            found.append(f"{name} is NaN or infinite from t = {result.t[int(np.argmax(bad))]:.6g} s")
+    return found
+
+
+def _report_warnings(result: Any, strict: bool) -> list[str]:
+    """Print what is implausible in the result; with --strict, refuse it (exit 2, nothing written)."""
+    found = _warnings(result)
+    if strict and found:
+        lines = "\n  ".join(found)
         raise ImplausibleResultError(
             f"--strict: the result of {result.model!r} is physically implausible "
-            f"({len(result.warnings)} bound(s) crossed; margins: docs/reliability.md):\n  {lines}"
+            f"({len(found)} warning(s); margins: docs/reliability.md):\n  {lines}"
         )
-    for w in result.warnings:
-        print(f"hydroservo: warning: {w}", file=sys.stderr)
+    for text in found:
+        print(f"hydroservo: warning: {text}", file=sys.stderr)
+    return found
 
 
 def cmd_simulate(args: argparse.Namespace) -> int:
@@ -142,7 +156,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     start = time.perf_counter()
     result = system.simulate(t_end=t_end, n_points=args.points, initial=args.initial, rtol=args.rtol)
     wall = time.perf_counter() - start
-    _report_warnings(result, args.strict)
+    found = _report_warnings(result, args.strict)
     with out:
         result.to_csv(out.file(f"{name}.csv"))
         title = f"{system.name}: simulated response"
@@ -159,7 +173,8 @@ def cmd_simulate(args: argparse.Namespace) -> int:
         "signals": result.summary(),
         "solver": solver,
         "wall_time_s": wall,
-        "warnings": [w.to_dict() for w in result.warnings],
+        "warnings": [w.to_dict() for w in result.warnings]
+        + [{"message": text} for text in found[len(result.warnings) :]],
         "files": files,
     }
     print(json.dumps(report, indent=2))

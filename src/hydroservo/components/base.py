@@ -41,7 +41,7 @@ from typing import Any, ClassVar, Self
 
 from hydroservo.data import parameter_set
 from hydroservo.errors import ParameterError, RenamedWarning, UnitError
-from hydroservo.units import check_unit, is_bare_number, si_unit, to_si
+from hydroservo.units import VACUUM, check_unit, is_bare_number, si_unit, to_si
 
 __all__ = [
     "VACUUM",
@@ -58,9 +58,6 @@ __all__ = [
     "register",
     "RenamedWarning",
 ]
-
-#: Gauge pressure of a perfect vacuum [Pa]: no absolute pressure lies below it.
-VACUUM = -101325.0
 
 #: Placeholder unit of signal blocks (sources, sums, gains): replaced by the
 #: block's ``unit`` argument, or by "" (dimensionless) when none is given.

@@ -144,6 +144,11 @@ def fit_curves(
         return np.concatenate(res)
 
     z0 = coords.encode(_start(x, data, ok, ds, structure))
+    if n_points <= z0.size:
+        raise ParameterError(
+            f"curves: {n_points} points for the {z0.size} parameters of the {structure}-structure pseudo-sections; "
+            "expected more points than parameters"
+        )
     sol = least_squares(residuals, z0, bounds=(coords.lower(), np.inf), xtol=1e-12, ftol=1e-12, max_nfev=2000)
     fit = PseudoSectionFit(fitted_valve(structure, coords.decode(sol.x)), ds, ("curves",))
     fit.valve.check_sections()

@@ -133,8 +133,38 @@ def spool_response(
 
 
 def _check_amplitudes(amps: np.ndarray) -> None:
-    if np.any(amps <= 0) or np.any(amps > 1):
+    if not np.all(np.isfinite(amps)) or np.any(amps <= 0) or np.any(amps > 1):
         raise ParameterError(f"amplitudes {amps.tolist()}: expected fractions of the stroke in (0, 1] (5 % is 0.05)")
+
+
+def _check_data(data: FrequencyResponse, model: str) -> None:
+    """Refuse Bode data the model's parameters cannot be fitted to."""
+    where = f"Bode data {data.label!r}" if data.label else "Bode data"
+    _check_amplitudes(data.amplitudes)
+    f = data.frequencies
+    if not np.all(np.isfinite(f)) or np.any(f <= 0) or np.any(np.diff(f) <= 0):
+        raise ParameterError(f"{where}: frequencies {f.tolist()} Hz; expected positive, finite, increasing values")
+    if not np.all(np.isfinite(data.gain_db)):
+        i, j = np.argwhere(~np.isfinite(data.gain_db))[0]
+        raise ParameterError(
+            f"{where}: gain at {100 * data.amplitudes[i]:g} % and {f[j]:g} Hz is {data.gain_db[i, j]}; "
+            "expected a finite gain [dB] at every point"
+        )
+    n_params = len(SPOOL_MODELS[model])
+    if f.size < 3:
+        raise ParameterError(
+            f"{where}: {f.size} frequenc{'y' if f.size == 1 else 'ies'}; the {model} model needs at least 3 to place its bandwidth"
+        )
+    if model == "rate-limited" and data.amplitudes.size < 2:
+        raise ParameterError(
+            f"{where}: one amplitude; the rate limits of the rate-limited model show only as gains that differ "
+            "between amplitudes: give at least 2"
+        )
+    if data.gain_db.size <= n_params:
+        raise ParameterError(
+            f"{where}: {data.gain_db.size} gains for the {n_params} parameters of the {model} model; "
+            "expected more points than parameters"
+        )
 
 
 @dataclass
@@ -238,7 +268,7 @@ def fit_spool_dynamics(
     """
     if model not in SPOOL_MODELS:
         raise ParameterError(f"spool model {model!r}: expected one of {', '.join(SPOOL_MODELS)}")
-    _check_amplitudes(data.amplitudes)
+    _check_data(data, model)
     names = list(SPOOL_MODELS[model])
     first = default_start(data, model)
     if start:

@@ -156,6 +156,11 @@ class _Residuals:
         Xl, Qlk = np.asarray(curves.X_leak), np.asarray(curves.Q_lk)
         ok = _finite(Xl, Qlk)
         self.Xl, self.Qlk = Xl[ok], Qlk[ok]
+        for what, n in (("flow-gain", self.Xf.size), ("pressure-gain", self.Xb.size), ("leakage", self.Xl.size)):
+            if n < 3:
+                raise ParameterError(
+                    f"identification at {self.T:g} degC: {n} point(s) of the {what} curve; expected at least 3"
+                )
         self.q_fs = float(np.max(np.abs(self.QL)))
         self.p_fs = self.bench.P_s - self.bench.P_r
         self.lk_fs = float(np.max(self.Qlk))
@@ -234,6 +239,13 @@ def identify_staged_slot(
     result = StagedSlotIdentification(start, start, curves)
     high_names = tuple(n for n in HIGH_GAIN if n not in fixed and (high_laps == "orifice" or n not in _PAIRS))
     low_names = tuple(n for n in LOW_GAIN if n not in fixed)
+    n_low = int(residuals.low.sum()) + 2 * residuals.Xb.size + residuals.Xl.size
+    for step, names, n_res in (("low-gain", low_names, n_low), ("high-gain", high_names, residuals.Xf.size)):
+        if n_res <= len(names):
+            raise ParameterError(
+                f"identification at {curves.temperature:g} degC: {n_res} points for the {len(names)} parameters of "
+                f"the {step} step ({', '.join(names)}); expected more points than parameters"
+            )
     valve = start
     for rnd in range(1, max_rounds + 1):
         before = np.array([_encode(n, valve.values) for n in low_names + high_names])

@@ -67,20 +67,50 @@ def read_bode(path: str | Path) -> FrequencyResponse:
             f"Bode file {str(path)!r}: missing column(s) {', '.join(missing)}; expected "
             "'frequency [Hz], amplitude [%], gain [dB], phase [deg]' (phase optional)"
         )
-    data = []
+    where = f"Bode file {str(path)!r}"
+    data: list[list[float]] = []
+    lines: list[int] = []
     for lineno, row in enumerate(reader, start=2):
-        try:
-            vals = [float(row[cols[k]]) for k in ("frequency", "amplitude", "gain")]
-            ph = row[cols["phase"]].strip() if "phase" in cols and cols["phase"] < len(row) else ""
-            vals.append(float(ph) if ph else math.nan)
-        except (ValueError, IndexError):
-            raise ParameterError(f"Bode file {str(path)!r}, row {lineno}: expected numbers, got {row}") from None
+        vals = []
+        for key in ("frequency", "amplitude", "gain", "phase"):
+            cell = row[cols[key]].strip() if key in cols and cols[key] < len(row) else ""
+            if key == "phase" and not cell:
+                vals.append(math.nan)  # gain-only data
+                continue
+            try:
+                value = float(cell)
+            except ValueError:
+                raise ParameterError(f"{where}, row {lineno}, {key}: {cell!r} is not a number") from None
+            if not math.isfinite(value):
+                raise ParameterError(f"{where}, row {lineno}, {key} = {cell!r}: expected a finite number")
+            vals.append(value)
+        f, a, _, _ = vals
+        if f <= 0:
+            raise ParameterError(f"{where}, row {lineno}: frequency {f:g} Hz; expected a positive frequency")
+        if not 0 < a <= 100:
+            raise ParameterError(f"{where}, row {lineno}: amplitude {a:g} %; expected 0 < amplitude <= 100 % of stroke")
         data.append(vals)
+        lines.append(lineno)
     if not data:
-        raise ParameterError(f"Bode file {str(path)!r}: no data rows")
+        raise ParameterError(f"{where}: no data rows")
     arr = np.array(data)
-    if np.any(arr[:, 0] <= 0) or np.any(arr[:, 1] <= 0):
-        raise ParameterError(f"Bode file {str(path)!r}: expected positive frequencies and amplitudes")
+    seen: dict[tuple[float, float], int] = {}
+    last: dict[float, tuple[float, int]] = {}
+    for (f, a, g, p), lineno in zip(arr, lines, strict=True):
+        if (f, a) in seen:
+            first = seen[(f, a)]
+            same = np.array_equal(arr[lines.index(first)], [f, a, g, p], equal_nan=True)
+            raise ParameterError(
+                f"{where}, row {lineno}: {f:g} Hz at {a:g} % again ({'the same as' if same else 'conflicting with'} "
+                f"row {first}); expected one row per frequency and amplitude"
+            )
+        seen[(f, a)] = lineno
+        if a in last and f <= last[a][0]:
+            raise ParameterError(
+                f"{where}, row {lineno}: {f:g} Hz after {last[a][0]:g} Hz (row {last[a][1]}) at {a:g} %; "
+                "expected increasing frequencies for each amplitude"
+            )
+        last[a] = (f, lineno)
     freqs = np.unique(arr[:, 0])
     amps = np.unique(arr[:, 1])
     gain = np.full((amps.size, freqs.size), np.nan)
@@ -91,7 +121,6 @@ def read_bode(path: str | Path) -> FrequencyResponse:
     if np.any(np.isnan(gain)):
         i, j = np.argwhere(np.isnan(gain))[0]
         raise ParameterError(
-            f"Bode file {str(path)!r}: no gain at {amps[i]:g} % and {freqs[j]:g} Hz; expected every amplitude at "
-            "every frequency"
+            f"{where}: no gain at {amps[i]:g} % and {freqs[j]:g} Hz; expected every amplitude at every frequency"
         )
     return FrequencyResponse(amps / 100.0, freqs, gain, phase, label=path.stem)

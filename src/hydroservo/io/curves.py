@@ -74,12 +74,27 @@ def read_csv_table(
         for lineno, row in enumerate(rows[1:], start=2):
             cell = row[i].strip() if i < len(row) else ""
             try:
-                vals.append(float(cell) if cell else np.nan)
+                number = float(cell) if cell else np.nan
             except ValueError:
                 raise ParameterError(f"{where}, row {lineno}, column {name}: {cell!r} is not a number") from None
+            if cell and not np.isfinite(number):
+                raise ParameterError(
+                    f"{where}, row {lineno}, column {name}: {cell!r}; expected a finite number "
+                    "(leave the cell empty for a missing value)"
+                )
+            vals.append(number)
         scale = 1.0 if unit in ("", "-") else to_si(f"1 {unit}", columns[name], what=f"{where}, column {name}")
         out[name] = np.array(vals) * scale
     return out, meta
+
+
+def _check_abscissa(where: str, x: np.ndarray, curves: Mapping[str, np.ndarray], name: str) -> None:
+    """Refuse a row that has a curve value but no abscissa (the point could not be placed)."""
+    for c, values in curves.items():
+        orphan = np.isfinite(values) & ~np.isfinite(x)
+        if orphan.any():
+            row = int(np.argmax(orphan)) + 2
+            raise ParameterError(f"{where}, row {row}: a value of {c} but no {name}; expected {name} in every row")
 
 
 def read_static_curves(path: str | Path) -> dict[str, np.ndarray]:
@@ -91,6 +106,7 @@ def read_static_curves(path: str | Path) -> dict[str, np.ndarray]:
             f"curves file {str(path)!r}: missing column(s) {', '.join(missing)}; expected 'x_s [-], P_L [-], "
             "q_lk [L/min]' and optionally 'Q_L [L/min]'"
         )
+    _check_abscissa(f"curves file {str(path)!r}", out["x_s"], {k: v for k, v in out.items() if k != "x_s"}, "x_s")
     if np.any(out["q_lk"][np.isfinite(out["q_lk"])] < 0):
         raise ParameterError(f"curves file {str(path)!r}: negative leakage flow in q_lk; expected >= 0")
     if np.any(np.abs(out["x_s"][np.isfinite(out["x_s"])]) > 1):
@@ -126,6 +142,7 @@ def read_bench_curves(paths: Sequence[str | Path]) -> BenchCurves:
                 f"{where}: expected a column 'X [um]' (or another length unit) and at least one of "
                 "'Q_L [L/min]', 'P_1 [bar]', 'P_2 [bar]', 'Q_lk [L/min]'"
             )
+        _check_abscissa(where, cols["X"], {c: cols[c] for c in tests}, "X")
         if ("P_1" in cols) != ("P_2" in cols):
             raise ParameterError(f"{where}: expected both P_1 and P_2 (the pressure-gain test), or neither")
         for c in tests:

@@ -33,10 +33,17 @@ def _dotted(node: ast.AST) -> str | None:
     return None
 
 
+#: Longest expression [characters]: aliases and initial conditions are short; a longer text is not one.
+MAX_LENGTH = 500
+
+
 def _parse(text: str, what: str) -> ast.Expression:
+    text = str(text).strip()
+    if len(text) > MAX_LENGTH:
+        raise ModelError(f"{what}: expression of {len(text)} characters; expected at most {MAX_LENGTH}")
     try:
-        return ast.parse(str(text).strip(), mode="eval")
-    except SyntaxError:
+        return ast.parse(text, mode="eval")
+    except (SyntaxError, RecursionError, MemoryError, ValueError):
         raise ModelError(f"{what}: cannot read expression {text!r}") from None
 
 
@@ -73,6 +80,8 @@ def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expressio
             return -val if isinstance(node.op, ast.USub) else val
         if isinstance(node, ast.BinOp):
             a, b = ev(node.left), ev(node.right)
+            if isinstance(node.op, ast.Div) and (b == 0 if isinstance(b, float) else ca.SX(b).is_zero()):
+                raise ModelError(f"{what}: {text!r} divides by zero")
             ops: dict[type[ast.operator], Callable[[], Any]] = {
                 ast.Add: lambda: a + b,
                 ast.Sub: lambda: a - b,
@@ -82,7 +91,13 @@ def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expressio
             }
             for op, fn in ops.items():
                 if isinstance(node.op, op):
-                    return fn()
+                    try:
+                        value = fn()
+                    except (ZeroDivisionError, OverflowError, ValueError):
+                        raise ModelError(f"{what}: {text!r} has no finite value") from None
+                    if isinstance(value, (float, complex)) and not (isinstance(value, float) and math.isfinite(value)):
+                        raise ModelError(f"{what}: {text!r} has no finite value")
+                    return value
         if (
             isinstance(node, ast.Call)
             and isinstance(node.func, ast.Name)
@@ -99,4 +114,7 @@ def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expressio
             raise ModelError(f"{what}: unknown name {name!r} in {text!r}")
         raise ModelError(f"{what}: {text!r} uses something other than numbers, names, + - * / ** and sqrt/abs/sin/cos")
 
-    return ev(tree.body)
+    try:
+        return ev(tree.body)
+    except RecursionError:
+        raise ModelError(f"{what}: expression {text!r} is nested too deeply") from None

@@ -287,9 +287,11 @@ class Model:
         i = int(np.argmax(np.abs(lam)))
         weight = np.abs(vec[:, i])
         names = [self.state_names[j] for j in np.argsort(-weight) if weight[j] > 0.3 * weight.max()][:3]
+        mode = lam[i]
+        shown = f"{mode.real:.3g}" if abs(mode.imag) <= 1e-9 * abs(mode) else f"{mode.real:.3g} ± {abs(mode.imag):.3g}j"
         text += (
-            f"; the fastest mode of the model linearised there has an eigenvalue of {lam[i]:.3g} 1/s "
-            f"(time scale {1 / abs(lam[i]):.3g} s), mostly in {', '.join(names)}"
+            f"; the fastest mode of the model linearised there has an eigenvalue of {shown} 1/s "
+            f"(time scale {1 / abs(mode):.3g} s), mostly in {', '.join(names)}"
         )
         grow = int(np.argmax(lam.real))
         if lam[grow].real > 1e-6 * abs(lam[i]):

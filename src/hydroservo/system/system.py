@@ -200,9 +200,14 @@ class System:
         key = self._structure_key()
         if self._model is not None and self._model_key == key:
             return self._model
-        for comp in self.components.values():
-            comp.check()
-        self._model = Model(*assemble(self))
+        try:
+            for comp in self.components.values():
+                comp.check()
+            self._model = Model(*assemble(self))
+        except (ModelError, ParameterError) as exc:
+            if self.source and not str(exc).startswith(self.source):
+                raise type(exc)(f"{self.source}: {exc}") from None
+            raise
         self._model_key = key
         return self._model
 
