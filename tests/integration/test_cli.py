@@ -58,3 +58,29 @@ def test_cli_models_and_validate(cli) -> None:
     assert code == 0
     rows = json.loads(out)["flight-simulator"]
     assert {r["verdict"] for r in rows} >= {"reproduced", "NOT reproduced"}
+
+
+IMPLAUSIBLE = ["--set", "source.amplitude=100 V", "--set", "cyl.k_stop=0", "--set", "cyl.c_stop=0", "--t-end", "2 s"]
+
+
+def test_cli_warns_of_an_implausible_result_and_strict_refuses_it(tmp_path, cli) -> None:
+    code, out, err = cli("simulate", "flight-simulator", *IMPLAUSIBLE, "--out", str(tmp_path / "a"), "--json")
+    assert code == 0
+    warnings = json.loads(out)["warnings"]
+    assert {w["signal"] for w in warnings} == {"load.x", "cyl.pA"}
+    assert all(w["message"] in err for w in warnings)  # and each is a warning line
+    code, out, err = cli("simulate", "flight-simulator", *IMPLAUSIBLE, "--out", str(tmp_path / "b"), "--strict")
+    assert code == 2 and "--strict" in err and "load.x" in err and "cyl.x_min" in err
+    assert not (tmp_path / "b").exists()  # nothing written
+    code, out, _ = cli("simulate", "flight-simulator", "--out", str(tmp_path / "c"), "--strict", "--json")
+    assert code == 0 and json.loads(out)["warnings"] == []
+
+
+@pytest.mark.parametrize(
+    ("option", "value"),
+    [("--rtol", "0"), ("--rtol", "nan"), ("--rtol", "1e10"), ("--rtol", "-1"), ("--points", "1"), ("--points", "2000000")],
+)
+def test_cli_solver_options_are_refused_up_front(option, value, cli, tmp_path) -> None:
+    code, _, err = cli("simulate", "flight-simulator", option, value, "--out", str(tmp_path))
+    assert code == 2 and option in err and (value in err or f"{float(value):g}" in err) and "Traceback" not in err
+    assert not any(tmp_path.iterdir())

@@ -108,7 +108,7 @@ def _check_solver_options(args: argparse.Namespace) -> None:
     try:
         SolverSettings(rtol=args.rtol)
     except ParameterError as exc:
-        raise ParameterError(f"--rtol {args.rtol}: {exc}") from None
+        raise ParameterError(f"--rtol {args.rtol:g}: {str(exc).split(': ', 1)[-1]}") from None
     if not 2 <= args.points <= MAX_POINTS:
         raise ParameterError(f"--points {args.points}: expected a whole number of output times from 2 to {MAX_POINTS}")
 

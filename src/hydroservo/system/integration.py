@@ -91,7 +91,7 @@ def output_grid(t_end: float, t_eval: Sequence[float] | None, n_points: int) -> 
             raise ParameterError("t_eval: expected a sequence of times [s]") from None
         if not np.all(np.isfinite(grid)):
             k = int(np.argmax(~np.isfinite(grid)))
-            raise ParameterError(f"t_eval[{k}] = {grid[k]!r}: expected finite times [s]")
+            raise ParameterError(f"t_eval[{k}] = {float(grid[k])}: expected finite times [s]")
         if grid.size < 2 or grid.size > MAX_POINTS:
             raise ParameterError(f"t_eval: {grid.size} times; expected 2 to {MAX_POINTS}")
         if np.any(np.diff(grid) <= 0):
