@@ -13,7 +13,7 @@ import contextlib
 import io
 import math
 import re
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -21,7 +21,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError
 
-__all__ = ["MAX_POINTS", "SolverSettings", "output_grid", "captured", "translate", "failure_point"]
+__all__ = ["MAX_POINTS", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
 
 #: Largest output grid [points]: 100 001 points of 20 signals are 16 MB; a million would be gigabytes.
 MAX_POINTS = 100_001
@@ -105,6 +105,29 @@ def output_grid(t_end: float, t_eval: Sequence[float] | None, n_points: int) -> 
     if isinstance(n_points, bool) or not isinstance(n_points, (int, np.integer)) or not 2 <= n_points <= MAX_POINTS:
         raise ParameterError(f"n_points = {n_points!r}: expected a whole number from 2 to {MAX_POINTS}")
     return np.linspace(0.0, float(t_end), int(n_points))
+
+
+def batch_columns(sets: Mapping[str, Any]) -> tuple[dict[str, list[Any]], int]:
+    """The values of a batch per parameter, and the number of runs; refuses what is not a batch.
+
+    A batch is a non-empty mapping of names to equally long, non-empty
+    sequences (a string is a single value, not a sequence of characters).
+    """
+    if not sets:
+        raise ParameterError("batch: no parameters to vary; give a mapping 'comp.param' -> sequence of values")
+    columns: dict[str, list[Any]] = {}
+    for name, vals in sets.items():
+        if isinstance(vals, (str, bytes)) or not isinstance(vals, Iterable):
+            raise ParameterError(f"batch: {name} = {vals!r}: expected a sequence of values, one per run")
+        columns[name] = list(np.asarray(vals).ravel()) if isinstance(vals, np.ndarray) else list(vals)
+    lengths = {k: len(v) for k, v in columns.items()}
+    if len(set(lengths.values())) != 1:
+        shown = ", ".join(f"{k}: {v}" for k, v in lengths.items())
+        raise ParameterError(f"batch: the sequences must be equally long; got {shown}")
+    n = next(iter(lengths.values()))
+    if n == 0:
+        raise ParameterError(f"batch: {', '.join(columns)}: empty sequences, no run to make")
+    return columns, n
 
 
 @contextlib.contextmanager

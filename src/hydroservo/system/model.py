@@ -20,7 +20,14 @@ import casadi as ca
 import numpy as np
 
 from hydroservo.errors import ParameterError, SolverError, TrimError
-from hydroservo.system.integration import SolverSettings, captured, failure_point, output_grid, translate
+from hydroservo.system.integration import (
+    SolverSettings,
+    batch_columns,
+    captured,
+    failure_point,
+    output_grid,
+    translate,
+)
 from hydroservo.system.plausibility import Implausible, Watched, check
 from hydroservo.system.result import BatchResult, Result
 from hydroservo.units import si_unit
@@ -478,28 +485,15 @@ class Model:
 
     def _batch_parameters(self, p_base: np.ndarray, sets: Mapping[str, Sequence[float] | np.ndarray]) -> np.ndarray:
         """The parameter matrix (parameters x runs) of a batch."""
-        if not sets:
-            raise ParameterError("batch: no parameters to vary; give a mapping name -> sequence of values")
-        columns: dict[str, np.ndarray] = {}
-        for name, vals in sets.items():
+        columns, n = batch_columns(sets)
+        P = np.tile(p_base[:, None], (1, n))
+        for name, vals in columns.items():
             if name not in self.parameter_names:
                 raise ParameterError(f"batch: unknown parameter {name!r} of {self.name!r}")
-            if isinstance(vals, (str, bytes)) or not hasattr(vals, "__len__"):
-                raise ParameterError(f"batch: {name} = {vals!r}: expected a sequence of values, one per run")
             try:
-                columns[name] = np.asarray(vals, dtype=float).ravel()
+                P[self.parameter_names.index(name)] = np.asarray(vals, dtype=float)
             except (TypeError, ValueError):
                 raise ParameterError(f"batch: {name}: expected numbers (SI), one per run") from None
-        lengths = {name: col.size for name, col in columns.items()}
-        if len(set(lengths.values())) != 1:
-            shown = ", ".join(f"{k}: {v}" for k, v in lengths.items())
-            raise ParameterError(f"batch: the sequences must be equally long; got {shown}")
-        n = next(iter(lengths.values()))
-        if n == 0:
-            raise ParameterError(f"batch: {', '.join(lengths)}: empty sequences, no run to make")
-        P = np.tile(p_base[:, None], (1, n))
-        for name, col in columns.items():
-            P[self.parameter_names.index(name)] = col
         return P
 
     def _solve_runs(

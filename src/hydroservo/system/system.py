@@ -20,6 +20,7 @@ import numpy as np
 from hydroservo.components.base import Component
 from hydroservo.errors import HydroservoError, ModelError, ParameterError
 from hydroservo.system.assembly import assemble
+from hydroservo.system.integration import batch_columns
 from hydroservo.system.model import Model
 from hydroservo.units import same_dimension, to_si
 
@@ -236,8 +237,9 @@ class System:
         """
         model = self.build()
         t = self.t_end if t_end is None else to_si(t_end, "s", what="t_end")
+        given, n = batch_columns(param_sets)
         columns: dict[str, list[Any]] = {}
-        for key, vals in (param_sets or {}).items():
+        for key, vals in given.items():
             cname, pname = split_name(key, "parameter")
             comp = self[cname]
             pname = comp.current_name(pname)
@@ -245,18 +247,7 @@ class System:
                 raise ParameterError(f"batch: {cname}.{pname} is an option (structural): set it with System.set")
             if pname not in comp.PARAMETERS:
                 comp.parse(pname, 0.0)  # raises the unknown-parameter error, with the known names
-            if isinstance(vals, (str, bytes)) or not isinstance(vals, Iterable):
-                raise ParameterError(f"batch: {cname}.{pname} = {vals!r}: expected a sequence of values, one per run")
-            columns[f"{cname}.{pname}"] = list(vals)
-        if not columns:
-            raise ParameterError("batch: no parameters to vary; give a mapping 'comp.param' -> sequence of values")
-        lengths = {k: len(v) for k, v in columns.items()}
-        if len(set(lengths.values())) != 1:
-            shown = ", ".join(f"{k}: {v}" for k, v in lengths.items())
-            raise ParameterError(f"batch: the sequences must be equally long; got {shown}")
-        n = next(iter(lengths.values()))
-        if n == 0:
-            raise ParameterError(f"batch: {', '.join(columns)}: empty sequences, no run to make")
+            columns[f"{cname}.{pname}"] = vals
         invalid: dict[int, str] = {}
         si: dict[str, np.ndarray] = {}
         for key, vals in columns.items():
