@@ -62,6 +62,11 @@ PROPERTIES = {
 }
 
 
+#: How far beyond its fitted temperature range a fluid model is extrapolated (with a warning) [K];
+#: beyond that it is refused: a polynomial fit says nothing about oil 500 K from its data.
+MAX_EXTRAPOLATION = 50.0
+
+
 @dataclass(frozen=True)
 class Fluid:
     """Base class: a named fluid with a range of validity (temperatures in degC, pressures in Pa gauge)."""
@@ -73,7 +78,8 @@ class Fluid:
 
     def check_range(self, p: Any, T: Any, strict: bool = False) -> None:
         """Refuse states no fluid can be in (non-finite values, temperatures at or below absolute zero,
-        pressures below vacuum); warn (or, with ``strict``, raise) when (p, T) leaves the validity range."""
+        pressures below vacuum) and temperatures more than :data:`MAX_EXTRAPOLATION` outside the model's
+        range; warn (or, with ``strict``, raise) when (p, T) leaves the validity range."""
         p_arr, T_arr = np.atleast_1d(np.asarray(p, float)), np.atleast_1d(np.asarray(T, float))
         if not (np.all(np.isfinite(p_arr)) and np.all(np.isfinite(T_arr))):
             raise ParameterError(f"fluid {self.name!r}: pressures and temperatures must be finite numbers")
@@ -84,6 +90,13 @@ class Fluid:
         if np.any(p_arr < VACUUM):
             raise ParameterError(
                 f"fluid {self.name!r}: pressure {p_arr.min():g} Pa (gauge); expected at least vacuum ({VACUUM:g} Pa gauge)"
+            )
+        lo, hi = self.T_range[0] - MAX_EXTRAPOLATION, self.T_range[1] + MAX_EXTRAPOLATION
+        if np.any(T_arr < lo) or np.any(T_arr > hi):
+            worst = T_arr.min() if T_arr.min() < lo else T_arr.max()
+            raise ParameterError(
+                f"fluid {self.name!r}: temperature {worst:g} degC is more than {MAX_EXTRAPOLATION:g} K outside the "
+                f"range of its model ({self.T_range[0]:g}..{self.T_range[1]:g} degC); expected {lo:g}..{hi:g} degC"
             )
         msgs = []
         if np.any(T_arr < self.T_range[0]) or np.any(T_arr > self.T_range[1]):

@@ -109,6 +109,12 @@ def _unit_tokens(unit: str) -> list[str]:
                 )
     if depth != 0:
         raise UnitError(f"unit {unit!r}: unbalanced parentheses")
+    for i, tok in enumerate(tokens):  # a number is an exponent, or a factor joined by * or /: never a second quantity
+        if _NUMBER.fullmatch(tok) and not (i > 0 and tokens[i - 1] in ("**", "^", "-", "+")):
+            before = tokens[i - 1] if i > 0 else None
+            after = tokens[i + 1] if i + 1 < len(tokens) else None
+            if before not in (None, "(", "*", "/") or after not in (None, ")", "*", "/") or before == after is None:
+                raise UnitError(f"unit {unit!r}: the number {tok!r} stands alone; expected one number, then a unit")
     return tokens
 
 
@@ -149,6 +155,11 @@ def is_bare_number(value: Any) -> bool:
     return False
 
 
+def _shown(text: str, limit: int = 60) -> str:
+    """``text`` quoted, shortened to ``limit`` characters for a message."""
+    return repr(text) if len(text) <= limit else repr(text[:limit]) + f"... ({len(text)} characters)"
+
+
 def split_quantity(text: str, *, what: str = "value") -> tuple[float, str]:
     """``"1500 psi"`` -> ``(1500.0, "psi")``: a finite number and the unit text after it (module notes)."""
     stripped = text.strip()
@@ -157,7 +168,7 @@ def split_quantity(text: str, *, what: str = "value") -> tuple[float, str]:
     match = _NUMBER.match(stripped)
     if match is None:
         raise UnitError(
-            f"{what}: cannot read {text!r} as a quantity; expected a number followed by a unit, "
+            f"{what}: cannot read {_shown(text)} as a quantity; expected a number followed by a unit, "
             "e.g. '1500 psi' or '25.5 L/min'"
         )
     magnitude = float(match.group())
@@ -180,7 +191,10 @@ def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
         try:
             q: pint.Quantity[Any] = reg.Quantity(magnitude, _unit(unit) if unit else "")
         except UnitError as exc:
-            raise UnitError(f"{what}: {exc}; expected a number followed by a unit, e.g. '1500 psi'") from None
+            raise UnitError(
+                f"{what}: cannot read {_shown(value)} as a quantity ({exc}); expected a number followed by a unit, "
+                "e.g. '1500 psi'"
+            ) from None
         if not isinstance(q, reg.Quantity):  # a bare number in a string
             q = reg.Quantity(float(q), "")
         return q

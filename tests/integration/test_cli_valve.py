@@ -122,7 +122,7 @@ def test_bode_and_fit_dynamics_cli(tmp_path: Path, cli) -> None:
         (["valve", "fit", "nonexistent.toml"], "cannot read"),
         (["valve", "fit", "KBSDG4V-3", "--match", "pressure-gain,speed"], "not a null characteristic"),
         (["valve", "bode", "KBSDG4V-3", "--amplitudes", "5,x"], "comma-separated numbers"),
-        (["valve", "bode", "KBSDG4V-3", "--amplitudes", "150"], "fractions of the stroke"),
+        (["valve", "bode", "KBSDG4V-3", "--amplitudes", "150"], "0 < amplitude <= 100 % of stroke"),
         (["valve", "fit-dynamics", "missing.csv"], "cannot read|No such file"),
     ],
 )

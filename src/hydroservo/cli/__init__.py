@@ -23,6 +23,7 @@ import argparse
 import sys
 import warnings
 from collections.abc import Sequence
+from typing import NoReturn
 
 from hydroservo.cli import examples, fluid, models, validate, valve
 from hydroservo.errors import FluidRangeWarning, HydroservoError, RenamedWarning
@@ -31,8 +32,15 @@ from hydroservo.version import __version__
 __all__ = ["main", "build_parser"]
 
 
+class _Parser(argparse.ArgumentParser):
+    """An argument parser whose errors look like every other error: one line, exit code 2."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"hydroservo: error: {self.prog}: {message} (see {self.prog} --help)\n")
+
+
 def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(
+    parser = _Parser(
         prog="hydroservo", description="Electro-hydraulic servo systems: simulate, export, validate."
     )
     parser.add_argument("--version", action="version", version=f"hydroservo {__version__}")

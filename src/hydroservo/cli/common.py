@@ -19,32 +19,58 @@ if TYPE_CHECKING:
 __all__ = ["numbers", "frequencies", "add_output_options", "output_folder", "print_json"]
 
 
-def numbers(text: str, what: str) -> list[float]:
-    """Comma-separated numbers, e.g. ``5,25,50``; an error naming the option ``what`` otherwise."""
+#: Most frequencies one command computes (each is a periodic orbit per amplitude).
+MAX_FREQUENCIES = 2000
+
+
+def numbers(
+    text: str,
+    what: str,
+    *,
+    above: float | None = None,
+    at_most: float | None = None,
+    expected: str = "",
+) -> list[float]:
+    """Comma-separated finite numbers, e.g. ``5,25,50``; each above ``above`` and at most ``at_most`` if given.
+
+    An error names the option ``what``, the value and ``expected``.
+    """
+    import math
+
     try:
         vals = [float(v) for v in text.split(",") if v.strip()]
     except ValueError:
         raise ParameterError(f"{what} {text!r}: expected comma-separated numbers, e.g. 5,25,50") from None
     if not vals:
         raise ParameterError(f"{what} {text!r}: expected at least one number")
+    for v in vals:
+        bad = not math.isfinite(v) or (above is not None and v <= above) or (at_most is not None and v > at_most)
+        if bad:
+            raise ParameterError(f"{what} {text!r}: {v:g} is not acceptable; expected {expected or 'finite numbers'}")
     return vals
 
 
 def frequencies(text: str) -> np.ndarray:
-    """``START:STOP:STEP`` or a comma-separated list of frequencies [Hz]."""
+    """``START:STOP:STEP`` or a comma-separated list of frequencies [Hz], at most :data:`MAX_FREQUENCIES`."""
+    import math
+
     import numpy as np
+
     if ":" in text:
         parts = text.split(":")
         try:
             lo, hi, step = (float(p) for p in parts)
         except ValueError:
             raise ParameterError(f"--frequencies {text!r}: expected START:STOP:STEP in Hz, e.g. 10:300:10") from None
-        if not (0 < lo <= hi and step > 0):
-            raise ParameterError(f"--frequencies {text!r}: expected 0 < START <= STOP and STEP > 0 [Hz]")
+        if not (all(math.isfinite(v) for v in (lo, hi, step)) and 0 < lo <= hi and step > 0):
+            raise ParameterError(f"--frequencies {text!r}: expected finite 0 < START <= STOP and STEP > 0 [Hz]")
+        count = math.floor((hi - lo) / step + 0.5) + 1
+        if count > MAX_FREQUENCIES:
+            raise ParameterError(f"--frequencies {text!r}: {count} frequencies; expected at most {MAX_FREQUENCIES}")
         return np.arange(lo, hi + step / 2, step)
-    vals = np.array(numbers(text, "--frequencies"))
-    if np.any(vals <= 0):
-        raise ParameterError(f"--frequencies {text!r}: expected positive frequencies [Hz]")
+    vals = np.array(numbers(text, "--frequencies", above=0.0, expected="positive, finite frequencies [Hz]"))
+    if vals.size > MAX_FREQUENCIES:
+        raise ParameterError(f"--frequencies: {vals.size} frequencies; expected at most {MAX_FREQUENCIES}")
     return vals
 
 

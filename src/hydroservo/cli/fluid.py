@@ -8,7 +8,7 @@ import warnings
 from typing import Any
 
 from hydroservo.errors import ParameterError
-from hydroservo.units import from_si, parse_quantity, to_si
+from hydroservo.units import ABSOLUTE_ZERO, VACUUM, from_si, parse_quantity, to_si
 
 __all__ = ["add_parsers"]
 
@@ -58,10 +58,21 @@ def cmd_fluid(args: argparse.Namespace) -> int:
             raise ParameterError(f"property {args.property!r}: expected one of {', '.join(PROPERTIES)} or all")
     temps = _values(args.temperature, "degC", "degC", "--temperature")
     press = _values(args.pressure, "Pa", "Pa", "--pressure")
+    for t in temps:
+        if not t > ABSOLUTE_ZERO:
+            raise ParameterError(f"--temperature {args.temperature!r}: {t:g} degC; expected above absolute zero (-273.15 degC)")
+    for pr in press:
+        if pr < VACUUM:
+            raise ParameterError(
+                f"--pressure {args.pressure!r}: {pr:g} Pa (gauge); expected at least vacuum ({VACUUM:g} Pa gauge)"
+            )
     T, P = np.meshgrid(temps, press, indexing="ij")
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        fluid.check_range(P, T, strict=args.strict)
+        try:
+            fluid.check_range(P, T, strict=args.strict)
+        except ParameterError as exc:
+            raise ParameterError(f"--temperature {args.temperature!r}, --pressure {args.pressure!r}: {exc}") from None
     with np.errstate(all="ignore"):
         values = {p: np.asarray(getattr(fluid, p)(P, T), dtype=float) for p in props}
     for p in props:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import sys
 import time
 from collections.abc import Sequence
@@ -19,7 +20,7 @@ def _parse_sets(items: Sequence[str]) -> list[tuple[str, str]]:
     out = []
     for item in items:
         if "=" not in item:
-            raise ParameterError(f'--set {item!r}: expected COMPONENT.PARAMETER=VALUE, e.g. --set "load.W=3000 lbf"')
+            raise ParameterError(f'--set {_short(item)!r}: expected COMPONENT.PARAMETER=VALUE, e.g. --set "load.W=3000 lbf"')
         key, val = item.split("=", 1)
         out.append((key.strip(), val.strip()))
     return out
@@ -32,22 +33,36 @@ def load_with_sets(name: str, sets: Sequence[str]) -> Any:
     system = load_model(name)
     for key, val in _parse_sets(sets):
         if key.count(".") != 1:
-            raise ParameterError(f"--set {key}={val}: expected COMPONENT.PARAMETER, e.g. load.W")
+            raise ParameterError(f"--set {_short(key)}={_short(val)}: expected COMPONENT.PARAMETER, e.g. load.W")
         cname, pname = key.split(".")
         if cname not in system.components:
             raise ParameterError(
-                f"--set {key}={val}: no component {cname!r}; components: {', '.join(system.components)}"
+                f"--set {_short(key)}={_short(val)}: no component {cname!r}; components: {', '.join(system.components)}"
             )
         comp = system.components[cname]
         known = set(comp.PARAMETERS) | set(comp.OPTIONS) | set(comp.RENAMED)
         if pname not in known:
             names = ", ".join(list(comp.PARAMETERS) + list(comp.OPTIONS))
-            raise ParameterError(f"--set {key}={val}: {cname!r} has no parameter {pname!r}; parameters: {names}")
+            raise ParameterError(
+                f"--set {_short(key)}={_short(val)}: {cname!r} has no parameter {pname!r}; parameters: {names}"
+            )
         try:
             system.set(key, val)
         except HydroservoError as exc:
-            raise ParameterError(f"--set {key}={val}: {exc}") from None
+            raise ParameterError(f"--set {key}={_short(val)}: {exc}") from None
+    touched: dict[str, list[str]] = {}
+    for key, val in _parse_sets(sets):
+        touched.setdefault(key.split(".")[0], []).append(f"{key}={_short(val)}")
+    for cname, items in touched.items():  # a cross-parameter check the --set values break is theirs, not the file's
+        try:
+            system.components[cname].check()
+        except HydroservoError as exc:
+            raise ParameterError(f"--set {', '.join(items)}: {exc}") from None
     return system
+
+
+def _short(text: str, limit: int = 60) -> str:
+    return text if len(text) <= limit else f"{text[:limit]}... ({len(text)} characters)"
 
 
 def cmd_models(args: argparse.Namespace) -> int:
@@ -146,8 +161,8 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     _check_solver_options(args)
     system = load_with_sets(args.model, args.set)
     t_end = to_si(args.t_end, "s", what="--t-end") if args.t_end is not None else system.t_end
-    if not t_end > 0:
-        raise ParameterError(f"--t-end {args.t_end}: expected a positive duration")
+    if not (math.isfinite(t_end) and t_end > 0):
+        raise ParameterError(f"--t-end {args.t_end}: expected a positive, finite duration")
     name = safe_name(system.name)
     out = output_folder(args, f"hydroservo-{name}")
     out.expect([f"{name}.csv", f"{name}.png"])

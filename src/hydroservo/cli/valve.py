@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 from hydroservo.cli import valve_bench
 from hydroservo.cli.common import add_output_options, frequencies, numbers, output_folder
-from hydroservo.errors import ParameterError
+from hydroservo.errors import HydroservoError, ParameterError
 
 if TYPE_CHECKING:
     import numpy as np
@@ -193,7 +193,9 @@ def cmd_bode(args: argparse.Namespace) -> int:
     from hydroservo.io.bode import write_bode
 
     model, params = _dynamics(args.params)
-    amps = np.array(numbers(args.amplitudes, "--amplitudes")) / 100.0
+    amps = np.array(
+        numbers(args.amplitudes, "--amplitudes", above=0.0, at_most=100.0, expected="0 < amplitude <= 100 % of stroke")
+    ) / 100.0
     freqs = frequencies(args.frequencies)
     resp = spool_response(params, amps, freqs, model, label=model)
     stem = Path(args.params).stem
@@ -263,12 +265,19 @@ def _spool_file(fit: Any, bode: str) -> str:
 
 
 def cmd_fit_dynamics(args: argparse.Namespace) -> int:
-    from hydroservo.identification.spool_dynamics import SPOOL_MODELS, fit_spool_dynamics
+    from hydroservo.identification.spool_dynamics import SPOOL_MODELS, check_start, fit_spool_dynamics
     from hydroservo.io.bode import read_bode
 
     data = read_bode(args.bode)
     models = list(SPOOL_MODELS) if args.model == "all" else [args.model]
     start = _start(args.start)
+    if start and len(models) > 1:
+        raise ParameterError(f"--start {args.start!r}: starting values apply to one model; expected --model with one")
+    if start:
+        try:
+            check_start(models[0], start)
+        except HydroservoError as exc:
+            raise ParameterError(f"--start {args.start!r}: {exc}") from None
     out = output_folder(args, f"hydroservo-fit-{Path(args.bode).stem}")
     out.expect(["fit.png"] + [f"spool_{m}.toml" for m in models])
     fits = {m: fit_spool_dynamics(data, m, start if len(models) == 1 else None) for m in models}

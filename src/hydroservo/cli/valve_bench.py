@@ -16,10 +16,16 @@ if TYPE_CHECKING:
 __all__ = ["add_parsers"]
 
 
+#: Most openings per test curve (each is a bridge solved at every opening).
+MAX_OPENINGS = 10_001
+
+
 def _temperatures(text: str, what: str) -> list[float]:
+    from hydroservo.units import ABSOLUTE_ZERO
+
     if text.strip().lower().endswith(("degc", "°c", "c")):
         raise ParameterError(f"{what} {text!r}: give bare numbers in degC, e.g. -40,-15,32")
-    return numbers(text, what)
+    return numbers(text, what, above=ABSOLUTE_ZERO, expected="finite temperatures above absolute zero [degC]")
 
 
 def _metrics_table(table: dict[str, Any]) -> list[str]:
@@ -80,8 +86,12 @@ def cmd_characteristics(args: argparse.Namespace) -> int:
     if bench is None:
         raise ParameterError(f"{args.params}: no [bench] table; expected P_s and X_n (the test conditions)")
     temps = _temperatures(args.temperature, "--temperature")
-    if args.points < 21:
-        raise ParameterError(f"--points {args.points}: expected at least 21 openings")
+    if not 21 <= args.points <= MAX_OPENINGS:
+        raise ParameterError(f"--points {args.points}: expected 21 to {MAX_OPENINGS} openings")
+    if args.reference is not None and args.reference not in temps:
+        raise ParameterError(
+            f"--reference {args.reference:g}: expected one of the temperatures {', '.join(f'{t:g}' for t in temps)}"
+        )
     stem = Path(args.params).stem
     out = output_folder(args, f"hydroservo-characteristics-{stem}")
     tables = [f"T{t:g}_{name}.csv" for t in temps for name in ("flow_gain", "blocked_ports")]

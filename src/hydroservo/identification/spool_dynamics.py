@@ -42,7 +42,16 @@ from hydroservo.errors import ParameterError, SolverError
 from hydroservo.system.system import System
 from hydroservo.units import to_si
 
-__all__ = ["SPOOL_MODELS", "SPOOL_COMPONENTS", "SpoolFit", "fidelity_of", "spool_system", "spool_response", "fit_spool_dynamics"]
+__all__ = [
+    "SPOOL_MODELS",
+    "SPOOL_COMPONENTS",
+    "SpoolFit",
+    "fidelity_of",
+    "spool_system",
+    "spool_response",
+    "check_start",
+    "fit_spool_dynamics",
+]
 
 _PENALTY_DB = 1e3
 
@@ -109,6 +118,13 @@ def _check_params(model: str, params: Mapping[str, Any], what: str) -> dict[str,
     return out
 
 
+def check_start(model: str, start: Mapping[str, Any]) -> dict[str, float]:
+    """Starting values of a fit of ``model`` (units allowed), checked and in SI."""
+    if model not in SPOOL_MODELS:
+        raise ParameterError(f"spool model {model!r}: expected one of {', '.join(SPOOL_MODELS)}")
+    return _check_params(model, start, "start")
+
+
 def spool_response(
     params: Mapping[str, Any],
     amplitudes: Sequence[float] | np.ndarray,
@@ -139,7 +155,8 @@ def _check_amplitudes(amps: np.ndarray) -> None:
 
 def _check_data(data: FrequencyResponse, model: str) -> None:
     """Refuse Bode data the model's parameters cannot be fitted to."""
-    where = f"Bode data {data.label!r}" if data.label else "Bode data"
+    source = data.info.get("source") if isinstance(data.info, dict) else None
+    where = f"Bode file {source!r}" if source else (f"Bode data {data.label!r}" if data.label else "Bode data")
     _check_amplitudes(data.amplitudes)
     f = data.frequencies
     if not np.all(np.isfinite(f)) or np.any(f <= 0) or np.any(np.diff(f) <= 0):

@@ -56,6 +56,7 @@ on the start within the unidentifiable direction.
 from __future__ import annotations
 
 import dataclasses
+import math
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -232,6 +233,8 @@ def identify_staged_slot(
         )
     if high_laps not in ("pairs", "orifice"):
         raise ParameterError(f"high_laps = {high_laps!r}: expected 'pairs' or 'orifice'")
+    if len(weights) != 2 or not all(math.isfinite(w) and w >= 0 for w in weights):
+        raise ParameterError(f"weights = {tuple(weights)!r}: expected two non-negative, finite numbers (w_P, w_lk)")
     sw = curves.bench.flow_ranges[0][1] if switch is None else float(switch)
     if not 0 < sw <= 1:
         raise ParameterError(f"switch = {sw:g}: expected a fraction of X_n in (0, 1]")

@@ -123,4 +123,4 @@ def read_bode(path: str | Path) -> FrequencyResponse:
         raise ParameterError(
             f"{where}: no gain at {amps[i]:g} % and {freqs[j]:g} Hz; expected every amplitude at every frequency"
         )
-    return FrequencyResponse(amps / 100.0, freqs, gain, phase, label=path.stem)
+    return FrequencyResponse(amps / 100.0, freqs, gain, phase, label=path.stem, info={"source": str(path)})

@@ -88,13 +88,21 @@ def read_csv_table(
     return out, meta
 
 
+#: Fewest points of a curve that a fit can use.
+MIN_POINTS = 3
+
+
 def _check_abscissa(where: str, x: np.ndarray, curves: Mapping[str, np.ndarray], name: str) -> None:
-    """Refuse a row that has a curve value but no abscissa (the point could not be placed)."""
+    """Refuse a row that has a curve value but no abscissa (the point could not be placed), and a curve
+    of fewer than :data:`MIN_POINTS` points."""
     for c, values in curves.items():
         orphan = np.isfinite(values) & ~np.isfinite(x)
         if orphan.any():
             row = int(np.argmax(orphan)) + 2
             raise ParameterError(f"{where}, row {row}: a value of {c} but no {name}; expected {name} in every row")
+        count = int(np.sum(np.isfinite(values) & np.isfinite(x)))
+        if count < MIN_POINTS:
+            raise ParameterError(f"{where}: {count} point(s) of {c}; expected at least {MIN_POINTS}")
 
 
 def read_static_curves(path: str | Path) -> dict[str, np.ndarray]:
@@ -142,9 +150,9 @@ def read_bench_curves(paths: Sequence[str | Path]) -> BenchCurves:
                 f"{where}: expected a column 'X [um]' (or another length unit) and at least one of "
                 "'Q_L [L/min]', 'P_1 [bar]', 'P_2 [bar]', 'Q_lk [L/min]'"
             )
-        _check_abscissa(where, cols["X"], {c: cols[c] for c in tests}, "X")
         if ("P_1" in cols) != ("P_2" in cols):
             raise ParameterError(f"{where}: expected both P_1 and P_2 (the pressure-gain test), or neither")
+        _check_abscissa(where, cols["X"], {c: cols[c] for c in tests}, "X")
         for c in tests:
             if c in arrays:
                 raise ParameterError(f"{where}: column {c} is also in another file; expected each curve once")

@@ -74,6 +74,12 @@ class OutputFolder:
         self.staging: Path | None = None
         if self.target.exists() and not self.target.is_dir():
             raise ParameterError(f"{what} {str(self.target)!r}: exists and is not a folder; expected a folder")
+        anchor = self.target.absolute()
+        while not anchor.exists():
+            anchor = anchor.parent
+        if not anchor.is_dir():
+            raise ParameterError(f"{what} {str(self.target)!r}: {str(anchor)!r} is a file, not a folder; expected a folder")
+        self.anchor = anchor
 
     def expect(self, names: list[str]) -> None:
         """Refuse now if any of ``names`` exists in the target folder and ``force`` is not set."""
@@ -85,17 +91,17 @@ class OutputFolder:
             )
 
     def __enter__(self) -> OutputFolder:
-        anchor = self.target
-        while not anchor.exists():
-            anchor = anchor.parent
-        self.staging = Path(tempfile.mkdtemp(prefix=".hydroservo-", dir=anchor))
+        try:
+            self.staging = Path(tempfile.mkdtemp(prefix=".hydroservo-", dir=self.anchor))
+        except OSError as exc:
+            raise ParameterError(f"{self.what} {str(self.target)!r}: cannot write there ({exc.strerror})") from None
         return self
 
     def file(self, name: str) -> Path:
         """Where to write the output file ``name`` (a plain name)."""
         if self.staging is None:
             raise RuntimeError("OutputFolder.file() outside its with block")
-        if name != safe_name(name, fallback=""):
+        if not name or _UNSAFE.search(name) or name.startswith((".", "-")) or ".." in name or len(name) > 255:
             raise ParameterError(f"output file name {name!r}: expected a plain name (letters, digits, . _ -)")
         return self.staging / name
 
@@ -125,6 +131,9 @@ class OutputFolder:
     def _commit(self, staging: Path) -> None:
         names = sorted(p.name for p in staging.iterdir())
         self.expect(names)
-        self.target.mkdir(parents=True, exist_ok=True)
+        try:
+            self.target.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise ParameterError(f"{self.what} {str(self.target)!r}: cannot create the folder ({exc.strerror})") from None
         for name in names:
             os.replace(staging / name, self.target / name)

@@ -165,6 +165,10 @@ def load_model(name_or_path: str | Path) -> System:
     import tomllib
 
     key = str(name_or_path)
+    if not key.strip():
+        raise ModelFileError(
+            f"model name {key!r}: empty; expected a built-in model ({', '.join(model_names())}) or a model file (.toml)"
+        )
     if key in model_names():
         system = system_from_dict(tomllib.loads(model_text(key)), where=f"built-in model {key!r}")
         system.source = f"built-in:{key}"
@@ -217,6 +221,8 @@ def _add_components(system: System, comps: Any, where: str, base: Path | None) -
         try:
             system.add(cls(cname, **kwargs))
         except (HydroservoError, TypeError) as exc:
+            if isinstance(raw, dict) and "file" in raw and str(raw["file"]).lower().endswith(".toml"):
+                ctx += f" with its parameter file {str(raw['file'])!r}"  # the value may be in either
             raise ModelFileError(f"{ctx}: {exc}") from None
 
 
@@ -241,10 +247,21 @@ def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | No
     system = System(str(meta.get("name", Path(where).stem)), str(meta.get("description", "")), t_end=t_end)
     system.meta = {k: str(meta[k]) for k in _META if k in meta}
     plots = meta.get("plots", [])
-    if not isinstance(plots, list) or not all(isinstance(p, (str, list)) for p in plots):
-        raise ModelFileError(f"{where}: [model] plots: expected a list of signal names or lists of names")
-    system.plots = [[p] if isinstance(p, str) else [str(n) for n in p] for p in plots]
-    system.plot_units = {str(k): str(v) for k, v in meta.get("plot_units", {}).items()}
+    panels_ok = isinstance(plots, list) and all(
+        isinstance(p, str) or (isinstance(p, list) and p and all(isinstance(n, str) for n in p)) for p in plots
+    )
+    if not panels_ok:
+        raise ModelFileError(
+            f"{where}: [model] plots = {plots!r}: expected a list of panels, each a signal name or a non-empty "
+            'list of names, e.g. [["p1", "p2"], ["y"]]'
+        )
+    system.plots = [[p] if isinstance(p, str) else list(p) for p in plots]
+    units = meta.get("plot_units", {})
+    if not isinstance(units, dict) or not all(isinstance(v, str) for v in units.values()):
+        raise ModelFileError(
+            f'{where}: [model] plot_units = {units!r}: expected a table of signal = "unit", e.g. {{ p1 = "psi" }}'
+        )
+    system.plot_units = {str(k): v for k, v in units.items()}
     _add_components(system, data.get("components"), where, base)
     for target, source in data.get("connections", {}).items():
         if not isinstance(source, str):

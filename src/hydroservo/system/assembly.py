@@ -17,7 +17,7 @@ import numpy as np
 
 from hydroservo.components.base import Component
 from hydroservo.errors import ModelError
-from hydroservo.system.expressions import evaluate
+from hydroservo.system.expressions import check_dimension, evaluate
 from hydroservo.system.plausibility import Watched
 
 __all__ = ["Structure", "assemble"]
@@ -155,6 +155,7 @@ def _outputs(
     system = asm.system
     outputs = _Columns()
     signals: dict[str, Any] = dict(zip(states.names, states.exprs, strict=True))
+    param_units = {f"{c}.{k}": spec.unit for c, comp in system.components.items() for k, spec in comp.PARAMETERS.items()}
     for cname, comp in system.components.items():
         for oname, spec in comp.OUTPUTS.items():
             full = f"{cname}.{oname}"
@@ -167,6 +168,7 @@ def _outputs(
         if aname in signals:
             raise ModelError(f"alias {aname!r} clashes with a signal name")
         outputs.add(aname, evaluate(alias.expr, {**signals, **params}, what=f"alias {aname!r}"))
+        check_dimension(alias.expr, {**param_units, **units}, alias.unit, what=f"alias {aname!r}")
         units[aname], descriptions[aname] = alias.unit, alias.description or alias.expr
     return outputs
 

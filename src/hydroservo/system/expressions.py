@@ -18,7 +18,7 @@ import casadi as ca
 
 from hydroservo.errors import ModelError
 
-__all__ = ["evaluate", "names_in"]
+__all__ = ["evaluate", "names_in", "check_dimension"]
 
 _FUNCS: dict[str, Callable[[Any], Any]] = {"sqrt": ca.sqrt, "abs": ca.fabs, "sin": ca.sin, "cos": ca.cos}
 _CONSTS = {"pi": math.pi}
@@ -118,3 +118,62 @@ def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expressio
         return ev(tree.body)
     except RecursionError:
         raise ModelError(f"{what}: expression {text!r} is nested too deeply") from None
+
+
+def check_dimension(text: str, units: Mapping[str, str], declared: str, what: str = "expression") -> None:
+    """Refuse an expression whose dimension is not that of ``declared``, or that adds unlike quantities.
+
+    The expression is evaluated once on quantities of magnitude 1 in each
+    name's unit (``units``: name -> unit), so ``load.x + cyl.pA`` and a length
+    declared in bar are found when the model is built.
+    """
+    from hydroservo.units import registry
+
+    reg = registry()
+    one = {name: reg.Quantity(1.0, unit or "") for name, unit in units.items()}
+    funcs: dict[str, Callable[[Any], Any]] = {"sqrt": lambda q: q**0.5, "abs": abs, "sin": _dimensionless, "cos": _dimensionless}
+    try:
+        value = _evaluate_with(_parse(text, what).body, one, funcs)
+    except ModelError:
+        raise
+    except Exception as exc:  # pint's DimensionalityError and the like
+        raise ModelError(f"{what}: {text!r} mixes quantities of different dimensions: {exc}") from None
+    got = value if isinstance(value, reg.Quantity) else reg.Quantity(value, "")
+    want = reg.Quantity(1.0, declared or "")
+    if got.dimensionality != want.dimensionality:
+        raise ModelError(
+            f"{what}: {text!r} is a quantity of dimension {got.dimensionality} (in {got.units:~P}), "
+            f"but its unit is declared {declared or 'dimensionless'!r} ({want.dimensionality})"
+        )
+
+
+def _dimensionless(q: Any) -> Any:
+    if hasattr(q, "dimensionless") and not q.dimensionless:
+        raise ValueError(f"sin and cos take dimensionless arguments, not {q.units}")
+    return 1.0
+
+
+def _evaluate_with(node: ast.AST, names: Mapping[str, Any], funcs: Mapping[str, Callable[[Any], Any]]) -> Any:
+    """The value of a parsed expression (already known to be of the safe language) on ``names``."""
+    if isinstance(node, ast.Constant):
+        return float(node.value)  # type: ignore[arg-type]  # numbers only: evaluate() checked the text
+    if isinstance(node, ast.UnaryOp):
+        val = _evaluate_with(node.operand, names, funcs)
+        return -val if isinstance(node.op, ast.USub) else val
+    if isinstance(node, ast.BinOp):
+        a, b = _evaluate_with(node.left, names, funcs), _evaluate_with(node.right, names, funcs)
+        if isinstance(node.op, ast.Add):
+            return a + b
+        if isinstance(node.op, ast.Sub):
+            return a - b
+        if isinstance(node.op, ast.Mult):
+            return a * b
+        if isinstance(node.op, ast.Div):
+            return a / b
+        return a**b
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
+        return funcs[node.func.id](_evaluate_with(node.args[0], names, funcs))
+    name = _dotted(node)
+    if name is not None and name in names:
+        return names[name]
+    return _CONSTS.get(name or "", 1.0)

@@ -105,12 +105,8 @@ class Model:
             if len(self._integrators) > 16:
                 self._integrators.clear()
                 self._batch_maps.clear()
-            opts = {
-                "abstol": settings.atol,
-                "reltol": settings.rtol,
-                "max_num_steps": steps,
-                "disable_internal_warnings": True,
-            }
+            # CVODES' own warnings stay on: they are captured, and on a failure they give its time and step
+            opts = {"abstol": settings.atol, "reltol": settings.rtol, "max_num_steps": steps}
             self._integrators[key] = ca.integrator(
                 "sim", "cvodes", self._dae, float(grid[0]), [float(g) for g in grid], opts
             )
@@ -215,10 +211,10 @@ class Model:
         integ = self._integrator(grid, settings)
         start = time.perf_counter()
         try:
-            with captured():
+            with captured() as printed:
                 xf = integ(x0=x0 / self.nominal, p=p)["xf"]
         except RuntimeError as exc:
-            raise self._diagnose(str(exc), grid, x0, p, settings) from None
+            raise self._diagnose(str(exc), printed.getvalue(), grid, x0, p, settings) from None
         wall = time.perf_counter() - start
         X = np.asarray(xf, dtype=float) * self.nominal[:, None]
         if not np.all(np.isfinite(X)):
@@ -236,47 +232,65 @@ class Model:
         return self._result(grid, X, p, stats)
 
     def _diagnose(
-        self, message: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, settings: SolverSettings
+        self,
+        message: str,
+        printed: str,
+        grid: np.ndarray,
+        x0: np.ndarray,
+        p: np.ndarray,
+        settings: SolverSettings,
     ) -> SolverError:
         """Where and why a run failed, at the cost of one more integration.
 
-        The run is repeated one output interval at a time, so the last state
-        reached is known, and CVODES may say at what time and step size it gave
-        up; the model linearised at that state names the fastest mode.
+        The run is repeated one output interval at a time, so the state at the
+        start of the failing interval is known, and CVODES says at what time and
+        step size it gave up (in the re-run, or in ``printed``, what the original
+        run printed, when the re-run passes); the model linearised there names
+        the fastest mode.
         """
         reason = translate(message)
+        t_fail, h_fail = failure_point(printed)
         steps = settings.steps_per_interval(grid.size - 1)
         step = self._interval_integrator(settings, steps)
         z = x0 / self.nominal
-        printed, k, failed = "", 0, False
+        reached = [z]  # scaled states at grid[0], grid[1], ... as far as the re-run gets
+        k_fail: int | None = None
         for k in range(grid.size - 1):
             h = float(grid[k + 1] - grid[k])
             try:
                 with captured() as out:
                     nxt = np.asarray(step(x0=z, p=np.concatenate([p, [grid[k], h]]))["xf"], dtype=float).ravel()
-            except RuntimeError as exc:
-                printed, reason, failed = out.getvalue(), translate(str(exc)), True
+            except RuntimeError:
+                k_fail = k
+                tau, h_tau = failure_point(out.getvalue())  # in the re-run's normalised time
+                if tau is not None:  # the re-run's failure, consistent with the state it reached
+                    t_fail, h_fail = grid[k] + tau * h, (None if h_tau is None else abs(h_tau) * h)
+                elif t_fail is not None and not grid[k] <= t_fail <= grid[k + 1]:
+                    t_fail = h_fail = None  # the original run gave up elsewhere: not this interval's figures
                 break
             if not np.all(np.isfinite(nxt)):
-                reason, failed = "the solution became NaN or Inf", True
+                k_fail = k
                 break
             z = nxt
-        x = z * self.nominal
-        if not failed:
-            return SolverError(
-                f"integration of {self.name!r} failed: {reason}; repeated one output interval at a time it did "
-                f"not fail, so the failure depends on the step history: tighten rtol or refine the output grid"
+            reached.append(z)
+        if k_fail is None:  # the re-run passed: the original failure time places the interval
+            k_fail = grid.size - 2 if t_fail is None else int(np.clip(np.searchsorted(grid, t_fail) - 1, 0, grid.size - 2))
+            note = (
+                "; repeated one output interval at a time it did not fail, so the failure depends on the step "
+                "history: tighten rtol or refine the output grid"
             )
-        t0, t1 = float(grid[k]), float(grid[k + 1])
+        else:
+            note = ""
+        t0, t1 = float(grid[k_fail]), float(grid[k_fail + 1])
         where = f"integration of {self.name!r} failed between t = {t0:.6g} s and {t1:.6g} s: {reason}"
-        tau, h_tau = failure_point(printed)
-        if tau is not None:
-            where += f"; CVODES stopped at t = {t0 + tau * (t1 - t0):.6g} s"
-            if h_tau is not None:
-                where += f" with a step of {abs(h_tau) * (t1 - t0):.3g} s"
-            elif "TOO_MUCH_WORK" in message or "budget" in reason:
-                where += f" after {steps} steps in this interval (mean step {max(tau, 0.0) * (t1 - t0) / steps:.3g} s)"
-        return SolverError(f"{where}. {self._hint(t0, x, p)}")
+        if t_fail is not None:
+            where += f"; CVODES stopped at t = {t_fail:.6g} s"
+            if h_fail is not None:
+                where += f" with a step of {abs(h_fail):.3g} s"
+            elif "TOO_MUCH_WORK" in message:
+                where += f" after {steps} steps in this interval (mean step {max(t_fail - t0, 0.0) / steps:.3g} s)"
+        x = reached[min(k_fail, len(reached) - 1)] * self.nominal
+        return SolverError(f"{where}{note}. {self._hint(t0, x, p)}")
 
     def _hint(self, t: float, x: np.ndarray, p: np.ndarray) -> str:
         """The state changing fastest at (t, x), and the fastest mode of the model linearised there."""

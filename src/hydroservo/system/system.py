@@ -18,11 +18,11 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from hydroservo.components.base import Component
-from hydroservo.errors import HydroservoError, ModelError, ParameterError
+from hydroservo.errors import HydroservoError, ModelError, ParameterError, UnitError
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import batch_columns
 from hydroservo.system.model import Model
-from hydroservo.units import same_dimension, to_si
+from hydroservo.units import check_unit, same_dimension, to_si
 
 if TYPE_CHECKING:
     from hydroservo.system.result import BatchResult, Result
@@ -124,6 +124,12 @@ class System:
         """Name an expression of signals, e.g. ``alias("y", "-load.x", "m")``."""
         if not name.isidentifier():
             raise ModelError(f"alias {name!r}: expected an identifier")
+        if not isinstance(unit, str):
+            raise ModelError(f"alias {name!r}: unit {unit!r}: expected a unit name such as 'mm'")
+        try:
+            check_unit(unit)
+        except UnitError as exc:
+            raise ModelError(f"alias {name!r}: {exc}") from None
         self.aliases[name] = Alias(str(expr), unit, description)
 
     def set_initial(self, state: str, value: str | float) -> None:
