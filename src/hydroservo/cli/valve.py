@@ -109,11 +109,11 @@ def cmd_fit(args: argparse.Namespace) -> int:
     curves = read_static_curves(args.curves) if args.curves else None
     if curves is not None and args.match:
         raise ParameterError("--match applies to a datasheet fit; with --curves every curve is fitted by least squares")
-    fit = fit_curves(curves, ds, args.structure) if curves is not None else fit_datasheet(ds, args.structure, args.match)
     name = ds.name or Path(str(args.datasheet)).stem
     slug = "".join(ch if ch.isalnum() or ch in "-_" else "-" for ch in Path(str(args.datasheet)).stem)
     out = output_folder(args, f"hydroservo-valve-{slug}")
     out.expect([f"{k}.png" for k in _FIT_FILES] + ["valve.toml"])
+    fit = fit_curves(curves, ds, args.structure) if curves is not None else fit_datasheet(ds, args.structure, args.match)
     what = "least squares on the measured curves" if curves is not None else f"matching {' and '.join(fit.match)}"
     shown = _shown(fit.characteristics())
     given = _shown({k: getattr(ds, k) for k in _NULL if getattr(ds, k) is not None})
@@ -197,10 +197,10 @@ def cmd_bode(args: argparse.Namespace) -> int:
         numbers(args.amplitudes, "--amplitudes", above=0.0, at_most=100.0, expected="0 < amplitude <= 100 % of stroke")
     ) / 100.0
     freqs = frequencies(args.frequencies)
-    resp = spool_response(params, amps, freqs, model, label=model)
     stem = Path(args.params).stem
     out = output_folder(args, f"hydroservo-bode-{stem}")
     out.expect(["bode.csv", "bode.png"])
+    resp = spool_response(params, amps, freqs, model, label=model)
     with out:
         write_bode(resp, out.file("bode.csv"))
         resp.plot(title=f"{stem}: spool position / command ({model})", file=out.file("bode.png"))

@@ -78,6 +78,8 @@ def _characteristics_plots(
 
 
 def cmd_characteristics(args: argparse.Namespace) -> int:
+    import numpy as np
+
     from hydroservo.analysis.static_bench import bench_curves, temperature_table
     from hydroservo.io.component_file import read_staged_slot_valve
     from hydroservo.io.curves import write_bench_curves
@@ -92,6 +94,10 @@ def cmd_characteristics(args: argparse.Namespace) -> int:
         raise ParameterError(
             f"--reference {args.reference:g}: expected one of the temperatures {', '.join(f'{t:g}' for t in temps)}"
         )
+    try:  # every temperature, before any is computed
+        valve.fluid.check_range(np.array([bench.P_r, bench.P_s]), np.array(temps), args.strict)
+    except ParameterError as exc:
+        raise ParameterError(f"--temperature {args.temperature!r}: {exc}") from None
     stem = Path(args.params).stem
     out = output_folder(args, f"hydroservo-characteristics-{stem}")
     tables = [f"T{t:g}_{name}.csv" for t in temps for name in ("flow_gain", "blocked_ports")]
@@ -144,15 +150,19 @@ def cmd_identify(args: argparse.Namespace) -> int:
     if len(weights) != 2 or min(weights) < 0:
         raise ParameterError(f"--weights {args.weights!r}: expected two non-negative numbers W_P,W_LK")
     fixed: tuple[str, ...] = () if args.fit_widths else ("w_L", "w_H")
-    res = identify_staged_slot(data, start, weights=(weights[0], weights[1]), high_laps=args.high_laps, fixed=fixed)
+    temps = [data.temperature] + (_temperatures(args.predict, "--predict") if args.predict else [])
+    try:
+        start.fluid.check_range(np.array([data.bench.P_r, data.bench.P_s]), np.array(temps), args.strict)
+    except ParameterError as exc:
+        raise ParameterError(f"--predict {args.predict!r}: {exc}") from None
     out = output_folder(args, f"hydroservo-identify-{Path(args.curves[0]).stem}")
     out.expect(["identified.toml", "identification.png"])
+    res = identify_staged_slot(data, start, weights=(weights[0], weights[1]), high_laps=args.high_laps, fixed=fixed)
     header = (
         f"Identified by hydroservo from {', '.join(Path(c).name for c in args.curves)} at {data.temperature:g} degC\n"
         f"(MareAttarND eqs. 21-24); max relative errors: "
         + ", ".join(f"{k} {v * 100:.2f} %" for k, v in res.errors.items())
     )
-    temps = [data.temperature] + (_temperatures(args.predict, "--predict") if args.predict else [])
     model = [bench_curves(res.valve, t, data.bench) for t in temps]
     table = temperature_table(res.valve, data.bench, temps, data.temperature)
     title = "Identified model and the curves it was identified from"

@@ -135,7 +135,8 @@ def variable_structure(x: Any, k: Any, gamma: Any, alpha: Any, beta: Any, x_t: A
     >>> round(float(variable_structure(0.03858, **p)), 4), round(4.241 * 0.03858 + 6.877e-2, 4)
     (0.2323, 0.2324)
     """
-    return bk.if_else(x <= x_t, gamma * bk.exp(k * x / 2.0), alpha * x + beta)
+    # exp of min(x, x_t): the same on the branch it is used in, and no overflow where NumPy evaluates it unused
+    return bk.if_else(x <= x_t, gamma * bk.exp(k * bk.fmin(x, x_t) / 2.0), alpha * x + beta)
 
 
 def fixed_structure(x: Any, k1: Any, k2: Any, k3: Any, k4: Any, k5: Any) -> Any:
