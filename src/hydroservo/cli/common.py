@@ -76,15 +76,29 @@ def frequencies(text: str) -> np.ndarray:
 
 def add_output_options(p: Any, default: str) -> None:
     """``--out DIR`` and ``--force`` of a command that writes files."""
-    p.add_argument("--out", default=None, metavar="DIR", help=f"folder for the files written (default {default})")
+    p.add_argument(
+        "--out", default=None, metavar="DIR", help=f"folder for the files written (default: a new {default}[-N])"
+    )
     p.add_argument("--force", action="store_true", help="replace files of the same names in that folder")
 
 
 def output_folder(args: Any, default: str) -> OutputFolder:
-    """The command's output folder (``--out`` or ``default``): written all or nothing, nothing replaced unasked."""
+    """The command's output folder, written all or nothing, nothing replaced unasked.
+
+    ``--out DIR`` is used as given (files already in it are replaced only with
+    ``--force``); without it, a fresh folder: ``default``, or ``default-2``,
+    ``default-3``, ... if it exists, so repeated runs never collide.
+    """
     from hydroservo.io.files import OutputFolder, safe_name
 
-    return OutputFolder(Path(args.out) if args.out else Path(safe_name(default)), force=args.force)
+    if args.out:
+        return OutputFolder(Path(args.out), force=args.force)
+    base = safe_name(default)
+    target, n = Path(base), 1
+    while target.exists() and not args.force:
+        n += 1
+        target = Path(f"{base}-{n}")
+    return OutputFolder(target, force=args.force, what="output folder")
 
 
 def print_json(data: Any) -> None:
