@@ -37,6 +37,7 @@ from typing import TYPE_CHECKING, Any
 from hydroservo.errors import (
     HydroservoError,
     ImplausibleResultError,
+    ImplausibleResultWarning,
     ModelError,
     ModelFileError,
     ParameterError,
@@ -109,6 +110,7 @@ __all__ = [
     "SolverError",
     "TrimError",
     "ImplausibleResultError",
+    "ImplausibleResultWarning",
 ]
 
 

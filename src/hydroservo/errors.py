@@ -17,6 +17,7 @@ __all__ = [
     "TrimError",
     "ImplausibleResultError",
     "FluidRangeWarning",
+    "ImplausibleResultWarning",
     "RenamedWarning",
 ]
 
@@ -55,6 +56,10 @@ class ImplausibleResultError(HydroservoError):
 
 class FluidRangeWarning(UserWarning):
     """A fluid property was evaluated outside the range its model was fitted to."""
+
+
+class ImplausibleResultWarning(UserWarning):
+    """A run crossed a physical bound (``Result.warnings`` holds each crossing)."""
 
 
 class RenamedWarning(UserWarning):

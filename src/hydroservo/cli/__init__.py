@@ -26,7 +26,7 @@ from collections.abc import Sequence
 from typing import NoReturn
 
 from hydroservo.cli import examples, fluid, models, validate, valve
-from hydroservo.errors import FluidRangeWarning, HydroservoError, RenamedWarning
+from hydroservo.errors import FluidRangeWarning, HydroservoError, ImplausibleResultWarning, RenamedWarning
 from hydroservo.version import __version__
 
 __all__ = ["main", "build_parser"]
@@ -92,6 +92,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         with warnings.catch_warnings():
             warnings.simplefilter("always", FluidRangeWarning)  # the printer shows each message once
             warnings.simplefilter("always", RenamedWarning)
+            warnings.simplefilter("ignore", ImplausibleResultWarning)  # simulate prints each crossing itself
             warnings.showwarning = _WarningPrinter()
             return int(args.func(args))
     except BrokenPipeError:  # output piped into head & co.

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import os
 import time
+import warnings
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import Any
@@ -19,7 +20,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from hydroservo.errors import ParameterError, SolverError, TrimError
+from hydroservo.errors import ImplausibleResultWarning, ParameterError, SolverError, TrimError
 from hydroservo.system.integration import (
     SolverSettings,
     batch_columns,
@@ -86,12 +87,21 @@ class Model:
         self._jz = ca.Function("jz", [t, z, p], [ca.jacobian(fz, z)])
         #: Signals under a physical limit, checked after every run (:mod:`hydroservo.system.plausibility`).
         self.watched = [w for w, *_ in limits]
-        columns: list[list[Any]] = [[], [], []]
-        for _, value, lower, upper in limits:
-            for col, expr in zip(columns, (value, lower, upper), strict=True):
-                col.append(ca.SX(expr))
-        bounds = [ca.vertcat(*col) if col else ca.SX(0, 1) for col in columns]
-        self._limits = ca.Function("limits", [t, x, p], bounds, ["t", "x", "p"], ["value", "lower", "upper"])
+        # A watched state is read from the solution; other watched signals are evaluated on the scaled
+        # states, mapped over the output times; the bounds are parameters, evaluated once per run.
+        self._watch_rows: list[tuple[str, int]] = []
+        computed: list[Any] = []
+        for w, value, _, _ in limits:
+            if w.signal in state_names:
+                self._watch_rows.append(("state", state_names.index(w.signal)))
+            else:
+                self._watch_rows.append(("computed", len(computed)))
+                computed.append(ca.substitute(ca.SX(value), x, z * nom))
+        self._limit_values = ca.Function("limit_values", [t, z, p], [ca.vertcat(*computed) if computed else ca.SX(0, 1)])
+        lowers = [ca.SX(lower) for _, _, lower, _ in limits]
+        uppers = [ca.SX(upper) for _, _, _, upper in limits]
+        bounds = [ca.vertcat(*col) if col else ca.SX(0, 1) for col in (lowers, uppers)]
+        self._limit_bounds = ca.Function("limit_bounds", [p], bounds)
         self._integrators: dict[Any, ca.Function] = {}
         self._maps: dict[int, ca.Function] = {}
         self._limit_maps: dict[int, ca.Function] = {}
@@ -229,7 +239,7 @@ class Model:
             k: stats[k] for k in ("nsteps", "nfevals", "nlinsetups", "netfails", "nniters", "nncfails") if k in stats
         }
         stats["wall_time_s"] = wall
-        return self._result(grid, X, p, stats)
+        return self._result(grid, X, p, stats, xf)
 
     def _diagnose(
         self,
@@ -321,34 +331,50 @@ class Model:
             text += "; fast pressure modes come from small volumes, a large bulk modulus or large areas"
         return text + "."
 
-    def _result(self, grid: np.ndarray, X: np.ndarray, p: np.ndarray, stats: dict[str, Any]) -> Result:
+    def _result(self, grid: np.ndarray, X: np.ndarray, p: np.ndarray, stats: dict[str, Any], Z: Any = None) -> Result:
         nt = grid.size
         data: dict[str, np.ndarray] = {n: X[i] for i, n in enumerate(self.state_names)}
 
         def outputs() -> dict[str, np.ndarray]:
             if not self.output_names:
                 return {}
-            Y = np.asarray(self._outputs_map(nt)(grid[None, :], X, p[:, None]), dtype=float)
+            Y = np.asarray(self._outputs_map(nt)(grid[None, :], X, p), dtype=float)
             return {n: Y[i] for i, n in enumerate(self.output_names)}
 
         params = dict(zip(self.parameter_names, p.tolist()))
         result = Result(grid, data, dict(self.units), dict(self.descriptions), stats, params, self.name, outputs)
-        result.warnings = self.plausibility(grid, X, p)
+        result.warnings = self.plausibility(grid, X, p, Z)
+        if result.warnings:
+            more = f" (and {len(result.warnings) - 1} more)" if len(result.warnings) > 1 else ""
+            warnings.warn(
+                f"physically implausible result of {self.name!r}: {result.warnings[0]}{more}; see Result.warnings",
+                ImplausibleResultWarning,
+                stacklevel=4,
+            )
         return result
 
-    def plausibility(self, grid: np.ndarray, X: np.ndarray, p: np.ndarray) -> list[Implausible]:
-        """The physical bounds one run crossed (:mod:`hydroservo.system.plausibility`)."""
+    def plausibility(self, grid: np.ndarray, X: np.ndarray, p: np.ndarray, Z: Any = None) -> list[Implausible]:
+        """The physical bounds one run crossed (:mod:`hydroservo.system.plausibility`).
+
+        ``X`` holds the states (SI) at the output times ``grid``; ``Z``, if given, the same scaled by the
+        nominal magnitudes as the integrator returned them (saves a conversion).
+        """
         if not self.watched:
             return []
         n = grid.size
-        if n not in self._limit_maps:
-            self._limit_maps[n] = self._limits.map(n)
-        V, LO, HI = (np.asarray(a, dtype=float) for a in self._limit_maps[n](grid[None, :], X, p[:, None]))
-        return check(grid, self.watched, V, LO, HI)
+        computed = np.zeros((0, n))
+        if any(kind == "computed" for kind, _ in self._watch_rows):
+            if n not in self._limit_maps:
+                self._limit_maps[n] = self._limit_values.map("limit_values", "serial", n, [2], [])
+            z = Z if Z is not None else X / self.nominal[:, None]
+            computed = np.asarray(self._limit_maps[n](grid[None, :], z, p), dtype=float)
+        V = np.array([X[i] if kind == "state" else computed[i] for kind, i in self._watch_rows])
+        lo, hi = (np.asarray(b, dtype=float).ravel() for b in self._limit_bounds(p))
+        return check(grid, self.watched, V, lo, hi)
 
     def _outputs_map(self, n: int) -> ca.Function:
         if n not in self._maps:
-            self._maps[n] = self.outputs.map(n)
+            self._maps[n] = self.outputs.map("outputs", "serial", n, [2], [])  # p shared, not repeated
         return self._maps[n]
 
     # -- equilibrium -------------------------------------------------------
@@ -476,25 +502,32 @@ class Model:
             Y = np.full((len(self.output_names), n, nt), np.nan)
             for k in range(n):
                 if k not in failures:
-                    Y[:, k] = np.asarray(fy(grid[None, :], X[:, k, :], P[:, k : k + 1]), dtype=float)
+                    Y[:, k] = np.asarray(fy(grid[None, :], X[:, k, :], P[:, k]), dtype=float)
             return {name: Y[j] for j, name in enumerate(self.output_names)}
 
         params = {name: P[j] for j, name in enumerate(self.parameter_names)}
-        warnings = {}
+        implausible = {}
         for k in range(n):
             if k not in failures:
                 found = self.plausibility(grid, X[:, k, :], P[:, k])
                 if found:
-                    warnings[k] = found
+                    implausible[k] = found
         stats = {
             "wall_time_s": wall,
             "runs": n,
             "failed": len(failures),
-            "implausible": len(warnings),
+            "implausible": len(implausible),
             "threads": nthreads,
         }
         result = BatchResult(grid, data, dict(self.units), params, stats, self.name, outputs, dict(sorted(failures.items())))
-        result.warnings = warnings
+        result.warnings = implausible
+        if implausible:
+            warnings.warn(
+                f"batch of {self.name!r}: {len(implausible)} of {n} runs physically implausible "
+                f"(first, run {min(implausible)}: {implausible[min(implausible)][0]}); see BatchResult.warnings",
+                ImplausibleResultWarning,
+                stacklevel=3,
+            )
         return result
 
     def _batch_parameters(self, p_base: np.ndarray, sets: Mapping[str, Sequence[float] | np.ndarray]) -> np.ndarray:

@@ -97,8 +97,8 @@ def check(
 ) -> list[Implausible]:
     """Flag the crossings of one run.
 
-    ``values``, ``lower`` and ``upper`` have one row per watched signal and one
-    column per output time (bounds are NaN where a limit has none).
+    ``values`` has one row per watched signal and one column per output time;
+    ``lower`` and ``upper`` one bound per watched signal (NaN where a limit has none).
     """
     found: list[Implausible] = []
     sources = [i for i, w in enumerate(watched) if w.kind == "source"]
@@ -133,7 +133,7 @@ def check(
                     )
                 )
         elif w.kind == "travel":
-            lo, hi = float(np.min(lower[i])), float(np.max(upper[i]))
+            lo, hi = float(lower[i]), float(upper[i])
             slack = TRAVEL_MARGIN * (hi - lo)
             for beyond, bound, name, high_side in (
                 (np.max(v) > hi + slack, hi + slack, w.upper, True),

@@ -161,7 +161,7 @@ def _pressure_check(values: list[float]) -> list[str]:
     t = np.linspace(0, 1, len(values))
     watched = [Watched("supply.p", "source", "supply"), Watched("cyl.pA", "pressure", "cyl")]
     V = np.array([np.full(len(values), 10e6), values])
-    nan = np.full_like(V, np.nan)
+    nan = np.full(2, np.nan)
     return [w.signal for w in check(t, watched, V, nan, nan)]
 
 
@@ -178,7 +178,7 @@ def test_pressure_margins() -> None:
 def test_travel_and_volume_margins() -> None:
     t = np.linspace(0, 1, 3)
     watched = [Watched("load.x", "travel", "cyl", "x_min", "x_max"), Watched("cyl.VA", "volume", "cyl")]
-    lo, hi = np.array([[-0.1] * 3, [np.nan] * 3]), np.array([[0.1] * 3, [np.nan] * 3])
+    lo, hi = np.array([-0.1, np.nan]), np.array([0.1, np.nan])
     slack = TRAVEL_MARGIN * 0.2
     inside = np.array([[0.0, 0.1 + 0.9 * slack, -0.1 - 0.9 * slack], [1e-4, 1e-5, 1e-6]])
     assert check(t, watched, inside, lo, hi) == []
@@ -189,8 +189,9 @@ def test_travel_and_volume_margins() -> None:
 
 
 def test_a_piston_driven_through_missing_stops_is_flagged(flight: hs.System) -> None:
-    # The case: 100 V command with the end stops switched off.
-    r = flight.simulate(t_end=2.0, params={"source.amplitude": 100.0, "cyl.k_stop": 0.0, "cyl.c_stop": 0.0})
+    # The case: 100 V command with the end stops switched off. A Python warning says so too.
+    with pytest.warns(hs.ImplausibleResultWarning, match=r"physically implausible result of 'flight-simulator'"):
+        r = flight.simulate(t_end=2.0, params={"source.amplitude": 100.0, "cyl.k_stop": 0.0, "cyl.c_stop": 0.0})
     signals = {w.signal for w in r.warnings}
     assert signals == {"load.x", "cyl.pA"}
     travel = next(w for w in r.warnings if w.signal == "load.x")
@@ -205,10 +206,11 @@ def test_builtin_models_are_plausible_as_shipped() -> None:
 
 
 def test_batch_flags_runs_by_index(flight: hs.System) -> None:
-    b = flight.batch(
-        {"source.amplitude": [2.0, 100.0], "cyl.k_stop": [0.0, 0.0], "cyl.c_stop": [0.0, 0.0]},
-        t_end=2.0,
-        n_points=201,
-    )
+    with pytest.warns(hs.ImplausibleResultWarning, match=r"1 of 2 runs physically implausible \(first, run 1"):
+        b = flight.batch(
+            {"source.amplitude": [2.0, 100.0], "cyl.k_stop": [0.0, 0.0], "cyl.c_stop": [0.0, 0.0]},
+            t_end=2.0,
+            n_points=201,
+        )
     assert list(b.warnings) == [1]
     assert b.run(1).warnings == b.warnings[1]
