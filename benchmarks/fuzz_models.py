@@ -393,6 +393,16 @@ def draw_set(
 
 
 # -- one run, in a worker -------------------------------------------------------------------------
+def _crash(outcome: str, exc: BaseException) -> dict[str, Any]:
+    """The record of an exception that is not a HydroservoError: its type, message and the end of its traceback."""
+    return {
+        "outcome": outcome,
+        "error_type": type(exc).__name__,
+        "message": str(exc)[:400],
+        "traceback": "".join(traceback.format_exception(exc)[-4:])[-1500:],
+    }
+
+
 def plausibility(system: Any, result: Any, pressure_margin: float = PRESSURE_MARGIN) -> list[dict[str, Any]]:
     """The physical checks of a finished run: a list of violations (empty: plausible).
 
@@ -574,13 +584,7 @@ class Runner:
                 )
             except Exception as exc:  # noqa: BLE001 - a crash is what we are looking for
                 out["wall_s"] = out.get("wall_s", time.perf_counter() - start)
-                out.update(
-                    outcome="crash",
-                    error_type=type(exc).__name__,
-                    message=str(exc)[:400],
-                    phase=phase,
-                    traceback="".join(traceback.format_exception(exc)[-4:])[-1500:],
-                )
+                out.update(_crash("crash", exc), phase=phase)
         out["py_warnings"] = sorted({f"{w.category.__name__}: {str(w.message)[:150]}" for w in caught})
         return out
 
@@ -605,12 +609,7 @@ class Runner:
                 out.update(outcome="clean_error", error_type=type(exc).__name__, message=str(exc)[:400])
                 br = None
             except Exception as exc:  # noqa: BLE001
-                out.update(
-                    outcome="crash",
-                    error_type=type(exc).__name__,
-                    message=str(exc)[:400],
-                    traceback="".join(traceback.format_exception(exc)[-4:])[-1500:],
-                )
+                out.update(_crash("crash", exc))
                 br = None
             out["wall_s"] = time.perf_counter() - start
             if br is None:
@@ -647,12 +646,7 @@ class Runner:
                     warned = bool(getattr(run, "warnings", None))
                     per_run.append("ok" if not issues else "implausible_warned" if warned else "implausible_silent")
             except Exception as exc:  # noqa: BLE001
-                out.update(
-                    outcome="crash_reading",
-                    error_type=type(exc).__name__,
-                    message=str(exc)[:400],
-                    traceback="".join(traceback.format_exception(exc)[-4:])[-1500:],
-                )
+                out.update(_crash("crash_reading", exc))
             out.update(finals=finals, finite=finite, per_run=per_run)
         return out
 

@@ -263,6 +263,12 @@ def batch_run_failed(system: hs.System, sets: dict[str, list[Any]], bad: int, *p
         assert np.all(np.isfinite(result[name][good])) and np.all(np.isnan(result[name][bad]))
 
 
+def identify_argv(w: Workspace) -> list[Any]:
+    """``valve identify`` on the example curves and start, into the case's output folder."""
+    return ["valve", "identify", w.example("flow_gain.csv"), w.example("blocked_ports.csv"),
+            "--start", w.example("guess.toml"), "--out", w.out]
+
+
 # --------------------------------------------------------------------------------------------------------
 # Input files: the examples of `hydroservo examples`, edited
 # --------------------------------------------------------------------------------------------------------
@@ -471,16 +477,7 @@ def _overwrite_cases() -> dict[str, tuple[Callable[[Workspace], list[Any]], str]
             "T-15_flow_gain.csv",
         ),
         "identify-over-existing-identified-toml": (
-            lambda w: [
-                "valve",
-                "identify",
-                w.example("flow_gain.csv"),
-                w.example("blocked_ports.csv"),
-                "--start",
-                w.example("guess.toml"),
-                "--out",
-                w.out,
-            ],
+            identify_argv,
             "identified.toml",
         ),
         "examples-over-existing-files": (lambda w: ["examples", w.out], "valve_cylinder.toml"),
@@ -502,16 +499,7 @@ OUT_IS_FILE: dict[str, Callable[[Workspace], list[Any]]] = {
     "valve-bode": lambda w: ["valve", "bode", "KBSDG4V-3", "--amplitudes", "25", "--frequencies", "10,50", "--out", w.out],
     "fit-dynamics": lambda w: ["valve", "fit-dynamics", w.example("bode.csv"), "--model", "first-order", "--out", w.out],
     "characteristics": lambda w: ["valve", "characteristics", "aerospace-example", "--temperature", "-15", "--out", w.out],
-    "identify": lambda w: [
-        "valve",
-        "identify",
-        w.example("flow_gain.csv"),
-        w.example("blocked_ports.csv"),
-        "--start",
-        w.example("guess.toml"),
-        "--out",
-        w.out,
-    ],
+    "identify": identify_argv,
     "examples": lambda w: ["examples", w.out],
 }
 
