@@ -1,6 +1,7 @@
-"""The generated parts of the docs: glossary tables from the component registry, validation tables from the rows.
+"""The generated parts of the docs: the component reference and glossary from the component registry, validation
+tables from the rows.
 
-Run: ``python docs/tools/generated.py`` rewrites the parts of
+Run: ``python docs/tools/generated.py`` rewrites the parts of ``docs/components.md``,
 ``docs/nomenclature.md`` and ``docs/validation.md`` between
 ``<!-- generated: NAME -->`` and ``<!-- end generated: NAME -->``; a test fails
 when a doc differs from what this would write, so the docs and the code are
@@ -15,6 +16,8 @@ from collections import defaultdict
 from pathlib import Path
 
 from hydroservo.components import REGISTRY
+from hydroservo.components.reference import catalogue
+from hydroservo.components.reference import markdown as component_markdown
 from hydroservo.units import si_unit
 from hydroservo.validation import VALIDATIONS, markdown, validate
 
@@ -48,6 +51,19 @@ def renamed() -> str:
     return "\n".join(lines)
 
 
+def component_reference() -> dict[str, str]:
+    """Every component type, by kind: its notes, parameters, options, signals and limits."""
+    sections: list[str] = []
+    kind = None
+    for ref in catalogue():
+        group = ref.kind.split(".")[0]
+        if group != kind:
+            sections.append(f"## {group}\n")
+            kind = group
+        sections.append(component_markdown(ref))
+    return {"components": "\n".join(sections).rstrip()}
+
+
 def validation_tables() -> dict[str, str]:
     return {f"validation-{name}": markdown(validate(name)) for name in VALIDATIONS}
 
@@ -69,7 +85,12 @@ def fill(text: str, blocks: dict[str, str]) -> str:
 
 
 def main() -> None:
-    for doc, blocks in (("nomenclature.md", parts()), ("validation.md", validation_tables())):
+    documents = (
+        ("components.md", component_reference()),
+        ("nomenclature.md", parts()),
+        ("validation.md", validation_tables()),
+    )
+    for doc, blocks in documents:
         path = DOCS / doc
         path.write_text(fill(path.read_text(encoding="utf-8"), blocks), encoding="utf-8")
         print(path)

@@ -84,3 +84,14 @@ def test_cli_solver_options_are_refused_up_front(option, value, cli, tmp_path) -
     code, _, err = cli("simulate", "flight-simulator", option, value, "--out", str(tmp_path))
     assert code == 2 and option in err and (value in err or f"{float(value):g}" in err) and "Traceback" not in err
     assert not any(tmp_path.iterdir())
+
+
+def test_cli_components_and_describe(cli) -> None:
+    code, out, _ = cli("components")
+    assert code == 0 and "valves:" in out and "  Cylinder " in out and "hydroservo describe TYPE" in out
+    code, out, _ = cli("describe", "Cylinder")
+    assert code == 0 and "Double-acting cylinder" in out and "A_A          [m²]  0.002  > 0  piston area" in out
+    code, out, _ = cli("describe", "Volume", "--json")
+    assert code == 0 and json.loads(out)["parameters"][0]["name"] == "V"
+    code, _, err = cli("describe", "Valve")
+    assert code == 2 and "component type 'Valve': unknown" in err

@@ -1,6 +1,7 @@
 """The generated parts of the docs are what the code gives today (``python docs/tools/generated.py`` rewrites them).
 
-The glossary of docs/nomenclature.md comes from the component registry and the
+The component reference (docs/components.md) and the glossary of docs/nomenclature.md come from the component
+registry and the
 tables of docs/validation.md from the validation rows, so that neither can
 drift from the code; and one parameter name has one unit across components.
 """
@@ -24,6 +25,13 @@ def _tool():  # type: ignore[no-untyped-def]
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+def test_component_reference_is_current() -> None:
+    text = (DOCS / "components.md").read_text(encoding="utf-8")
+    assert _tool().fill(text, _tool().component_reference()) == text, "run: python docs/tools/generated.py"
+    for name in REGISTRY.types:  # every type has its section
+        assert f"\n### {name}\n" in text, name
 
 
 def test_nomenclature_is_current() -> None:

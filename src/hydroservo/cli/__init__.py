@@ -4,6 +4,7 @@
 module                 commands
 =====================  ==========================================================
 :mod:`.models`         ``models``, ``simulate``, ``export``
+:mod:`.components`     ``components``, ``describe``
 :mod:`.valve`          ``valve fit``, ``valve bode``, ``valve fit-dynamics``
 :mod:`.valve_bench`    ``valve characteristics``, ``valve identify``
 :mod:`.fluid`          ``fluid``
@@ -25,7 +26,7 @@ import warnings
 from collections.abc import Sequence
 from typing import NoReturn
 
-from hydroservo.cli import examples, fluid, models, validate, valve
+from hydroservo.cli import components, examples, fluid, models, validate, valve
 from hydroservo.errors import FluidRangeWarning, HydroservoError, ImplausibleResultWarning, RenamedWarning
 from hydroservo.version import __version__
 
@@ -47,6 +48,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--debug", action="store_true", help="show tracebacks on errors")
     sub = parser.add_subparsers(dest="command", required=True)
     models.add_parsers(sub)
+    components.add_parsers(sub)
     valve.add_parsers(sub)
     fluid.add_parsers(sub)
     validate.add_parsers(sub)

@@ -1,0 +1,215 @@
+"""The component reference: every component's equations, parameters, ports and options, from its declarations.
+
+``hydroservo components`` lists the types, ``hydroservo describe TYPE`` prints
+one, and docs/components.md is generated from the same :func:`reference`, so
+the reference cannot drift from the code.
+"""
+
+from __future__ import annotations
+
+import inspect
+import re
+from dataclasses import asdict, dataclass, field, replace
+from typing import Any
+
+from hydroservo.components.base import REGISTRY, SIGNAL, Component, FromSet
+from hydroservo.errors import ParameterError
+from hydroservo.units import si_unit
+
+__all__ = ["Reference", "reference", "catalogue", "text", "markdown"]
+
+#: Constructor arguments that are not parameters, and what they are.
+_ARGUMENTS = {
+    "unit": "the unit of the signal the block passes on (its parameters marked 'signal' take it)",
+    "tables": "tables of the flow coefficient and hysteresis against spool position (see the class notes)",
+    "times": "times of the table [s]",
+    "pressures": "pressures of the table [Pa]",
+    "values": "values of the table, in the block's unit",
+    "source": "the CSV file a model file read the table from (written back on export)",
+}
+
+
+@dataclass
+class Reference:
+    """What a component type declares, in plain values (``asdict`` gives JSON)."""
+
+    name: str
+    kind: str  #: its module under hydroservo.components, e.g. "valves.four_way"
+    summary: str  #: the first sentence of its docstring
+    notes: str  #: the docstring: equations, sources, conventions
+    arguments: dict[str, str] = field(default_factory=dict)
+    parameters: list[dict[str, Any]] = field(default_factory=list)
+    options: list[dict[str, Any]] = field(default_factory=list)
+    states: list[dict[str, Any]] = field(default_factory=list)
+    inputs: list[dict[str, Any]] = field(default_factory=list)
+    outputs: list[dict[str, Any]] = field(default_factory=list)
+    limits: list[dict[str, Any]] = field(default_factory=list)
+    renamed: dict[str, str] = field(default_factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+def _unit(unit: str) -> str:
+    if SIGNAL in unit:
+        return unit.replace(SIGNAL, "signal") if unit != SIGNAL else "signal"
+    return si_unit(unit)
+
+
+def plain(doc: str) -> str:
+    """A docstring with its reStructuredText roles reduced to plain text with backquotes."""
+    doc = re.sub(r":(?:class|func|mod|meth|attr|data):`~?(?:[\w.]+\.)?([\w]+)`", r"`\1`", doc)
+    doc = re.sub(r":math:`([^`]*)`", r"`\1`", doc)
+    doc = doc.replace("``", "`").replace(".. math::", "Equations:")
+    return doc
+
+
+def reference(type_name: str | type[Component]) -> Reference:
+    """The reference of a component type, by class or registered name (former names accepted)."""
+    if isinstance(type_name, str):
+        cls = REGISTRY.resolve(type_name)
+        if cls is None:
+            raise ParameterError(
+                f"component type {type_name!r}: unknown; known: {', '.join(sorted(REGISTRY.types))}"
+            )
+    else:
+        cls = type_name
+    doc = inspect.getdoc(cls) or ""
+    summary = plain(doc.split("\n\n")[0]).replace("\n", " ")
+    signature = inspect.signature(cls.__init__)
+    variadic = (inspect.Parameter.VAR_KEYWORD, inspect.Parameter.VAR_POSITIONAL)
+    arguments = {
+        k: _ARGUMENTS.get(k, "") for k, p in signature.parameters.items() if k not in ("self", "name") and p.kind not in variadic
+    }
+    groups = (cls.PARAMETERS, cls.INPUTS, cls.OUTPUTS, cls.STATES)
+    uses_signal = any(SIGNAL in spec.unit for group in groups for spec in group.values())
+    if not uses_signal:
+        arguments.pop("unit", None)
+    parameters = []
+    for key, spec in cls.PARAMETERS.items():
+        default: Any = spec.default
+        bounds = replace(spec, unit="").expected()  # the unit has its own column
+        entry: dict[str, Any] = {"name": key, "unit": _unit(spec.unit), "description": spec.description, "range": bounds}
+        if isinstance(default, FromSet):
+            entry["default"] = spec.si_default()
+            entry["default_from"] = f"{default.set_name} [{default.table}] {default.key}"
+        else:
+            entry["default"] = float(default)
+        parameters.append(entry)
+    return Reference(
+        name=cls.__name__,
+        kind=cls.__module__.removeprefix("hydroservo.components."),
+        summary=summary,
+        notes=plain(doc),
+        arguments=arguments,
+        parameters=parameters,
+        options=[
+            {"name": k, "default": o.default, "choices": list(o.choices), "description": o.description}
+            for k, o in cls.OPTIONS.items()
+        ],
+        states=[
+            {"name": k, "unit": _unit(s.unit), "description": s.description, "initial": s.initial}
+            for k, s in cls.STATES.items()
+        ],
+        inputs=[
+            {"name": k, "unit": _unit(p.unit), "description": p.description, "default": p.default}
+            for k, p in cls.INPUTS.items()
+        ],
+        outputs=[{"name": k, "unit": _unit(o.unit), "description": o.description} for k, o in cls.OUTPUTS.items()],
+        limits=[
+            {"signal": k, "kind": lim.kind, "lower": lim.lower, "upper": lim.upper} for k, lim in cls.LIMITS.items()
+        ],
+        renamed=dict(cls.RENAMED),
+    )
+
+
+def catalogue() -> list[Reference]:
+    """Every registered component type, by kind, then name."""
+    return sorted((reference(cls) for cls in REGISTRY.types.values()), key=lambda r: (r.kind.split(".")[0], r.name))
+
+
+def _default(p: dict[str, Any]) -> str:
+    value = f"{p['default']:.6g}"
+    return f"{value} (from {p['default_from']})" if "default_from" in p else value
+
+
+def _input_default(p: dict[str, Any]) -> str:
+    return "must be connected" if p["default"] is None else f"{p['default']:g} when unconnected"
+
+
+def text(ref: Reference) -> str:
+    """The reference as plain text for a terminal."""
+    lines = [f"{ref.name}  ({ref.kind})", "", ref.notes, ""]
+    if ref.arguments:
+        lines += ["Arguments (besides the name):"] + [f"  {k}: {v}" for k, v in ref.arguments.items()] + [""]
+    rows = [(p["name"], p["unit"], _default(p), p["range"], p["description"]) for p in ref.parameters]
+    if rows:
+        lines.append("Parameters [SI unit]  default  range  meaning:")
+        width = max(len(r[0]) for r in rows)
+        lines += [f"  {n.ljust(width)}  [{u}]  {d}  {rg}  {m}" for n, u, d, rg, m in rows]
+        lines.append("")
+    sections = (
+        ("Options", [f"  {o['name']} = {o['default']!r}: one of {', '.join(o['choices'])}; {o['description']}" for o in ref.options]),
+        ("States", [f"  {s['name']} [{s['unit']}]  {s['description']} (initial: {s['initial']})" for s in ref.states]),
+        ("Inputs", [f"  {p['name']} [{p['unit']}]  {p['description']} ({_input_default(p)})" for p in ref.inputs]),
+        ("Outputs", [f"  {o['name']} [{o['unit']}]  {o['description']}" for o in ref.outputs]),
+        ("Physical limits checked after every run", [_limit(lim) for lim in ref.limits]),
+        ("Former names (still accepted)", [f"  {old} -> {new}" for old, new in ref.renamed.items()]),
+    )
+    for title, body in sections:
+        if body:
+            lines += [f"{title}:"] + body + [""]
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def _limit(lim: dict[str, Any]) -> str:
+    bounds = f" between {lim['lower']} and {lim['upper']}" if lim["lower"] else ""
+    return f"  {lim['signal']}: {lim['kind']}{bounds}"
+
+
+def markdown(ref: Reference) -> str:
+    """The reference as a Markdown section (docs/components.md)."""
+    out = [f"### {ref.name}", "", f"`hydroservo.components.{ref.kind}` — {ref.summary}", ""]
+    rest = ref.notes.split("\n\n", 1)[1] if "\n\n" in ref.notes else ""
+    if rest:
+        out += [_md_block(rest), ""]
+    if ref.arguments:
+        out += ["Arguments besides the name: " + "; ".join(f"`{k}`, {v}" for k, v in ref.arguments.items()), ""]
+    if ref.parameters:
+        out += ["| parameter | unit | default | range | meaning |", "|---|---|---|---|---|"]
+        out += [
+            f"| `{p['name']}` | {p['unit']} | {_default(p)} | {p['range']} | {p['description']} |" for p in ref.parameters
+        ]
+        out.append("")
+    if ref.options:
+        out += ["| option | default | choices | meaning |", "|---|---|---|---|"]
+        out += [f"| `{o['name']}` | `{o['default']}` | {', '.join(o['choices'])} | {o['description']} |" for o in ref.options]
+        out.append("")
+    ports = [("state", s["name"], s["unit"], s["description"]) for s in ref.states]
+    ports += [("input", p["name"], p["unit"], f"{p['description']} ({_input_default(p)})") for p in ref.inputs]
+    ports += [("output", o["name"], o["unit"], o["description"]) for o in ref.outputs]
+    if ports:
+        out += ["| signal | name | unit | meaning |", "|---|---|---|---|"]
+        out += [f"| {k} | `{n}` | {u} | {d} |" for k, n, u, d in ports]
+        out.append("")
+    if ref.limits:
+        out += ["Physical limits checked after every run: " + "; ".join(_limit(lim).strip() for lim in ref.limits) + ".", ""]
+    if ref.renamed:
+        out += ["Former names (still accepted): " + ", ".join(f"`{a}` → `{b}`" for a, b in ref.renamed.items()) + ".", ""]
+    return "\n".join(out)
+
+
+def _md_block(doc: str) -> str:
+    """Docstring paragraphs for Markdown: indented blocks (equations) as code."""
+    out, block = [], []
+    for line in doc.splitlines():
+        if line.startswith("    "):
+            block.append(line[4:])
+            continue
+        if block:
+            out += ["```", *block, "```"]
+            block = []
+        out.append(line)
+    if block:
+        out += ["```", *block, "```"]
+    return "\n".join(out)

@@ -1,0 +1,51 @@
+"""The component reference (``hydroservo describe``, docs/components.md) says what the declarations say."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from hydroservo.components import REGISTRY, Cylinder
+from hydroservo.components.reference import catalogue, reference, text
+from hydroservo.errors import ParameterError
+
+
+def test_every_type_is_described_with_every_declaration() -> None:
+    refs = {r.name: r for r in catalogue()}
+    assert set(refs) == set(REGISTRY.types)
+    for name, cls in REGISTRY.types.items():
+        ref = refs[name]
+        assert [p["name"] for p in ref.parameters] == list(cls.PARAMETERS), name
+        assert [s["name"] for s in ref.states] == list(cls.STATES), name
+        assert [p["name"] for p in ref.inputs] == list(cls.INPUTS), name
+        assert [o["name"] for o in ref.outputs] == list(cls.OUTPUTS), name
+        assert [o["name"] for o in ref.options] == list(cls.OPTIONS), name
+        assert ref.summary and ref.notes.startswith(ref.summary.split("`")[0][:20]), name
+        json.dumps(ref.to_dict())  # plain values: the CLI prints it as JSON
+
+
+def test_cylinder_reference_gives_units_defaults_ranges_and_limits() -> None:
+    ref = reference(Cylinder)
+    area = next(p for p in ref.parameters if p["name"] == "A_A")
+    assert (area["unit"], area["default"], area["range"]) == ("m²", 2e-3, "> 0")
+    floor = next(p for p in ref.parameters if p["name"] == "p_floor")
+    assert floor["range"] == "≥ -101325"
+    assert {lim["signal"] for lim in ref.limits} == {"pA", "pB", "x", "VA", "VB"}
+    shown = text(ref)
+    assert "bulk_modulus = 'constant': one of constant, lee, eggerth" in shown
+    assert "QA [m³/s]  flow into side A (must be connected)" in shown
+
+
+def test_published_defaults_name_their_parameter_set() -> None:
+    ref = reference("ServoSolenoidValve")
+    k = next(p for p in ref.parameters if p["name"] == "k")
+    assert k["default_from"].startswith("FerreiraND") and k["default"] > 0
+
+
+def test_signal_blocks_take_their_unit_and_former_names_resolve() -> None:
+    step = reference("Step")
+    assert "unit" in step.arguments and next(p for p in step.parameters if p["name"] == "amplitude")["unit"] == "signal"
+    assert reference("MareSpoolValve").name == "StagedSlotValve"
+    with pytest.raises(ParameterError, match=r"component type 'Valve': unknown; known: .*Cylinder"):
+        reference("Valve")
