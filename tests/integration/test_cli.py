@@ -95,3 +95,15 @@ def test_cli_components_and_describe(cli) -> None:
     assert code == 0 and json.loads(out)["parameters"][0]["name"] == "V"
     code, _, err = cli("describe", "Valve")
     assert code == 2 and "component type 'Valve': unknown" in err
+
+
+def test_result_plot_without_arguments_shows_the_main_signals(tmp_path) -> None:
+    import hydroservo as hs
+
+    result = hs.load_model("flight-simulator").simulate(t_end=0.2, n_points=21)
+    assert result.panels == [["vi", "eo"], ["xv"], ["ydot"], ["y"], ["p1", "p2"]]  # the model file's plots
+    fig = result.plot(file=tmp_path / "r.png")
+    labels = [ax.get_ylabel() for ax in fig.axes]
+    assert labels == ["vi, eo [V]", "xv [m]", "ydot [m/s]", "y [m]", "p1, p2 [Pa]"]
+    legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert legend == ["vi: command voltage", "eo: error voltage at the RC network output"]

@@ -76,14 +76,6 @@ def cmd_models(args: argparse.Namespace) -> int:
     return 0
 
 
-def _default_panels(system: Any, result: Any) -> list[list[str]]:
-    if system.plots:
-        return list(system.plots)
-    if system.aliases:
-        return [[a] for a in list(system.aliases)[:8]]
-    return [[n] for n in result.names[: min(8, len(result.names))]]
-
-
 def _check_plots(system: Any, panels: list[list[str]]) -> None:
     """Refuse, before the run, plot panels naming unknown signals and plot units of the wrong dimension."""
     from hydroservo.units import from_si
@@ -174,8 +166,9 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     found = _report_warnings(result, args.strict)
     with out:
         result.to_csv(out.file(f"{name}.csv"))
-        title = f"{system.name}: simulated response"
-        result.plot(*_default_panels(system, result), units=system.plot_units, file=out.file(f"{name}.png"), title=title)
+        changed = ", ".join(s.strip() for s in args.set)
+        title = f"{system.name}: simulated response" + (f" ({changed})" if changed else "")
+        result.plot(units=system.plot_units, file=out.file(f"{name}.png"), title=title)
     files = {"csv": out.final(f"{name}.csv"), "plot": out.final(f"{name}.png")}
     if not args.json:
         _print_summary(system, result, t_end, wall, files)

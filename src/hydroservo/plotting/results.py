@@ -22,6 +22,8 @@ class Result(Protocol):
     t: np.ndarray
     model: str
     units: dict[str, str]
+    descriptions: dict[str, str]
+    panels: list[list[str]]
 
     @property
     def names(self) -> list[str]: ...
@@ -39,24 +41,25 @@ def plot_result(
     """Plot signals of ``result`` against time, one panel per argument.
 
     An argument may be a name or a list of names sharing a panel (same unit).
-    ``units`` maps names to display units, e.g. ``{"y": "in"}``.
+    Without arguments, the result's main signals (:attr:`Result.panels`: the
+    model file's plots, else its aliases, else its states). ``units`` maps names
+    to display units, e.g. ``{"y": "in"}``. Each curve is labelled with its
+    name and description, each axis with the names and the unit.
     """
     plt = pyplot(file)
-    panels = [[n] if isinstance(n, str) else list(n) for n in (names or [[result.names[0]]])]
+    chosen = names or result.panels or [[n] for n in result.names[:6]]
+    panels = [[n] if isinstance(n, str) else list(n) for n in chosen]
     fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(7.5, 1.9 + 1.6 * len(panels)), squeeze=False)
     for ax, panel in zip(axes[:, 0], panels):
-        labels = []
+        shown = []
         for n in panel:
             unit = (units or {}).get(n)
-            shown = unit if unit else si_unit(result.units.get(n, ""))
-            ax.plot(result.t, result.get(n, unit), label=n)
-            labels.append(shown)
-        ax.set_ylabel(f"{' / '.join(panel)} [{labels[0]}]" if len(panel) == 1 else f"[{labels[0]}]")
-        if len(panel) > 1:
-            ax.legend(loc="best", fontsize="small")
+            shown.append(unit if unit else si_unit(result.units.get(n, "")))
+            described = result.descriptions.get(n, "")
+            ax.plot(result.t, result.get(n, unit), label=f"{n}: {described}" if described and described != n else n)
+        ax.set_ylabel(f"{', '.join(panel)} [{shown[0]}]")
+        ax.legend(loc="best", fontsize="small", framealpha=0.8)
         ax.grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel("t [s]")
     fig.suptitle(title or result.model)
     return finish(fig, file, plt)
-
-

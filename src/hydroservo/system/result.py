@@ -81,6 +81,8 @@ class Result(_Signals):
         self.model = model
         #: Physical bounds the run crossed (:mod:`hydroservo.system.plausibility`); empty if none.
         self.warnings: list[Implausible] = []
+        #: The main signals, panel by panel, that :meth:`plot` shows without arguments (set by the system).
+        self.panels: list[list[str]] = []
 
     def get(self, name: str, unit: str | None = None) -> np.ndarray:
         """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``)."""
@@ -138,7 +140,8 @@ class Result(_Signals):
     ) -> Figure:
         """Plot signals against time, one panel per argument (:func:`hydroservo.plotting.results.plot_result`).
 
-        An argument may be a name or a list of names sharing a panel (same unit).
+        Without arguments, the main signals (:attr:`panels`). An argument may be
+        a name or a list of names sharing a panel (same unit).
         ``units`` maps names to display units, e.g. ``{"y": "in"}``.
         """
         from hydroservo.plotting.results import plot_result

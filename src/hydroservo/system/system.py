@@ -225,7 +225,18 @@ class System:
         """Simulate; see :meth:`hydroservo.system.model.Model.simulate`."""
         model = self.build()
         t = self.t_end if t_end is None else to_si(t_end, "s", what="t_end")
-        return model.simulate(t, self.parameter_vector(params), **kwargs)
+        result = model.simulate(t, self.parameter_vector(params), **kwargs)
+        result.panels = self.default_panels()
+        return result
+
+    def default_panels(self) -> list[list[str]]:
+        """The main signals to plot, panel by panel: the model file's ``plots``, else one panel per alias,
+        else one per state (at most 8 panels)."""
+        if self.plots:
+            return [list(panel) for panel in self.plots]
+        if self.aliases:
+            return [[a] for a in list(self.aliases)[:8]]
+        return [[f"{c}.{s}"] for c, comp in self.components.items() for s in comp.STATES][:8]
 
     def trim(self, params: Mapping[str, Any] | None = None, **kwargs: Any) -> dict[str, float]:
         """Equilibrium state; see :meth:`hydroservo.system.model.Model.trim`."""
