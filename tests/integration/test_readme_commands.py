@@ -56,3 +56,18 @@ def test_every_readme_command_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPat
             assert code == 0, f"{part.strip()!r} exited with {code}"
             if target is not None:
                 target.write_text(out.getvalue())
+
+
+@pytest.mark.slow
+def test_readme_python_blocks_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The README's Python examples run as written, one after the other, in a fresh folder."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    monkeypatch.chdir(tmp_path)
+    blocks = re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), flags=re.S)
+    assert len(blocks) >= 3
+    namespace: dict[str, object] = {}
+    for block in blocks:
+        exec(compile(block, "README.md", "exec"), namespace)  # noqa: S102 - the README's own examples
+    assert (tmp_path / "family.png").exists() and (tmp_path / "metrics.png").exists()

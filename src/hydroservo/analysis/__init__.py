@@ -8,6 +8,10 @@ module                 analyses
 :mod:`.static_bench`   the ARP490 static tests of a four-way valve: flow gain,
                        pressure gain, leakage, pressure-flow, Table-2 metrics
                        ([MareAttarND])
+:mod:`.step`           step-response metrics: rise and settling time, overshoot,
+                       peak, steady-state error
+:mod:`.study`          parameter studies: grids, Sobol, Latin-hypercube and
+                       random designs; a DataFrame of parameters and metrics
 =====================  ==========================================================
 """
 
@@ -24,8 +28,14 @@ from hydroservo.analysis.static_bench import (
     table2_metrics,
     temperature_table,
 )
+from hydroservo.analysis.step import step_metrics
+from hydroservo.analysis.study import grid, metrics_table, sample
 
 __all__ = [
+    "step_metrics",
+    "grid",
+    "sample",
+    "metrics_table",
     "FrequencyResponse",
     "PeriodicResponse",
     "sine_response",

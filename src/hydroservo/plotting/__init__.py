@@ -13,6 +13,8 @@ module                 plots
                        pseudo-section valve ([FerreiraND] Figs. 2-9)
 :mod:`.staged_slot`    test-bench characteristics of the staged-slot valve
                        across temperature ([MareAttarND] Figs. 3-4, 6-8)
+:mod:`.study`          parameter studies: a family of responses coloured by a
+                       parameter, metrics against a parameter
 =====================  ==========================================================
 """
 

@@ -519,7 +519,18 @@ class Model:
             "implausible": len(implausible),
             "threads": nthreads,
         }
-        result = BatchResult(grid, data, dict(self.units), params, stats, self.name, outputs, dict(sorted(failures.items())))
+        result = BatchResult(
+            grid,
+            data,
+            dict(self.units),
+            params,
+            stats,
+            self.name,
+            outputs,
+            dict(sorted(failures.items())),
+            varied=list(sets),
+            param_units=dict(self.parameter_units),
+        )
         result.warnings = implausible
         if implausible:
             warnings.warn(

@@ -25,6 +25,7 @@ class _Signals:
 
     t: np.ndarray
     model: str
+    units: dict[str, str]
     _data: dict[str, np.ndarray]
     _outputs: Callable[[], dict[str, np.ndarray]] | None
 
@@ -50,6 +51,21 @@ class _Signals:
             raise ParameterError(
                 f"no signal {name!r} in the result of {self.model!r}; signals: {', '.join(self.data)}"
             ) from None
+
+    def get(self, name: str, unit: str | None = None) -> np.ndarray:
+        """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``)."""
+        values = self[name]
+        if unit is None:
+            return values
+        own = self.units.get(name, "")
+        try:
+            factor = from_si(1.0, own, unit)
+        except UnitError:
+            raise UnitError(
+                f"signal {name!r} of {self.model!r} is in {si_unit(own)}: cannot show it in {unit!r}"
+            ) from None
+        scaled: np.ndarray = np.asarray(factor) * values
+        return scaled
 
 
 class Result(_Signals):
@@ -83,21 +99,6 @@ class Result(_Signals):
         self.warnings: list[Implausible] = []
         #: The main signals, panel by panel, that :meth:`plot` shows without arguments (set by the system).
         self.panels: list[list[str]] = []
-
-    def get(self, name: str, unit: str | None = None) -> np.ndarray:
-        """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``)."""
-        values = self[name]
-        if unit is None:
-            return values
-        own = self.units.get(name, "")
-        try:
-            factor = from_si(1.0, own, unit)
-        except UnitError:
-            raise UnitError(
-                f"signal {name!r} of {self.model!r} is in {si_unit(own)}: cannot show it in {unit!r}"
-            ) from None
-        scaled: np.ndarray = np.asarray(factor) * values
-        return scaled
 
     def summary(self) -> dict[str, dict[str, Any]]:
         """Unit, final, minimum and maximum value of every signal."""
@@ -169,15 +170,61 @@ class BatchResult(_Signals):
         model: str,
         outputs: Callable[[], dict[str, np.ndarray]] | None = None,
         failed: dict[int, str] | None = None,
+        varied: Sequence[str] = (),
+        param_units: dict[str, str] | None = None,
     ) -> None:
         self.t, self._data, self.units, self.params, self.stats, self.model = t, data, units, params, stats, model
         self._outputs = outputs
         self.failed: dict[int, str] = dict(failed or {})
+        #: The parameters the batch varied, and the units of all parameters (SI).
+        self.varied = list(varied)
+        self.param_units = dict(param_units or {})
         #: Physical bounds crossed, by run (:mod:`hydroservo.system.plausibility`).
         self.warnings: dict[int, list[Implausible]] = {}
 
     def __len__(self) -> int:
         return int(self.stats["runs"])
+
+    def __repr__(self) -> str:
+        n, bad = len(self), len(self.failed)
+        span = f"{self.t.size} times, {self.t[0]:g} to {self.t[-1]:g} s"
+        return (
+            f"<BatchResult of {self.model!r}: {n} runs, {n - bad} ok ({len(self.warnings)} implausible), {bad} failed; "
+            f"varied {', '.join(self.varied) or 'nothing'}; {span}>"
+        )
+
+    def table(
+        self,
+        signal: str | None = None,
+        *,
+        unit: str | None = None,
+        t_step: float = 0.0,
+        y_final: float | None = None,
+        reference: float | None = None,
+        band: float = 0.02,
+    ) -> pd.DataFrame:
+        """A DataFrame, one row per run: varied parameters, status, and the step metrics of ``signal``
+        (:func:`hydroservo.analysis.study.metrics_table`)."""
+        from hydroservo.analysis.study import metrics_table
+
+        return metrics_table(
+            self, signal, unit=unit, t_step=t_step, y_final=y_final, reference=reference, band=band
+        )
+
+    def plot(
+        self,
+        signal: str,
+        *,
+        unit: str | None = None,
+        color_by: str | None = None,
+        title: str | None = None,
+        file: str | Path | None = None,
+    ) -> Figure:
+        """The family of curves of ``signal``, one per run that did not fail, coloured by the value of
+        ``color_by`` (default: the first varied parameter) (:func:`hydroservo.plotting.study.plot_family`)."""
+        from hydroservo.plotting.study import plot_family
+
+        return plot_family(self, signal, unit=unit, color_by=color_by, title=title, file=file)
 
     @property
     def ok(self) -> np.ndarray:
