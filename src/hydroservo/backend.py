@@ -7,6 +7,7 @@ symbolic building blocks of the components.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import casadi as ca
@@ -23,40 +24,26 @@ def is_symbolic(*args: Any) -> bool:
     return False
 
 
-def sqrt(x: Any) -> Any:
-    return ca.sqrt(x) if isinstance(x, _SYMBOLIC) else np.sqrt(x)
+def _elementwise(symbolic: Callable[[Any], Any], numeric: Callable[[Any], Any]) -> Callable[[Any], Any]:
+    """One function of one argument: CasADi's for an expression, NumPy's otherwise."""
+
+    def apply(x: Any) -> Any:
+        return symbolic(x) if isinstance(x, _SYMBOLIC) else numeric(x)
+
+    apply.__name__ = numeric.__name__
+    apply.__doc__ = f"Elementwise {numeric.__name__}, of a NumPy value or a CasADi expression."
+    return apply
 
 
-def exp(x: Any) -> Any:
-    return ca.exp(x) if isinstance(x, _SYMBOLIC) else np.exp(x)
-
-
-def log10(x: Any) -> Any:
-    return ca.log10(x) if isinstance(x, _SYMBOLIC) else np.log10(x)
-
-
-def sin(x: Any) -> Any:
-    return ca.sin(x) if isinstance(x, _SYMBOLIC) else np.sin(x)
-
-
-def atan(x: Any) -> Any:
-    return ca.atan(x) if isinstance(x, _SYMBOLIC) else np.arctan(x)
-
-
-def floor(x: Any) -> Any:
-    return ca.floor(x) if isinstance(x, _SYMBOLIC) else np.floor(x)
-
-
-def tanh(x: Any) -> Any:
-    return ca.tanh(x) if isinstance(x, _SYMBOLIC) else np.tanh(x)
-
-
-def fabs(x: Any) -> Any:
-    return ca.fabs(x) if isinstance(x, _SYMBOLIC) else np.abs(x)
-
-
-def sign(x: Any) -> Any:
-    return ca.sign(x) if isinstance(x, _SYMBOLIC) else np.sign(x)
+sqrt = _elementwise(ca.sqrt, np.sqrt)
+exp = _elementwise(ca.exp, np.exp)
+log10 = _elementwise(ca.log10, np.log10)
+sin = _elementwise(ca.sin, np.sin)
+atan = _elementwise(ca.atan, np.arctan)
+floor = _elementwise(ca.floor, np.floor)
+tanh = _elementwise(ca.tanh, np.tanh)
+fabs = _elementwise(ca.fabs, np.abs)
+sign = _elementwise(ca.sign, np.sign)
 
 
 def fmax(a: Any, b: Any) -> Any:

@@ -19,6 +19,7 @@ __all__ = [
     "FluidRangeWarning",
     "ImplausibleResultWarning",
     "RenamedWarning",
+    "shorten",
 ]
 
 
@@ -64,3 +65,8 @@ class ImplausibleResultWarning(UserWarning):
 
 class RenamedWarning(UserWarning):
     """A parameter or component type was given under the name it had before it was renamed."""
+
+
+def shorten(text: str, limit: int = 60) -> str:
+    """``text`` as a message shows it: whole, or its first ``limit`` characters and how long it was."""
+    return text if len(text) <= limit else f"{text[:limit]}... ({len(text)} characters)"

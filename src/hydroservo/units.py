@@ -26,7 +26,7 @@ import math
 import re
 from typing import TYPE_CHECKING, Any
 
-from hydroservo.errors import UnitError
+from hydroservo.errors import UnitError, shorten
 
 if TYPE_CHECKING:
     import pint
@@ -155,11 +155,6 @@ def is_bare_number(value: Any) -> bool:
     return False
 
 
-def _shown(text: str, limit: int = 60) -> str:
-    """``text`` quoted, shortened to ``limit`` characters for a message."""
-    return repr(text) if len(text) <= limit else repr(text[:limit]) + f"... ({len(text)} characters)"
-
-
 def split_quantity(text: str, *, what: str = "value") -> tuple[float, str]:
     """``"1500 psi"`` -> ``(1500.0, "psi")``: a finite number and the unit text after it (module notes)."""
     stripped = text.strip()
@@ -168,7 +163,7 @@ def split_quantity(text: str, *, what: str = "value") -> tuple[float, str]:
     match = _NUMBER.match(stripped)
     if match is None:
         raise UnitError(
-            f"{what}: cannot read {_shown(text)} as a quantity; expected a number followed by a unit, "
+            f"{what}: cannot read {shorten(text)!r} as a quantity; expected a number followed by a unit, "
             "e.g. '1500 psi' or '25.5 L/min'"
         )
     magnitude = float(match.group())
@@ -192,7 +187,7 @@ def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
             q: pint.Quantity[Any] = reg.Quantity(magnitude, _unit(unit) if unit else "")
         except UnitError as exc:
             raise UnitError(
-                f"{what}: cannot read {_shown(value)} as a quantity ({exc}); expected a number followed by a unit, "
+                f"{what}: cannot read {shorten(value)!r} as a quantity ({exc}); expected a number followed by a unit, "
                 "e.g. '1500 psi'"
             ) from None
         if not isinstance(q, reg.Quantity):  # a bare number in a string

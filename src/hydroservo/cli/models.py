@@ -11,7 +11,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from hydroservo.cli.common import add_output_options, output_folder
-from hydroservo.errors import HydroservoError, ImplausibleResultError, ParameterError
+from hydroservo.errors import HydroservoError, ImplausibleResultError, ParameterError, shorten
 
 __all__ = ["add_parsers", "load_with_sets"]
 
@@ -20,7 +20,7 @@ def _parse_sets(items: Sequence[str]) -> list[tuple[str, str]]:
     out = []
     for item in items:
         if "=" not in item:
-            raise ParameterError(f'--set {_short(item)!r}: expected COMPONENT.PARAMETER=VALUE, e.g. --set "load.W=3000 lbf"')
+            raise ParameterError(f'--set {shorten(item)!r}: expected COMPONENT.PARAMETER=VALUE, e.g. --set "load.W=3000 lbf"')
         key, val = item.split("=", 1)
         out.append((key.strip(), val.strip()))
     return out
@@ -31,38 +31,33 @@ def load_with_sets(name: str, sets: Sequence[str]) -> Any:
     from hydroservo.io.model_file import load_model
 
     system = load_model(name)
+    touched: dict[str, list[str]] = {}
     for key, val in _parse_sets(sets):
         if key.count(".") != 1:
-            raise ParameterError(f"--set {_short(key)}={_short(val)}: expected COMPONENT.PARAMETER, e.g. load.W")
+            raise ParameterError(f"--set {shorten(key)}={shorten(val)}: expected COMPONENT.PARAMETER, e.g. load.W")
         cname, pname = key.split(".")
         if cname not in system.components:
             raise ParameterError(
-                f"--set {_short(key)}={_short(val)}: no component {cname!r}; components: {', '.join(system.components)}"
+                f"--set {shorten(key)}={shorten(val)}: no component {cname!r}; components: {', '.join(system.components)}"
             )
         comp = system.components[cname]
         known = set(comp.PARAMETERS) | set(comp.OPTIONS) | set(comp.RENAMED)
         if pname not in known:
             names = ", ".join(list(comp.PARAMETERS) + list(comp.OPTIONS))
             raise ParameterError(
-                f"--set {_short(key)}={_short(val)}: {cname!r} has no parameter {pname!r}; parameters: {names}"
+                f"--set {shorten(key)}={shorten(val)}: {cname!r} has no parameter {pname!r}; parameters: {names}"
             )
         try:
             system.set(key, val)
         except HydroservoError as exc:
-            raise ParameterError(f"--set {key}={_short(val)}: {exc}") from None
-    touched: dict[str, list[str]] = {}
-    for key, val in _parse_sets(sets):
-        touched.setdefault(key.split(".")[0], []).append(f"{key}={_short(val)}")
+            raise ParameterError(f"--set {key}={shorten(val)}: {exc}") from None
+        touched.setdefault(cname, []).append(f"{key}={shorten(val)}")
     for cname, items in touched.items():  # a cross-parameter check the --set values break is theirs, not the file's
         try:
             system.components[cname].check()
         except HydroservoError as exc:
             raise ParameterError(f"--set {', '.join(items)}: {exc}") from None
     return system
-
-
-def _short(text: str, limit: int = 60) -> str:
-    return text if len(text) <= limit else f"{text[:limit]}... ({len(text)} characters)"
 
 
 def cmd_models(args: argparse.Namespace) -> int:

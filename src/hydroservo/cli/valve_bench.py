@@ -21,11 +21,10 @@ MAX_OPENINGS = 10_001
 
 
 def _temperatures(text: str, what: str) -> list[float]:
-    from hydroservo.units import ABSOLUTE_ZERO
-
+    """Finite temperatures [degC]; whether the fluid model holds at them is its own check (``Fluid.check_range``)."""
     if text.strip().lower().endswith(("degc", "°c", "c")):
         raise ParameterError(f"{what} {text!r}: give bare numbers in degC, e.g. -40,-15,32")
-    return numbers(text, what, above=ABSOLUTE_ZERO, expected="finite temperatures above absolute zero [degC]")
+    return numbers(text, what)
 
 
 def _metrics_table(table: dict[str, Any]) -> list[str]:
@@ -150,11 +149,12 @@ def cmd_identify(args: argparse.Namespace) -> int:
     if len(weights) != 2 or min(weights) < 0:
         raise ParameterError(f"--weights {args.weights!r}: expected two non-negative numbers W_P,W_LK")
     fixed: tuple[str, ...] = () if args.fit_widths else ("w_L", "w_H")
-    temps = [data.temperature] + (_temperatures(args.predict, "--predict") if args.predict else [])
+    predicted = _temperatures(args.predict, "--predict") if args.predict else []
     try:
-        start.fluid.check_range(np.array([data.bench.P_r, data.bench.P_s]), np.array(temps), args.strict)
+        start.fluid.check_range(np.array([data.bench.P_r, data.bench.P_s]), np.array(predicted), args.strict)
     except ParameterError as exc:
         raise ParameterError(f"--predict {args.predict!r}: {exc}") from None
+    temps = [data.temperature, *predicted]
     out = output_folder(args, f"hydroservo-identify-{Path(args.curves[0]).stem}")
     out.expect(["identified.toml", "identification.png"])
     res = identify_staged_slot(data, start, weights=(weights[0], weights[1]), high_laps=args.high_laps, fixed=fixed)

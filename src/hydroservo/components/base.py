@@ -41,10 +41,9 @@ from typing import Any, ClassVar, Self
 
 from hydroservo.data import parameter_set
 from hydroservo.errors import ParameterError, RenamedWarning, UnitError
-from hydroservo.units import VACUUM, check_unit, is_bare_number, si_unit, to_si
+from hydroservo.units import check_unit, is_bare_number, si_unit, to_si
 
 __all__ = [
-    "VACUUM",
     "FromSet",
     "Param",
     "State",

@@ -6,10 +6,11 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import VACUUM, Component, Limit, Option, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Limit, Option, Output, Param, Port, State, register
 from hydroservo.errors import ParameterError
 from hydroservo.laws.chamber import check_valve_floor, cylinder_volumes, pressure_rate
 from hydroservo.laws.fluid import bulk_modulus_eggerth, bulk_modulus_lee
+from hydroservo.units import VACUUM
 
 __all__ = ["Cylinder"]
 

@@ -8,8 +8,9 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import VACUUM, Component, Limit, Output, Param, register
+from hydroservo.components.base import Component, Limit, Output, Param, register
 from hydroservo.errors import ParameterError
+from hydroservo.units import VACUUM
 
 __all__ = ["ConstantPressure", "Tank", "PressureTable"]
 
@@ -32,17 +33,11 @@ class ConstantPressure(Component):
 
 
 @register
-class Tank(Component):
+class Tank(ConstantPressure):
     """Return line at constant pressure; [FlightSimulatorND] assumption (6): atmospheric (0 gauge)."""
 
     PARAMETERS = {"p": Param(0.0, "Pa", "tank pressure (gauge)", min=VACUUM)}
     OUTPUTS = {"p": Output("Pa", "tank pressure")}
-    LIMITS = {"p": Limit("source")}
-
-    def output_equations(
-        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
-    ) -> dict[str, Any]:
-        return {"p": p["p"]}
 
 
 @register

@@ -5,8 +5,9 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import VACUUM, Component, Limit, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Limit, Output, Param, Port, State, register
 from hydroservo.laws.chamber import pressure_rate
+from hydroservo.units import VACUUM
 
 __all__ = ["Volume"]
 

@@ -92,7 +92,7 @@ def read_csv_table(
 MIN_POINTS = 3
 
 
-def _check_abscissa(where: str, x: np.ndarray, curves: Mapping[str, np.ndarray], name: str) -> None:
+def _check_curves(where: str, x: np.ndarray, curves: Mapping[str, np.ndarray], name: str) -> None:
     """Refuse a row that has a curve value but no abscissa (the point could not be placed), and a curve
     of fewer than :data:`MIN_POINTS` points."""
     for c, values in curves.items():
@@ -114,7 +114,7 @@ def read_static_curves(path: str | Path) -> dict[str, np.ndarray]:
             f"curves file {str(path)!r}: missing column(s) {', '.join(missing)}; expected 'x_s [-], P_L [-], "
             "q_lk [L/min]' and optionally 'Q_L [L/min]'"
         )
-    _check_abscissa(f"curves file {str(path)!r}", out["x_s"], {k: v for k, v in out.items() if k != "x_s"}, "x_s")
+    _check_curves(f"curves file {str(path)!r}", out["x_s"], {k: v for k, v in out.items() if k != "x_s"}, "x_s")
     if np.any(out["q_lk"][np.isfinite(out["q_lk"])] < 0):
         raise ParameterError(f"curves file {str(path)!r}: negative leakage flow in q_lk; expected >= 0")
     if np.any(np.abs(out["x_s"][np.isfinite(out["x_s"])]) > 1):
@@ -152,7 +152,7 @@ def read_bench_curves(paths: Sequence[str | Path]) -> BenchCurves:
             )
         if ("P_1" in cols) != ("P_2" in cols):
             raise ParameterError(f"{where}: expected both P_1 and P_2 (the pressure-gain test), or neither")
-        _check_abscissa(where, cols["X"], {c: cols[c] for c in tests}, "X")
+        _check_curves(where, cols["X"], {c: cols[c] for c in tests}, "X")
         for c in tests:
             if c in arrays:
                 raise ParameterError(f"{where}: column {c} is also in another file; expected each curve once")

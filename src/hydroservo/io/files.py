@@ -46,7 +46,7 @@ def read_text(path: str | Path, what: str, error: type[HydroservoError] = Parame
 _UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
 
 
-def safe_name(name: str, fallback: str = "model") -> str:
+def safe_name(name: str, fallback: str = "model", limit: int = 100) -> str:
     """A plain file name from ``name``: only letters, digits, ``.``, ``_`` and ``-``; no leading dot or dash.
 
     >>> safe_name("../escaped"), safe_name("/etc/passwd"), safe_name(""), safe_name("valve cylinder")
@@ -54,7 +54,7 @@ def safe_name(name: str, fallback: str = "model") -> str:
     """
     cleaned = _UNSAFE.sub("-", name).strip(".-")
     cleaned = re.sub(r"\.{2,}", ".", cleaned)
-    return cleaned[:100] or fallback
+    return cleaned[:limit] or fallback
 
 
 class OutputFolder:
@@ -101,7 +101,7 @@ class OutputFolder:
         """Where to write the output file ``name`` (a plain name)."""
         if self.staging is None:
             raise RuntimeError("OutputFolder.file() outside its with block")
-        if not name or _UNSAFE.search(name) or name.startswith((".", "-")) or ".." in name or len(name) > 255:
+        if name != safe_name(name, fallback="", limit=255):
             raise ParameterError(f"output file name {name!r}: expected a plain name (letters, digits, . _ -)")
         return self.staging / name
 

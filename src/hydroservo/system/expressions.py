@@ -66,10 +66,27 @@ def names_in(text: str, what: str = "expression") -> list[str]:
     return out
 
 
-def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expression") -> Any:
-    """Evaluate ``text`` with dotted names taken from ``names``."""
-    if isinstance(text, (int, float)):
-        return float(text)
+_OPERATORS: dict[type[ast.operator], Callable[[Any, Any], Any]] = {
+    ast.Add: lambda a, b: a + b,
+    ast.Sub: lambda a, b: a - b,
+    ast.Mult: lambda a, b: a * b,
+    ast.Div: lambda a, b: a / b,
+    ast.Pow: lambda a, b: a**b,
+}
+
+
+def _is_zero(value: Any) -> bool:
+    if isinstance(value, float):
+        return value == 0.0
+    if isinstance(value, (ca.SX, ca.DM)):
+        return bool(value.is_zero())
+    return False  # a quantity of the dimension check: magnitude 1 by construction
+
+
+def _evaluate(
+    text: str, names: Mapping[str, Any], funcs: Mapping[str, Callable[[Any], Any]], what: str
+) -> Any:
+    """The value of ``text`` on ``names``: numbers, CasADi expressions or pint quantities alike."""
     tree = _parse(text, what)
 
     def ev(node: ast.AST) -> Any:
@@ -78,33 +95,19 @@ def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expressio
         if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.UAdd)):
             val = ev(node.operand)
             return -val if isinstance(node.op, ast.USub) else val
-        if isinstance(node, ast.BinOp):
+        if isinstance(node, ast.BinOp) and type(node.op) in _OPERATORS:
             a, b = ev(node.left), ev(node.right)
-            if isinstance(node.op, ast.Div) and (b == 0 if isinstance(b, float) else ca.SX(b).is_zero()):
+            if isinstance(node.op, ast.Div) and _is_zero(b):
                 raise ModelError(f"{what}: {text!r} divides by zero")
-            ops: dict[type[ast.operator], Callable[[], Any]] = {
-                ast.Add: lambda: a + b,
-                ast.Sub: lambda: a - b,
-                ast.Mult: lambda: a * b,
-                ast.Div: lambda: a / b,
-                ast.Pow: lambda: a**b,
-            }
-            for op, fn in ops.items():
-                if isinstance(node.op, op):
-                    try:
-                        value = fn()
-                    except (ZeroDivisionError, OverflowError, ValueError):
-                        raise ModelError(f"{what}: {text!r} has no finite value") from None
-                    if isinstance(value, (float, complex)) and not (isinstance(value, float) and math.isfinite(value)):
-                        raise ModelError(f"{what}: {text!r} has no finite value")
-                    return value
-        if (
-            isinstance(node, ast.Call)
-            and isinstance(node.func, ast.Name)
-            and node.func.id in _FUNCS
-            and len(node.args) == 1
-        ):
-            return _FUNCS[node.func.id](ev(node.args[0]))
+            try:
+                value = _OPERATORS[type(node.op)](a, b)
+            except (ZeroDivisionError, OverflowError):
+                raise ModelError(f"{what}: {text!r} has no finite value") from None
+            if isinstance(value, complex) or (isinstance(value, float) and not math.isfinite(value)):
+                raise ModelError(f"{what}: {text!r} has no finite value")
+            return value
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in funcs and len(node.args) == 1:
+            return funcs[node.func.id](ev(node.args[0]))
         name = _dotted(node)
         if name is not None:
             if name in names:
@@ -120,6 +123,13 @@ def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expressio
         raise ModelError(f"{what}: expression {text!r} is nested too deeply") from None
 
 
+def evaluate(text: str | float, names: Mapping[str, Any], what: str = "expression") -> Any:
+    """Evaluate ``text`` with dotted names taken from ``names``."""
+    if isinstance(text, (int, float)):
+        return float(text)
+    return _evaluate(text, names, _FUNCS, what)
+
+
 def check_dimension(text: str, units: Mapping[str, str], declared: str, what: str = "expression") -> None:
     """Refuse an expression whose dimension is not that of ``declared``, or that adds unlike quantities.
 
@@ -133,7 +143,7 @@ def check_dimension(text: str, units: Mapping[str, str], declared: str, what: st
     one = {name: reg.Quantity(1.0, unit or "") for name, unit in units.items()}
     funcs: dict[str, Callable[[Any], Any]] = {"sqrt": lambda q: q**0.5, "abs": abs, "sin": _dimensionless, "cos": _dimensionless}
     try:
-        value = _evaluate_with(_parse(text, what).body, one, funcs)
+        value = _evaluate(text, one, funcs, what)
     except ModelError:
         raise
     except Exception as exc:  # pint's DimensionalityError and the like
@@ -151,29 +161,3 @@ def _dimensionless(q: Any) -> Any:
     if hasattr(q, "dimensionless") and not q.dimensionless:
         raise ValueError(f"sin and cos take dimensionless arguments, not {q.units}")
     return 1.0
-
-
-def _evaluate_with(node: ast.AST, names: Mapping[str, Any], funcs: Mapping[str, Callable[[Any], Any]]) -> Any:
-    """The value of a parsed expression (already known to be of the safe language) on ``names``."""
-    if isinstance(node, ast.Constant):
-        return float(node.value)  # type: ignore[arg-type]  # numbers only: evaluate() checked the text
-    if isinstance(node, ast.UnaryOp):
-        val = _evaluate_with(node.operand, names, funcs)
-        return -val if isinstance(node.op, ast.USub) else val
-    if isinstance(node, ast.BinOp):
-        a, b = _evaluate_with(node.left, names, funcs), _evaluate_with(node.right, names, funcs)
-        if isinstance(node.op, ast.Add):
-            return a + b
-        if isinstance(node.op, ast.Sub):
-            return a - b
-        if isinstance(node.op, ast.Mult):
-            return a * b
-        if isinstance(node.op, ast.Div):
-            return a / b
-        return a**b
-    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
-        return funcs[node.func.id](_evaluate_with(node.args[0], names, funcs))
-    name = _dotted(node)
-    if name is not None and name in names:
-        return names[name]
-    return _CONSTS.get(name or "", 1.0)

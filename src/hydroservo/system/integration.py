@@ -40,7 +40,7 @@ _REASONS = {
     "CV_UNREC_RHSFUNC_ERR": "the right-hand side gave NaN or Inf and the step could not be retried",
     "CV_LSETUP_FAIL": "the Jacobian could not be factorised (a singular or NaN Jacobian)",
     "CV_LSOLVE_FAIL": "the linear solve failed (a singular or NaN Jacobian)",
-    "CV_TOO_MANY_STEPS": "the step budget was used up",
+    "CV_TOO_MUCH_ACC": "the tolerances ask for more accuracy than floating point gives (loosen rtol or atol)",
 }
 
 

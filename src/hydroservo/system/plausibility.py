@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from hydroservo.components.base import VACUUM
+from hydroservo.units import VACUUM
 
 __all__ = ["PRESSURE_MARGIN", "VACUUM_MARGIN", "TRAVEL_MARGIN", "Watched", "Implausible", "check"]
 

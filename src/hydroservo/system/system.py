@@ -208,8 +208,7 @@ class System:
         if self._model is not None and self._model_key == key:
             return self._model
         try:
-            for comp in self.components.values():
-                comp.check()
+            self.check_components()
             self._model = Model(*assemble(self))
         except (ModelError, ParameterError) as exc:
             if self.source and not str(exc).startswith(self.source):
