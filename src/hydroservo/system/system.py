@@ -165,19 +165,27 @@ class System:
     def parameter_values(self) -> dict[str, float]:
         return {f"{c}.{p}": comp.values[p] for c, comp in self.components.items() for p in comp.PARAMETERS}
 
+    def parameter_key(self, key: str) -> str:
+        """The current name "comp.param" of a numeric parameter given as ``key`` (a former name is accepted
+        with a warning); an error for an unknown component or parameter, or an option (structural)."""
+        cname, pname = split_name(key, "parameter")
+        comp = self[cname]
+        pname = comp.current_name(pname)
+        if pname in comp.OPTIONS:
+            raise ParameterError(
+                f"{cname}.{pname}: is an option (structural); set it on the system with System.set, not per run"
+            )
+        if pname not in comp.PARAMETERS:
+            comp.parse(pname, 0.0)  # raises the unknown-parameter error, with the known names
+        return f"{cname}.{pname}"
+
     def parse_parameters(self, values: Mapping[str, Any] | None) -> dict[str, float]:
         """Check and convert a mapping "comp.param" -> value (with units) to SI."""
         out: dict[str, float] = {}
         for key, val in (values or {}).items():
-            cname, pname = split_name(key, "parameter")
-            comp = self[cname]
-            pname = comp.current_name(pname)
-            key = f"{cname}.{pname}"
-            if pname in comp.OPTIONS:
-                raise ParameterError(
-                    f"{key}: is an option (structural); set it on the system with System.set, not per run"
-                )
-            out[key] = comp.parse(pname, val)
+            key = self.parameter_key(key)
+            cname, pname = key.split(".", 1)
+            out[key] = self[cname].parse(pname, val)
         return out
 
     def copy(self) -> System:
@@ -254,16 +262,7 @@ class System:
         model = self.build()
         t = self.t_end if t_end is None else to_si(t_end, "s", what="t_end")
         given, n = batch_columns(param_sets)
-        columns: dict[str, list[Any]] = {}
-        for key, vals in given.items():
-            cname, pname = split_name(key, "parameter")
-            comp = self[cname]
-            pname = comp.current_name(pname)
-            if pname in comp.OPTIONS:
-                raise ParameterError(f"batch: {cname}.{pname} is an option (structural): set it with System.set")
-            if pname not in comp.PARAMETERS:
-                comp.parse(pname, 0.0)  # raises the unknown-parameter error, with the known names
-            columns[f"{cname}.{pname}"] = vals
+        columns = {self.parameter_key(key): vals for key, vals in given.items()}
         invalid: dict[int, str] = {}
         si: dict[str, np.ndarray] = {}
         for key, vals in columns.items():
