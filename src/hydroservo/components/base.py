@@ -11,6 +11,11 @@ A component is a small class. At the top it declares
 * ``LIMITS``: signal -> :class:`Limit` (bounds no real circuit crosses, such
   as a chamber pressure below vacuum or a piston beyond its stops; every run
   is checked against them),
+* ``HYDRAULIC``: port name -> :class:`Hydraulic`, the places where oil enters
+  or leaves: each pairs a pressure and a flow signal, so that a user connects
+  a port to a port once (``system.connect("valve.A", "cyl.A")``) and the
+  system works out which side gives the pressure and which the flow
+  (:mod:`hydroservo.system.nodes`),
 
 and below it writes two methods with CasADi expressions:
 
@@ -51,6 +56,7 @@ __all__ = [
     "Output",
     "Option",
     "Limit",
+    "Hydraulic",
     "Component",
     "SIGNAL",
     "REGISTRY",
@@ -195,6 +201,34 @@ class Limit:
             raise ValueError("a travel limit needs lower and upper parameters, and only a travel limit has them")
 
 
+@dataclass(frozen=True)
+class Hydraulic:
+    """A hydraulic port: the pressure ``p`` and the flow ``Q`` at one place of a component.
+
+    Which of the two the component computes decides the port's causality:
+
+    * ``p`` an input and ``Q`` an output: a **flow port** (an orifice, a
+      valve's metering edges, a pump): it takes the pressure of the node and
+      gives the flow;
+    * ``p`` an output (usually a state) and ``Q`` an input: a **pressure
+      port** (a volume, a cylinder chamber, an accumulator, a pressure
+      source): it takes the sum of the flows of the node and gives its pressure.
+
+    ``into`` says the direction in which ``Q`` is counted: True if positive
+    ``Q`` enters the component at this port, False if it leaves it.
+    """
+
+    p: str
+    Q: str
+    description: str
+    into: bool = True
+
+    @property
+    def sign(self) -> float:
+        """+1 if ``Q`` is counted into the component, -1 if out of it."""
+        return 1.0 if self.into else -1.0
+
+
 class Component:
     """Base class of all components. See the module docstring."""
 
@@ -204,6 +238,7 @@ class Component:
     OUTPUTS: ClassVar[dict[str, Output]] = {}
     OPTIONS: ClassVar[dict[str, Option]] = {}
     LIMITS: ClassVar[dict[str, Limit]] = {}
+    HYDRAULIC: ClassVar[dict[str, Hydraulic]] = {}
     #: Former parameter names -> current names (accepted with a :class:`RenamedWarning`).
     RENAMED: ClassVar[dict[str, str]] = {}
 

@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Limit, Option, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
 from hydroservo.errors import ParameterError
 from hydroservo.laws.chamber import check_valve_floor, cylinder_volumes, pressure_rate
 from hydroservo.laws.fluid import bulk_modulus_eggerth, bulk_modulus_lee
@@ -99,6 +99,10 @@ class Cylinder(Component):
         "QB": Port("m^3/s", "flow into side B"),
         "x": Port("m", "piston position"),
         "v": Port("m/s", "piston velocity"),
+    }
+    HYDRAULIC = {
+        "A": Hydraulic("pA", "QA", "chamber A (piston side)"),
+        "B": Hydraulic("pB", "QB", "chamber B (rod side)"),
     }
     OUTPUTS = {
         "pA": Output("Pa", "pressure, side A"),

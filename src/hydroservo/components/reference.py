@@ -43,6 +43,7 @@ class Reference:
     states: list[dict[str, Any]] = field(default_factory=list)
     inputs: list[dict[str, Any]] = field(default_factory=list)
     outputs: list[dict[str, Any]] = field(default_factory=list)
+    hydraulic: list[dict[str, Any]] = field(default_factory=list)
     limits: list[dict[str, Any]] = field(default_factory=list)
     renamed: dict[str, str] = field(default_factory=dict)
 
@@ -116,6 +117,17 @@ def reference(type_name: str | type[Component]) -> Reference:
             for k, p in cls.INPUTS.items()
         ],
         outputs=[{"name": k, "unit": _unit(o.unit), "description": o.description} for k, o in cls.OUTPUTS.items()],
+        hydraulic=[
+            {
+                "name": k,
+                "kind": "pressure" if h.p in cls.OUTPUTS else "flow",
+                "p": h.p,
+                "Q": h.Q,
+                "Q_positive": "into the component" if h.into else "out of the component",
+                "description": h.description,
+            }
+            for k, h in cls.HYDRAULIC.items()
+        ],
         limits=[
             {"signal": k, "kind": lim.kind, "lower": lim.lower, "upper": lim.upper} for k, lim in cls.LIMITS.items()
         ],
@@ -149,6 +161,7 @@ def text(ref: Reference) -> str:
         lines += [f"  {n.ljust(width)}  [{u}]  {d}  {rg}  {m}" for n, u, d, rg, m in rows]
         lines.append("")
     sections = (
+        ("Hydraulic ports (connect a port to ports: system.connect('a.P', 'b.A'))", [_port(h) for h in ref.hydraulic]),
         ("Options", [f"  {o['name']} = {o['default']!r}: one of {', '.join(o['choices'])}; {o['description']}" for o in ref.options]),
         ("States", [f"  {s['name']} [{s['unit']}]  {s['description']} (initial: {s['initial']})" for s in ref.states]),
         ("Inputs", [f"  {p['name']} [{p['unit']}]  {p['description']} ({_input_default(p)})" for p in ref.inputs]),
@@ -160,6 +173,13 @@ def text(ref: Reference) -> str:
         if body:
             lines += [f"{title}:"] + body + [""]
     return "\n".join(lines).rstrip() + "\n"
+
+
+def _port(h: dict[str, Any]) -> str:
+    gives = f"gives the pressure {h['p']}, takes the flow {h['Q']}" if h["kind"] == "pressure" else (
+        f"takes the pressure {h['p']}, gives the flow {h['Q']}"
+    )
+    return f"  {h['name']}: {h['description']}; {h['kind']} port: {gives} (positive {h['Q_positive']})"
 
 
 def _limit(lim: dict[str, Any]) -> str:
@@ -184,6 +204,13 @@ def markdown(ref: Reference) -> str:
     if ref.options:
         out += ["| option | default | choices | meaning |", "|---|---|---|---|"]
         out += [f"| `{o['name']}` | `{o['default']}` | {', '.join(o['choices'])} | {o['description']} |" for o in ref.options]
+        out.append("")
+    if ref.hydraulic:
+        out += ["| hydraulic port | kind | pressure | flow (positive) | meaning |", "|---|---|---|---|---|"]
+        out += [
+            f"| `{h['name']}` | {h['kind']} | `{h['p']}` | `{h['Q']}` ({h['Q_positive']}) | {h['description']} |"
+            for h in ref.hydraulic
+        ]
         out.append("")
     ports = [("state", s["name"], s["unit"], s["description"]) for s in ref.states]
     ports += [("input", p["name"], p["unit"], f"{p['description']} ({_input_default(p)})") for p in ref.inputs]

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Limit, Output, Param, register
+from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, register
 from hydroservo.errors import ParameterError
 from hydroservo.units import VACUUM
 
@@ -23,8 +23,10 @@ class ConstantPressure(Component):
     """
 
     PARAMETERS = {"p": Param(100e5, "Pa", "supply pressure (gauge)", min=0.0)}
+    INPUTS = {"Q": Port("m^3/s", "flow delivered into the circuit through port P", default=0.0)}
     OUTPUTS = {"p": Output("Pa", "supply pressure")}
     LIMITS = {"p": Limit("source")}
+    HYDRAULIC = {"P": Hydraulic("p", "Q", "pressure port", into=False)}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
@@ -37,7 +39,9 @@ class Tank(ConstantPressure):
     """Return line at constant pressure; [FlightSimulatorND] assumption (6): atmospheric (0 gauge)."""
 
     PARAMETERS = {"p": Param(0.0, "Pa", "tank pressure (gauge)", min=VACUUM)}
+    INPUTS = {"Q": Port("m^3/s", "flow returned into the tank through port P", default=0.0)}
     OUTPUTS = {"p": Output("Pa", "tank pressure")}
+    HYDRAULIC = {"P": Hydraulic("p", "Q", "return port")}
 
 
 @register
@@ -50,8 +54,10 @@ class PressureTable(Component):
     """
 
     PARAMETERS = {"scale": Param(1.0, "", "factor applied to the table", min=0.0)}
+    INPUTS = {"Q": Port("m^3/s", "flow delivered into the circuit through port P", default=0.0)}
     OUTPUTS = {"p": Output("Pa", "supply pressure")}
     LIMITS = {"p": Limit("source")}
+    HYDRAULIC = {"P": Hydraulic("p", "Q", "pressure port", into=False)}
 
     def __init__(self, name: str, times: Any = (0.0,), pressures: Any = (100e5,), **values: Any) -> None:
         super().__init__(name, **values)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import Component, Limit, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, State, register
 from hydroservo.laws.chamber import pressure_rate
 from hydroservo.units import VACUUM
 
@@ -16,8 +16,10 @@ __all__ = ["Volume"]
 class Volume(Component):
     r"""Lumped volume node: :math:`\dot p = \frac{E}{V}\sum Q_{in}`.
 
-    [Efe2014] eq. (3.17) (:func:`hydroservo.laws.chamber.pressure_rate`). Up to
-    four flows may be connected; each is positive into the volume.
+    [Efe2014] eq. (3.17) (:func:`hydroservo.laws.chamber.pressure_rate`). Its
+    hydraulic port ``P`` takes any number of connected ports (their flows
+    summed into ``Q``); the signal inputs ``Q1`` to ``Q4`` (positive into the
+    volume) remain for circuits wired signal by signal.
     """
 
     RENAMED = {"beta": "beta_e"}
@@ -29,7 +31,11 @@ class Volume(Component):
     }
     STATES = {"p": State("Pa", "pressure", initial="p0", nominal=1e7)}
     LIMITS = {"p": Limit("pressure")}
-    INPUTS = {f"Q{i}": Port("m^3/s", f"flow {i} into the volume", default=0.0) for i in range(1, 5)}
+    INPUTS = {
+        "Q": Port("m^3/s", "net flow into the volume through port P", default=0.0),
+        **{f"Q{i}": Port("m^3/s", f"flow {i} into the volume", default=0.0) for i in range(1, 5)},
+    }
+    HYDRAULIC = {"P": Hydraulic("p", "Q", "the volume's port")}
     OUTPUTS = {"p": Output("Pa", "pressure")}
 
     def output_equations(
@@ -40,5 +46,5 @@ class Volume(Component):
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
-        q = u["Q1"] + u["Q2"] + u["Q3"] + u["Q4"]
+        q = u["Q"] + u["Q1"] + u["Q2"] + u["Q3"] + u["Q4"]
         return {"p": pressure_rate(p["beta_e"], p["V"], q)}

@@ -25,8 +25,10 @@
     file = "record.csv"           # a Table's time table (CSV: time [s], then values)
     column = "volts"
 
-    [connections]                 # input = output feeding it
-    "valve.pS" = "supply.p"
+    [connections]                 # hydraulic port = port(s) it connects to; signal input = output feeding it
+    "supply.P" = ["valve.P", "relief.P"]   # one node of three ports
+    "valve.A" = "cyl.A"
+    "valve.xv" = "spool.xv"
 
     [initial]                     # optional: number, quantity or expression of parameters
     "cyl.pA" = "50 bar"
@@ -54,6 +56,7 @@ from hydroservo.io.component_file import read_component_file
 from hydroservo.io.tables import read_time_table
 from hydroservo.io.toml import read_toml, toml_key, toml_quantity, toml_string, toml_value
 from hydroservo.system import System
+from hydroservo.system.nodes import port_of
 from hydroservo.units import format_quantity, to_si
 
 __all__ = [
@@ -105,7 +108,10 @@ def model_to_toml(system: System) -> str:
         lines.append(f"plot_units = {toml_value(system.plot_units)}")
     for comp in system.components.values():
         lines += ["", *_component_lines(comp)]
-    lines += ["", "[connections]  # input = the output that feeds it"]
+    lines += ["", "[connections]  # hydraulic port = the ports it connects to; signal input = the output that feeds it"]
+    for node in system.nodes():
+        first, *others = node.ports
+        lines.append(f"{toml_string(first)} = {toml_value(others[0] if len(others) == 1 else others)}")
     for target, source in system.connections.items():
         lines.append(f"{toml_string(target)} = {toml_string(source)}")
     if system.initial:
@@ -226,6 +232,22 @@ def _add_components(system: System, comps: Any, where: str, base: Path | None) -
             raise ModelFileError(f"{ctx}: {exc}") from None
 
 
+def _connect(system: System, key: str, value: Any, where: str) -> None:
+    """One line of [connections]: hydraulic ports (``port = port`` or ``port = [ports]``) or a signal (``input = output``)."""
+    hydraulic = port_of(system.components, key) is not None
+    many = isinstance(value, list) and value and all(isinstance(v, str) for v in value)
+    if not (isinstance(value, str) or (hydraulic and many)):
+        expected = "the name of a hydraulic port or a list of them" if hydraulic else "the name of an output"
+        raise ModelFileError(f"{where}: [connections] {key!r} = {value!r}: expected {expected}")
+    try:
+        if hydraulic or port_of(system.components, value) is not None:
+            system.connect(key, *([value] if isinstance(value, str) else value))
+        else:
+            system.connect(value, key)
+    except HydroservoError as exc:
+        raise ModelFileError(f"{where}: [connections] {exc}") from None
+
+
 def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | None = None) -> System:
     """Build a system from the parsed contents of a model file.
 
@@ -264,12 +286,7 @@ def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | No
     system.plot_units = {str(k): v for k, v in units.items()}
     _add_components(system, data.get("components"), where, base)
     for target, source in data.get("connections", {}).items():
-        if not isinstance(source, str):
-            raise ModelFileError(f"{where}: [connections] {target!r}: expected the name of an output, got {source!r}")
-        try:
-            system.connect(source, target)
-        except HydroservoError as exc:
-            raise ModelFileError(f"{where}: [connections] {exc}") from None
+        _connect(system, target, source, where)
     try:
         for state, val in data.get("initial", {}).items():
             system.set_initial(state, val)

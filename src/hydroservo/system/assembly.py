@@ -41,6 +41,8 @@ class Structure(Protocol):
     @property
     def initial(self) -> Mapping[str, str | float]: ...
 
+    def hydraulic_inputs(self) -> Mapping[str, list[tuple[float, str]]]: ...
+
 
 class _Inputs(Mapping[str, Any]):
     """Inputs of one component, resolved on first access (lazy; detects loops)."""
@@ -66,6 +68,7 @@ class _Assembler:
         self.x: dict[str, dict[str, ca.SX]] = {}
         self.out: dict[str, dict[str, Any]] = {}
         self.stack: list[str] = []
+        self.fed = system.hydraulic_inputs()
         for cname, comp in system.components.items():
             self.p[cname] = {k: ca.SX.sym(f"{cname}.{k}") for k in comp.PARAMETERS}
             self.x[cname] = {k: ca.SX.sym(f"{cname}.{k}") for k in comp.STATES}
@@ -75,6 +78,12 @@ class _Assembler:
         if key not in comp.INPUTS:
             raise ModelError(f"{type(comp).__name__} {cname!r} reads undeclared input {key!r}")
         target = f"{cname}.{key}"
+        if target in self.fed:
+            total: Any = ca.SX(0.0)
+            for coef, ref in self.fed[target]:
+                sc, so = ref.split(".")
+                total = total + coef * self.outputs(sc)[so]
+            return total
         source = self.system.connections.get(target)
         if source is None:
             default = comp.INPUTS[key].default
@@ -205,6 +214,9 @@ def _limits(asm: _Assembler) -> list[tuple[Watched, Any, Any, Any]]:
                 name, expr = f"{cname}.{sig}", asm.out[cname][sig]
             elif sig in comp.INPUTS:
                 source = system.connections.get(f"{cname}.{sig}")
+                terms = asm.fed.get(f"{cname}.{sig}", [])
+                if source is None and len(terms) == 1:
+                    source = terms[0][1]
                 if source is None:
                     continue
                 name, expr = source, asm.input(cname, sig)

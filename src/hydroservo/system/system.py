@@ -1,7 +1,8 @@
 """Systems: components connected into one ODE ``dx/dt = f(t, x, p)``.
 
 A :class:`System` holds components, connections (an output of one component
-feeds an input of another), aliases (named expressions of signals, with a
+feeds an input of another), hydraulic links (a port to a port; links that
+share a port form one node, :mod:`hydroservo.system.nodes`), aliases (named expressions of signals, with a
 unit) and initial conditions. :meth:`System.build` assembles one CasADi
 expression graph with every parameter a symbol, and returns a
 :class:`~hydroservo.system.model.Model`; the model is rebuilt only when the
@@ -22,6 +23,7 @@ from hydroservo.errors import HydroservoError, ModelError, ParameterError, UnitE
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import batch_columns
 from hydroservo.system.model import Model
+from hydroservo.system.nodes import Node, nodes, port_of, resolve
 from hydroservo.units import check_unit, same_dimension, to_si
 
 if TYPE_CHECKING:
@@ -66,6 +68,8 @@ class System:
         self.t_end = float(t_end)
         self.components: dict[str, Component] = {}
         self.connections: dict[str, str] = {}
+        #: hydraulic links, pairs of ports ("comp.port") in the order they were made
+        self.links: list[tuple[str, str]] = []
         self.aliases: dict[str, Alias] = {}
         self.initial: dict[str, str | float] = {}
         #: the text an initial value was given as, when it carried a unit ("50 bar"): model files keep it
@@ -97,12 +101,26 @@ class System:
             ) from None
 
     def connect(self, source: str, *targets: str) -> None:
-        """Feed output ``source`` ("comp.output") into each input ``targets`` ("comp.input")."""
+        """Connect hydraulic ports, or feed a signal output into inputs.
+
+        * Hydraulic ports ("comp.port", e.g. ``connect("valve.A", "cyl.A")``):
+          all the ports named join one node, with any ports they are already
+          linked to; order does not matter. See :mod:`hydroservo.system.nodes`.
+        * Signals: output ``source`` ("comp.output") feeds each input ``targets``
+          ("comp.input").
+        """
+        if port_of(self.components, source) is not None or any(
+            port_of(self.components, t) is not None for t in targets
+        ):
+            self._link(source, *targets)
+            return
         sc, so = split_name(source, "connection source")
         comp = self[sc]
         if so not in comp.OUTPUTS:
+            ports = f"; hydraulic ports: {', '.join(comp.HYDRAULIC)}" if comp.HYDRAULIC else ""
             raise ModelError(
-                f"connection {source!r}: {type(comp).__name__} {sc!r} has no output {so!r}; outputs: {', '.join(comp.OUTPUTS)}"
+                f"connection {source!r}: {type(comp).__name__} {sc!r} has no output {so!r}; outputs: "
+                f"{', '.join(comp.OUTPUTS)}{ports}"
             )
         for target in targets:
             tc, ti = split_name(target, "connection target")
@@ -113,12 +131,51 @@ class System:
                 )
             if target in self.connections:
                 raise ModelError(f"input {target!r} is already connected to {self.connections[target]!r}")
+            linked = {ref for pair in self.links for ref in pair}
+            for pname, port in tcomp.HYDRAULIC.items():
+                if ti in (port.p, port.Q) and f"{tc}.{pname}" in linked:
+                    raise ModelError(
+                        f"input {target!r} is already fed by the hydraulic node of port {tc}.{pname}; connect the "
+                        "port or its signals, not both"
+                    )
             u_out, u_in = comp.OUTPUTS[so].unit, tcomp.INPUTS[ti].unit
             if u_out and u_in and not same_dimension(u_out, u_in):
                 raise ModelError(
                     f"connection {source!r} [{u_out}] -> {target!r} [{u_in}]: the units have different dimensions"
                 )
             self.connections[target] = source
+
+    def _link(self, *ports: str) -> None:
+        if len(ports) < 2:
+            raise ModelError(f"connection {ports[0]!r}: a hydraulic port connects to at least one other port")
+        for ref in ports:
+            cname, pname = split_name(ref, "hydraulic connection")
+            comp = self[cname]
+            port = comp.HYDRAULIC.get(pname)
+            if port is None:
+                known = ", ".join(comp.HYDRAULIC) or "none"
+                raise ModelError(
+                    f"connection {' – '.join(ports)}: {type(comp).__name__} {cname!r} has no hydraulic port "
+                    f"{pname!r}; its hydraulic ports: {known} (a hydraulic port connects only to hydraulic ports)"
+                )
+            for signal in (port.p, port.Q):
+                if f"{cname}.{signal}" in self.connections:
+                    raise ModelError(
+                        f"connection {' – '.join(ports)}: {ref}'s {signal} is already connected as a signal to "
+                        f"{self.connections[f'{cname}.{signal}']!r}; connect the port or its signals, not both"
+                    )
+        if len(set(ports)) < len(ports):
+            raise ModelError(f"connection {' – '.join(ports)}: a port is named twice")
+        self.links.extend((ports[0], other) for other in ports[1:])
+
+    def nodes(self) -> list[Node]:
+        """The hydraulic nodes: sets of connected ports."""
+        return nodes(self.links)
+
+    def hydraulic_inputs(self) -> dict[str, list[tuple[float, str]]]:
+        """The inputs the hydraulic nodes feed: "comp.input" -> terms (coefficient, "comp.output")
+        (see :func:`hydroservo.system.nodes.resolve`; raises for a node with no pressure port or two)."""
+        return resolve(self.components, self.links) if self.links else {}
 
     def alias(self, name: str, expr: str, unit: str = "", description: str = "") -> None:
         """Name an expression of signals, e.g. ``alias("y", "-load.x", "m")``."""
@@ -206,6 +263,7 @@ class System:
                 for n, c in self.components.items()
             ),
             tuple(sorted(self.connections.items())),
+            tuple(self.links),
             tuple(sorted((k, (a.expr, a.unit)) for k, a in self.aliases.items())),
             tuple(sorted((k, str(v)) for k, v in self.initial.items())),
         )

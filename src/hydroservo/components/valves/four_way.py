@@ -9,7 +9,7 @@ import numpy as np
 
 from hydroservo import backend as bk
 from hydroservo.components.base import Component, Param, Port, register
-from hydroservo.components.valves.ports import FLOW_OUTPUTS, PRESSURE_PORTS
+from hydroservo.components.valves.ports import FLOW_OUTPUTS, HYDRAULIC_PORTS, PRESSURE_PORTS
 from hydroservo.errors import ParameterError
 from hydroservo.laws.four_way import four_way_valve_flows
 from hydroservo.laws.orifice import transition_pressure
@@ -60,6 +60,7 @@ class FourWayValve(Component):
         **PRESSURE_PORTS,
     }
     OUTPUTS = dict(FLOW_OUTPUTS)
+    HYDRAULIC = dict(HYDRAULIC_PORTS)
 
     def __init__(self, name: str, tables: Mapping[str, Any] | None = None, **values: Any) -> None:
         super().__init__(name, **values)

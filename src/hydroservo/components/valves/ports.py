@@ -7,9 +7,9 @@ into their lines, from supply into the valve, and from the valve to tank.
 
 from __future__ import annotations
 
-from hydroservo.components.base import Output, Port
+from hydroservo.components.base import Hydraulic, Output, Port
 
-__all__ = ["PRESSURE_PORTS", "FLOW_OUTPUTS"]
+__all__ = ["PRESSURE_PORTS", "FLOW_OUTPUTS", "HYDRAULIC_PORTS"]
 
 #: Inputs: supply, tank and use-port pressures.
 PRESSURE_PORTS = {
@@ -25,4 +25,12 @@ FLOW_OUTPUTS = {
     "QB": Output("m^3/s", "flow out of port B (port 2) into line B"),
     "QS": Output("m^3/s", "flow drawn from supply"),
     "QT": Output("m^3/s", "flow returned to tank"),
+}
+
+#: The hydraulic ports: each pairs a pressure input with its flow output (flow ports).
+HYDRAULIC_PORTS = {
+    "P": Hydraulic("pS", "QS", "supply port", into=True),
+    "T": Hydraulic("pT", "QT", "tank port", into=False),
+    "A": Hydraulic("pA", "QA", "use port A (port 1)", into=False),
+    "B": Hydraulic("pB", "QB", "use port B (port 2)", into=False),
 }

@@ -23,7 +23,7 @@ import numpy as np
 from hydroservo import backend as bk
 from hydroservo.components.base import Component, FromSet, Option, Param, Port, register
 from hydroservo.components.spools.rate_limited import SpoolRateLimited
-from hydroservo.components.valves.ports import FLOW_OUTPUTS, PRESSURE_PORTS
+from hydroservo.components.valves.ports import FLOW_OUTPUTS, HYDRAULIC_PORTS, PRESSURE_PORTS
 from hydroservo.errors import ParameterError
 from hydroservo.laws import pseudo_section as ps
 
@@ -139,6 +139,7 @@ class PseudoSectionValve(_Sections):
     PARAMETERS = dict(_SECTION_PARAMS)
     INPUTS = {"xs": Port("", "normalised spool position, -1 to 1"), **PRESSURE_PORTS}
     OUTPUTS = dict(FLOW_OUTPUTS)
+    HYDRAULIC = dict(HYDRAULIC_PORTS)
     OPTIONS = {"structure": _STRUCTURE}
 
     def check(self) -> None:
@@ -162,6 +163,7 @@ class ServoSolenoidValve(_Sections, SpoolRateLimited):
     PARAMETERS = {**SpoolRateLimited.PARAMETERS, **_SECTION_PARAMS}
     INPUTS = {**SpoolRateLimited.INPUTS, **PRESSURE_PORTS}
     OUTPUTS = {**SpoolRateLimited.OUTPUTS, **FLOW_OUTPUTS}
+    HYDRAULIC = dict(HYDRAULIC_PORTS)
     OPTIONS = {**SpoolRateLimited.OPTIONS, "structure": _STRUCTURE}
 
     def check(self) -> None:

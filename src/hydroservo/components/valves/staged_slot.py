@@ -20,7 +20,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo.components.base import REGISTRY, Component, FromSet, Option, Param, Port, register
-from hydroservo.components.valves.ports import FLOW_OUTPUTS, PRESSURE_PORTS
+from hydroservo.components.valves.ports import FLOW_OUTPUTS, HYDRAULIC_PORTS, PRESSURE_PORTS
 from hydroservo.errors import ParameterError
 from hydroservo.fluids import FLUIDS, Fluid, get_fluid
 from hydroservo.laws.staged_slot import BRIDGE, BRIDGE_PARAMETERS, staged_slot_orifice_flow, staged_slot_valve_flows
@@ -69,6 +69,7 @@ class StagedSlotValve(Component):
         **PRESSURE_PORTS,
     }
     OUTPUTS = dict(FLOW_OUTPUTS)
+    HYDRAULIC = dict(HYDRAULIC_PORTS)
     OPTIONS = {"fluid": Option("skydrol", tuple(FLUIDS), "hydraulic fluid (hydroservo.fluids)")}
 
     @property
