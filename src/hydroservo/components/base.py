@@ -92,7 +92,10 @@ class Param:
     """A numeric parameter: symbolic in the compiled model, so it can be swept or fitted.
 
     ``default`` is an SI number, or a :class:`FromSet` reference to a published
-    (or example) parameter set of the package.
+    (or example) parameter set of the package. ``fluid`` names the property of
+    the circuit's fluid the parameter is (``density``, ``kinematic_viscosity``,
+    ``bulk_modulus``): in a system with a fluid the parameter takes its value
+    from it, unless it is set on the component.
     """
 
     default: float | FromSet
@@ -102,6 +105,7 @@ class Param:
     max: float | None = None
     min_inclusive: bool = True
     max_inclusive: bool = True
+    fluid: str | None = None
 
     def expected(self) -> str:
         lo = "" if self.min is None else ("[" if self.min_inclusive else "(") + f"{self.min:g}"
@@ -251,6 +255,8 @@ class Component:
         self.values: dict[str, float] = {k: v.si_default() for k, v in self.PARAMETERS.items()}
         #: The text each parameter was given as, when it carried a unit ("1500 psi"): model files keep it.
         self.given: dict[str, str] = {}
+        #: Parameters set on this component (not defaults): a circuit's fluid does not override them.
+        self.explicit: set[str] = set()
         self.option_values: dict[str, str] = {k: v.default for k, v in self.OPTIONS.items()}
         self.set(**values)
 
@@ -282,6 +288,7 @@ class Component:
                 self.set_option(key, value)
             else:
                 self.values[key] = self.parse(key, value)
+                self.explicit.add(key)
                 if isinstance(value, str) and not is_bare_number(value):
                     self.given[key] = value.strip()
                 else:
@@ -306,6 +313,7 @@ class Component:
         new.values = dict(self.values)
         new.given = {k: v for k, v in self.given.items() if k not in values}
         new.option_values = dict(self.option_values)
+        new.explicit = self.explicit | set(values)
         for key, value in values.items():
             if key not in self.PARAMETERS:
                 raise ParameterError(f"{self.name}.{key}: unknown parameter of {type(self).__name__}")

@@ -73,11 +73,13 @@ class Cylinder(Component):
         "C_Li": Param(0.0, "m^3/s/Pa", "internal leakage coefficient A to B", min=0.0),
         "C_LeA": Param(0.0, "m^3/s/Pa", "external leakage coefficient of side A", min=0.0),
         "C_LeB": Param(0.0, "m^3/s/Pa", "external leakage coefficient of side B", min=0.0),
-        "beta_e": Param(1.4e9, "Pa", "effective bulk modulus (option constant)", min=0.0, min_inclusive=False),
+        "beta_e": Param(
+            1.4e9, "Pa", "effective bulk modulus (option constant)", min=0.0, min_inclusive=False, fluid="bulk_modulus"
+        ),
         "E_max": Param(1.8e9, "Pa", "pure-oil bulk modulus (option lee)", min=0.0, min_inclusive=False),
         "p_max": Param(280e5, "Pa", "maximum pressure (option lee)", min=0.0, min_inclusive=False),
         "temperature": Param(50.0, "degC", "oil temperature (option eggerth)", min=20.0, max=90.0),
-        "rho": Param(870.0, "kg/m^3", "oil density (for m_oil)", min=0.0),
+        "rho": Param(870.0, "kg/m^3", "oil density (for m_oil)", min=0.0, fluid="density"),
         "p_floor": Param(0.0, "Pa", "lowest chamber pressure (option check-valve)", min=VACUUM),
         "x_min": Param(-0.1, "m", "end stop, retracted"),
         "x_max": Param(0.1, "m", "end stop, extended"),

@@ -90,7 +90,10 @@ def reference(type_name: str | type[Component]) -> Reference:
     for key, spec in cls.PARAMETERS.items():
         default: Any = spec.default
         bounds = replace(spec, unit="").expected()  # the unit has its own column
-        entry: dict[str, Any] = {"name": key, "unit": _unit(spec.unit), "description": spec.description, "range": bounds}
+        meaning = spec.description
+        if spec.fluid:
+            meaning += f"; in a system with a fluid, the fluid's {spec.fluid.replace('_', ' ')} unless set here"
+        entry: dict[str, Any] = {"name": key, "unit": _unit(spec.unit), "description": meaning, "range": bounds}
         if isinstance(default, FromSet):
             entry["default"] = spec.si_default()
             entry["default_from"] = f"{default.set_name} [{default.table}] {default.key}"

@@ -26,7 +26,7 @@ class Volume(Component):
 
     PARAMETERS = {
         "V": Param(1e-4, "m^3", "volume", min=0.0, min_inclusive=False),
-        "beta_e": Param(1.4e9, "Pa", "effective bulk modulus", min=0.0, min_inclusive=False),
+        "beta_e": Param(1.4e9, "Pa", "effective bulk modulus", min=0.0, min_inclusive=False, fluid="bulk_modulus"),
         "p0": Param(0.0, "Pa", "initial pressure", min=VACUUM),
     }
     STATES = {"p": State("Pa", "pressure", initial="p0", nominal=1e7)}

@@ -8,6 +8,11 @@
     citation = "Efe2014"          # optional: where the model comes from (hydroservo.references)
     status = "example"            # optional: published (a source's model) or example
 
+    [fluid]                       # optional: the oil, named once (hydroservo.fluids)
+    name = "iso-vg46"
+    temperature = "40 degC"
+    bulk_modulus = "1.2 GPa"      # optional: effective, with air and hoses
+
     [components.supply]
     type = "ConstantPressure"
     p = "210 bar"
@@ -69,11 +74,12 @@ __all__ = [
     "available_models",
 ]
 
-_SECTIONS = ("model", "components", "connections", "initial", "aliases")
+_SECTIONS = ("model", "fluid", "components", "connections", "initial", "aliases")
+_FLUID_KEYS = ("name", "temperature", "pressure", "bulk_modulus")
 _META = ("citation", "status", "validation")
 
 
-def _component_lines(comp: Component) -> list[str]:
+def _component_lines(comp: Component, fluid: bool = False) -> list[str]:
     lines = [f"[components.{comp.name}]", f"type = {toml_string(type(comp).__name__)}"]
     if comp.unit is not None:
         lines.append(f"unit = {toml_string(comp.unit)}")
@@ -81,6 +87,9 @@ def _component_lines(comp: Component) -> list[str]:
         lines.append(f"{key} = {toml_string(comp.option(key))}  # one of {', '.join(opt.choices)}")
     for key, spec in comp.PARAMETERS.items():
         text = toml_quantity(comp.values[key], spec.unit, comp.given.get(key))
+        if fluid and spec.fluid and key not in comp.explicit:
+            lines.append(f"# {key} = {text}  # {spec.description}: from the circuit fluid")
+            continue
         lines.append(f"{key} = {text}  # {spec.description}")
     for key, val in comp.config().items():
         lines.append(f"{key} = {toml_value(val)}")
@@ -106,8 +115,20 @@ def model_to_toml(system: System) -> str:
         lines.append(f"plots = {toml_value(system.plots)}  # panels of signals for plots")
     if system.plot_units:
         lines.append(f"plot_units = {toml_value(system.plot_units)}")
+    if system.fluid is not None:
+        given = dict(system.fluid.given)
+        lines += ["", "[fluid]", f"name = {toml_string(system.fluid.name)}"]
+        if "temperature" in given:
+            lines.append(f"temperature = {toml_string(given['temperature'])}")
+        else:
+            lines.append(f"temperature = {toml_value(system.fluid.temperature)}  # degC")
+        if system.fluid.pressure:
+            lines.append(f"pressure = {toml_quantity(system.fluid.pressure, 'Pa', given.get('pressure'))}")
+        if system.fluid.bulk_modulus is not None:
+            text = toml_quantity(system.fluid.bulk_modulus, "Pa", given.get("bulk_modulus"))
+            lines.append(f"bulk_modulus = {text}  # effective")
     for comp in system.components.values():
-        lines += ["", *_component_lines(comp)]
+        lines += ["", *_component_lines(comp, system.fluid is not None)]
     lines += ["", "[connections]  # hydraulic port = the ports it connects to; signal input = the output that feeds it"]
     for node in system.nodes():
         first, *others = node.ports
@@ -232,6 +253,20 @@ def _add_components(system: System, comps: Any, where: str, base: Path | None) -
             raise ModelFileError(f"{ctx}: {exc}") from None
 
 
+def _set_fluid(system: System, spec: Any, where: str) -> None:
+    if spec is None:
+        return
+    if not isinstance(spec, dict) or "name" not in spec:
+        raise ModelFileError(f'{where}: [fluid]: expected a table with a name, e.g. name = "iso-vg46", temperature = "40 degC"')
+    unknown = set(spec) - set(_FLUID_KEYS)
+    if unknown:
+        raise ModelFileError(f"{where}: [fluid] {', '.join(sorted(unknown))}: unknown; expected {', '.join(_FLUID_KEYS)}")
+    try:
+        system.set_fluid(**{k: v for k, v in spec.items()})
+    except HydroservoError as exc:
+        raise ModelFileError(f"{where}: [fluid] {exc}") from None
+
+
 def _connect(system: System, key: str, value: Any, where: str) -> None:
     """One line of [connections]: hydraulic ports (``port = port`` or ``port = [ports]``) or a signal (``input = output``)."""
     hydraulic = port_of(system.components, key) is not None
@@ -284,6 +319,7 @@ def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | No
             f'{where}: [model] plot_units = {units!r}: expected a table of signal = "unit", e.g. {{ p1 = "psi" }}'
         )
     system.plot_units = {str(k): v for k, v in units.items()}
+    _set_fluid(system, data.get("fluid"), where)
     _add_components(system, data.get("components"), where, base)
     for target, source in data.get("connections", {}).items():
         _connect(system, target, source, where)

@@ -29,7 +29,7 @@ from hydroservo.units import check_unit, same_dimension, to_si
 if TYPE_CHECKING:
     from hydroservo.system.result import BatchResult, Result
 
-__all__ = ["System", "Alias", "split_name"]
+__all__ = ["System", "Alias", "CircuitFluid", "split_name"]
 
 
 @dataclass(frozen=True)
@@ -39,6 +39,41 @@ class Alias:
     expr: str
     unit: str
     description: str = ""
+
+
+@dataclass(frozen=True)
+class CircuitFluid:
+    """The oil of a circuit: a fluid of :mod:`hydroservo.fluids` at a temperature and a pressure.
+
+    Components take their density, viscosity and bulk modulus parameters
+    (those declared with ``Param(fluid=...)``) from it unless they are set on
+    the component. ``bulk_modulus``, if given, replaces the fluid's: the
+    *effective* bulk modulus of a circuit, with entrained air and hose
+    compliance, is usually well below the oil's own ([Merritt1967] section 2.6).
+    ``given`` keeps the text of each value given with a unit, for model files.
+    """
+
+    name: str
+    temperature: float  #: [degC]
+    pressure: float = 0.0  #: [Pa] gauge, where the properties are evaluated
+    bulk_modulus: float | None = None  #: [Pa] effective, replacing the fluid's
+    given: tuple[tuple[str, str], ...] = ()
+
+    def properties(self) -> dict[str, float]:
+        """Density, kinematic and dynamic viscosity and bulk modulus (SI) at the circuit's temperature and pressure."""
+        from hydroservo.fluids import get_fluid
+
+        props = {k: float(v) for k, v in get_fluid(self.name).properties(self.pressure, self.temperature).items()}
+        if self.bulk_modulus is not None:
+            props["bulk_modulus"] = self.bulk_modulus
+        return props
+
+    def describe(self) -> str:
+        text = dict(self.given)
+        out = f"{self.name} at {text.get('temperature', f'{self.temperature:g} degC')}"
+        if self.pressure:
+            out += f", {text.get('pressure', f'{self.pressure:g} Pa')}"
+        return out
 
 
 def split_name(ref: str, what: str) -> tuple[str, str]:
@@ -81,6 +116,8 @@ class System:
         #: panels for plots of a run (lists of signal names) and the units to show them in
         self.plots: list[list[str]] = []
         self.plot_units: dict[str, str] = {}
+        #: the circuit's fluid (:meth:`set_fluid`), or None: each component keeps its own values
+        self.fluid: CircuitFluid | None = None
         self._model: Model | None = None
         self._model_key: Any = None
 
@@ -90,7 +127,63 @@ class System:
         if component.name in self.components:
             raise ModelError(f"component {component.name!r} already exists in system {self.name!r}")
         self.components[component.name] = component
+        if self.fluid is not None:
+            self._apply_fluid(component, self.fluid.properties())
         return component
+
+    def set_fluid(
+        self,
+        name: str,
+        temperature: float | str = "40 degC",
+        pressure: float | str = 0.0,
+        bulk_modulus: float | str | None = None,
+    ) -> CircuitFluid:
+        """Name the circuit's oil once: a fluid of :data:`hydroservo.fluids.FLUIDS` at ``temperature``
+        (a number in degC, or a quantity) and ``pressure`` (gauge; where the properties are evaluated).
+
+        Every component parameter that is a fluid property (density ``rho``,
+        viscosity ``nu``, bulk modulus ``beta_e``) takes the fluid's value, except
+        those set on the component itself. ``bulk_modulus`` sets the effective
+        bulk modulus of the circuit instead of the oil's.
+
+        Examples
+        --------
+        >>> from hydroservo import System, components as c
+        >>> s = System()
+        >>> _ = s.add(c.FourWayValve("valve"))
+        >>> _ = s.set_fluid("iso-vg46", "50 degC", bulk_modulus="1.2 GPa")
+        >>> round(s["valve"].values["nu"] * 1e6, 1)  # cSt
+        30.0
+        """
+        given = []
+        values: dict[str, float | None] = {}
+        for key, val, unit in (("temperature", temperature, "degC"), ("pressure", pressure, "Pa"), ("bulk_modulus", bulk_modulus, "Pa")):
+            if val is None:
+                values[key] = None
+                continue
+            try:
+                values[key] = to_si(val, unit, what=f"fluid {key}")
+            except UnitError as exc:
+                raise ParameterError(str(exc)) from None
+            if isinstance(val, str):
+                given.append((key, val.strip()))
+        if values["bulk_modulus"] is not None and not values["bulk_modulus"] > 0:
+            raise ParameterError(f"fluid bulk_modulus = {bulk_modulus!r}: expected a positive pressure")
+        fluid = CircuitFluid(
+            str(name), float(values["temperature"] or 0.0), float(values["pressure"] or 0.0), values["bulk_modulus"], tuple(given)
+        )
+        props = fluid.properties()  # checks the name, the temperature and the pressure
+        for comp in self.components.values():
+            self._apply_fluid(comp, props)
+        self.fluid = fluid
+        return fluid
+
+    def _apply_fluid(self, comp: Component, props: Mapping[str, float]) -> None:
+        for key, spec in comp.PARAMETERS.items():
+            if spec.fluid and key not in comp.explicit:
+                what = f"{comp.name}.{key} (the circuit fluid's {spec.fluid.replace('_', ' ')})"
+                comp.values[key] = spec.check(props[spec.fluid], what)
+                comp.given.pop(key, None)
 
     def __getitem__(self, name: str) -> Component:
         try:

@@ -47,8 +47,15 @@ class FourWayValve(Component):
         "x_PB": Param(0.0, "m", "overlap of edge P-B"),
         "x_BT": Param(0.0, "m", "overlap of edge B-T"),
         "G_leak": Param(0.0, "m^3/s/Pa", "laminar clearance leakage conductance of each edge", min=0.0),
-        "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False),
-        "nu": Param(32e-6, "m^2/s", "kinematic viscosity (ISO VG 32 at 40 degC)", min=0.0, min_inclusive=False),
+        "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False, fluid="density"),
+        "nu": Param(
+            32e-6,
+            "m^2/s",
+            "kinematic viscosity (ISO VG 32 at 40 degC)",
+            min=0.0,
+            min_inclusive=False,
+            fluid="kinematic_viscosity",
+        ),
         "D_h": Param(
             1e-3, "m", "hydraulic diameter at which the laminar transition is evaluated", min=0.0, min_inclusive=False
         ),
