@@ -5,6 +5,7 @@ module                 components
 =====================  ==========================================================
 :mod:`.sources`        ConstantPressure, Tank, PressureTable
 :mod:`.volume`         Volume
+:mod:`.line`           Line
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
 :mod:`.valves`         FourWayValve, PseudoSectionValve, ServoSolenoidValve,
@@ -32,6 +33,7 @@ from hydroservo.components.base import (
 )
 from hydroservo.components.control import PID, Amplifier, Gain, Lag, Saturation, Sum, Transducer
 from hydroservo.components.cylinder import Cylinder
+from hydroservo.components.line import Line
 from hydroservo.components.mass import Mass
 from hydroservo.components.signals import Ramp, Sine, Square, Step, Table
 from hydroservo.components.sources import ConstantPressure, PressureTable, Tank
@@ -62,6 +64,7 @@ __all__ = [
     "Tank",
     "PressureTable",
     "Volume",
+    "Line",
     "FourWayValve",
     "PseudoSectionValve",
     "ServoSolenoidValve",

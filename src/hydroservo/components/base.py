@@ -293,6 +293,15 @@ class Component:
                     self.given[key] = value.strip()
                 else:
                     self.given.pop(key, None)
+        self.changed()
+
+    def changed(self) -> None:
+        """Called after parameter values change (by :meth:`set`, or a circuit's fluid); override to
+        re-derive what depends on them (a line's number of segments)."""
+
+    def structure(self) -> tuple[Any, ...]:
+        """Structural settings besides options and tables (override): a change rebuilds the model."""
+        return ()
 
     def current_name(self, key: str) -> str:
         """``key``, or the current name of a renamed parameter (with a :class:`RenamedWarning`)."""

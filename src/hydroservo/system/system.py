@@ -184,6 +184,7 @@ class System:
                 what = f"{comp.name}.{key} (the circuit fluid's {spec.fluid.replace('_', ' ')})"
                 comp.values[key] = spec.check(props[spec.fluid], what)
                 comp.given.pop(key, None)
+        comp.changed()
 
     def __getitem__(self, name: str) -> Component:
         try:
@@ -352,7 +353,7 @@ class System:
 
         return (
             tuple(
-                (n, type(c).__name__, tuple(sorted(c.option_values.items())), tables(c))
+                (n, type(c).__name__, tuple(sorted(c.option_values.items())), tables(c), c.structure())
                 for n, c in self.components.items()
             ),
             tuple(sorted(self.connections.items())),

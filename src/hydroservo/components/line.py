@@ -1,0 +1,204 @@
+"""Hydraulic lines and hoses: lumped segments of capacitance, inertance and laminar friction."""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Mapping
+from typing import Any
+
+from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, State, register
+from hydroservo.errors import ParameterError
+from hydroservo.laws.chamber import pressure_rate
+from hydroservo.laws.fluid import wave_speed
+from hydroservo.laws.line import line_area, segment_resistance, segments_needed
+from hydroservo.units import VACUUM
+
+__all__ = ["Line", "LineResolutionWarning"]
+
+#: The ends a line may have: (end A, end B), each "pressure" (a half volume) or "flow" (a half oil column).
+ENDS = {
+    "pressure": ("pressure", "pressure"),
+    "flow": ("flow", "flow"),
+    "pressure-flow": ("pressure", "flow"),
+    "flow-pressure": ("flow", "pressure"),
+}
+
+
+class LineResolutionWarning(UserWarning):
+    """A line has too few segments to resolve its waves up to its ``f_max``."""
+
+
+@register
+class Line(Component):
+    r"""Line or hose of length ``l`` and bore ``d``: ``segments`` lumped segments, each a volume, an oil column and laminar friction.
+
+    Per segment of length :math:`l/n` (:mod:`hydroservo.laws.line`): a volume
+    :math:`\pi d^2 l/(4n)` whose pressure builds up with the bulk modulus
+    ``beta_e`` ([Efe2014] eq. 3.17), an oil column of inertance
+    :math:`\rho (l/n)/A` and a Hagen-Poiseuille resistance
+    :math:`128\mu (l/n)/(\pi d^4)`:
+
+    .. math::
+        C\,\dot p_k = q_{k} - q_{k+1}, \qquad
+        L\,\dot q_k = p_{k-1} - p_k - R\,q_k
+
+    A short line is one segment; a long one needs enough segments to carry
+    its pressure waves: [Efe2014]'s criterion :math:`l < c/(10 f_{max})`
+    (eq. 3.30), with :math:`c = \sqrt{\beta_e/\rho}`, applied to each segment
+    (``segments="auto"`` picks the fewest that meet it for the parameter
+    ``f_max``; a set number that does not meet it warns). The segments then
+    reproduce the line's wave dynamics (quarter-wave resonance
+    :math:`c/(4l)` of a line closed at one end) up to ``f_max``. Wall friction is
+    the steady laminar one; frequency-dependent friction is not modelled, so
+    resonances are less damped than in a real line.
+
+    ``ends`` chooses what each end is, so that the line fits the ports it joins
+    (a node needs exactly one pressure port, :mod:`hydroservo.system.nodes`):
+
+    * ``"pressure"`` (default): both ends hold half a segment's volume (a π
+      ladder); connect them to flow ports (valves, orifices, pumps);
+    * ``"flow"``: both ends are half an oil column (a T ladder); connect them
+      to pressure ports (cylinder chambers, volumes, sources);
+    * ``"pressure-flow"``, ``"flow-pressure"``: one of each (end A first).
+
+    The ladders are the staggered grids of the wave equation: pressures at the
+    segment ends, flows at their middles (π), or the reverse (T). At a flow end
+    half a segment's volume is not in the line: it is the volume of the
+    pressure port there (a chamber's dead volume already counts its line).
+
+    States: the pressures ``p0``, ``p1``, … of the volumes and the flows
+    ``q0``, ``q1``, … of the oil columns, from end A to end B.
+    """
+
+    PARAMETERS = {
+        "l": Param(1.0, "m", "length", min=0.0, min_inclusive=False),
+        "d": Param(0.01, "m", "inner diameter (bore)", min=0.0, min_inclusive=False),
+        "beta_e": Param(
+            1.0e9, "Pa", "effective bulk modulus of oil and wall", min=0.0, min_inclusive=False, fluid="bulk_modulus"
+        ),
+        "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False, fluid="density"),
+        "nu": Param(
+            32e-6, "m^2/s", "kinematic viscosity", min=0.0, min_inclusive=False, fluid="kinematic_viscosity"
+        ),
+        "f_max": Param(100.0, "Hz", "highest frequency of interest (sets segments='auto')", min=0.0, min_inclusive=False),
+        "p0": Param(0.0, "Pa", "initial pressure along the line", min=VACUUM),
+    }
+
+    def __init__(self, name: str, segments: int | str = "auto", ends: str = "pressure", **values: Any) -> None:
+        self.auto = False
+        super().__init__(name, **values)
+        if ends not in ENDS:
+            raise ParameterError(f"{name}.ends = {ends!r}: expected one of {', '.join(ENDS)}")
+        self.ends = ends
+        if segments == "auto":
+            self.auto = True
+            segments = self.segments_needed()
+        else:
+            self.auto = False
+            if isinstance(segments, bool) or not isinstance(segments, int) or not 1 <= segments <= 200:
+                raise ParameterError(f"{name}.segments = {segments!r}: expected a whole number from 1 to 200, or 'auto'")
+        self.segments = int(segments)
+        self._declare()
+
+    def segments_needed(self) -> int:
+        """The fewest segments that carry waves up to ``f_max`` ([Efe2014] eq. 3.30 per segment)."""
+        v = self.values
+        return segments_needed(v["l"], float(wave_speed(v["beta_e"], v["rho"])), v["f_max"])
+
+    def changed(self) -> None:
+        if self.auto:  # "auto" follows the length and the oil
+            self.segments = self.segments_needed()
+            self._declare()
+
+    def structure(self) -> tuple[Any, ...]:
+        return (self.segments, self.ends)
+
+    def config(self) -> dict[str, Any]:
+        return {"segments": "auto" if self.auto else self.segments, "ends": self.ends}
+
+    def _elements(self) -> list[tuple[str, float]]:
+        """The ladder from A to B: ("C", fraction of the line's volume) and ("L", fraction of its length)."""
+        n = self.segments
+        a, b = ENDS[self.ends]
+        if (a, b) == ("pressure", "pressure"):
+            return [("C", 0.5 / n)] + [("L", 1.0 / n), ("C", 1.0 / n)] * (n - 1) + [("L", 1.0 / n), ("C", 0.5 / n)]
+        if (a, b) == ("flow", "flow"):
+            return [("L", 0.5 / n)] + [("C", 1.0 / n), ("L", 1.0 / n)] * (n - 1) + [("C", 1.0 / n), ("L", 0.5 / n)]
+        # one pressure end: the grid of a closed end (pressures every l/n, the last one holding half a
+        # segment); the other half segment's volume is that of the pressure port the flow end joins
+        if a == "pressure":
+            return [("C", 0.5 / n), ("L", 1.0 / n)] + [("C", 1.0 / n), ("L", 1.0 / n)] * (n - 1)
+        return [("L", 1.0 / n), ("C", 1.0 / n)] * (n - 1) + [("L", 1.0 / n), ("C", 0.5 / n)]
+
+    def _declare(self) -> None:
+        states: dict[str, State] = {}
+        self._names: list[str] = []
+        nc = nl = 0
+        for kind, _ in self._elements():
+            if kind == "C":
+                name = f"p{nc}"
+                nc += 1
+                states[name] = State("Pa", f"pressure of volume {nc} from end A", initial="p0", nominal=1e7)
+            else:
+                name = f"q{nl}"
+                nl += 1
+                states[name] = State("m^3/s", f"flow in oil column {nl} from end A, towards B", nominal=1e-3)
+            self._names.append(name)
+        inputs: dict[str, Port] = {}
+        outputs: dict[str, Output] = {}
+        hydraulic: dict[str, Hydraulic] = {}
+        for end, state in (("A", self._names[0]), ("B", self._names[-1])):
+            if state.startswith("p"):  # a pressure end: gives its pressure, takes the flow into the line
+                outputs[f"p{end}"] = Output("Pa", f"pressure at end {end}")
+                inputs[f"Q{end}"] = Port("m^3/s", f"flow into the line at end {end}", default=0.0)
+            else:  # a flow end: takes the pressure, gives the flow into the line
+                inputs[f"p{end}"] = Port("Pa", f"pressure at end {end}")
+                outputs[f"Q{end}"] = Output("m^3/s", f"flow into the line at end {end}")
+            hydraulic[end] = Hydraulic(f"p{end}", f"Q{end}", f"end {end}")
+        self.STATES = states  # type: ignore[misc]
+        self.INPUTS = inputs  # type: ignore[misc]
+        self.OUTPUTS = outputs  # type: ignore[misc]
+        self.HYDRAULIC = hydraulic  # type: ignore[misc]
+        self.LIMITS = {n: Limit("pressure") for n in states if n.startswith("p")}  # type: ignore[misc]
+
+    def check(self) -> None:
+        needed = self.segments_needed()
+        if self.segments < needed:
+            warnings.warn(
+                f"{self.name}: {self.segments} segment(s) of a {self.values['l']:g} m line carry waves up to "
+                f"{self.values['f_max'] * self.segments / needed:.3g} Hz at most, below f_max = "
+                f"{self.values['f_max']:g} Hz ([Efe2014] eq. 3.30 per segment); use segments={needed} or 'auto'",
+                LineResolutionWarning,
+                stacklevel=2,
+            )
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        out: dict[str, Any] = {}
+        for end, state, sign in (("A", self._names[0], 1.0), ("B", self._names[-1], -1.0)):
+            if state.startswith("p"):
+                out[f"p{end}"] = x[state]
+            else:  # the column's flow runs from A to B: into the line at A, out of it at B
+                out[f"Q{end}"] = sign * x[state]
+        return out
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        elements = self._elements()
+        volume = line_area(p["d"]) * p["l"]
+        inertance = p["rho"] * p["l"] / line_area(p["d"])
+        resistance = segment_resistance(p["l"], p["d"], p["rho"] * p["nu"])
+        last = len(elements) - 1
+        der: dict[str, Any] = {}
+        for k, ((kind, frac), name) in enumerate(zip(elements, self._names, strict=True)):
+            if kind == "C":
+                q_in = u["QA"] if k == 0 else x[self._names[k - 1]]
+                q_out = -u["QB"] if k == last else x[self._names[k + 1]]
+                der[name] = pressure_rate(p["beta_e"], frac * volume, q_in - q_out)
+            else:
+                p_up = u["pA"] if k == 0 else x[self._names[k - 1]]
+                p_down = u["pB"] if k == last else x[self._names[k + 1]]
+                der[name] = (p_up - p_down - frac * resistance * x[name]) / (frac * inertance)
+        return der
