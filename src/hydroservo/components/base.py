@@ -299,7 +299,7 @@ class Component:
         """Called after parameter values change (by :meth:`set`, or a circuit's fluid); override to
         re-derive what depends on them (a line's number of segments)."""
 
-    def structure(self) -> tuple[Any, ...]:
+    def structure_key(self) -> tuple[Any, ...]:
         """Structural settings besides options and tables (override): a change rebuilds the model."""
         return ()
 

@@ -110,7 +110,7 @@ class Line(Component):
             self.segments = self.segments_needed()
             self._declare()
 
-    def structure(self) -> tuple[Any, ...]:
+    def structure_key(self) -> tuple[Any, ...]:
         return (self.segments, self.ends)
 
     def config(self) -> dict[str, Any]:

@@ -353,7 +353,7 @@ class System:
 
         return (
             tuple(
-                (n, type(c).__name__, tuple(sorted(c.option_values.items())), tables(c), c.structure())
+                (n, type(c).__name__, tuple(sorted(c.option_values.items())), tables(c), c.structure_key())
                 for n, c in self.components.items()
             ),
             tuple(sorted(self.connections.items())),
