@@ -61,6 +61,7 @@ def registry() -> pint.UnitRegistry:
     # Hydraulic shorthands that pint does not define under these names.
     reg.define("lpm = liter / minute = L_min")
     reg.define("cps = hertz")
+    reg.define("rev = revolution")
     return reg
 
 

@@ -6,10 +6,12 @@ module                 components
 :mod:`.sources`        ConstantPressure, Tank, PressureTable
 :mod:`.volume`         Volume
 :mod:`.line`           Line
+:mod:`.accumulator`    Accumulator
+:mod:`.pumps`          Pump, VariablePump, Motor
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
 :mod:`.valves`         FourWayValve, PseudoSectionValve, ServoSolenoidValve,
-                       StagedSlotValve
+                       StagedSlotValve, Orifice, CheckValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Step, Ramp, Sine, Square, Table
@@ -19,6 +21,7 @@ module                 components
 What a component is (declarations and equations): :mod:`.base`.
 """
 
+from hydroservo.components.accumulator import Accumulator
 from hydroservo.components.base import (
     REGISTRY,
     Component,
@@ -35,6 +38,7 @@ from hydroservo.components.control import PID, Amplifier, Gain, Lag, Saturation,
 from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Line
 from hydroservo.components.mass import Mass
+from hydroservo.components.pumps import Motor, Pump, VariablePump
 from hydroservo.components.signals import Ramp, Sine, Square, Step, Table
 from hydroservo.components.sources import ConstantPressure, PressureTable, Tank
 from hydroservo.components.spools import (
@@ -44,7 +48,14 @@ from hydroservo.components.spools import (
     SpoolSecondOrder,
     TorqueMotor,
 )
-from hydroservo.components.valves import FourWayValve, PseudoSectionValve, ServoSolenoidValve, StagedSlotValve
+from hydroservo.components.valves import (
+    CheckValve,
+    FourWayValve,
+    Orifice,
+    PseudoSectionValve,
+    ServoSolenoidValve,
+    StagedSlotValve,
+)
 from hydroservo.components.volume import Volume
 
 __all__ = [
@@ -65,10 +76,16 @@ __all__ = [
     "PressureTable",
     "Volume",
     "Line",
+    "Accumulator",
+    "Pump",
+    "VariablePump",
+    "Motor",
     "FourWayValve",
     "PseudoSectionValve",
     "ServoSolenoidValve",
     "StagedSlotValve",
+    "Orifice",
+    "CheckValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",

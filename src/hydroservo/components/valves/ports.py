@@ -1,4 +1,4 @@
-"""The ports every four-way valve shares: the four pressures it reads and the four flows it gives.
+"""The ports valves share: a four-way valve's four pressures and flows, a two-port valve's two; the oil they read.
 
 Port A is the use port that supply feeds for positive spool travel (the
 sources' port 1), B the other (port 2); flows are positive out of A and B
@@ -7,9 +7,16 @@ into their lines, from supply into the valve, and from the valve to tank.
 
 from __future__ import annotations
 
-from hydroservo.components.base import Hydraulic, Output, Port
+from hydroservo.components.base import Hydraulic, Output, Param, Port
 
-__all__ = ["PRESSURE_PORTS", "FLOW_OUTPUTS", "HYDRAULIC_PORTS"]
+__all__ = [
+    "PRESSURE_PORTS",
+    "FLOW_OUTPUTS",
+    "HYDRAULIC_PORTS",
+    "TWO_PORT_PRESSURES",
+    "TWO_PORT_HYDRAULIC",
+    "FLUID_PARAMETERS",
+]
 
 #: Inputs: supply, tank and use-port pressures.
 PRESSURE_PORTS = {
@@ -33,4 +40,20 @@ HYDRAULIC_PORTS = {
     "T": Hydraulic("pT", "QT", "tank port", into=False),
     "A": Hydraulic("pA", "QA", "use port A (port 1)", into=False),
     "B": Hydraulic("pB", "QB", "use port B (port 2)", into=False),
+}
+
+#: A two-port valve or restriction: the pressures it reads (its output ``Q`` is the flow from A to B).
+TWO_PORT_PRESSURES = {"pA": Port("Pa", "pressure at port A"), "pB": Port("Pa", "pressure at port B")}
+
+#: A two-port valve's hydraulic ports: positive ``Q`` enters at A and leaves at B.
+TWO_PORT_HYDRAULIC = {
+    "A": Hydraulic("pA", "Q", "port A (inlet for positive Q)", into=True),
+    "B": Hydraulic("pB", "Q", "port B (outlet for positive Q)", into=False),
+}
+
+#: Density, viscosity and critical flow number of the orifice law (taken from the circuit's fluid).
+FLUID_PARAMETERS = {
+    "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False, fluid="density"),
+    "nu": Param(32e-6, "m^2/s", "kinematic viscosity", min=0.0, min_inclusive=False, fluid="kinematic_viscosity"),
+    "lambda_crit": Param(1000.0, "", "critical flow number (MareAttarND eq. 4)", min=0.0, min_inclusive=False),
 }

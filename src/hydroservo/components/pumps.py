@@ -1,0 +1,166 @@
+"""Pumps and motors: displacement machines with leakage; a pressure-compensated pump; a motor driving an inertia."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, State, register
+from hydroservo.laws.displacement import compensator_displacement, displaced_flow, leakage_flow, motor_torque
+
+__all__ = ["Pump", "VariablePump", "Motor"]
+
+_PUMP_INPUTS = {
+    "pS": Port("Pa", "pressure at the suction port S", default=0.0),
+    "pP": Port("Pa", "pressure at the pressure port P"),
+}
+_PUMP_HYDRAULIC = {
+    "S": Hydraulic("pS", "QS", "suction port", into=True),
+    "P": Hydraulic("pP", "QP", "pressure port", into=False),
+}
+
+
+@register
+class Pump(Component):
+    r"""Fixed-displacement pump at constant speed, with internal leakage.
+
+    .. math:: Q_P = D\,\omega - C_{leak}\,(p_P - p_S), \qquad Q_S = Q_P
+
+    (:mod:`hydroservo.laws.displacement`, [Merritt1967]). ``D`` is per radian;
+    give a catalogue's displacement with its unit (``"25 cm^3/rev"``) and the
+    speed as ``"1500 rpm"``. The drive holds its speed whatever the load (an
+    electric motor far from stall). Outputs: the delivered flow ``QP`` and the
+    shaft torque the pump takes.
+    """
+
+    PARAMETERS = {
+        "D": Param(25e-6 / 6.283185307179586, "m^3/rad", "displacement per radian (write '25 cm^3/rev')", min=0.0),
+        "omega": Param(157.07963267948966, "rad/s", "shaft speed (write '1500 rpm')", min=0.0),
+        "C_leak": Param(0.0, "m^3/s/Pa", "internal leakage coefficient, P to S", min=0.0),
+    }
+    INPUTS = dict(_PUMP_INPUTS)
+    OUTPUTS = {
+        "QP": Output("m^3/s", "flow delivered at P"),
+        "QS": Output("m^3/s", "flow drawn at S"),
+        "T": Output("N*m", "shaft torque taken from the drive"),
+    }
+    HYDRAULIC = dict(_PUMP_HYDRAULIC)
+    #: the outlet pressure is the highest a pump makes: the circuit's pressure ceiling (plausibility)
+    LIMITS = {"pP": Limit("source")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        dp = u["pP"] - u["pS"]
+        q = displaced_flow(p["D"], p["omega"]) - leakage_flow(p["C_leak"], dp)
+        return {"QP": q, "QS": q, "T": motor_torque(p["D"], dp)}
+
+
+@register
+class VariablePump(Component):
+    r"""Pressure-compensated variable-displacement pump: full displacement up to ``p_c``, none ``dp_band`` above.
+
+    The displacement setting :math:`\varepsilon` follows the compensator's
+    static characteristic (:func:`hydroservo.laws.displacement.compensator_displacement`)
+    with the time constant ``tau`` of the swash-plate actuator, and the input
+    ``eps_cmd`` (0 to 1, default 1) limits it:
+
+    .. math:: \tau\,\dot\varepsilon = \varepsilon_{cmd}\,c(p_P) - \varepsilon, \qquad
+              Q_P = \varepsilon D\,\omega - C_{leak}\,(p_P - p_S)
+
+    ([JelaliKroll2004], pressure-compensated pumps; [Merritt1967] for the
+    displacement and leakage flows).
+    """
+
+    PARAMETERS = {
+        **Pump.PARAMETERS,
+        "p_c": Param(200e5, "Pa", "compensator setting (destroking begins)", min=0.0),
+        "dp_band": Param(5e5, "Pa", "pressure rise from full to zero displacement", min=0.0, min_inclusive=False),
+        "tau": Param(0.02, "s", "time constant of the displacement actuator", min=0.0, min_inclusive=False),
+        "eps0": Param(1.0, "", "initial displacement setting", min=0.0, max=1.0),
+    }
+    STATES = {"eps": State("", "displacement setting (0 to 1)", initial="eps0", nominal=1.0)}
+    INPUTS = {**_PUMP_INPUTS, "eps_cmd": Port("", "displacement command, 0 to 1", default=1.0)}
+    OUTPUTS = {**Pump.OUTPUTS, "eps": Output("", "displacement setting (0 to 1)")}
+    HYDRAULIC = dict(_PUMP_HYDRAULIC)
+    #: the outlet pressure is the highest a pump makes: the circuit's pressure ceiling (plausibility)
+    LIMITS = {"pP": Limit("source")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        dp = u["pP"] - u["pS"]
+        eps = x["eps"]
+        q = displaced_flow(p["D"], p["omega"], eps) - leakage_flow(p["C_leak"], dp)
+        return {"QP": q, "QS": q, "T": motor_torque(eps * p["D"], dp), "eps": eps}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        target = u["eps_cmd"] * compensator_displacement(u["pP"], p["p_c"], p["dp_band"])
+        return {"eps": (target - x["eps"]) / p["tau"]}
+
+
+@register
+class Motor(Component):
+    r"""Fixed-displacement hydraulic motor driving an inertia, with leakage and viscous friction.
+
+    .. math::
+        Q_A &= D\,\omega + C_{im}(p_A - p_B) + C_{em}\,p_A, \qquad
+        Q_B = D\,\omega + C_{im}(p_A - p_B) - C_{em}\,p_B\\
+        J\,\dot\omega &= \eta_{hm} D\,(p_A - p_B) - B_m\,\omega - T_{load}, \qquad \dot\theta = \omega
+
+    ([Merritt1967], hydraulic motors: flow continuity with internal and
+    external leakage coefficients, torque :math:`D_m P_L`). Flow entering at A
+    turns the shaft in +θ. ``J`` is the motor's and its load's inertia;
+    external leakage goes to the case drain (tank).
+    """
+
+    PARAMETERS = {
+        "D": Param(50e-6 / 6.283185307179586, "m^3/rad", "displacement per radian (write '50 cm^3/rev')", min=0.0, min_inclusive=False),
+        "C_im": Param(0.0, "m^3/s/Pa", "internal leakage coefficient, A to B", min=0.0),
+        "C_em": Param(0.0, "m^3/s/Pa", "external leakage coefficient of each port", min=0.0),
+        "eta_hm": Param(1.0, "", "hydromechanical efficiency", min=0.0, max=1.0, min_inclusive=False),
+        "J": Param(0.01, "kg*m^2", "inertia of motor and load", min=0.0, min_inclusive=False),
+        "B_m": Param(0.0, "N*m*s/rad", "viscous friction coefficient of the shaft", min=0.0),
+        "omega0": Param(0.0, "rad/s", "initial speed"),
+        "theta0": Param(0.0, "rad", "initial angle"),
+    }
+    STATES = {
+        "theta": State("rad", "shaft angle", initial="theta0", nominal=1.0),
+        "omega": State("rad/s", "shaft speed", initial="omega0", nominal=100.0),
+    }
+    INPUTS = {
+        "pA": Port("Pa", "pressure at port A"),
+        "pB": Port("Pa", "pressure at port B"),
+        "T_load": Port("N*m", "load torque against +θ", default=0.0),
+    }
+    OUTPUTS = {
+        "QA": Output("m^3/s", "flow into the motor at A"),
+        "QB": Output("m^3/s", "flow out of the motor at B"),
+        "T": Output("N*m", "hydraulic torque on the shaft"),
+        "theta": Output("rad", "shaft angle"),
+        "omega": Output("rad/s", "shaft speed"),
+    }
+    HYDRAULIC = {
+        "A": Hydraulic("pA", "QA", "port A (inlet for +θ)", into=True),
+        "B": Hydraulic("pB", "QB", "port B (outlet for +θ)", into=False),
+    }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        dp = u["pA"] - u["pB"]
+        q = displaced_flow(p["D"], x["omega"]) + leakage_flow(p["C_im"], dp)
+        return {
+            "QA": q + leakage_flow(p["C_em"], u["pA"]),
+            "QB": q - leakage_flow(p["C_em"], u["pB"]),
+            "T": motor_torque(p["D"], dp, p["eta_hm"]),
+            "theta": x["theta"],
+            "omega": x["omega"],
+        }
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"theta": x["omega"], "omega": (y["T"] - p["B_m"] * x["omega"] - u["T_load"]) / p["J"]}

@@ -1,0 +1,46 @@
+"""Fixed restrictions: the sharp-edged orifice, turbulent with its laminar transition."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from hydroservo.components.base import Component, Output, Param, register
+from hydroservo.components.valves.ports import FLUID_PARAMETERS, TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
+from hydroservo.laws.orifice import DISCHARGE_COEFFICIENT, orifice_flow, transition_pressure
+
+__all__ = ["Orifice"]
+
+
+@register
+class Orifice(Component):
+    r"""Sharp-edged orifice of diameter ``d``: turbulent flow with a laminar transition at small pressure drops.
+
+    .. math:: Q = C_d A \sqrt{2/\rho}\;\frac{\Delta p}{(\Delta p^2 + p_{tr}^2)^{1/4}},
+              \qquad A = \pi d^2/4,\quad \Delta p = p_A - p_B
+
+    the turbulent law of [Efe2014] eqs. (3.5), (3.6) with the package's one
+    regularisation at null (:func:`hydroservo.laws.orifice.orifice_flow`):
+    :math:`p_{tr}` is the drop at which the flow number of [MareAttarND] eq. (4),
+    with the bore as hydraulic diameter, reaches ``lambda_crit``
+    (:func:`hydroservo.laws.orifice.transition_pressure`). Below it the flow is
+    proportional to the drop, as laminar flow is.
+    """
+
+    PARAMETERS = {
+        "d": Param(1e-3, "m", "bore diameter", min=0.0, min_inclusive=False),
+        "Cd": Param(DISCHARGE_COEFFICIENT, "", "discharge coefficient", min=0.0, max=1.0, min_inclusive=False),
+        **FLUID_PARAMETERS,
+    }
+    INPUTS = dict(TWO_PORT_PRESSURES)
+    OUTPUTS = {"Q": Output("m^3/s", "flow from A to B")}
+    HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        p_tr = transition_pressure(p["d"], p["rho"], p["nu"], p["lambda_crit"])
+        area = np.pi * p["d"] ** 2 / 4.0
+        return {"Q": orifice_flow(area, u["pA"] - u["pB"], p["rho"], p["Cd"], p_tr)}

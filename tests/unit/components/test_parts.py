@@ -1,0 +1,130 @@
+"""The everyday parts against their laws worked by hand: orifice, check valve, pumps, motor, accumulator."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from hydroservo import System
+from hydroservo import components as c
+
+ABS = 101325.0  # the atmosphere, to make gauge pressures absolute [Pa]
+
+
+def pump_orifice(restriction: c.Component, pump: c.Component | None = None) -> System:
+    """A pump into a 1 L volume that drains to tank through ``restriction``."""
+    s = System("pump-orifice", t_end=2.0)
+    s.add(c.Tank("tank"))
+    s.add(pump or c.Pump("pump", D="25 cm^3/rev", omega="1500 rpm"))
+    s.add(c.Volume("v", V="1 L"))
+    s.add(restriction)
+    s.connect("tank.P", "pump.S")
+    s.connect("pump.P", "v.P", f"{restriction.name}.A")
+    s.connect(f"{restriction.name}.B", "tank.P")
+    return s
+
+
+def test_an_orifice_settles_where_its_turbulent_flow_equals_the_pumps():
+    r = pump_orifice(c.Orifice("o", d="3 mm", Cd=0.6, rho=870.0)).simulate()
+    q = 25e-6 * 1500 / 60  # 37.5 L/min
+    area = np.pi * 0.003**2 / 4
+    dp = 870.0 / 2 * (q / (0.6 * area)) ** 2  # Q = Cd A sqrt(2 dp / rho), by hand
+    assert r["v.p"][-1] == pytest.approx(dp, rel=1e-4)  # the laminar regularisation is far below 80 bar
+
+
+def test_an_orifice_is_laminar_below_its_transition():
+    o = c.Orifice("o", d="1 mm", rho=870.0, nu=32e-6)
+    s = System("s")
+    s.add(o)
+    s.add(c.ConstantPressure("a", p="10 Pa"))
+    s.add(c.Tank("b"))
+    s.connect("a.P", "o.A")
+    s.connect("o.B", "b.P")
+    q10 = s.simulate(t_end=0.001)["o.Q"][-1]
+    q20 = s.simulate(t_end=0.001, params={"a.p": "20 Pa"})["o.Q"][-1]
+    assert q20 / q10 == pytest.approx(2.0, rel=1e-3)  # proportional to the drop, not to its root
+
+
+def test_a_check_valve_holds_its_cracking_pressure_plus_what_its_opening_needs():
+    cv = c.CheckValve("cv", d="5 mm", p_crack="10 bar", dp_open="5 bar", Cd=0.6, rho=870.0)
+    r = pump_orifice(cv, c.Pump("pump", D="2 cm^3/rev", omega="1500 rpm")).simulate()
+    p = r["v.p"][-1]
+    assert 10e5 < p < 15e5
+    # the static balance, by hand: Q = Cd s(dp) A sqrt(2 dp/rho), s the rounded ramp
+    s_lin = (p - 10e5) / 5e5
+    s = s_lin**2 * (3 - 2 * s_lin)
+    q = 0.6 * s * np.pi * 0.005**2 / 4 * np.sqrt(2 * p / 870.0)
+    assert q == pytest.approx(2e-6 * 1500 / 60, rel=1e-3)
+    assert r["cv.s"][-1] == pytest.approx(s, rel=1e-9)
+
+
+def test_a_check_valve_blocks_reverse_flow():
+    s = System("reverse")
+    s.add(c.CheckValve("cv"))
+    s.add(c.Tank("a"))
+    s.add(c.ConstantPressure("b", p="100 bar"))
+    s.connect("a.P", "cv.A")
+    s.connect("cv.B", "b.P")
+    assert s.simulate(t_end=0.01)["cv.Q"][-1] == 0.0
+
+
+def test_pump_leakage_and_torque():
+    pump = c.Pump("pump", D="25 cm^3/rev", omega="1500 rpm", C_leak="1e-11 m^3/s/Pa")
+    r = pump_orifice(c.Orifice("o", d="3 mm", Cd=0.6, rho=870.0), pump).simulate()
+    p, q = r["v.p"][-1], r["pump.QP"][-1]
+    assert q == pytest.approx(25e-6 * 1500 / 60 - 1e-11 * p, rel=1e-9)
+    assert r["pump.T"][-1] == pytest.approx(25e-6 / (2 * np.pi) * p, rel=1e-9)
+
+
+def test_a_compensated_pump_holds_its_setting_within_its_band():
+    pump = c.VariablePump("pump", D="25 cm^3/rev", omega="1500 rpm", p_c="100 bar", dp_band="5 bar")
+    r = pump_orifice(c.Orifice("o", d="1 mm", Cd=0.6, rho=870.0), pump).simulate(t_end=8.0)
+    p, eps = r["v.p"][-1], r["pump.eps"][-1]
+    assert 100e5 < p < 105e5 and 0 < eps < 1
+    assert eps == pytest.approx((105e5 - p) / 5e5, rel=1e-6)  # on the compensator's line
+    # delivering what the orifice takes, its laminar transition (4.5 bar for 1 mm at 32 cSt) included
+    p_tr = 870.0 / 2 * (1000 * 32e-6 / 0.001) ** 2
+    q = 0.6 * np.pi * 0.001**2 / 4 * np.sqrt(2 / 870.0) * p / (p**2 + p_tr**2) ** 0.25
+    assert r["pump.QP"][-1] == pytest.approx(q, rel=1e-6)
+
+
+def test_a_motor_runs_at_the_speed_where_its_torque_meets_friction_and_load():
+    s = System("motor", t_end=5.0)
+    s.add(c.ConstantPressure("supply", p="100 bar"))
+    s.add(c.Tank("tank"))
+    s.add(c.Motor("m", D="50 cm^3/rev", B_m=0.5, J=0.01, C_im="1e-12 m^3/s/Pa"))
+    s.add(c.Step("load", unit="N*m", amplitude="20 N*m"))
+    s.connect("supply.P", "m.A")
+    s.connect("m.B", "tank.P")
+    s.connect("load.y", "m.T_load")
+    r = s.simulate()
+    D = 50e-6 / (2 * np.pi)
+    omega = (D * 100e5 - 20.0) / 0.5
+    assert r["m.omega"][-1] == pytest.approx(omega, rel=1e-6)
+    assert r["m.QA"][-1] == pytest.approx(D * omega + 1e-12 * 100e5, rel=1e-6)
+
+
+@pytest.mark.parametrize("kappa", [1.0, 1.4])
+def test_an_accumulator_stores_what_is_pumped_along_its_polytropic_law(kappa):
+    s = System("charge", t_end=3.0)
+    s.add(c.Tank("tank"))
+    s.add(c.Pump("pump", D="10 cm^3/rev", omega="600 rpm"))  # 6 L/min
+    s.add(c.Accumulator("acc", V0="1 L", p0="50 bar", kappa=kappa, p_init="50 bar"))
+    s.connect("tank.P", "pump.S")
+    s.connect("pump.P", "acc.P")
+    r = s.simulate()
+    stored = 1e-4 * r.t  # the pumped volume [m^3]; the port's oil takes less than 1e-7 m^3 of it
+    np.testing.assert_allclose(r["acc.V_oil"], stored, atol=2e-6)
+    p_gas = (50e5 + ABS) * (1e-3 / (1e-3 - 3e-4)) ** kappa - ABS  # p V^kappa constant, absolute
+    assert r["acc.p"][-1] == pytest.approx(p_gas, rel=5e-3)
+
+
+def test_an_empty_accumulator_is_only_the_oil_in_its_port():
+    s = System("empty", t_end=0.05)
+    s.add(c.Accumulator("acc", V0="1 L", p0="50 bar", V_dead="10 cm^3", beta_e=1.4e9, p_init="0 bar"))
+    s.add(c.ConstantPressure("src", p="1 bar"))
+    s.add(c.Orifice("o", d="1 mm"))
+    s.connect("src.P", "o.A")
+    s.connect("o.B", "acc.P")
+    r = s.simulate()
+    assert r["acc.V_oil"][-1] == 0.0 and r["acc.p"][-1] == pytest.approx(1e5, rel=1e-3)
