@@ -256,6 +256,39 @@ def from_si(value: float, unit: str, to: str) -> float:
         raise UnitError(f"cannot express {si_unit(unit)} in {to!r}: {type(exc).__name__}") from None
 
 
+#: Coherent SI units by name, for :func:`coherent_unit` to prefer over pint's base-unit products.
+_COHERENT = ("m", "Pa", "N", "m^3/s", "m/s", "m/s^2", "m^3", "m^2", "s", "kg", "A", "V", "ohm", "N*m", "rad/s", "W", "J")
+
+
+@functools.lru_cache(maxsize=512)
+def coherent_unit(unit: str) -> str:
+    """The coherent SI unit of ``unit``'s dimension, in which hydroservo carries a signal inside.
+
+    ``"mm"`` -> ``"m"``, ``"bar"`` -> ``"Pa"``, ``"L/min"`` -> ``"m^3/s"``; a unit
+    that is coherent already (``"V"``, ``"N*m"``, ``"V/m"``) and temperatures
+    (``"degC"``, the package's convention) are returned as given.
+
+    Examples
+    --------
+    >>> coherent_unit("mm"), coherent_unit("bar"), coherent_unit("V/m"), coherent_unit("")
+    ('m', 'Pa', 'V/m', '')
+    """
+    if unit == "" or unit in ("degC", "degF", "K"):
+        return unit
+    u = _unit(unit)
+    base = (1.0 * u).to_base_units()
+    if abs(base.magnitude - 1.0) < 1e-12:
+        return unit
+    factors = list(u._units.items())  # a product of units: make each coherent
+    if len(factors) > 1 or (factors and factors[0][1] != 1):
+        return "*".join(coherent_unit(name) + ("" if exp == 1 else f"^{exp:g}") for name, exp in factors)
+    dims = registry().get_dimensionality(u)
+    for name in _COHERENT:
+        if registry().get_dimensionality(_unit(name)) == dims:
+            return name
+    return f"{base.units:~C}".replace("**", "^")
+
+
 @functools.lru_cache(maxsize=512)
 def si_unit(unit: str) -> str:
     """Short printable form of a unit string (``"m^3/s"`` -> ``"m³/s"``)."""

@@ -46,7 +46,7 @@ from typing import Any, ClassVar, Self
 
 from hydroservo.data import parameter_set
 from hydroservo.errors import ParameterError, RenamedWarning, UnitError
-from hydroservo.units import check_unit, is_bare_number, si_unit, to_si
+from hydroservo.units import check_unit, coherent_unit, is_bare_number, si_unit, to_si
 
 __all__ = [
     "FromSet",
@@ -261,11 +261,13 @@ class Component:
         self.set(**values)
 
     def _bind_signal_unit(self, unit: str) -> None:
-        """Give signal blocks a unit: every declared unit "@" becomes ``unit``."""
+        """Give signal blocks a unit: every declared unit "@" becomes the coherent SI unit of ``unit``
+        (a block given ``unit="mm"`` carries metres inside, as every signal does; ``self.unit`` keeps "mm")."""
         try:
             check_unit(unit)
         except UnitError:
             raise ParameterError(f"{self.name}.unit = {unit!r}: not a unit") from None
+        unit = coherent_unit(unit)
 
         def sub(u: str) -> str:
             if SIGNAL not in u:

@@ -8,12 +8,14 @@ current, a transducer's input) declare it.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Output, Param, Port, State, register
 from hydroservo.components.signals import SIGNAL_OUTPUT
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, UnitError
+from hydroservo.units import coherent_unit
 
 __all__ = ["Sum", "Gain", "Lag", "Saturation", "PID", "Amplifier", "Transducer"]
 
@@ -35,19 +37,73 @@ class Sum(Component):
         return {"y": p["gain1"] * u["u1"] + p["gain2"] * u["u2"] + p["gain3"] * u["u3"]}
 
 
-@register
-class Gain(Component):
-    """``y = K u``."""
+#: Placeholder unit of a gain's input (``input_unit``); the output keeps ``SIGNAL`` (``unit``).
+INPUT_SIGNAL = "@in"
 
-    RENAMED = {"k": "K"}
-    PARAMETERS = {"K": Param(1.0, "", "gain")}
-    INPUTS = {"u": Port(SIGNAL, "input")}
-    OUTPUTS = SIGNAL_OUTPUT
+
+class _Gain(Component):
+    """A gain ``y = K u`` between two units: ``input_unit`` in, ``unit`` out, the gain in unit/input_unit."""
+
+    #: the name of the gain parameter, and the units taken when none are given
+    GAIN = "K"
+    DEFAULT_UNITS: tuple[str | None, str | None] = (None, None)
+
+    def __init__(self, name: str, unit: str | None = None, input_unit: str | None = None, **values: Any) -> None:
+        default_out, default_in = self.DEFAULT_UNITS
+        unit = default_out if unit is None else unit
+        self.input_unit = (default_in if input_unit is None else input_unit) if default_in is not None or input_unit is not None else unit
+        try:
+            super().__init__(name, unit, **values)
+        except ParameterError as exc:
+            if self.GAIN in values and f"{name}.{self.GAIN}" in str(exc) and "dimension" in str(exc):
+                raise ParameterError(
+                    f"{exc}; the gain is in unit/input_unit: give both, e.g. "
+                    f"{type(self).__name__}({name!r}, unit='V', input_unit='m', {self.GAIN}='20 V/m')"
+                ) from None
+            raise
+
+    def _bind_signal_unit(self, unit: str) -> None:
+        try:
+            given = coherent_unit(self.input_unit or "")
+        except UnitError:
+            raise ParameterError(f"{self.name}.input_unit = {self.input_unit!r}: not a unit") from None
+        if given == coherent_unit(unit):  # one unit through: the gain is a pure number
+            self.PARAMETERS = {  # type: ignore[misc]
+                k: replace(v, unit="") if k == self.GAIN else v for k, v in self.PARAMETERS.items()
+            }
+
+        def sub(u: str) -> str:
+            if u == INPUT_SIGNAL:
+                return given
+            return u.replace(INPUT_SIGNAL, f"({given})" if given else "1")
+
+        self.PARAMETERS = {k: replace(v, unit=sub(v.unit)) for k, v in self.PARAMETERS.items()}  # type: ignore[misc]
+        self.INPUTS = {k: replace(v, unit=sub(v.unit)) for k, v in self.INPUTS.items()}  # type: ignore[misc]
+        super()._bind_signal_unit(unit)
+
+    def config(self) -> dict[str, Any]:
+        return {"input_unit": self.input_unit} if self.input_unit != (self.unit or "") else {}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"y": p["K"] * u["u"]}
+        return {"y": p[self.GAIN] * u["u"]}
+
+
+@register
+class Gain(_Gain):
+    """``y = K u``; ``K`` is in unit/input_unit.
+
+    With only ``unit`` given, input and output share it and ``K`` is a pure
+    number (``Gain("g", unit="V", K=2)``). To turn one quantity into another,
+    give both: ``Gain("k", unit="V", input_unit="m", K="20 V/m")``; the
+    connections are then checked in both units.
+    """
+
+    RENAMED = {"k": "K"}
+    PARAMETERS = {"K": Param(1.0, SIGNAL + "/" + INPUT_SIGNAL, "gain (unit/input_unit)")}
+    INPUTS = {"u": Port(INPUT_SIGNAL, "input")}
+    OUTPUTS = SIGNAL_OUTPUT
 
 
 @register
@@ -165,14 +221,16 @@ class Amplifier(Component):
 
 
 @register
-class Transducer(Component):
-    """Feedback transducer, ``y = G u`` (e.g. a potentiometer in V/m)."""
+class Transducer(_Gain):
+    """Feedback transducer, ``y = G u``: by default a position in metres to volts (a potentiometer in V/m).
 
-    PARAMETERS = {"G": Param(1.0, "V/m", "transducer gain")}
-    INPUTS = {"u": Port("m", "measured quantity")}
-    OUTPUTS = {"y": Output("V", "transducer signal")}
+    ``unit`` and ``input_unit`` make it any other sensor: a pressure
+    transducer is ``Transducer("pt", unit="V", input_unit="bar", G="0.04 V/bar")``
+    (or ``unit="mA"`` for a current loop).
+    """
 
-    def output_equations(
-        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
-    ) -> dict[str, Any]:
-        return {"y": p["G"] * u["u"]}
+    GAIN = "G"
+    DEFAULT_UNITS = ("V", "m")
+    PARAMETERS = {"G": Param(1.0, SIGNAL + "/" + INPUT_SIGNAL, "transducer gain (unit/input_unit)")}
+    INPUTS = {"u": Port(INPUT_SIGNAL, "measured quantity")}
+    OUTPUTS = {"y": Output(SIGNAL, "transducer signal")}

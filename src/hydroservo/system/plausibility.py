@@ -12,9 +12,8 @@ them.
 Margins (why these numbers: docs/reliability.md):
 
 * A chamber pressure is flagged above the highest source pressure of the run
-  (or the highest pressure a volume starts at, if that is higher: a charged
-  manifold is a source) by more than :data:`PRESSURE_MARGIN` (50 %) of that
-  pressure, absolute. A decelerating load or an overrunning load on the annulus of a
+  by more than :data:`PRESSURE_MARGIN` (50 %) of that source's absolute
+  pressure. A decelerating load or an overrunning load on the annulus of a
   differential cylinder legitimately pushes a chamber above the supply (the
   flight-simulator actuator of [FlightSimulatorND] peaks 8 % above it); half the
   supply again is beyond what relief valves and hoses let a real circuit see.
@@ -102,11 +101,12 @@ def check(
     ``lower`` and ``upper`` one bound per watched signal (NaN where a limit has none).
     """
     found: list[Implausible] = []
-    # the ceiling: the highest pressure a source imposes over the run, or a closed volume starts at
-    candidates = [(float(np.max(values[i])), w.signal) for i, w in enumerate(watched) if w.kind == "source"]
-    if candidates:
-        candidates += [(float(values[i][0]), f"{w.signal} at t = 0") for i, w in enumerate(watched) if w.kind == "pressure"]
-    ceiling, source = max(candidates) if candidates else (None, None)
+    sources = [i for i, w in enumerate(watched) if w.kind == "source"]
+    ceiling = source = None
+    if sources:
+        peaks = [float(np.max(values[i])) for i in sources]
+        j = int(np.argmax(peaks))
+        ceiling, source = peaks[j], watched[sources[j]].signal
     for i, w in enumerate(watched):
         v = values[i]
         if w.kind == "pressure" and ceiling is not None:

@@ -25,14 +25,14 @@ def lowest_frequency(s: System) -> float:
 def test_steady_flow_meets_hagen_poiseuille():
     s = System("drop", t_end=2.0)
     s.add(c.ConstantPressure("src", p="10 bar"))
-    s.add(c.Tank("tank"))
-    s.add(c.Line("line", ends="flow", l=5.0, d=0.004, rho=870.0, nu=46e-6, beta_e=1e9))
+    s.add(c.Tank("tank", p="5 bar"))  # the start-up waves stay well above vacuum (a line does not cavitate)
+    s.add(c.Line("line", ends="flow", l=5.0, d=0.004, rho=870.0, nu=46e-6, beta_e=1e9, p0="7.5 bar"))
     s.connect("src.P", "line.A")
     s.connect("line.B", "tank.P")
     r = s.simulate()
     R = 128 * 870.0 * 46e-6 * 5.0 / (np.pi * 0.004**4)  # Hagen-Poiseuille, by hand
-    assert r["line.QA"][-1] == pytest.approx(10e5 / R, rel=1e-5)
-    assert r["line.QB"][-1] == pytest.approx(-10e5 / R, rel=1e-5)  # flow into the line at B: it leaves there
+    assert r["line.QA"][-1] == pytest.approx(5e5 / R, rel=1e-5)
+    assert r["line.QB"][-1] == pytest.approx(-5e5 / R, rel=1e-5)  # flow into the line at B: it leaves there
 
 
 @pytest.mark.parametrize(("segments", "tolerance"), [(1, 0.11), (4, 0.007), (19, 0.0005)])
@@ -93,15 +93,17 @@ def test_bad_lines_are_refused(kwargs, message):
         c.Line("line", **kwargs)
 
 
+# a valve step into 3 m lines swings them below vacuum, which the lines (no cavitation) report
+@pytest.mark.filterwarnings("ignore::hydroservo.errors.ImplausibleResultWarning")
 def test_the_ends_decide_which_ports_a_line_joins():
     # a valve (flow ports) to a cylinder (pressure ports) through a line with a pressure end at the valve
     s = System("valve-line-cylinder", t_end=0.2)
     s.add(c.ConstantPressure("supply", p="100 bar"))
     s.add(c.Tank("tank"))
     s.add(c.FourWayValve("valve"))
-    s.add(c.Line("lineA", ends="pressure-flow", l=3.0, d=0.01))
-    s.add(c.Line("lineB", ends="pressure-flow", l=3.0, d=0.01))
-    s.add(c.Cylinder("cyl", k_stop=1e8, c_stop=1e5))
+    s.add(c.Line("lineA", ends="pressure-flow", l=3.0, d=0.01, p0="50 bar"))
+    s.add(c.Line("lineB", ends="pressure-flow", l=3.0, d=0.01, p0="50 bar"))
+    s.add(c.Cylinder("cyl", k_stop=1e8, c_stop=1e5, pA0="50 bar", pB0="50 bar"))
     s.add(c.Mass("load", m=50.0, incline=0.0))
     s.add(c.Step("cmd", unit="m", amplitude="0.1 mm"))
     s.connect("cmd.y", "valve.xv")
