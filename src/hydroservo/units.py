@@ -62,6 +62,10 @@ def registry() -> pint.UnitRegistry:
     reg.define("lpm = liter / minute = L_min")
     reg.define("cps = hertz")
     reg.define("rev = revolution")
+    # Absolute pressures (hydroservo's pressures are gauge): the atmosphere is 101325 Pa.
+    reg.define("Pa_abs = Pa; offset: -101325")
+    reg.define("bar_abs = 100000 * Pa; offset: -101325 = bara")
+    reg.define("psia = 6894.757293168361 * Pa; offset: -101325")
     return reg
 
 

@@ -11,7 +11,8 @@ module                 components
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
 :mod:`.valves`         FourWayValve, PseudoSectionValve, ServoSolenoidValve,
-                       StagedSlotValve, Orifice, CheckValve
+                       StagedSlotValve, Orifice, CheckValve, ReliefValve,
+                       PressureReducingValve, CounterbalanceValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Step, Ramp, Sine, Square, Table
@@ -50,9 +51,12 @@ from hydroservo.components.spools import (
 )
 from hydroservo.components.valves import (
     CheckValve,
+    CounterbalanceValve,
     FourWayValve,
     Orifice,
+    PressureReducingValve,
     PseudoSectionValve,
+    ReliefValve,
     ServoSolenoidValve,
     StagedSlotValve,
 )
@@ -86,6 +90,9 @@ __all__ = [
     "StagedSlotValve",
     "Orifice",
     "CheckValve",
+    "ReliefValve",
+    "PressureReducingValve",
+    "CounterbalanceValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",

@@ -42,15 +42,30 @@ class Cylinder(Component):
     ``lee`` ([Efe2014] eq. 3.2 with ``E_max``) or ``eggerth`` (eq. 3.3, Table
     3.1 interpolated at ``temperature``).
 
-    Pressure floor (option ``pressure_floor``): ``check-valve`` models
-    replenishing check valves of instantaneous response, [FlightSimulatorND] eqs.
-    (3-29)-(3-30): a chamber at or below ``p_floor`` cannot lose pressure.
+    Pressure floor (option ``pressure_floor``):
+
+    * ``check-valve`` (default) models replenishing check valves of
+      instantaneous response, [FlightSimulatorND] eqs. (3-29)-(3-30): a chamber
+      at or below ``p_floor`` cannot lose pressure;
+    * ``cavity`` models cavitation as Hopsan does ([Hopsan2026],
+      HydraulicCylinderC with its valves): the chamber's pressure state
+      ``pA_state`` integrates the continuity equation without a floor, and
+      where it falls below ``p_floor`` the chamber holds a cavity of volume
+      :math:`V (p_{floor} - p_{state})/\beta_e` (output ``V_cavA``) that the
+      inflow must refill before the pressure rises again; the pressure the
+      ports and the piston see, ``pA``, is :math:`\max(p_{state}, p_{floor})`.
+      Set ``p_floor`` to the pressure at which the oil releases gas or
+      vapour, near vacuum (``"0 Pa_abs"``);
+    * ``none``: the continuity equation alone (a chamber may go below vacuum,
+      which the plausibility check flags).
 
     Output ``F`` is the hydraulic force on the piston in +x plus the end-stop
-    force: a spring-damper (``k_stop``, ``c_stop``) acting beyond ``x_min``/``x_max``;
-    with both 0 there are no end stops. Output ``m_oil`` is the oil mass in both
-    chambers ([Efe2014] eqs. 3.44-3.46); connect it to a mass's ``m_add`` to
-    count it in the moving mass. Outputs ``VA``, ``VB`` are the volumes of the
+    force: a spring-damper (``k_stop``, ``c_stop``) acting beyond ``x_min``/``x_max``,
+    stiff by default (1e9 N/m, 1e6 N s/m: 0.1 mm under 100 kN, a hard stop for any
+    practical load, as Hopsan's stroke limit tends to one); with both 0 there
+    are no end stops. Output ``m_oil`` is the oil mass in both chambers
+    ([Efe2014] eqs. 3.44-3.46); connect it to a mass's ``m_add`` to count it
+    in the moving mass. Outputs ``VA``, ``VB`` are the volumes of the
     pressure equations.
 
     Every run is checked against the cylinder's physical bounds (``LIMITS``,
@@ -80,17 +95,23 @@ class Cylinder(Component):
         "p_max": Param(280e5, "Pa", "maximum pressure (option lee)", min=0.0, min_inclusive=False),
         "temperature": Param(50.0, "degC", "oil temperature (option eggerth)", min=20.0, max=90.0),
         "rho": Param(870.0, "kg/m^3", "oil density (for m_oil)", min=0.0, fluid="density"),
-        "p_floor": Param(0.0, "Pa", "lowest chamber pressure (option check-valve)", min=VACUUM),
+        "p_floor": Param(
+            0.0, "Pa", "lowest chamber pressure (options check-valve and cavity)", min=VACUUM
+        ),
         "x_min": Param(-0.1, "m", "end stop, retracted"),
         "x_max": Param(0.1, "m", "end stop, extended"),
-        "k_stop": Param(0.0, "N/m", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
-        "c_stop": Param(0.0, "N*s/m", "end-stop damping", min=0.0),
+        "k_stop": Param(1e9, "N/m", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
+        "c_stop": Param(1e6, "N*s/m", "end-stop damping", min=0.0),
         "pA0": Param(0.0, "Pa", "initial pressure, side A", min=VACUUM),
         "pB0": Param(0.0, "Pa", "initial pressure, side B", min=VACUUM),
     }
     OPTIONS = {
         "bulk_modulus": Option("constant", ("constant", "lee", "eggerth"), "effective bulk modulus law"),
-        "pressure_floor": Option("check-valve", ("check-valve", "none"), "replenishing check valves"),
+        "pressure_floor": Option(
+            "check-valve",
+            ("check-valve", "cavity", "none"),
+            "replenishing check valves, a cavity to refill (Hopsan), or none",
+        ),
     }
     STATES = {
         "pA": State("Pa", "pressure, side A", initial="pA0", nominal=1e7),
@@ -125,6 +146,42 @@ class Cylinder(Component):
         "VB": Limit("volume"),
     }
 
+    def __init__(self, name: str, **values: Any) -> None:
+        super().__init__(name, **values)
+        self._declare()
+
+    def set_option(self, key: str, value: Any) -> None:
+        super().set_option(key, value)
+        if hasattr(self, "values"):  # after construction: the states depend on the floor
+            self._declare()
+
+    def _declare(self) -> None:
+        """The states of the chosen pressure floor: the pressures, or (cavity) pressure states below the ports' pressures."""
+        cls = type(self)
+        if self.option("pressure_floor") != "cavity":
+            self.STATES, self.OUTPUTS = dict(cls.STATES), dict(cls.OUTPUTS)  # type: ignore[misc]
+            return
+        self.STATES = {  # type: ignore[misc]
+            f"p{side}_state": State(
+                "Pa",
+                f"pressure state of side {side}: the pressure, or below p_floor a cavity to refill",
+                initial=f"p{side}0",
+                nominal=1e7,
+            )
+            for side in "AB"
+        }
+        self.OUTPUTS = {  # type: ignore[misc]
+            **cls.OUTPUTS,
+            "V_cavA": Output("m^3", "cavity volume in side A (option cavity)"),
+            "V_cavB": Output("m^3", "cavity volume in side B (option cavity)"),
+        }
+
+    def _pressures(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> tuple[Any, Any]:
+        """The chamber pressures the ports and the piston see."""
+        if self.option("pressure_floor") == "cavity":
+            return bk.fmax(x["pA_state"], p["p_floor"]), bk.fmax(x["pB_state"], p["p_floor"])
+        return x["pA"], x["pB"]
+
     def check(self) -> None:
         v = self.values
         if v["x_min"] >= v["x_max"]:
@@ -150,7 +207,7 @@ class Cylinder(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        pA, pB = x["pA"], x["pB"]
+        pA, pB = self._pressures(x, p)
         out = {"pA": pA, "pB": pB, "QLi": p["C_Li"] * (pA - pB)}
         pos = u["x"]
         over = bk.fmax(pos - p["x_max"], 0.0)
@@ -161,18 +218,24 @@ class Cylinder(Component):
         VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
         out["m_oil"] = p["rho"] * (VA + VB)
         out["VA"], out["VB"] = VA, VB
+        if self.option("pressure_floor") == "cavity":
+            for side, V in (("A", VA), ("B", VB)):
+                out[f"V_cav{side}"] = V * bk.fmax(p["p_floor"] - x[f"p{side}_state"], 0.0) / self._bulk(out[f"p{side}"], p)
         return out
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
-        pA, pB = x["pA"], x["pB"]
+        pA, pB = y["pA"], y["pB"]
         vel = u["v"]
         VA, VB = y["VA"], y["VB"]
         QLi = y["QLi"]
         dpA = pressure_rate(self._bulk(pA, p), VA, u["QA"] - p["A_A"] * vel - QLi - p["C_LeA"] * pA)
         dpB = pressure_rate(self._bulk(pB, p), VB, u["QB"] + p["A_B"] * vel + QLi - p["C_LeB"] * pB)
-        if self.option("pressure_floor") == "check-valve":
+        floor = self.option("pressure_floor")
+        if floor == "cavity":
+            return {"pA_state": dpA, "pB_state": dpB}
+        if floor == "check-valve":
             dpA = check_valve_floor(pA, dpA, p["p_floor"])
             dpB = check_valve_floor(pB, dpB, p["p_floor"])
         return {"pA": dpA, "pB": dpB}

@@ -10,6 +10,8 @@
   (:mod:`hydroservo.io.model_file`), in their source's units.
 * ``examples/``: the files the README's commands use (``hydroservo examples DIR``
   copies them).
+* ``reference/``: results of other tools that hydroservo compares itself with
+  (Hopsan's Position Servo), with a README on how each was made.
 
 This module only finds and parses the package's files (standard-library
 TOML, no unit registry); values are converted to SI by whoever uses them
@@ -26,7 +28,15 @@ from typing import Any
 
 from hydroservo.errors import ParameterError
 
-__all__ = ["ParameterSet", "parameter_set", "parameter_sets", "model_names", "model_text", "example_files"]
+__all__ = [
+    "ParameterSet",
+    "parameter_set",
+    "parameter_sets",
+    "model_names",
+    "model_text",
+    "example_files",
+    "reference_text",
+]
 
 _ROOT = resources.files("hydroservo.data")
 
@@ -95,3 +105,11 @@ def example_files() -> dict[str, str]:
     """The example files the README uses: file name -> text."""
     folder = _ROOT / "examples"
     return {p.name: p.read_text(encoding="utf-8") for p in sorted(folder.iterdir(), key=lambda p: p.name) if p.is_file()}
+
+
+def reference_text(name: str) -> str:
+    """A result of another tool that hydroservo compares itself with (``reference/NAME``; provenance in its README)."""
+    path = _ROOT / "reference" / name
+    if not path.is_file():
+        raise ParameterError(f"no reference result {name!r}")
+    return path.read_text(encoding="utf-8")

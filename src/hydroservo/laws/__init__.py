@@ -25,18 +25,29 @@ module                 laws
 :mod:`.torque_motor`   torque motor of a two-stage servovalve
 :mod:`.flapper_nozzle` flapper-nozzle stage driving the main spool
 :mod:`.chamber`        pressure build-up in volumes and cylinder chambers
+:mod:`.line`           lines as lumped segments: capacitance, inertance,
+                       laminar resistance; segments for a frequency range
+:mod:`.accumulator`    the polytropic gas spring of an accumulator
+:mod:`.displacement`   pumps and motors: displaced flow, leakage, torque,
+                       pressure compensator
+:mod:`.pressure_valve` spring-loaded valves: opening against pressure,
+                       the relief/reducing spool's flow coefficient
 :mod:`.friction`       Stribeck friction
 =====================  ======================================================
 """
 
 from hydroservo.laws import (
+    accumulator,
     chamber,
+    displacement,
     flapper_nozzle,
     fluid,
     four_way,
     friction,
     leakage,
+    line,
     orifice,
+    pressure_valve,
     pseudo_section,
     spool_dynamics,
     staged_slot,
@@ -44,13 +55,17 @@ from hydroservo.laws import (
 )
 
 __all__ = [
+    "accumulator",
     "chamber",
+    "displacement",
     "flapper_nozzle",
     "fluid",
     "four_way",
     "friction",
     "leakage",
+    "line",
     "orifice",
+    "pressure_valve",
     "pseudo_section",
     "spool_dynamics",
     "staged_slot",

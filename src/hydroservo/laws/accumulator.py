@@ -83,7 +83,7 @@ def gas_capacitance(p: Any, p0: Any, V0: Any, kappa: Any) -> Any:
 
     References
     ----------
-    Derivative of :func:`gas_volume`.
+    [Hopsan2026] HydraulicAckumulator; the derivative of :func:`gas_volume`.
 
     Examples
     --------

@@ -47,7 +47,7 @@ def line_area(d: Any) -> Any:
 
     References
     ----------
-    Geometry.
+    [Merritt1967] (fluid flow fundamentals: flow in a circular passage).
 
     Examples
     --------
@@ -69,7 +69,7 @@ def segment_capacitance(length: Any, d: Any, E: Any, n: int = 1) -> Any:
     E : array_like
         Effective bulk modulus of oil and wall [Pa].
     n : int
-        Number of segments.
+        Number of segments [-].
 
     Returns
     -------
@@ -104,7 +104,7 @@ def segment_inertance(length: Any, d: Any, rho: Any, n: int = 1) -> Any:
     rho : array_like
         Density [kg/m^3].
     n : int
-        Number of segments.
+        Number of segments [-].
 
     Returns
     -------
@@ -139,7 +139,7 @@ def segment_resistance(length: Any, d: Any, mu: Any, n: int = 1) -> Any:
     mu : array_like
         Dynamic viscosity [Pa s].
     n : int
-        Number of segments.
+        Number of segments [-].
 
     Returns
     -------

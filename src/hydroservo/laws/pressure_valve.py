@@ -19,7 +19,7 @@ from typing import Any
 
 from hydroservo import backend as bk
 
-__all__ = ["opening_fraction", "linear_opening"]
+__all__ = ["opening_fraction", "linear_opening", "pressure_valve_coefficient"]
 
 
 def linear_opening(p: Any, p_c: Any, dp_o: Any) -> Any:
@@ -73,7 +73,7 @@ def opening_fraction(p: Any, p_c: Any, dp_o: Any) -> Any:
 
     References
     ----------
-    :func:`linear_opening`; the rounding is hydroservo's (module notes).
+    [Merritt1967], as :func:`linear_opening`; the rounding is hydroservo's (module notes).
 
     Examples
     --------
@@ -82,3 +82,52 @@ def opening_fraction(p: Any, p_c: Any, dp_o: Any) -> Any:
     """
     s = linear_opening(p, p_c, dp_o)
     return s * s * (3.0 - 2.0 * s)
+
+
+def pressure_valve_coefficient(over: Any, dp: Any, k_cs: Any, k_cf: Any, p_nom: Any = 7e6) -> Any:
+    r"""Static flow coefficient of a pressure-control valve, :math:`K = \Delta p_{over}/(C_s + C_f \max(\Delta p, 0))` [m^3/s/Pa^0.5].
+
+    The spool opens with the pressure by which the pilot exceeds the setting
+    (``over``: :math:`p_{in} - p_{crack}` for a relief valve, :math:`p_{set} - p_{out}`
+    for a pressure-reducing one) against the spring, :math:`C_s = \sqrt{p_{nom}}/k_{cs}`,
+    and the flow forces, which grow with the drop across it,
+    :math:`C_f = 1/(k_{cf}\sqrt{p_{nom}})`. The flow is then turbulent,
+    :math:`Q = K\sqrt{\Delta p}`. Near cracking the pressure-flow gradient is
+    :math:`dQ/dp = k_{cs}\sqrt{\Delta p/p_{nom}}`: ``k_cs`` is the gradient of the
+    catalogue's p-Q curve at the nominal drop ``p_nom``. The caller bounds
+    :math:`K` to :math:`[0, q_{nom}/\sqrt{p_{nom}}]` (closed, fully open).
+
+    Parameters
+    ----------
+    over : array_like
+        Pilot pressure above the setting [Pa] (negative: closed).
+    dp : array_like
+        Pressure drop across the valve [Pa].
+    k_cs : array_like
+        Steady-state characteristic of the spring [m^3/s/Pa].
+    k_cf : array_like
+        Steady-state characteristic of the flow forces [m^3/s/Pa].
+    p_nom : array_like
+        Nominal pressure drop of the characteristics [Pa] (Hopsan's 7 MPa).
+
+    Returns
+    -------
+    array_like
+        Flow coefficient [m^3/s/Pa^0.5] (unbounded).
+
+    References
+    ----------
+    [Hopsan2026] HydraulicPressureReliefValve and HydraulicPressureReducingValve (their
+    steady-state opening ``xs`` in the limit of a small time step).
+
+    Examples
+    --------
+    A 200 bar relief valve 10 bar over its setting, 200 bar across it:
+
+    >>> k = pressure_valve_coefficient(10e5, 210e5, 1e-8, 1e-8)
+    >>> round(float(k) * (210e5) ** 0.5 * 6e4, 1)  # L/min
+    259.8
+    """
+    Cs = bk.sqrt(p_nom) / k_cs
+    Cf = 1.0 / (k_cf * bk.sqrt(p_nom))
+    return over / (Cs + Cf * bk.fmax(dp, 0.0))

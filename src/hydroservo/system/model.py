@@ -298,7 +298,11 @@ class Model:
             if h_fail is not None:
                 where += f" with a step of {abs(h_fail):.3g} s"
             elif "TOO_MUCH_WORK" in message:
-                where += f" after {steps} steps in this interval (mean step {max(t_fail - t0, 0.0) / steps:.3g} s)"
+                where += (
+                    f" after {steps} steps in this interval (mean step {max(t_fail - t0, 0.0) / steps:.3g} s; "
+                    f"max_steps = {settings.max_steps} shared over {grid.size - 1} output intervals: a model that "
+                    "is only slow here runs with a larger max_steps or fewer output points)"
+                )
         x = reached[min(k_fail, len(reached) - 1)] * self.nominal
         return SolverError(f"{where}{note}. {self._hint(t0, x, p)}")
 

@@ -390,11 +390,28 @@ class System:
 
     def default_panels(self) -> list[list[str]]:
         """The main signals to plot, panel by panel: the model file's ``plots``, else one panel per alias,
-        else one per state (at most 8 panels)."""
+        else what an engineer looks at first (positions; spool positions; the pressures of the circuit's
+        volumes, chambers and accumulators; speeds), else one panel per state (at most 8 panels)."""
         if self.plots:
             return [list(panel) for panel in self.plots]
         if self.aliases:
             return [[a] for a in list(self.aliases)[:8]]
+        positions, spools, pressures, speeds = [], [], [], []
+        for cname, comp in self.components.items():
+            if not comp.STATES:
+                continue  # sources and signal blocks without dynamics
+            outputs = comp.OUTPUTS
+            for name in ("x", "theta"):
+                if name in outputs and name in comp.STATES:
+                    positions.append(f"{cname}.{name}")
+            if "xv" in outputs:
+                spools.append(f"{cname}.xv")
+            if "omega" in outputs and "omega" in comp.STATES:
+                speeds.append(f"{cname}.omega")
+            pressures += [f"{cname}.{port.p}" for port in comp.HYDRAULIC.values() if port.p in outputs]
+        panels = [panel for panel in (positions, spools, pressures[:6], speeds) if panel]
+        if panels:
+            return panels
         return [[f"{c}.{s}"] for c, comp in self.components.items() for s in comp.STATES][:8]
 
     def trim(self, params: Mapping[str, Any] | None = None, **kwargs: Any) -> dict[str, float]:

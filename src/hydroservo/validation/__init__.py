@@ -17,6 +17,7 @@ validation                     source              module
 ``servo-solenoid-cylinder``    FerreiraND          :mod:`.ferreira`
 ``robot-arm-friction``         Efe2014             :mod:`.efe`
 ``skydrol-fluid``              MareAttarND         :mod:`.mare_attar`
+``position-servo``             Hopsan2026          :mod:`.hopsan`
 =============================  ==================  =======================================
 """
 
@@ -138,6 +139,7 @@ VALIDATIONS: dict[str, tuple[str, str]] = {
     "servo-solenoid-cylinder": ("ferreira", "the KBSDG4V-3 servo-solenoid valve (FerreiraND)"),
     "robot-arm-friction": ("efe", "Stribeck friction of the robot-arm cylinder (Efe2014 Table 5.2)"),
     "skydrol-fluid": ("mare_attar", "Skydrol properties against pressure and temperature (MareAttarND 2.1)"),
+    "position-servo": ("hopsan", "Hopsan's Position Servo example against its converged result (Hopsan2026)"),
 }
 
 

@@ -81,3 +81,51 @@ def test_cylinder_end_stop_and_oil_mass() -> None:
     r = s.simulate(t_end=1.0)
     assert r["load.x"].max() < 0.05 + 0.01  # held by the stop (10 mm of stop compression at most)
     assert r["cyl.m_oil"][0] == pytest.approx(870.0 * 4e-4)
+
+
+@pytest.mark.filterwarnings("ignore::hydroservo.errors.ImplausibleResultWarning")  # the load compresses B to 2 MPa
+def test_the_cavity_floor_holds_the_ports_pressure_and_keeps_the_deficit_to_refill() -> None:
+    # a load pulls the piston out faster than an orifice from tank can fill chamber A: A cavitates
+    s = hs.System("cavity", t_end=0.05)
+    s.add(c.Tank("tank"))
+    s.add(c.Orifice("feed", d="0.5 mm", Cd=0.6, rho=870.0, nu=1e-6))  # turbulent down to 17 mbar
+    s.add(c.Orifice("drain", d="5 mm", Cd=0.6, rho=870.0))
+    s.add(c.Cylinder("cyl", pressure_floor="cavity", p_floor="0 Pa_abs", beta_e=1e9))
+    s.add(c.Mass("load", m=10.0, incline=0.0))
+    s.add(c.Step("pull", unit="N", amplitude="2 kN"))
+    s.connect("tank.P", "feed.A", "drain.B")
+    s.connect("feed.B", "cyl.A")
+    s.connect("cyl.B", "drain.A")
+    s.connect("cyl.F", "load.F")
+    s.connect("pull.y", "load.F_ext")
+    s.connect("load.x", "cyl.x")
+    s.connect("load.v", "cyl.v")
+    assert "pA_state" in s["cyl"].STATES and "pA" not in s["cyl"].STATES
+    r = s.simulate()
+    assert r["cyl.pA_state"].min() < -1e6  # the state goes on below the floor ...
+    assert r["cyl.pA"].min() == pytest.approx(-101325.0)  # ... the port and piston see the floor
+    late = r.t > 0.02
+    assert np.all(r["cyl.V_cavA"][late] > 0)
+    # the orifice feeds what the floor lets it: the full drop from tank to vacuum
+    q = 0.6 * np.pi * 0.0005**2 / 4 * np.sqrt(2 * 101325.0 / 870.0)
+    assert r["feed.Q"][late] == pytest.approx(q, rel=1e-3)
+    # the deficit D = V (p_floor - p_state)/beta grows with the volume swept but not filled, and (the state
+    # being a negative pressure in a growing chamber, as in Hopsan) with D dV/V: dD/dt = A v - Q + D A v / V
+    D, Av = r["cyl.V_cavA"], 2e-3 * r["load.v"]
+    rate = Av - r["feed.Q"] + D * Av / r["cyl.VA"]
+    k = np.flatnonzero(D > 0)[0]
+    integral = D[k] + np.concatenate([[0.0], np.cumsum(0.5 * (rate[k + 1 :] + rate[k:-1]) * np.diff(r.t[k:]))])
+    assert D[-1] == pytest.approx(integral[-1], rel=1e-2)
+    assert D[-1] > 1.05 * (2e-3 * (r["load.x"][-1] - r["load.x"][k]) - r["feed.Q"][-1] * (r.t[-1] - r.t[k]))
+    # the option is structural: back to the default, the states are the pressures again
+    s.set("cyl.pressure_floor", "check-valve")
+    assert "pA" in s["cyl"].STATES and s.simulate()["cyl.pA"].min() > -101325.0 - 10.0
+
+
+def test_absolute_pressures_have_units() -> None:
+    from hydroservo.units import to_si
+
+    assert to_si("1e5 Pa_abs", "Pa") == pytest.approx(-1325.0)
+    assert to_si("2 bara", "Pa") == pytest.approx(98675.0)
+    assert to_si("14.6959487755 psia", "Pa") == pytest.approx(0.0, abs=1e-6)
+    assert c.Cylinder("cyl", p_floor="0 Pa_abs").values["p_floor"] == pytest.approx(-101325.0)

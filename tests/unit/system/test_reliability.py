@@ -200,9 +200,15 @@ def test_a_piston_driven_through_missing_stops_is_flagged(flight: hs.System) -> 
     assert flight.simulate(t_end=2.0, params={"source.amplitude": 100.0}).warnings == []
 
 
+#: Built-in models whose result is flagged on purpose: Hopsan's Position Servo is undamped, and its chambers peak
+#: at 2.3 times the supply after the step, in Hopsan's result as in hydroservo's (docs/hopsan.md).
+FLAGGED_AS_PUBLISHED = {"position-servo": {"cyl.pA", "cyl.pB"}}
+
+
 def test_builtin_models_are_plausible_as_shipped() -> None:
     for name in hs.available_models():
-        assert hs.load_model(name).simulate().warnings == [], name
+        warnings = hs.load_model(name).simulate().warnings
+        assert {w.signal for w in warnings} == FLAGGED_AS_PUBLISHED.get(name, set()), name
 
 
 def test_batch_flags_runs_by_index(flight: hs.System) -> None:

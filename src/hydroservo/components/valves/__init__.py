@@ -4,13 +4,25 @@ One file per valve kind: :mod:`.four_way` (sharp edges, per-edge laps,
 [Efe2014]), :mod:`.pseudo_section` (the servo-solenoid valve of
 [FerreiraND]), :mod:`.staged_slot` (the staged-slot valve across temperature
 of [MareAttarND]), :mod:`.orifice` (the fixed orifice), :mod:`.check` (check
+valves), :mod:`.pressure_control` (relief, pressure-reducing and counterbalance
 valves). A new valve goes into a new file here.
 """
 
 from hydroservo.components.valves.check import CheckValve
 from hydroservo.components.valves.four_way import FourWayValve
 from hydroservo.components.valves.orifice import Orifice
+from hydroservo.components.valves.pressure_control import CounterbalanceValve, PressureReducingValve, ReliefValve
 from hydroservo.components.valves.pseudo_section import PseudoSectionValve, ServoSolenoidValve
 from hydroservo.components.valves.staged_slot import StagedSlotValve
 
-__all__ = ["FourWayValve", "PseudoSectionValve", "ServoSolenoidValve", "StagedSlotValve", "Orifice", "CheckValve"]
+__all__ = [
+    "FourWayValve",
+    "PseudoSectionValve",
+    "ServoSolenoidValve",
+    "StagedSlotValve",
+    "Orifice",
+    "CheckValve",
+    "ReliefValve",
+    "PressureReducingValve",
+    "CounterbalanceValve",
+]

@@ -1,0 +1,169 @@
+"""Pressure-control valves: relief, pressure-reducing and counterbalance valves, each a spring-loaded spool with a lag."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from hydroservo import backend as bk
+from hydroservo.components.base import Component, Hydraulic, Output, Param, Port, State, register
+from hydroservo.components.valves.ports import TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
+from hydroservo.laws.orifice import turbulent_flow
+from hydroservo.laws.pressure_valve import opening_fraction, pressure_valve_coefficient
+
+__all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve"]
+
+#: The spool's characteristics, shared by every pressure-control valve ([Hopsan2026] defaults).
+SPOOL_PARAMETERS = {
+    "k_cs": Param(
+        1e-8, "m^3/s/Pa", "pressure-flow gradient of the spring at the nominal drop (catalogue p-Q slope)",
+        min=0.0, min_inclusive=False,
+    ),
+    "k_cf": Param(
+        1e-8, "m^3/s/Pa", "steady-state characteristic of the flow forces", min=0.0, min_inclusive=False
+    ),
+    "q_nom": Param(1e-3, "m^3/s", "flow when fully open at the nominal drop", min=0.0, min_inclusive=False),
+    "p_nom": Param(7e6, "Pa", "nominal pressure drop of the characteristics", min=0.0, min_inclusive=False),
+    "tau": Param(0.01, "s", "time constant of the spool", min=0.0, min_inclusive=False),
+    "p_tr": Param(1e4, "Pa", "drop below which the flow is taken as laminar (regularisation at null)", min=0.0),
+}
+
+
+class _PressureControl(Component):
+    r"""A spring-loaded spool whose flow coefficient :math:`K` lags its static value with time constant ``tau``:
+
+    .. math:: \tau\dot K = K_s - K, \quad K \in [0, q_{nom}/\sqrt{p_{nom}}], \qquad Q = K\sqrt{\Delta p}
+
+    (:func:`hydroservo.laws.pressure_valve.pressure_valve_coefficient`; the state
+    stops at its bounds, no wind-up). Subclasses give the pressure by which the
+    pilot exceeds the setting.
+    """
+
+    STATES = {"K": State("m^3/s/Pa^0.5", "flow coefficient of the spool", nominal=1e-6)}
+
+    def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        raise NotImplementedError
+
+    def _K(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return bk.fmin(bk.fmax(x["K"], 0.0), p["q_nom"] / bk.sqrt(p["p_nom"]))
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        K = self._K(x, p)
+        return {"Q": turbulent_flow(K, u["pA"] - u["pB"], p["p_tr"]), "s": K * bk.sqrt(p["p_nom"]) / p["q_nom"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        target = pressure_valve_coefficient(self.over(u, p), u["pA"] - u["pB"], p["k_cs"], p["k_cf"], p["p_nom"])
+        rate = (target - x["K"]) / p["tau"]
+        K_max = p["q_nom"] / bk.sqrt(p["p_nom"])
+        at_stop = (x["K"] <= 0.0) * (rate < 0.0) + (x["K"] >= K_max) * (rate > 0.0)
+        return {"K": bk.if_else(at_stop > 0, 0.0, rate)}
+
+
+_OUTPUTS = {
+    "Q": Output("m^3/s", "flow from A to B"),
+    "s": Output("", "opening (0 closed, 1 fully open)"),
+}
+
+
+@register
+class ReliefValve(_PressureControl):
+    r"""Pressure-relief valve from A (the protected line) to B (tank): opens as :math:`p_A` passes ``p_crack``.
+
+    The spring-loaded spool of :class:`_PressureControl` piloted by the inlet,
+    :math:`\Delta p_{over} = p_A - p_{crack}`: closed below the cracking
+    pressure, then passing :math:`Q \approx k_{cs}(p_A - p_{crack})\sqrt{\Delta p/p_{nom}}`,
+    fully open at ``q_nom`` (at ``p_nom``); the spool follows with time
+    constant ``tau``. This is the law of Hopsan's HydraulicPressureReliefValve
+    ([Hopsan2026]) in the limit of a small time step, with the pressure
+    hysteresis left out; the turbulent law is regularised below ``p_tr`` as
+    every orifice of the package is (:mod:`hydroservo.laws.orifice`).
+    """
+
+    PARAMETERS = {
+        "p_crack": Param(200e5, "Pa", "cracking pressure (setting)"),
+        **SPOOL_PARAMETERS,
+    }
+    STATES = dict(_PressureControl.STATES)
+    INPUTS = dict(TWO_PORT_PRESSURES)
+    OUTPUTS = dict(_OUTPUTS)
+    HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
+
+    def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return u["pA"] - p["p_crack"]
+
+
+@register
+class PressureReducingValve(_PressureControl):
+    r"""Pressure-reducing valve from A (supply) to B (the reduced line): closes as :math:`p_B` reaches ``p_set``.
+
+    The spool of :class:`_PressureControl` piloted by the outlet,
+    :math:`\Delta p_{over} = p_{set} - p_B`: fully open while the outlet is well
+    below the setting, throttling as it approaches it, closed above it. The
+    law of Hopsan's HydraulicPressureReducingValve ([Hopsan2026]) in the limit
+    of a small time step, hysteresis left out.
+    """
+
+    PARAMETERS = {
+        "p_set": Param(50e5, "Pa", "reduced pressure setting"),
+        **SPOOL_PARAMETERS,
+    }
+    STATES = dict(_PressureControl.STATES)
+    INPUTS = dict(TWO_PORT_PRESSURES)
+    OUTPUTS = dict(_OUTPUTS)
+    HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
+
+    def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return p["p_set"] - u["pB"]
+
+
+@register
+class CounterbalanceValve(_PressureControl):
+    r"""Counterbalance (over-centre) valve: holds a load at A until :math:`p_A + r_p\,p_X` passes ``p_crack``; free flow B to A.
+
+    Metered flow A to B is the spool of :class:`_PressureControl` piloted by
+    the load pressure and, through the pilot ratio ``r_p``, by the pilot port
+    X (the opposite line of the actuator):
+    :math:`\Delta p_{over} = p_A + r_p p_X - p_{crack}`. An integral check
+    valve lets oil flow freely from B to A (cracking pressure
+    ``p_check``, the opening ramp of :class:`~hydroservo.components.CheckValve`,
+    full bore ``K_check`` as a turbulent coefficient). The pilot takes no flow.
+    The pilot-assisted opening is the usual counterbalance characteristic
+    (pilot ratios 3:1 to 10:1 in catalogues); the metering law is
+    :class:`ReliefValve`'s.
+    """
+
+    PARAMETERS = {
+        "p_crack": Param(250e5, "Pa", "setting: load pressure that opens the valve without pilot"),
+        "r_p": Param(4.0, "", "pilot ratio (pilot area over seat area)", min=0.0),
+        "p_check": Param(2e5, "Pa", "cracking pressure of the integral check valve (B to A)", min=0.0),
+        "dp_check": Param(2e5, "Pa", "pressure rise to open the check valve fully", min=0.0, min_inclusive=False),
+        "K_check": Param(
+            1e-6, "m^3/s/Pa^0.5", "turbulent coefficient of the open check valve", min=0.0, min_inclusive=False
+        ),
+        **SPOOL_PARAMETERS,
+    }
+    STATES = dict(_PressureControl.STATES)
+    INPUTS = {**TWO_PORT_PRESSURES, "pX": Port("Pa", "pilot pressure", default=0.0)}
+    OUTPUTS = {
+        **_OUTPUTS,
+        "Q": Output("m^3/s", "flow from A to B (metered A to B, free B to A)"),
+        "QX": Output("m^3/s", "pilot flow (none)"),
+    }
+    HYDRAULIC = {**TWO_PORT_HYDRAULIC, "X": Hydraulic("pX", "QX", "pilot port", into=True)}
+
+    def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return u["pA"] + p["r_p"] * u["pX"] - p["p_crack"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        out = super().output_equations(t, x, u, p)
+        dp = u["pB"] - u["pA"]
+        check = opening_fraction(dp, p["p_check"], p["dp_check"]) * p["K_check"]
+        out["Q"] = out["Q"] - turbulent_flow(check, dp, p["p_tr"])
+        out["QX"] = 0.0
+        return out

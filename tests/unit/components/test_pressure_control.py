@@ -1,0 +1,91 @@
+"""Relief, pressure-reducing and counterbalance valves against their law worked by hand."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from hydroservo import System
+from hydroservo import components as c
+
+P_NOM = 7e6
+
+
+def static_K(over: float, dp: float, k_cs: float = 1e-8, k_cf: float = 1e-8) -> float:
+    """Hopsan's steady opening, by hand: over/(sqrt(p_nom)/k_cs + dp/(k_cf sqrt(p_nom)))."""
+    return over / (np.sqrt(P_NOM) / k_cs + max(dp, 0.0) / (k_cf * np.sqrt(P_NOM)))
+
+
+def pumped(valve: c.Component, pump_flow: str = "30 L/min") -> System:
+    """A pump into a 1 L volume relieved to tank by ``valve`` (A on the volume, B on tank)."""
+    s = System("relief", t_end=1.0)
+    s.add(c.Tank("tank"))
+    s.add(c.Pump("pump", D=pump_flow.replace("L/min", "L/rev"), omega="1 rev/min"))
+    s.add(c.Volume("v", V="1 L", p0="150 bar"))
+    s.add(valve)
+    s.connect("tank.P", "pump.S", f"{valve.name}.B")
+    s.connect("pump.P", "v.P", f"{valve.name}.A")
+    return s
+
+
+def test_a_relief_valve_settles_on_its_static_characteristic():
+    relief = c.ReliefValve("relief", p_crack="200 bar", q_nom="100 L/min", tau="5 ms")
+    r = pumped(relief).simulate()
+    p, q = r["v.p"][-1], r["relief.Q"][-1]
+    assert q == pytest.approx(30 / 6e4, rel=1e-6)  # it passes the pump's flow
+    # on the static characteristic Q = K(p) sqrt(dp), a little above the setting (the pressure override)
+    assert q == pytest.approx(static_K(p - 200e5, p) * np.sqrt(p), rel=1e-4)
+    assert 200e5 < p < 205e5
+    assert r["pump.T"][-1] > 0 and not r.warnings
+
+
+def test_a_relief_valve_is_closed_below_cracking_and_its_spool_lags():
+    relief = c.ReliefValve("relief", p_crack="200 bar", tau="20 ms")
+    r = pumped(relief, "0.1 L/min").simulate(t_end=0.2)
+    assert np.all(r["relief.Q"][r["v.p"] < 200e5] == 0.0)
+    # a pressure step over the setting: the flow coefficient rises as 1 - exp(-t/tau)
+    s = System("lag", t_end=0.1)
+    s.add(c.ConstantPressure("high", p="210 bar"))
+    s.add(c.Tank("tank"))
+    s.add(c.ReliefValve("relief", p_crack="200 bar", tau="20 ms", q_nom="1000 L/min"))
+    s.connect("high.P", "relief.A")
+    s.connect("relief.B", "tank.P")
+    r = s.simulate(n_points=101)
+    K_ss = static_K(10e5, 210e5)
+    k = np.searchsorted(r.t, 0.02)
+    assert r["relief.K"][k] == pytest.approx(K_ss * (1 - np.exp(-1.0)), rel=1e-3)
+
+
+def test_a_pressure_reducing_valve_holds_its_outlet_near_the_setting():
+    s = System("reducing", t_end=2.0)
+    s.add(c.ConstantPressure("supply", p="200 bar"))
+    s.add(c.Tank("tank"))
+    s.add(c.PressureReducingValve("prv", p_set="50 bar", q_nom="60 L/min", tau="5 ms"))
+    s.add(c.Volume("v", V="0.5 L"))
+    s.add(c.Orifice("load", d="1.5 mm", Cd=0.6))
+    s.connect("supply.P", "prv.A")
+    s.connect("prv.B", "v.P", "load.A")
+    s.connect("load.B", "tank.P")
+    r = s.simulate()
+    p, q = r["v.p"][-1], r["prv.Q"][-1]
+    assert 45e5 < p < 50e5
+    assert q == pytest.approx(static_K(50e5 - p, 200e5 - p) * np.sqrt(200e5 - p), rel=1e-4)
+    assert q == pytest.approx(r["load.Q"][-1], rel=1e-6)
+
+
+def test_a_counterbalance_valve_holds_until_piloted_and_lets_oil_back_freely():
+    def run(pilot: str, pA: str, pB: str) -> float:
+        s = System("cbv", t_end=0.5)
+        s.add(c.ConstantPressure("load", p=pA))
+        s.add(c.ConstantPressure("valve_side", p=pB))
+        s.add(c.ConstantPressure("pilot", p=pilot))
+        s.add(c.CounterbalanceValve("cbv", p_crack="250 bar", r_p=4.0, tau="5 ms", q_nom="1000 L/min"))
+        s.connect("load.P", "cbv.A")
+        s.connect("valve_side.P", "cbv.B")
+        s.connect("pilot.P", "cbv.X")
+        return float(s.simulate()["cbv.Q"][-1])
+
+    assert run("0 bar", "150 bar", "0 bar") == 0.0  # the load is held
+    q = run("30 bar", "150 bar", "0 bar")  # 150 + 4 x 30 = 270 bar: 20 bar over the setting
+    assert q == pytest.approx(static_K(20e5, 150e5) * np.sqrt(150e5), rel=1e-4)
+    assert run("0 bar", "0 bar", "10 bar") < -1e-5  # lifting: free flow B to A through the check valve
