@@ -79,7 +79,7 @@ _FLUID_KEYS = ("name", "temperature", "pressure", "bulk_modulus")
 _META = ("citation", "status", "validation")
 
 
-def _component_lines(comp: Component, fluid: bool = False) -> list[str]:
+def _component_lines(comp: Component, fluid: bool = False, shared: dict[str, str] | None = None) -> list[str]:
     lines = [f"[components.{comp.name}]", f"type = {toml_string(type(comp).__name__)}"]
     if comp.unit is not None:
         lines.append(f"unit = {toml_string(comp.unit)}")
@@ -89,6 +89,9 @@ def _component_lines(comp: Component, fluid: bool = False) -> list[str]:
         text = toml_quantity(comp.values[key], spec.unit, comp.given.get(key))
         if fluid and spec.fluid and key not in comp.explicit:
             lines.append(f"# {key} = {text}  # {spec.description}: from the circuit fluid")
+            continue
+        if shared and key in shared:
+            lines.append(f"# {key} = {text}  # {spec.description}: the stroke of {shared[key]!r}, which drives it")
             continue
         lines.append(f"{key} = {text}  # {spec.description}")
     for key, val in comp.config().items():
@@ -127,8 +130,11 @@ def model_to_toml(system: System) -> str:
         if system.fluid.bulk_modulus is not None:
             text = toml_quantity(system.fluid.bulk_modulus, "Pa", given.get("bulk_modulus"))
             lines.append(f"bulk_modulus = {text}  # effective")
+    strokes: dict[str, dict[str, str]] = {}  # a valve's stroke is written once, on the spool that drives it
+    for valve, spool in system.stroke_pairs():
+        strokes.setdefault(valve.split(".")[0], {})[valve.split(".")[1]] = spool.split(".")[0]
     for comp in system.components.values():
-        lines += ["", *_component_lines(comp, system.fluid is not None)]
+        lines += ["", *_component_lines(comp, system.fluid is not None, strokes.get(comp.name))]
     lines += ["", "[connections]  # hydraulic port = the ports it connects to; signal input = the output that feeds it"]
     for node in system.nodes():
         first, *others = node.ports

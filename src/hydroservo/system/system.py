@@ -12,7 +12,7 @@ structure changes, never when a parameter value does.
 from __future__ import annotations
 
 import copy
-from collections.abc import Iterable, Mapping
+from collections.abc import Collection, Iterable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -443,6 +443,12 @@ class System:
                 except HydroservoError as exc:
                     invalid.setdefault(i, str(exc))
             si[key] = column
+        for a, b in self.stroke_pairs():  # one stroke per valve: a varied stroke is the spool's and the valve's
+            if (a in si) != (b in si):
+                si[b if a in si else a] = si[a if a in si else b].copy()
+            else:
+                for run in np.flatnonzero(si[a] != si[b]).tolist() if a in si else []:
+                    invalid.setdefault(run, f"run {run}: {a} and {b} differ; the spool and the valve have one stroke")
         for i in range(n):
             if i not in invalid:
                 try:
@@ -468,10 +474,43 @@ class System:
         """
         model = self.build()
         given = self.parse_parameters(params)
-        self.check_components(given)
         values = self.parameter_values()
         values.update(given)
+        self._share_strokes(values, set(given))
+        self.check_components({k: values[k] for k in {*given, *self._stroke_keys()}})
         return np.array([values[n] for n in model.parameter_names], dtype=float)
+
+    #: The stroke a valve shares with the spool that drives it: parameter name on both.
+    STROKE = "xv_max"
+
+    def stroke_pairs(self) -> list[tuple[str, str]]:
+        """(valve, spool) stroke parameters that are one stroke: a spool's ``xv`` feeds a valve's ``xv``
+        and both declare ``xv_max``."""
+        pairs = []
+        for target, source in self.connections.items():
+            (tc, ti), (sc, so) = target.split("."), source.split(".")
+            if ti == so == "xv" and all(self.STROKE in self.components[c].PARAMETERS for c in (tc, sc)):
+                pairs.append((f"{tc}.{self.STROKE}", f"{sc}.{self.STROKE}"))
+        return pairs
+
+    def _stroke_keys(self) -> frozenset[str]:
+        return frozenset(key for pair in self.stroke_pairs() for key in pair)
+
+    def _share_strokes(self, values: dict[str, float], given: Collection[str]) -> None:
+        """One stroke per valve: the value set (on the component, or for this run) goes to both of a pair;
+        two different values set on both are refused."""
+        for a, b in self.stroke_pairs():
+            set_a = a in given or a.split(".")[1] in self[a.split(".")[0]].explicit
+            set_b = b in given or b.split(".")[1] in self[b.split(".")[0]].explicit
+            if set_a and not set_b:
+                values[b] = values[a]
+            elif set_b and not set_a:
+                values[a] = values[b]
+            elif values[a] != values[b]:
+                raise ParameterError(
+                    f"{a} = {values[a]:g} m and {b} = {values[b]:g} m: the spool {b.split('.')[0]!r} drives the "
+                    f"valve {a.split('.')[0]!r}, and they have one stroke; set it on one of them (the other takes it)"
+                )
 
     def check_components(self, overrides: Mapping[str, float] | None = None, *, only_changed: bool = False) -> None:
         """Run every component's cross-parameter check (or, with ``only_changed``, those of the components

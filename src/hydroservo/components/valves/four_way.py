@@ -41,7 +41,9 @@ class FourWayValve(Component):
     RENAMED = {"x_max": "xv_max"}
     PARAMETERS = {
         "c_v": Param(3.56e-4, "m^2/s/Pa^0.5", "flow coefficient per edge, Efe2014 eq. 3.9", min=0.0),
-        "xv_max": Param(1e-3, "m", "spool stroke (normalises the K and H tables)", min=0.0, min_inclusive=False),
+        "xv_max": Param(
+            1e-3, "m", "spool stroke (normalises the K and H tables; the driving spool's)", min=0.0, min_inclusive=False
+        ),
         "x_PA": Param(0.0, "m", "overlap of edge P-A (negative: underlap)"),
         "x_AT": Param(0.0, "m", "overlap of edge A-T"),
         "x_PB": Param(0.0, "m", "overlap of edge P-B"),
