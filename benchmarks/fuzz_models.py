@@ -339,6 +339,16 @@ def draw_value(
     return cur
 
 
+def _with_units(system: Any, params: Mapping[str, float]) -> dict[str, Any]:
+    """The drawn values, temperatures with their unit (a bare number is not a temperature)."""
+    out: dict[str, Any] = {}
+    for key, value in params.items():
+        cname, pname = key.split(".", 1)
+        spec = system.components[cname].PARAMETERS.get(pname)
+        out[key] = f"{value!r} degC" if spec is not None and spec.unit == "degC" else value
+    return out
+
+
 def _draw(cand: Candidate, system: Any, values: Mapping[str, float], rng: np.random.Generator, factor: float) -> float:
     spec, cur, kind = cand.spec, cand.value, (cand.ctype, cand.name)
     if _bounded(spec):
@@ -566,7 +576,7 @@ class Runner:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             try:
-                result = system.simulate(params=dict(params))
+                result = system.simulate(params=_with_units(system, params))
                 out["wall_s"] = time.perf_counter() - start
                 phase = "checks"
                 issues = plausibility(system, result, pressure_margin)
@@ -611,7 +621,7 @@ class Runner:
             warnings.simplefilter("always")
             try:
                 kwargs = {} if n_points is None else {"n_points": n_points}
-                br = system.batch({k: list(v) for k, v in sets.items()}, **kwargs)
+                br = system.batch({k: list(_with_units(system, {k: x})[k] for x in v) for k, v in sets.items()}, **kwargs)
             except HydroservoError as exc:
                 out.update(outcome="clean_error", error_type=type(exc).__name__, message=str(exc)[:400])
                 br = None

@@ -41,6 +41,7 @@ __all__ = [
     "format_quantity",
     "parse_quantity",
     "is_bare_number",
+    "TEMPERATURE_UNITS",
     "split_quantity",
     "check_unit",
     "same_dimension",
@@ -201,6 +202,10 @@ def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
     raise UnitError(f"{what}: expected a number or a quantity such as '3 bar', got {value!r}")
 
 
+#: Units of temperature parameters (kept in degC inside): a value for one must carry its unit.
+TEMPERATURE_UNITS = ("degC",)
+
+
 def to_si(value: Any, unit: str, *, what: str = "value") -> float:
     """Convert ``value`` to the SI magnitude of ``unit``'s dimension.
 
@@ -209,6 +214,8 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
     value : float, str or pint.Quantity
         A bare number (also in a string, ``"0.5"``) is taken to be already in
         the SI unit ``unit``; a quantity such as ``"1500 psi"`` is converted.
+        A temperature (``unit`` degC) has no bare number: ``"40 degC"`` or
+        ``"313.15 K"``, never ``40``, which SI would read as kelvin.
     unit : str
         The SI unit expected, e.g. ``"Pa"``, ``"m^3/s"``, ``""`` for dimensionless.
     what : str
@@ -227,6 +234,11 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
     0.5
     """
     if is_bare_number(value):  # a bare number, given as such or in a string, is SI: no registry needed
+        if unit in TEMPERATURE_UNITS:
+            raise UnitError(
+                f"{what}: {value!r}: a temperature needs its unit, e.g. '{value} degC' or '{value} K' (bare numbers "
+                "are SI, and kelvin is rarely what is meant)"
+            )
         out = float(value)
         if math.isnan(out):
             raise UnitError(f"{what}: {value!r} is not a number")

@@ -42,6 +42,7 @@ import pytest
 import hydroservo as hs
 from hydroservo.data import example_files
 from hydroservo.errors import HydroservoError
+from hydroservo.units import format_quantity
 
 # --------------------------------------------------------------------------------------------------------
 # Bounds: the alarm of every case, the child processes of the dangerous ones, "answers at once"
@@ -612,7 +613,8 @@ def test_impossible_parameter(pid: str, entry: str, ws: Workspace, run) -> None:
         api_refused(lambda: system.simulate(t_end=0.02, n_points=11, params={key: api_value}), param_re, value_re)
     elif entry == "api-batch":
         # A batch keeps going: the bad value fails its own run, with its reason (issue 10).
-        good = system.parameter_values()[key]
+        spec = system[comp].PARAMETERS[param]
+        good = format_quantity(system.parameter_values()[key], spec.unit)  # a temperature has no bare number
         batch_run_failed(system, {key: [good, api_value, good]}, 1, param_re, value_re)
     else:
         system.build()
@@ -686,6 +688,7 @@ _API_CHILD = """
 import json, math, sys
 import hydroservo as hs
 from hydroservo.errors import HydroservoError
+from hydroservo.units import format_quantity
 system = hs.load_model(sys.argv[1])
 kwargs = eval(sys.argv[2], {"nan": math.nan, "inf": math.inf})
 try:

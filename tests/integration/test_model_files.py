@@ -53,7 +53,7 @@ T = "-15 degC"            # now temperature
 def test_model_files_with_former_names_load_with_one_warning_each(tmp_path: Path, cli) -> None:  # type: ignore[no-untyped-def]
     path = tmp_path / "old.toml"
     path.write_text(OLD_NAMES)
-    code, out, err = cli("export", str(path), "--set", "valve.T=-40")
+    code, out, err = cli("export", str(path), "--set", "valve.T=-40 degC")
     assert code == 0
     lines = err.strip().splitlines()
     assert len(lines) == 3, err  # T and x_max of the spool, T of the valve: once each, though valve.T is set twice

@@ -5,7 +5,7 @@ module                 components
 =====================  ==========================================================
 :mod:`.sources`        ConstantPressure, Tank, PressureTable
 :mod:`.volume`         Volume
-:mod:`.line`           Line
+:mod:`.line`           Line, Hose
 :mod:`.accumulator`    Accumulator
 :mod:`.pumps`          Pump, VariablePump, Motor
 :mod:`.cylinder`       Cylinder
@@ -37,7 +37,7 @@ from hydroservo.components.base import (
 )
 from hydroservo.components.control import PID, Amplifier, Gain, Lag, Saturation, Sum, Transducer
 from hydroservo.components.cylinder import Cylinder
-from hydroservo.components.line import Line
+from hydroservo.components.line import Hose, Line
 from hydroservo.components.mass import Mass
 from hydroservo.components.pumps import Motor, Pump, VariablePump
 from hydroservo.components.signals import Ramp, Sine, Square, Step, Table
@@ -80,6 +80,7 @@ __all__ = [
     "PressureTable",
     "Volume",
     "Line",
+    "Hose",
     "Accumulator",
     "Pump",
     "VariablePump",

@@ -48,16 +48,19 @@ class Pump(Component):
     #: the outlet pressure is the highest a pump makes: the circuit's pressure ceiling (plausibility)
     LIMITS = {"pP": Limit("source")}
 
+    def _delivery(self, u: Mapping[str, Any], p: Mapping[str, Any], eps: Any = 1.0) -> dict[str, Any]:
+        dp = u["pP"] - u["pS"]
+        q = displaced_flow(p["D"], p["omega"], eps) - leakage_flow(p["C_leak"], dp)
+        return {"QP": q, "QS": q, "T": motor_torque(eps * p["D"], dp)}
+
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        dp = u["pP"] - u["pS"]
-        q = displaced_flow(p["D"], p["omega"]) - leakage_flow(p["C_leak"], dp)
-        return {"QP": q, "QS": q, "T": motor_torque(p["D"], dp)}
+        return self._delivery(u, p)
 
 
 @register
-class VariablePump(Component):
+class VariablePump(Pump):
     r"""Pressure-compensated variable-displacement pump: full displacement up to ``p_c``, none ``dp_band`` above.
 
     The displacement setting :math:`\varepsilon` follows the compensator's
@@ -82,17 +85,11 @@ class VariablePump(Component):
     STATES = {"eps": State("", "displacement setting (0 to 1)", initial="eps0", nominal=1.0)}
     INPUTS = {**_PUMP_INPUTS, "eps_cmd": Port("", "displacement command, 0 to 1", default=1.0)}
     OUTPUTS = {**Pump.OUTPUTS, "eps": Output("", "displacement setting (0 to 1)")}
-    HYDRAULIC = dict(_PUMP_HYDRAULIC)
-    #: the outlet pressure is the highest a pump makes: the circuit's pressure ceiling (plausibility)
-    LIMITS = {"pP": Limit("source")}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        dp = u["pP"] - u["pS"]
-        eps = x["eps"]
-        q = displaced_flow(p["D"], p["omega"], eps) - leakage_flow(p["C_leak"], dp)
-        return {"QP": q, "QS": q, "T": motor_torque(eps * p["D"], dp), "eps": eps}
+        return {**self._delivery(u, p, x["eps"]), "eps": x["eps"]}
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]

@@ -121,10 +121,8 @@ def model_to_toml(system: System) -> str:
     if system.fluid is not None:
         given = dict(system.fluid.given)
         lines += ["", "[fluid]", f"name = {toml_string(system.fluid.name)}"]
-        if "temperature" in given:
-            lines.append(f"temperature = {toml_string(given['temperature'])}")
-        else:
-            lines.append(f"temperature = {toml_value(system.fluid.temperature)}  # degC")
+        temperature = given.get("temperature", format_quantity(system.fluid.temperature, "degC"))
+        lines.append(f"temperature = {toml_string(temperature)}")
         if system.fluid.pressure:
             lines.append(f"pressure = {toml_quantity(system.fluid.pressure, 'Pa', given.get('pressure'))}")
         if system.fluid.bulk_modulus is not None:

@@ -56,11 +56,11 @@ def test_internal_leakage_conserves_total_volume_flow() -> None:
 
 def test_bulk_modulus_options_and_volume_variation_run() -> None:
     for law in ("constant", "lee", "eggerth"):
-        s = closed_cylinder(bulk_modulus=law, temperature=40.0, k_V=1.0)
+        s = closed_cylinder(bulk_modulus=law, temperature="40 degC", k_V=1.0)
         r = s.simulate(t_end=0.2)
         assert np.all(np.isfinite(r["cyl.pA"]))
-    cold = closed_cylinder(bulk_modulus="eggerth", temperature=20.0).simulate(t_end=0.2)
-    hot = closed_cylinder(bulk_modulus="eggerth", temperature=90.0).simulate(t_end=0.2)
+    cold = closed_cylinder(bulk_modulus="eggerth", temperature="20 degC").simulate(t_end=0.2)
+    hot = closed_cylinder(bulk_modulus="eggerth", temperature="90 degC").simulate(t_end=0.2)
     assert np.ptp(hot["load.x"]) > np.ptp(cold["load.x"])  # hot oil is softer (Efe2014 Fig. 3.1): larger motion
 
 

@@ -118,3 +118,15 @@ def test_the_ends_decide_which_ports_a_line_joins():
     s.connect("load.v", "cyl.v")
     r = s.simulate()
     assert r["load.x"][-1] > 1e-3
+
+
+def test_a_hoses_wall_softens_its_oil_and_slows_its_waves():
+    oil = {k: v for k, v in OIL.items() if k != "f_max"}
+    hose = c.Hose("hose", ends="flow-pressure", segments=19, l=10.0, d=0.02, p0="10 bar", k_wall=1e-9, **oil)
+    beta = 1 / (1 / 1e9 + 1e-9)  # 0.5 GPa: the wall as compliant as the oil
+    s = System("hose")
+    s.add(hose)
+    s.add(c.ConstantPressure("src", p="10 bar"))
+    s.connect("src.P", "hose.A")
+    assert lowest_frequency(s) == pytest.approx(np.sqrt(beta / 870.0) / 40.0, rel=5e-4)
+    assert c.Hose("h", segments="auto", l=10.0, f_max=50.0, k_wall=1e-9, **oil).segments == 7  # slower: more

@@ -40,6 +40,12 @@ class _PressureControl(Component):
     """
 
     STATES = {"K": State("m^3/s/Pa^0.5", "flow coefficient of the spool", nominal=1e-6)}
+    INPUTS = dict(TWO_PORT_PRESSURES)
+    OUTPUTS = {
+        "Q": Output("m^3/s", "flow from A to B"),
+        "s": Output("", "opening (0 closed, 1 fully open)"),
+    }
+    HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
 
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         raise NotImplementedError
@@ -63,12 +69,6 @@ class _PressureControl(Component):
         return {"K": bk.if_else(at_stop > 0, 0.0, rate)}
 
 
-_OUTPUTS = {
-    "Q": Output("m^3/s", "flow from A to B"),
-    "s": Output("", "opening (0 closed, 1 fully open)"),
-}
-
-
 @register
 class ReliefValve(_PressureControl):
     r"""Pressure-relief valve from A (the protected line) to B (tank): opens as :math:`p_A` passes ``p_crack``.
@@ -87,11 +87,6 @@ class ReliefValve(_PressureControl):
         "p_crack": Param(200e5, "Pa", "cracking pressure (setting)"),
         **SPOOL_PARAMETERS,
     }
-    STATES = dict(_PressureControl.STATES)
-    INPUTS = dict(TWO_PORT_PRESSURES)
-    OUTPUTS = dict(_OUTPUTS)
-    HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
-
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         return u["pA"] - p["p_crack"]
 
@@ -111,11 +106,6 @@ class PressureReducingValve(_PressureControl):
         "p_set": Param(50e5, "Pa", "reduced pressure setting"),
         **SPOOL_PARAMETERS,
     }
-    STATES = dict(_PressureControl.STATES)
-    INPUTS = dict(TWO_PORT_PRESSURES)
-    OUTPUTS = dict(_OUTPUTS)
-    HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
-
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         return p["p_set"] - u["pB"]
 
@@ -146,10 +136,9 @@ class CounterbalanceValve(_PressureControl):
         ),
         **SPOOL_PARAMETERS,
     }
-    STATES = dict(_PressureControl.STATES)
     INPUTS = {**TWO_PORT_PRESSURES, "pX": Port("Pa", "pilot pressure", default=0.0)}
     OUTPUTS = {
-        **_OUTPUTS,
+        **_PressureControl.OUTPUTS,
         "Q": Output("m^3/s", "flow from A to B (metered A to B, free B to A)"),
         "QX": Output("m^3/s", "pilot flow (none)"),
     }
