@@ -22,8 +22,12 @@ module                 laws
 :mod:`.leakage`        earlier closed-orifice leakage laws (Ellman, Eryilmaz,
                        laminar gap)
 :mod:`.spool_dynamics` first- and second-order spools, rate limits, delay
-:mod:`.torque_motor`   torque motor of a two-stage servovalve
-:mod:`.flapper_nozzle` flapper-nozzle stage driving the main spool
+:mod:`.torque_motor`   torque motor of a two-stage servovalve: second-order
+                       armature; electromagnetic torque from the geometry
+:mod:`.armature`       flexure tube, flapper bending, feedback spring with
+                       clearance, impact on the nozzle
+:mod:`.flapper_nozzle` flapper-nozzle stage driving the main spool; its
+                       conductances, nozzle pressures and null gap
 :mod:`.chamber`        pressure build-up in volumes and cylinder chambers
 :mod:`.line`           lines as lumped segments: capacitance, inertance,
                        laminar resistance; segments for a frequency range
@@ -38,6 +42,7 @@ module                 laws
 
 from hydroservo.laws import (
     accumulator,
+    armature,
     chamber,
     displacement,
     flapper_nozzle,
@@ -56,6 +61,7 @@ from hydroservo.laws import (
 
 __all__ = [
     "accumulator",
+    "armature",
     "chamber",
     "displacement",
     "flapper_nozzle",

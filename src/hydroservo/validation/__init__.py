@@ -18,6 +18,7 @@ validation                     source              module
 ``robot-arm-friction``         Efe2014             :mod:`.efe`
 ``skydrol-fluid``              MareAttarND         :mod:`.mare_attar`
 ``position-servo``             Hopsan2026          :mod:`.hopsan`
+``two-stage-servovalve``       GordicND            :mod:`.gordic`
 =============================  ==================  =======================================
 """
 
@@ -140,6 +141,7 @@ VALIDATIONS: dict[str, tuple[str, str]] = {
     "robot-arm-friction": ("efe", "Stribeck friction of the robot-arm cylinder (Efe2014 Table 5.2)"),
     "skydrol-fluid": ("mare_attar", "Skydrol properties against pressure and temperature (MareAttarND 2.1)"),
     "position-servo": ("hopsan", "Hopsan's Position Servo example against its converged result (Hopsan2026)"),
+    "two-stage-servovalve": ("gordic", "the first-principles two-stage servovalve's constants (GordicND Table 1)"),
 }
 
 
