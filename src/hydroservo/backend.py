@@ -42,6 +42,7 @@ sin = _elementwise(ca.sin, np.sin)
 atan = _elementwise(ca.atan, np.arctan)
 floor = _elementwise(ca.floor, np.floor)
 tanh = _elementwise(ca.tanh, np.tanh)
+cos = _elementwise(ca.cos, np.cos)
 fabs = _elementwise(ca.fabs, np.abs)
 sign = _elementwise(ca.sign, np.sign)
 

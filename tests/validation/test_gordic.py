@@ -18,7 +18,8 @@ def test_servovalve_constants_from_table_1(validated) -> None:
     assert s["k_r"].computed == pytest.approx(0.4314, abs=5e-5)  # 0.465 printed: mu_m read as 5 mu_0
     assert s["l_a"].computed == pytest.approx(8.75, abs=1e-9)
     assert s["x_0"].computed == pytest.approx(40.40, abs=0.005)  # um, against 38.5
-    for key in ("k_r", "l_a", "x_0"):
+    assert s["Q_rated"].computed == pytest.approx(11.994, abs=0.0005)  # L/min against 12
+    for key in ("k_r", "l_a", "x_0", "Q_rated"):
         assert s[key].verdict == "reproduced"
 
 

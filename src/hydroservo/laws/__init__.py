@@ -28,6 +28,8 @@ module                 laws
                        clearance, impact on the nozzle
 :mod:`.flapper_nozzle` flapper-nozzle stage driving the main spool; its
                        conductances, nozzle pressures and null gap
+:mod:`.servo_spool`    a servovalve's spool stage: real openings, port
+                       flows, flow forces, leakage through the lapped lands
 :mod:`.chamber`        pressure build-up in volumes and cylinder chambers
 :mod:`.line`           lines as lumped segments: capacitance, inertance,
                        laminar resistance; segments for a frequency range
@@ -54,6 +56,7 @@ from hydroservo.laws import (
     orifice,
     pressure_valve,
     pseudo_section,
+    servo_spool,
     spool_dynamics,
     staged_slot,
     torque_motor,
@@ -73,6 +76,7 @@ __all__ = [
     "orifice",
     "pressure_valve",
     "pseudo_section",
+    "servo_spool",
     "spool_dynamics",
     "staged_slot",
     "torque_motor",
