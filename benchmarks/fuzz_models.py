@@ -181,6 +181,8 @@ def _sources_max(values: Mapping[str, float], system: Any) -> float | None:
             tops.append(values[f"{name}.p"])
         elif t == "PressureTable":
             tops.append(values[f"{name}.scale"] * float(np.max(comp.pressures)))
+        elif t in ("Pump", "VariablePump"):  # a pump's rated pressure (docs/reliability.md)
+            tops.append(values[f"{name}.p_rated"])
     return max(tops) if tops else None
 
 
@@ -433,13 +435,6 @@ def plausibility(system: Any, result: Any, pressure_margin: float = PRESSURE_MAR
         if not np.all(np.isfinite(arr)):
             issues.append({"check": "non_finite_signal", "signal": name, "t_first": first(~np.isfinite(arr))})
     p_top = _sources_max(params, system)
-    # a pump is a source too: the pressure it delivers against, over the run (docs/reliability.md)
-    fed = system.hydraulic_inputs()
-    for cname, comp in system.components.items():
-        if type(comp).__name__ in ("Pump", "VariablePump"):
-            for _, signal in fed.get(f"{cname}.pP", []):
-                peak = float(np.nanmax(np.asarray(data[signal], dtype=float)))
-                p_top = peak if p_top is None else max(p_top, peak)
     for cname, comp in system.components.items():
         ctype = type(comp).__name__
         chambers = ("pA", "pB") if ctype == "Cylinder" else ("p",) if ctype == "Volume" else ()

@@ -202,6 +202,15 @@ def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
     raise UnitError(f"{what}: expected a number or a quantity such as '3 bar', got {value!r}")
 
 
+#: Absolute-pressure units (offset from hydroservo's gauge pressures by the atmosphere).
+ABSOLUTE_PRESSURE_UNITS = ("Pa_abs", "bar_abs", "bara", "psia")
+
+
+def is_absolute_pressure(unit: str) -> bool:
+    """True if ``unit`` names an absolute pressure (``"bar_abs"``): a value, not a unit a signal can be carried in."""
+    return any(token in ABSOLUTE_PRESSURE_UNITS for token in re.findall(r"[A-Za-z_]+", unit))
+
+
 #: Units of temperature parameters (kept in degC inside): a value for one must carry its unit.
 TEMPERATURE_UNITS = ("degC",)
 
@@ -297,7 +306,9 @@ def coherent_unit(unit: str) -> str:
         return unit
     factors = list(u._units.items())  # a product of units: make each coherent
     if len(factors) > 1 or (factors and factors[0][1] != 1):
-        return "*".join(coherent_unit(name) + ("" if exp == 1 else f"^{exp:g}") for name, exp in factors)
+        parts = [(coherent_unit(name), exp) for name, exp in factors]
+        parts = [(name, exp) for name, exp in parts if name]  # a percent is a pure number
+        return "*".join(name + ("" if exp == 1 else f"^{exp:g}") for name, exp in parts)
     dims = registry().get_dimensionality(u)
     for name in _COHERENT:
         if registry().get_dimensionality(_unit(name)) == dims:

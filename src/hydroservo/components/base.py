@@ -46,7 +46,7 @@ from typing import Any, ClassVar, Self
 
 from hydroservo.data import parameter_set
 from hydroservo.errors import ParameterError, RenamedWarning, UnitError
-from hydroservo.units import check_unit, coherent_unit, is_bare_number, si_unit, to_si
+from hydroservo.units import check_unit, coherent_unit, is_absolute_pressure, is_bare_number, si_unit, to_si
 
 __all__ = [
     "FromSet",
@@ -267,6 +267,11 @@ class Component:
             check_unit(unit)
         except UnitError:
             raise ParameterError(f"{self.name}.unit = {unit!r}: not a unit") from None
+        if is_absolute_pressure(unit):
+            raise ParameterError(
+                f"{self.name}.unit = {unit!r}: an absolute pressure is a value, not a signal's unit; use 'bar' or 'Pa' "
+                "(signals are gauge pressures) and give absolute values as '2 bar_abs'"
+            )
         unit = coherent_unit(unit)
 
         def sub(u: str) -> str:

@@ -15,7 +15,7 @@ from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Output, Param, Port, State, register
 from hydroservo.components.signals import SIGNAL_OUTPUT
 from hydroservo.errors import ParameterError, UnitError
-from hydroservo.units import coherent_unit
+from hydroservo.units import coherent_unit, is_absolute_pressure
 
 __all__ = ["Sum", "Gain", "Lag", "Saturation", "PID", "Amplifier", "Transducer"]
 
@@ -67,6 +67,11 @@ class _Gain(Component):
             given = coherent_unit(self.input_unit or "")
         except UnitError:
             raise ParameterError(f"{self.name}.input_unit = {self.input_unit!r}: not a unit") from None
+        if is_absolute_pressure(self.input_unit or ""):
+            raise ParameterError(
+                f"{self.name}.input_unit = {self.input_unit!r}: an absolute pressure is a value, not a signal's unit; "
+                "use 'bar' or 'Pa' (signals are gauge pressures)"
+            )
         if given == coherent_unit(unit):  # one unit through: the gain is a pure number
             self.PARAMETERS = {  # type: ignore[misc]
                 k: replace(v, unit="") if k == self.GAIN else v for k, v in self.PARAMETERS.items()
@@ -82,7 +87,9 @@ class _Gain(Component):
         super()._bind_signal_unit(unit)
 
     def config(self) -> dict[str, Any]:
-        return {"input_unit": self.input_unit} if self.input_unit != (self.unit or "") else {}
+        """``input_unit`` when it is not the one the constructor would take without it (model files)."""
+        default_in = self.DEFAULT_UNITS[1] if self.DEFAULT_UNITS[1] is not None else self.unit
+        return {} if self.input_unit is None or self.input_unit == default_in else {"input_unit": self.input_unit}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]

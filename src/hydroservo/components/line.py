@@ -81,29 +81,53 @@ class Line(Component):
             32e-6, "m^2/s", "kinematic viscosity", min=0.0, min_inclusive=False, fluid="kinematic_viscosity"
         ),
         "f_max": Param(100.0, "Hz", "highest frequency of interest (sets segments='auto')", min=0.0, min_inclusive=False),
-        "p0": Param(0.0, "Pa", "initial pressure along the line", min=VACUUM),
+        "p_init": Param(0.0, "Pa", "initial pressure along the line", min=VACUUM),
     }
+    #: ``p0`` is also the first volume's pressure state: the parameter is ``p_init``
+    RENAMED = {"p0": "p_init"}
+
+    #: Most segments a line may have (a stiff, dense model beyond).
+    MAX_SEGMENTS = 200
 
     def __init__(self, name: str, segments: int | str = "auto", ends: str = "pressure", **values: Any) -> None:
         self.auto = False
         super().__init__(name, **values)
         if ends not in ENDS:
             raise ParameterError(f"{name}.ends = {ends!r}: expected one of {', '.join(ENDS)}")
-        self.ends = ends
+        self._ends = ends
         if segments == "auto":
             self.auto = True
             segments = self.segments_needed()
         else:
-            self.auto = False
-            if isinstance(segments, bool) or not isinstance(segments, int) or not 1 <= segments <= 200:
-                raise ParameterError(f"{name}.segments = {segments!r}: expected a whole number from 1 to 200, or 'auto'")
-        self.segments = int(segments)
+            if isinstance(segments, float) and float(segments).is_integer():
+                segments = int(segments)
+            if isinstance(segments, bool) or not isinstance(segments, int) or not 1 <= segments <= self.MAX_SEGMENTS:
+                raise ParameterError(
+                    f"{name}.segments = {segments!r}: expected a whole number from 1 to {self.MAX_SEGMENTS}, or 'auto'"
+                )
+        self._segments = int(segments)
         self._declare()
+
+    @property
+    def segments(self) -> int:
+        """Number of lumped segments (set in the constructor; 'auto' follows the length and the oil)."""
+        return self._segments
+
+    @property
+    def ends(self) -> str:
+        """What each end is: 'pressure', 'flow', 'pressure-flow' or 'flow-pressure' (set in the constructor)."""
+        return self._ends
 
     def segments_needed(self) -> int:
         """The fewest segments that carry waves up to ``f_max`` ([Efe2014] eq. 3.30 per segment)."""
         v = self.values
-        return segments_needed(v["l"], float(wave_speed(self.bulk_modulus(v), v["rho"])), v["f_max"])
+        n = segments_needed(v["l"], float(wave_speed(self.bulk_modulus(v), v["rho"])), v["f_max"])
+        if n > self.MAX_SEGMENTS:
+            raise ParameterError(
+                f"{self.name}: a {v['l']:g} m line needs {n} segments to carry waves up to f_max = {v['f_max']:g} Hz "
+                f"([Efe2014] eq. 3.30 per segment); expected at most {self.MAX_SEGMENTS}: lower f_max or split the line"
+            )
+        return n
 
     def bulk_modulus(self, p: Mapping[str, Any]) -> Any:
         """The bulk modulus of the oil in the line, its wall's compliance included (a hose's)."""
@@ -111,7 +135,7 @@ class Line(Component):
 
     def changed(self) -> None:
         if self.auto:  # "auto" follows the length and the oil
-            self.segments = self.segments_needed()
+            self._segments = self.segments_needed()
             self._declare()
 
     def structure_key(self) -> tuple[Any, ...]:
@@ -142,7 +166,7 @@ class Line(Component):
             if kind == "C":
                 name = f"p{nc}"
                 nc += 1
-                states[name] = State("Pa", f"pressure of volume {nc} from end A", initial="p0", nominal=1e7)
+                states[name] = State("Pa", f"pressure of volume {nc} from end A", initial="p_init", nominal=1e7)
             else:
                 name = f"q{nl}"
                 nl += 1

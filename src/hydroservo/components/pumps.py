@@ -37,21 +37,26 @@ class Pump(Component):
         "D": Param(25e-6 / 6.283185307179586, "m^3/rad", "displacement per radian (write '25 cm^3/rev')", min=0.0),
         "omega": Param(157.07963267948966, "rad/s", "shaft speed (write '1500 rpm')", min=0.0),
         "C_leak": Param(0.0, "m^3/s/Pa", "internal leakage coefficient, P to S", min=0.0),
+        "p_rated": Param(
+            350e5, "Pa", "rated pressure: the highest it is built to deliver against", min=0.0, min_inclusive=False
+        ),
     }
     INPUTS = dict(_PUMP_INPUTS)
     OUTPUTS = {
         "QP": Output("m^3/s", "flow delivered at P"),
         "QS": Output("m^3/s", "flow drawn at S"),
         "T": Output("N*m", "shaft torque taken from the drive"),
+        "p_rated": Output("Pa", "rated pressure"),
     }
     HYDRAULIC = dict(_PUMP_HYDRAULIC)
-    #: the outlet pressure is the highest a pump makes: the circuit's pressure ceiling (plausibility)
-    LIMITS = {"pP": Limit("source")}
+    #: the rated pressure is the highest a pump makes: the circuit's pressure ceiling (plausibility); a pump
+    #: dead-headed far beyond it is flagged
+    LIMITS = {"p_rated": Limit("source")}
 
     def _delivery(self, u: Mapping[str, Any], p: Mapping[str, Any], eps: Any = 1.0) -> dict[str, Any]:
         dp = u["pP"] - u["pS"]
         q = displaced_flow(p["D"], p["omega"], eps) - leakage_flow(p["C_leak"], dp)
-        return {"QP": q, "QS": q, "T": motor_torque(eps * p["D"], dp)}
+        return {"QP": q, "QS": q, "T": motor_torque(eps * p["D"], dp), "p_rated": p["p_rated"]}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]

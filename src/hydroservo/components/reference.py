@@ -26,6 +26,9 @@ _ARGUMENTS = {
     "pressures": "pressures of the table [Pa]",
     "values": "values of the table, in the block's unit",
     "source": "the CSV file a model file read the table from (written back on export)",
+    "input_unit": "the unit of the signal the block takes (its gain is then in unit/input_unit)",
+    "segments": "number of lumped segments, or 'auto': the fewest that carry waves up to f_max",
+    "ends": "what each end is: 'pressure', 'flow', 'pressure-flow' or 'flow-pressure' (which ports it joins)",
 }
 
 
@@ -53,6 +56,7 @@ class Reference:
 
 def _unit(unit: str) -> str:
     if SIGNAL in unit:
+        unit = unit.replace(SIGNAL + "in", "input")  # a gain's input unit
         return unit.replace(SIGNAL, "signal") if unit != SIGNAL else "signal"
     return si_unit(unit)
 
@@ -65,6 +69,17 @@ def plain(doc: str) -> str:
     return doc
 
 
+def _declarations(cls: type[Component]) -> Any:
+    """What a component declares: the class, or for one whose ports and states depend on its arguments (a
+    line's segments) an instance with the default arguments."""
+    if cls.STATES or cls.INPUTS or cls.OUTPUTS:
+        return cls
+    try:
+        return cls("example")
+    except Exception:  # noqa: BLE001 - a type that needs arguments: its class declarations
+        return cls
+
+
 def reference(type_name: str | type[Component]) -> Reference:
     """The reference of a component type, by class or registered name (former names accepted)."""
     if isinstance(type_name, str):
@@ -75,6 +90,7 @@ def reference(type_name: str | type[Component]) -> Reference:
             )
     else:
         cls = type_name
+    declared = _declarations(cls)
     doc = inspect.getdoc(cls) or ""
     summary = plain(doc.split("\n\n")[0]).replace("\n", " ")
     signature = inspect.signature(cls.__init__)
@@ -82,7 +98,7 @@ def reference(type_name: str | type[Component]) -> Reference:
     arguments = {
         k: _ARGUMENTS.get(k, "") for k, p in signature.parameters.items() if k not in ("self", "name") and p.kind not in variadic
     }
-    groups = (cls.PARAMETERS, cls.INPUTS, cls.OUTPUTS, cls.STATES)
+    groups = (cls.PARAMETERS, declared.INPUTS, declared.OUTPUTS, declared.STATES)
     uses_signal = any(SIGNAL in spec.unit for group in groups for spec in group.values())
     if not uses_signal:
         arguments.pop("unit", None)
@@ -113,26 +129,26 @@ def reference(type_name: str | type[Component]) -> Reference:
         ],
         states=[
             {"name": k, "unit": _unit(s.unit), "description": s.description, "initial": s.initial}
-            for k, s in cls.STATES.items()
+            for k, s in declared.STATES.items()
         ],
         inputs=[
             {"name": k, "unit": _unit(p.unit), "description": p.description, "default": p.default}
-            for k, p in cls.INPUTS.items()
+            for k, p in declared.INPUTS.items()
         ],
-        outputs=[{"name": k, "unit": _unit(o.unit), "description": o.description} for k, o in cls.OUTPUTS.items()],
+        outputs=[{"name": k, "unit": _unit(o.unit), "description": o.description} for k, o in declared.OUTPUTS.items()],
         hydraulic=[
             {
                 "name": k,
-                "kind": "pressure" if h.p in cls.OUTPUTS else "flow",
+                "kind": "pressure" if h.p in declared.OUTPUTS else "flow",
                 "p": h.p,
                 "Q": h.Q,
                 "Q_positive": "into the component" if h.into else "out of the component",
                 "description": h.description,
             }
-            for k, h in cls.HYDRAULIC.items()
+            for k, h in declared.HYDRAULIC.items()
         ],
         limits=[
-            {"signal": k, "kind": lim.kind, "lower": lim.lower, "upper": lim.upper} for k, lim in cls.LIMITS.items()
+            {"signal": k, "kind": lim.kind, "lower": lim.lower, "upper": lim.upper} for k, lim in declared.LIMITS.items()
         ],
         renamed=dict(cls.RENAMED),
     )

@@ -79,16 +79,25 @@ _FLUID_KEYS = ("name", "temperature", "pressure", "bulk_modulus")
 _META = ("citation", "status", "validation")
 
 
-def _component_lines(comp: Component, fluid: bool = False, shared: dict[str, str] | None = None) -> list[str]:
+def _component_lines(
+    comp: Component,
+    fluid: bool = False,
+    shared: dict[str, str] | None = None,
+    taken: dict[str, tuple[float, str | None]] | None = None,
+) -> list[str]:
+    """``shared``: parameters written as comments, being another component's (name); ``taken``: parameters
+    written with another component's value and text (a spool's stroke set on its valve)."""
     lines = [f"[components.{comp.name}]", f"type = {toml_string(type(comp).__name__)}"]
     if comp.unit is not None:
         lines.append(f"unit = {toml_string(comp.unit)}")
     for key, opt in comp.OPTIONS.items():
         lines.append(f"{key} = {toml_string(comp.option(key))}  # one of {', '.join(opt.choices)}")
     for key, spec in comp.PARAMETERS.items():
-        text = toml_quantity(comp.values[key], spec.unit, comp.given.get(key))
-        if fluid and spec.fluid and key not in comp.explicit:
-            lines.append(f"# {key} = {text}  # {spec.description}: from the circuit fluid")
+        value, given = (taken or {}).get(key, (comp.values[key], comp.given.get(key)))
+        text = toml_quantity(value, spec.unit, given)
+        if spec.fluid and key not in comp.explicit:  # the circuit's fluid, or the default until there is one
+            source = "from the circuit fluid" if fluid else "default; a circuit fluid replaces it unless set here"
+            lines.append(f"# {key} = {text}  # {spec.description}: {source}")
             continue
         if shared and key in shared:
             lines.append(f"# {key} = {text}  # {spec.description}: the stroke of {shared[key]!r}, which drives it")
@@ -129,10 +138,14 @@ def model_to_toml(system: System) -> str:
             text = toml_quantity(system.fluid.bulk_modulus, "Pa", given.get("bulk_modulus"))
             lines.append(f"bulk_modulus = {text}  # effective")
     strokes: dict[str, dict[str, str]] = {}  # a valve's stroke is written once, on the spool that drives it
+    taken: dict[str, dict[str, tuple[float, str | None]]] = {}  # ... with the valve's value if set only there
     for valve, spool in system.stroke_pairs():
-        strokes.setdefault(valve.split(".")[0], {})[valve.split(".")[1]] = spool.split(".")[0]
+        (vc, vp), (sc, sp) = valve.split("."), spool.split(".")
+        strokes.setdefault(vc, {})[vp] = sc
+        if vp in system[vc].explicit and sp not in system[sc].explicit:
+            taken.setdefault(sc, {})[sp] = (system[vc].values[vp], system[vc].given.get(vp))
     for comp in system.components.values():
-        lines += ["", *_component_lines(comp, system.fluid is not None, strokes.get(comp.name))]
+        lines += ["", *_component_lines(comp, system.fluid is not None, strokes.get(comp.name), taken.get(comp.name))]
     lines += ["", "[connections]  # hydraulic port = the ports it connects to; signal input = the output that feeds it"]
     for node in system.nodes():
         first, *others = node.ports

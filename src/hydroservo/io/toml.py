@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numbers
 import tomllib
 from collections.abc import Mapping
 from pathlib import Path
@@ -39,7 +40,9 @@ def toml_value(v: Any) -> str:
         return toml_string(v)
     if isinstance(v, bool):
         return "true" if v else "false"
-    if isinstance(v, (int, float)):
+    if isinstance(v, numbers.Integral):  # a count stays whole (a line's segments)
+        return str(int(v))
+    if isinstance(v, numbers.Real):
         return repr(float(v))
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(toml_value(x) for x in v) + "]"

@@ -233,6 +233,14 @@ def assemble(system: Structure) -> tuple[Any, ...]:
     if not system.components:
         raise ModelError(f"system {system.name!r} has no components")
     _check_connections(system)
+    for full in system.initial:  # a state may be gone since it was given: its component's options or size changed
+        cname, sname = full.split(".")
+        if cname not in system.components or sname not in system.components[cname].STATES:
+            known = ", ".join(system.components[cname].STATES) if cname in system.components else "none"
+            raise ModelError(
+                f"initial condition {full!r}: {cname!r} has no state {sname!r} (its states depend on its options "
+                f"or size); states: {known}"
+            )
     asm = _Assembler(system)
     units: dict[str, str] = {}
     descriptions: dict[str, str] = {}

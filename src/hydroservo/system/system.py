@@ -139,7 +139,7 @@ class System:
         bulk_modulus: float | str | None = None,
     ) -> CircuitFluid:
         """Name the circuit's oil once: a fluid of :data:`hydroservo.fluids.FLUIDS` at ``temperature``
-        (a number in degC, or a quantity) and ``pressure`` (gauge; where the properties are evaluated).
+        (with its unit, ``"40 degC"``) and ``pressure`` (gauge; where the properties are evaluated).
 
         Every component parameter that is a fluid property (density ``rho``,
         viscosity ``nu``, bulk modulus ``beta_e``) takes the fluid's value, except
@@ -500,6 +500,9 @@ class System:
         """One stroke per valve: the value set (on the component, or for this run) goes to both of a pair;
         two different values set on both are refused."""
         for a, b in self.stroke_pairs():
+            if (a in given) != (b in given):  # for this run: the one given is both's, as in a batch
+                values[b if a in given else a] = values[a if a in given else b]
+                continue
             set_a = a in given or a.split(".")[1] in self[a.split(".")[0]].explicit
             set_b = b in given or b.split(".")[1] in self[b.split(".")[0]].explicit
             if set_a and not set_b:

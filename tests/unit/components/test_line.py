@@ -26,7 +26,7 @@ def test_steady_flow_meets_hagen_poiseuille():
     s = System("drop", t_end=2.0)
     s.add(c.ConstantPressure("src", p="10 bar"))
     s.add(c.Tank("tank", p="5 bar"))  # the start-up waves stay well above vacuum (a line does not cavitate)
-    s.add(c.Line("line", ends="flow", l=5.0, d=0.004, rho=870.0, nu=46e-6, beta_e=1e9, p0="7.5 bar"))
+    s.add(c.Line("line", ends="flow", l=5.0, d=0.004, rho=870.0, nu=46e-6, beta_e=1e9, p_init="7.5 bar"))
     s.connect("src.P", "line.A")
     s.connect("line.B", "tank.P")
     r = s.simulate()
@@ -40,7 +40,7 @@ def test_steady_flow_meets_hagen_poiseuille():
 def test_a_line_closed_at_one_end_resonates_at_a_quarter_wave(ends, segments, tolerance):
     # pressure imposed at the open end, the other closed: f = c/(4l); the ladder's error falls as 1/n^2
     s = System("quarter")
-    s.add(c.Line("line", ends=ends, segments=segments, l=10.0, d=0.02, p0="10 bar", **OIL))
+    s.add(c.Line("line", ends=ends, segments=segments, l=10.0, d=0.02, p_init="10 bar", **OIL))
     s.add(c.ConstantPressure("src", p="10 bar"))
     s.connect("src.P", "line.A" if ends.startswith("flow") else "line.B")
     exact = C_WAVE / 40.0
@@ -50,7 +50,7 @@ def test_a_line_closed_at_one_end_resonates_at_a_quarter_wave(ends, segments, to
 @pytest.mark.parametrize("ends", ["flow", "pressure"])
 def test_open_open_and_closed_closed_lines_resonate_at_a_half_wave(ends):
     s = System("half")
-    s.add(c.Line("line", ends=ends, segments=19, l=10.0, d=0.02, p0="10 bar", **OIL))
+    s.add(c.Line("line", ends=ends, segments=19, l=10.0, d=0.02, p_init="10 bar", **OIL))
     if ends == "flow":
         s.add(c.ConstantPressure("a", p="10 bar"))
         s.add(c.ConstantPressure("b", p="10 bar"))
@@ -101,8 +101,8 @@ def test_the_ends_decide_which_ports_a_line_joins():
     s.add(c.ConstantPressure("supply", p="100 bar"))
     s.add(c.Tank("tank"))
     s.add(c.FourWayValve("valve"))
-    s.add(c.Line("lineA", ends="pressure-flow", l=3.0, d=0.01, p0="50 bar"))
-    s.add(c.Line("lineB", ends="pressure-flow", l=3.0, d=0.01, p0="50 bar"))
+    s.add(c.Line("lineA", ends="pressure-flow", l=3.0, d=0.01, p_init="50 bar"))
+    s.add(c.Line("lineB", ends="pressure-flow", l=3.0, d=0.01, p_init="50 bar"))
     s.add(c.Cylinder("cyl", k_stop=1e8, c_stop=1e5, pA0="50 bar", pB0="50 bar"))
     s.add(c.Mass("load", m=50.0, incline=0.0))
     s.add(c.Step("cmd", unit="m", amplitude="0.1 mm"))
@@ -122,7 +122,7 @@ def test_the_ends_decide_which_ports_a_line_joins():
 
 def test_a_hoses_wall_softens_its_oil_and_slows_its_waves():
     oil = {k: v for k, v in OIL.items() if k != "f_max"}
-    hose = c.Hose("hose", ends="flow-pressure", segments=19, l=10.0, d=0.02, p0="10 bar", k_wall=1e-9, **oil)
+    hose = c.Hose("hose", ends="flow-pressure", segments=19, l=10.0, d=0.02, p_init="10 bar", k_wall=1e-9, **oil)
     beta = 1 / (1 / 1e9 + 1e-9)  # 0.5 GPa: the wall as compliant as the oil
     s = System("hose")
     s.add(hose)

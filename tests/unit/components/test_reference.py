@@ -7,7 +7,7 @@ import json
 import pytest
 
 from hydroservo.components import REGISTRY, Cylinder
-from hydroservo.components.reference import catalogue, reference, text
+from hydroservo.components.reference import _declarations, catalogue, reference, text
 from hydroservo.errors import ParameterError
 
 
@@ -16,10 +16,12 @@ def test_every_type_is_described_with_every_declaration() -> None:
     assert set(refs) == set(REGISTRY.types)
     for name, cls in REGISTRY.types.items():
         ref = refs[name]
+        declared = _declarations(cls)  # a line's states and ports: those of a default instance
         assert [p["name"] for p in ref.parameters] == list(cls.PARAMETERS), name
-        assert [s["name"] for s in ref.states] == list(cls.STATES), name
-        assert [p["name"] for p in ref.inputs] == list(cls.INPUTS), name
-        assert [o["name"] for o in ref.outputs] == list(cls.OUTPUTS), name
+        assert [s["name"] for s in ref.states] == list(declared.STATES), name
+        assert [p["name"] for p in ref.inputs] == list(declared.INPUTS), name
+        assert [o["name"] for o in ref.outputs] == list(declared.OUTPUTS), name
+        assert [h["name"] for h in ref.hydraulic] == list(declared.HYDRAULIC), name
         assert [o["name"] for o in ref.options] == list(cls.OPTIONS), name
         assert ref.summary and ref.notes.startswith(ref.summary.split("`")[0][:20]), name
         json.dumps(ref.to_dict())  # plain values: the CLI prints it as JSON

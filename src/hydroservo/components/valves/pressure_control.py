@@ -25,7 +25,9 @@ SPOOL_PARAMETERS = {
     "q_nom": Param(1e-3, "m^3/s", "flow when fully open at the nominal drop", min=0.0, min_inclusive=False),
     "p_nom": Param(7e6, "Pa", "nominal pressure drop of the characteristics", min=0.0, min_inclusive=False),
     "tau": Param(0.01, "s", "time constant of the spool", min=0.0, min_inclusive=False),
-    "p_tr": Param(1e4, "Pa", "drop below which the flow is taken as laminar (regularisation at null)", min=0.0),
+    "p_tr": Param(
+        1e4, "Pa", "drop below which the flow is taken as laminar (regularisation at null)", min=0.0, min_inclusive=False
+    ),
 }
 
 
