@@ -107,3 +107,19 @@ def test_result_plot_without_arguments_shows_the_main_signals(tmp_path) -> None:
     assert labels == ["vi, eo [V]", "xv [m]", "ydot [m/s]", "y [m]", "p1, p2 [Pa]"]
     legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
     assert legend == ["vi: command voltage", "eo: error voltage at the RC network output"]
+
+
+def test_servovalve_bench_writes_its_report_and_refuses_bad_values(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
+    import json
+
+    out = tmp_path / "sv"
+    code, text, err = cli("servovalve", "bench", "--points", "11", "--out", str(out), "--json")
+    assert code == 0, err
+    report = json.loads(text)
+    rated = next(f for f in report["figures"] if f["figure"] == "rated flow at +rated current")
+    assert rated["value"] == pytest.approx(11.99, abs=0.01) and rated["unit"] == "L/min"
+    assert sorted(p.name for p in out.iterdir()) == ["characteristic.csv", "characteristic.png"]
+    code, _, err = cli("servovalve", "bench", "--set", "K_f=-1 N/m", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "K_f" in err and not (tmp_path / "bad").exists()
+    code, _, err = cli("servovalve", "bench", "--supply", "3 kg", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "--supply" in err

@@ -28,14 +28,24 @@ from typing import Any
 import numpy as np
 
 from hydroservo.data import parameter_set
-from hydroservo.errors import SolverError
+from hydroservo.errors import ParameterError, SolverError
 from hydroservo.laws import armature as ar
 from hydroservo.laws import flapper_nozzle as fn
 from hydroservo.laws import orifice
 from hydroservo.laws import servo_spool as sp
 from hydroservo.laws import torque_motor as tm
 
-__all__ = ["TABLE_1", "table1", "first_stage_null", "StaticPoint", "static_point", "flow_characteristic"]
+__all__ = [
+    "TABLE_1",
+    "table1",
+    "check_geometry",
+    "first_stage_null",
+    "StaticPoint",
+    "static_point",
+    "flow_characteristic",
+    "StaticBench",
+    "static_bench",
+]
 
 #: Parameter set of the published valve, and the SI unit of each entry used: (table, key, unit).
 TABLE_1 = {
@@ -88,6 +98,38 @@ def table1(**overrides: float) -> dict[str, float]:
         raise KeyError(f"unknown servovalve parameter(s) {', '.join(sorted(unknown))}; known: {', '.join(values)}")
     values.update(overrides)
     return values
+
+
+#: Parameters that must be positive: dimensions, stiffnesses, the magnet, the oil.
+_POSITIVE = (
+    "r", "A_p", "x_p0", "M_m", "N", "k_c", "B_t", "B_fl", "l_t", "l_fl", "l_a", "l_f", "K_f", "d_n", "d_o", "l_o",
+    "d_od", "l_od", "x_0", "d_s", "f", "delta", "rho", "nu", "K_n", "K_t", "K_c",
+)
+
+
+def check_geometry(v: dict[str, float], p_s: float | None = None) -> None:
+    """Refuse a servovalve no one could build, naming the parameter, its value and what was expected."""
+    for key in _POSITIVE:
+        if not (np.isfinite(v[key]) and v[key] > 0):
+            raise ParameterError(f"servovalve {key} = {v[key]!r} (SI): expected a positive value")
+    for key in ("z", "r_s", "r_b", "k_r"):
+        if not (np.isfinite(v[key]) and v[key] >= 0):
+            raise ParameterError(f"servovalve {key} = {v[key]!r} (SI): expected zero or more")
+    for key in ("K_n", "K_t", "K_c"):
+        if v[key] > 1:
+            raise ParameterError(f"servovalve {key} = {v[key]!r}: expected a flow coefficient of at most 1")
+    if not 0 < v["alpha"] < np.pi / 2:
+        raise ParameterError(f"servovalve alpha = {v['alpha']!r} rad: expected a jet angle between 0 and 90 degrees")
+    if v["l_a"] >= v["l_fl"]:
+        raise ParameterError(
+            f"servovalve l_a = {v['l_a']:g} m: the pivot must lie within the flapper (l_fl = {v['l_fl']:g} m)"
+        )
+    if abs(v["y_0"]) >= v["d_s"]:
+        raise ParameterError(f"servovalve y_0 = {v['y_0']:g} m: a spool lap as large as the spool")
+    if p_s is not None and not p_s > v["p_0"]:
+        raise ParameterError(
+            f"servovalve supply p_s = {p_s:g} Pa: expected above the return pressure p_0 = {v['p_0']:g} Pa"
+        )
 
 
 def first_stage_null(p_s: float, v: dict[str, float]) -> dict[str, float]:
@@ -158,7 +200,13 @@ def _equations(u: np.ndarray, i: float, p_s: float, v: dict[str, float], null: d
     )
     Q_L1, Q_L2 = sp.port_flows(openings, drops, v["K_t"], v["f"], rho)
     scaled = np.array([float(torque) * 1e3, float(tip) * 1e6, float(spool), float(drain) * 1e6])
-    state = {"p_l": p_l, "p_r": p_r, "F_h": F_h, "F_f": F_f, "Q_SV": 0.5 * (Q_L1 + Q_L2)}
+    c_t = v["K_t"] * v["f"] * np.sqrt(2.0 / rho)
+    second = c_t * (openings[0] * np.sqrt(drops[0]) + openings[1] * np.sqrt(drops[1]))  # from supply, orifices 1, 2
+    first = null["a"] * (np.sqrt(max(p_s - p_l, 0.0)) + np.sqrt(max(p_s - p_r, 0.0)))
+    state = {
+        "p_l": p_l, "p_r": p_r, "F_h": F_h, "F_f": F_f, "Q_SV": 0.5 * (Q_L1 + Q_L2),
+        "Q_supply": float(first + second), "Q_first_stage": float(first),
+    }
     return scaled, state
 
 
@@ -173,6 +221,7 @@ def static_point(i: float, p_s: float = 210e5, params: dict[str, float] | None =
     from scipy.optimize import root
 
     v = params or table1()
+    check_geometry(v, p_s)
     null = first_stage_null(p_s, v)
     u0 = np.array(start) if start is not None else np.array([0.0, 0.0, 0.0, null["p_d"]])
     sol = root(lambda u: _equations(u, i, p_s, v, null)[0], u0, method="hybr", options={"xtol": 1e-13})
@@ -185,18 +234,100 @@ def static_point(i: float, p_s: float = 210e5, params: dict[str, float] | None =
     theta, x, y, p_d = (float(t) for t in sol.x)
     return StaticPoint(
         i, theta, x, y, float(state["p_l"]), float(state["p_r"]), p_d, float(state["F_h"]), float(state["F_f"]),
-        float(state["Q_SV"]), {"p_n_null": null["p_n"], "K_o": null["K_o"], "K_od": null["K_od"]},
+        float(state["Q_SV"]),
+        {
+            "p_n_null": null["p_n"], "K_o": null["K_o"], "K_od": null["K_od"],
+            "Q_supply": state["Q_supply"], "Q_first_stage": state["Q_first_stage"],
+        },
     )
 
 
 def flow_characteristic(currents: Any, p_s: float = 210e5, params: dict[str, float] | None = None) -> list[StaticPoint]:
-    """Static points along ``currents`` [A] (continuation from each to the next; start away from zero current,
-    where the feedback spring's clearance makes the equilibrium a plateau)."""
+    """Static points at ``currents`` [A], in their order.
+
+    Each side of null is solved from its largest current down (continuation: each point starts from the
+    last); the largest starts from rest. Zero current is the centred valve.
+    """
     v = params or table1()
-    points: list[StaticPoint] = []
-    start = None
-    for i in currents:
-        point = static_point(float(i), p_s, v, start)
-        start = [point.theta, point.x, point.y, point.p_d]
-        points.append(point)
-    return points
+    check_geometry(v, p_s)
+    values = [float(i) for i in currents]
+    found: dict[int, StaticPoint] = {}
+    for side in (1.0, -1.0):
+        order = sorted((k for k, i in enumerate(values) if i * side > 0), key=lambda k: -abs(values[k]))
+        start = None
+        for k in order:
+            found[k] = static_point(values[k], p_s, v, start)
+            start = [found[k].theta, found[k].x, found[k].y, found[k].p_d]
+    for k, i in enumerate(values):
+        if i == 0.0:
+            found[k] = static_point(0.0, p_s, v, [0.0, 0.0, 0.0, first_stage_null(p_s, v)["p_d"]])
+    return [found[k] for k in range(len(values))]
+
+
+@dataclass(frozen=True)
+class StaticBench:
+    """The static tests of a servovalve at one supply pressure, no load (ISO 10770-1 / SAE ARP490 style), SI."""
+
+    p_s: float  #: supply pressure [Pa]
+    i_rated: float  #: rated current [A]
+    currents: np.ndarray  #: the characteristic's currents [A]
+    flows: np.ndarray  #: and flows [m^3/s]
+    supply_flows: np.ndarray  #: flow drawn from supply at each current (leakage included) [m^3/s]
+    rated_flow: float  #: flow at +rated current [m^3/s]
+    rated_flow_negative: float  #: flow at -rated current [m^3/s]
+    symmetry: float  #: (|Q+| - |Q-|) / max, [-]
+    linearity: float  #: largest deviation from the line through 0 and the rated point, over the rated flow [-]
+    flow_gain_null: float  #: dQ/di between -5 and +5 % of rated current [m^3/s/A]
+    internal_leakage_null: float  #: flow from supply at zero current, both stages [m^3/s]
+    first_stage_flow_null: float  #: its first-stage part [m^3/s]
+
+    def table(self) -> list[tuple[str, float, str]]:
+        """The figures: name, value, unit (engineering units)."""
+        return [
+            ("rated flow at +rated current", self.rated_flow * 6e4, "L/min"),
+            ("rated flow at -rated current", self.rated_flow_negative * 6e4, "L/min"),
+            ("symmetry", self.symmetry * 100, "%"),
+            ("linearity (deviation from the rated line)", self.linearity * 100, "% of rated flow"),
+            ("flow gain at null (+-5 % of rated current)", self.flow_gain_null * 6e4 / 1e3, "L/min/mA"),
+            ("internal leakage at null", self.internal_leakage_null * 6e4, "L/min"),
+            ("  of which the first stage", self.first_stage_flow_null * 6e4, "L/min"),
+        ]
+
+
+def static_bench(
+    p_s: float = 210e5, i_rated: float = 0.01, params: dict[str, float] | None = None, points: int = 41
+) -> StaticBench:
+    """Rated flow, symmetry, linearity, flow gain at null and internal leakage from the static characteristic.
+
+    The characteristic is solved from each side of null outwards (continuation); at null the feedback
+    spring's clearance makes the equilibrium flat, so the null point is solved on its own.
+    """
+    v = params or table1()
+    check_geometry(v, p_s)
+    if not (np.isfinite(i_rated) and i_rated > 0):
+        raise ParameterError(f"rated current {i_rated!r} A: expected a positive current")
+    half = np.linspace(i_rated / (points // 2), i_rated, points // 2)
+    small = 0.05 * i_rated
+    currents = np.concatenate([-half[::-1], [0.0], half])
+    probe = [small, -small]
+    points_ = flow_characteristic([*currents, *probe], p_s, v)
+    flows = np.array([p.Q_SV for p in points_[: currents.size]])
+    supply = np.array([p.extra["Q_supply"] for p in points_[: currents.size]])
+    zero = points_[half.size]
+    q_plus, q_minus = flows[-1], flows[0]
+    k_line = q_plus / i_rated
+    q_small = [points_[-1].Q_SV, points_[-2].Q_SV]
+    return StaticBench(
+        p_s=p_s,
+        i_rated=i_rated,
+        currents=currents,
+        flows=flows,
+        supply_flows=supply,
+        rated_flow=q_plus,
+        rated_flow_negative=q_minus,
+        symmetry=(abs(q_plus) - abs(q_minus)) / max(abs(q_plus), abs(q_minus)),
+        linearity=float(np.max(np.abs(flows - k_line * currents)) / abs(q_plus)),
+        flow_gain_null=(q_small[1] - q_small[0]) / (2 * small),
+        internal_leakage_null=zero.extra["Q_supply"],
+        first_stage_flow_null=zero.extra["Q_first_stage"],
+    )

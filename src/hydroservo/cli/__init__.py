@@ -7,6 +7,7 @@ module                 commands
 :mod:`.components`     ``components``, ``describe``
 :mod:`.valve`          ``valve fit``, ``valve bode``, ``valve fit-dynamics``
 :mod:`.valve_bench`    ``valve characteristics``, ``valve identify``
+:mod:`.servovalve`     ``servovalve bench``
 :mod:`.fluid`          ``fluid``
 :mod:`.validate`       ``validate``
 :mod:`.examples`       ``examples``
@@ -26,7 +27,7 @@ import warnings
 from collections.abc import Sequence
 from typing import NoReturn
 
-from hydroservo.cli import components, examples, fluid, models, validate, valve
+from hydroservo.cli import components, examples, fluid, models, servovalve, validate, valve
 from hydroservo.errors import FluidRangeWarning, HydroservoError, ImplausibleResultWarning, RenamedWarning
 from hydroservo.version import __version__
 
@@ -50,6 +51,7 @@ def build_parser() -> argparse.ArgumentParser:
     models.add_parsers(sub)
     components.add_parsers(sub)
     valve.add_parsers(sub)
+    servovalve.add_parsers(sub)
     fluid.add_parsers(sub)
     validate.add_parsers(sub)
     examples.add_parsers(sub)

@@ -1,0 +1,97 @@
+"""``hydroservo servovalve``: the first-principles two-stage servovalve of [GordicND] on its test bench."""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+from hydroservo.errors import ParameterError
+
+__all__ = ["add_parsers"]
+
+#: The built-in servovalves: name -> description.
+VALVES = {"gordic-table1": "PPT B.31.210.12.1000.U2V, Table 1 of GordicND (12 L/min at 10 mA, 210 bar)"}
+
+
+def _parameters(sets: list[str]) -> dict[str, float]:
+    """Table 1 with ``--set NAME=VALUE`` applied (values with units)."""
+    from hydroservo.analysis.servovalve import TABLE_1, table1
+    from hydroservo.units import to_si
+
+    base = table1()
+    units = {key: unit for key, (_, _, unit) in TABLE_1.items()}
+    units.update({"f": "m", "K_t": "", "K_c": "", "K_n": "", "alpha": "rad"})
+    changes: dict[str, float] = {}
+    for item in sets:
+        key, sep, value = item.partition("=")
+        key = key.strip()
+        if not sep or key not in base:
+            raise ParameterError(
+                f"--set {item!r}: expected NAME=VALUE with NAME one of {', '.join(sorted(base))}"
+            )
+        changes[key] = to_si(value.strip(), units.get(key, ""), what=f"--set {key}")
+    return table1(**changes)
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    from hydroservo.analysis.servovalve import static_bench
+    from hydroservo.cli.common import output_folder, print_json
+    from hydroservo.io.servovalve import write_static_characteristic
+    from hydroservo.plotting.servovalve import plot_static_bench
+    from hydroservo.units import to_si
+
+    if args.valve not in VALVES:
+        raise ParameterError(f"servovalve {args.valve!r}: unknown; built-in: {', '.join(VALVES)}")
+    params = _parameters(args.set or [])
+    p_s = to_si(args.supply, "Pa", what="--supply")
+    i_rated = to_si(args.current, "A", what="--current")
+    if not 5 <= args.points <= 401:
+        raise ParameterError(f"--points {args.points}: expected 5 to 401 currents")
+    out = output_folder(args, f"hydroservo-servovalve-{args.valve}")
+    out.expect(["characteristic.csv", "characteristic.png"])
+    bench = static_bench(p_s, i_rated, params, args.points)
+    title = f"{args.valve}" + (f" ({', '.join(args.set)})" if args.set else "")
+    with out:
+        write_static_characteristic(bench, out.file("characteristic.csv"))
+        plot_static_bench(bench, title=title, file=out.file("characteristic.png"))
+    files = [out.final("characteristic.csv"), out.final("characteristic.png")]
+    if args.json:
+        print_json(
+            {
+                "valve": args.valve,
+                "changes": args.set or [],
+                "supply_bar": p_s / 1e5,
+                "rated_current_mA": i_rated * 1e3,
+                "figures": [{"figure": n, "value": float(v), "unit": u} for n, v, u in bench.table()],
+                "files": files,
+            }
+        )
+        return 0
+    print(f"{VALVES[args.valve]}: static tests at {p_s / 1e5:g} bar, no load, rated current {i_rated * 1e3:g} mA")
+    if args.set:
+        print(f"changed: {', '.join(args.set)}")
+    width = max(len(n) for n, _, _ in bench.table())
+    for name, value, unit in bench.table():
+        print(f"  {name.ljust(width)}  {float(value):10.4g} {unit}")
+    print("(dynamic tests, hysteresis and the design study: issue 12, in progress)")
+    print(f"wrote {', '.join(files)}")
+    return 0
+
+
+def add_parsers(sub: Any) -> None:
+    """Add ``servovalve bench``."""
+    from hydroservo.cli.common import add_output_options
+
+    group = sub.add_parser("servovalve", help="the first-principles two-stage servovalve (GordicND) on its bench")
+    commands = group.add_subparsers(dest="servovalve_command", required=True, metavar="COMMAND")
+    p = commands.add_parser("bench", help="static tests: rated flow, symmetry, linearity, flow gain, leakage")
+    p.add_argument("valve", nargs="?", default="gordic-table1", help=f"built-in servovalve ({', '.join(VALVES)})")
+    p.add_argument("--supply", default="210 bar", help="supply pressure (default 210 bar)")
+    p.add_argument("--current", default="10 mA", help="rated current (default 10 mA)")
+    p.add_argument(
+        "--set", action="append", metavar="NAME=VALUE", help="change a physical parameter, e.g. --set 'K_f=2100 N/m'"
+    )
+    p.add_argument("--points", type=int, default=41, help="currents of the characteristic (default 41)")
+    p.add_argument("--json", action="store_true")
+    add_output_options(p, "hydroservo-servovalve-NAME")
+    p.set_defaults(func=cmd_bench)
