@@ -123,3 +123,6 @@ def test_servovalve_bench_writes_its_report_and_refuses_bad_values(tmp_path, cli
     assert code == 2 and "K_f" in err and not (tmp_path / "bad").exists()
     code, _, err = cli("servovalve", "bench", "--supply", "3 kg", "--out", str(tmp_path / "bad"))
     assert code == 2 and "--supply" in err
+    code, _, err = cli("servovalve", "bench", "--current", "-1 mA", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "--current '-1 mA': expected a positive rated current" in err
+    assert not (tmp_path / "bad").exists()

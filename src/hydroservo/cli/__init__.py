@@ -58,12 +58,18 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+#: Options whose value may start with a minus sign.
+_NUMERIC_OPTIONS = (
+    "--temperature", "--pressure", "--amplitudes", "--frequencies", "--predict", "--reference", "--current", "--supply",
+)
+
+
 def _join_negative_values(argv: list[str]) -> list[str]:
     """``--temperature -40,20`` -> ``--temperature=-40,20``: argparse would take -40,20 for an option."""
     out: list[str] = []
     it = iter(argv)
     for tok in it:
-        if tok in ("--temperature", "--pressure", "--amplitudes", "--frequencies", "--predict", "--reference"):
+        if tok in _NUMERIC_OPTIONS:
             nxt = next(it, None)
             if nxt is not None and nxt.startswith("-") and len(nxt) > 1 and (nxt[1].isdigit() or nxt[1] == "."):
                 out.append(f"{tok}={nxt}")

@@ -45,6 +45,8 @@ def cmd_bench(args: argparse.Namespace) -> int:
     params = _parameters(args.set or [])
     p_s = to_si(args.supply, "Pa", what="--supply")
     i_rated = to_si(args.current, "A", what="--current")
+    if not i_rated > 0:
+        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
     if not 5 <= args.points <= 401:
         raise ParameterError(f"--points {args.points}: expected 5 to 401 currents")
     out = output_folder(args, f"hydroservo-servovalve-{args.valve}")
