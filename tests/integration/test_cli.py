@@ -126,3 +126,16 @@ def test_servovalve_bench_writes_its_report_and_refuses_bad_values(tmp_path, cli
     code, _, err = cli("servovalve", "bench", "--current", "-1 mA", "--out", str(tmp_path / "bad"))
     assert code == 2 and "--current '-1 mA': expected a positive rated current" in err
     assert not (tmp_path / "bad").exists()
+
+
+def test_servovalve_design_ranks_the_parameters(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
+    import json
+
+    code, text, err = cli("servovalve", "design", "--top", "3", "--out", str(tmp_path / "d"), "--json")
+    assert code == 0, err
+    report = json.loads(text)
+    assert report["figures"]["rated_flow"]["value"] == pytest.approx(11.99, abs=0.01)
+    assert report["elasticity"]["rated_flow"]["N"] == pytest.approx(1.0, abs=0.02)
+    assert sorted(p.name for p in (tmp_path / "d").iterdir()) == ["sensitivity.csv", "sensitivity.png"]
+    code, _, err = cli("servovalve", "design", "--top", "0", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "--top 0" in err and not (tmp_path / "bad").exists()

@@ -45,6 +45,10 @@ __all__ = [
     "flow_characteristic",
     "StaticBench",
     "static_bench",
+    "DESIGN_FIGURES",
+    "design_figures",
+    "Sensitivity",
+    "sensitivity",
 ]
 
 #: Parameter set of the published valve, and the SI unit of each entry used: (table, key, unit).
@@ -331,3 +335,61 @@ def static_bench(
         internal_leakage_null=zero.extra["Q_supply"],
         first_stage_flow_null=zero.extra["Q_first_stage"],
     )
+
+
+#: The figures of the design study: name -> (what it is, unit shown, scale from SI).
+DESIGN_FIGURES = {
+    "rated_flow": ("rated flow", "L/min", 6e4),
+    "spool_travel": ("spool travel at rated current", "mm", 1e3),
+    "flapper_tip": ("flapper tip at rated current", "um", 1e6),
+    "leakage_null": ("internal leakage at null", "L/min", 6e4),
+    "first_stage_null": ("first-stage flow at null", "L/min", 6e4),
+    "nozzle_pressure_null": ("nozzle pressure at null", "bar", 1e-5),
+}
+
+
+def design_figures(p_s: float = 210e5, i_rated: float = 0.01, params: dict[str, float] | None = None) -> dict[str, float]:
+    """The static figures a designer watches (SI): rated flow, spool travel and flapper tip at rated current,
+    internal leakage, first-stage flow and nozzle pressure at null."""
+    v = params or table1()
+    rated = static_point(i_rated, p_s, v)
+    null = static_point(0.0, p_s, v, [0.0, 0.0, 0.0, first_stage_null(p_s, v)["p_d"]])
+    return {
+        "rated_flow": rated.Q_SV,
+        "spool_travel": rated.y,
+        "flapper_tip": rated.x,
+        "leakage_null": null.extra["Q_supply"],
+        "first_stage_null": null.extra["Q_first_stage"],
+        "nozzle_pressure_null": null.p_l,
+    }
+
+
+@dataclass(frozen=True)
+class Sensitivity:
+    """How much each figure moves per relative change of each physical parameter (elasticities)."""
+
+    figures: dict[str, float]  #: the figures at the design point (SI)
+    elasticity: dict[str, dict[str, float]]  #: figure -> parameter -> d ln(figure) / d ln(parameter)
+
+    def ranked(self, figure: str, top: int | None = None) -> list[tuple[str, float]]:
+        """The parameters by the size of their effect on ``figure``, largest first."""
+        rows = sorted(self.elasticity[figure].items(), key=lambda kv: -abs(kv[1]))
+        return rows[:top] if top else rows
+
+
+def sensitivity(
+    p_s: float = 210e5, i_rated: float = 0.01, params: dict[str, float] | None = None, step: float = 0.01
+) -> Sensitivity:
+    """Elasticities of the design figures to every physical parameter, by central differences of ``step``
+    (relative): the figures are solutions of nonlinear equilibria, smooth away from the feedback spring's
+    clearance, and a 1 % step is well inside that."""
+    v = params or table1()
+    base = design_figures(p_s, i_rated, v)
+    names = [k for k in v if k not in ("alpha",) and v[k] != 0.0]
+    out: dict[str, dict[str, float]] = {f: {} for f in base}
+    for name in names:
+        up = design_figures(p_s, i_rated, {**v, name: v[name] * (1 + step)})
+        down = design_figures(p_s, i_rated, {**v, name: v[name] * (1 - step)})
+        for f in base:
+            out[f][name] = (up[f] - down[f]) / (2 * step * base[f]) if base[f] != 0 else float("nan")
+    return Sensitivity(base, out)

@@ -80,8 +80,53 @@ def cmd_bench(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_design(args: argparse.Namespace) -> int:
+    from hydroservo.analysis.servovalve import DESIGN_FIGURES, sensitivity
+    from hydroservo.cli.common import output_folder, print_json
+    from hydroservo.io.servovalve import write_sensitivity
+    from hydroservo.plotting.servovalve import plot_sensitivity
+    from hydroservo.units import to_si
+
+    if args.valve not in VALVES:
+        raise ParameterError(f"servovalve {args.valve!r}: unknown; built-in: {', '.join(VALVES)}")
+    params = _parameters(args.set or [])
+    p_s = to_si(args.supply, "Pa", what="--supply")
+    i_rated = to_si(args.current, "A", what="--current")
+    if not i_rated > 0:
+        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    if not 1 <= args.top <= 50:
+        raise ParameterError(f"--top {args.top}: expected 1 to 50 parameters per figure")
+    out = output_folder(args, f"hydroservo-servovalve-design-{args.valve}")
+    out.expect(["sensitivity.csv", "sensitivity.png"])
+    sens = sensitivity(p_s, i_rated, params)
+    with out:
+        write_sensitivity(sens, out.file("sensitivity.csv"))
+        plot_sensitivity(sens, DESIGN_FIGURES, top=args.top, title=f"{args.valve}: what moves each figure", file=out.file("sensitivity.png"))
+    files = [out.final("sensitivity.csv"), out.final("sensitivity.png")]
+    if args.json:
+        print_json(
+            {
+                "valve": args.valve,
+                "changes": args.set or [],
+                "figures": {
+                    k: {"value": sens.figures[k] * DESIGN_FIGURES[k][2], "unit": DESIGN_FIGURES[k][1]} for k in sens.figures
+                },
+                "elasticity": sens.elasticity,
+                "files": files,
+            }
+        )
+        return 0
+    print(f"{VALVES[args.valve]}: what moves each figure at {p_s / 1e5:g} bar, {i_rated * 1e3:g} mA")
+    print("(elasticity: % change of the figure per % change of the parameter, the largest first)")
+    for key, (description, unit, scale) in DESIGN_FIGURES.items():
+        ranked = ", ".join(f"{n} {e:+.2f}" for n, e in sens.ranked(key, args.top))
+        print(f"  {description} = {sens.figures[key] * scale:.4g} {unit}: {ranked}")
+    print(f"wrote {', '.join(files)}")
+    return 0
+
+
 def add_parsers(sub: Any) -> None:
-    """Add ``servovalve bench``."""
+    """Add ``servovalve bench`` and ``servovalve design``."""
     from hydroservo.cli.common import add_output_options
 
     group = sub.add_parser("servovalve", help="the first-principles two-stage servovalve (GordicND) on its bench")
@@ -97,3 +142,12 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--json", action="store_true")
     add_output_options(p, "hydroservo-servovalve-NAME")
     p.set_defaults(func=cmd_bench)
+    d = commands.add_parser("design", help="what moves each figure: elasticities to every physical parameter, ranked")
+    d.add_argument("valve", nargs="?", default="gordic-table1", help=f"built-in servovalve ({', '.join(VALVES)})")
+    d.add_argument("--supply", default="210 bar", help="supply pressure (default 210 bar)")
+    d.add_argument("--current", default="10 mA", help="rated current (default 10 mA)")
+    d.add_argument("--set", action="append", metavar="NAME=VALUE", help="the design point: change a parameter first")
+    d.add_argument("--top", type=int, default=8, help="parameters shown per figure (default 8)")
+    d.add_argument("--json", action="store_true")
+    add_output_options(d, "hydroservo-servovalve-design-NAME")
+    d.set_defaults(func=cmd_design)

@@ -9,7 +9,7 @@ import numpy as np
 
 from hydroservo.plotting import finish, lpm, pyplot
 
-__all__ = ["plot_static_bench"]
+__all__ = ["plot_static_bench", "plot_sensitivity"]
 
 
 def plot_static_bench(bench: Any, *, title: str = "", file: str | Path | None = None) -> Any:
@@ -32,6 +32,35 @@ def plot_static_bench(bench: Any, *, title: str = "", file: str | Path | None = 
     ax_s.set_title("supply flow (internal leakage at null)")
     for ax in (ax_q, ax_s):
         ax.grid(True, alpha=0.3)
+    if title:
+        fig.suptitle(title)
+    return finish(fig, file, plt)
+
+
+def plot_sensitivity(sens: Any, figures: Any, *, top: int = 8, title: str = "", file: str | Path | None = None) -> Any:
+    """One bar chart per design figure: the ``top`` parameters by elasticity (d ln figure / d ln parameter).
+
+    ``sens`` is a :class:`hydroservo.analysis.servovalve.Sensitivity`; ``figures`` maps a figure's key to its
+    (description, unit, scale).
+    """
+    plt = pyplot(file)
+    keys = list(sens.figures)
+    cols = 3
+    rows = (len(keys) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.2 * rows))
+    for ax, key in zip(np.ravel(axes), keys, strict=False):
+        ranked = sens.ranked(key, top)[::-1]
+        names = [n for n, _ in ranked]
+        values = [e for _, e in ranked]
+        ax.barh(names, values, color=["tab:blue" if e >= 0 else "tab:red" for e in values])
+        description, unit, scale = figures[key]
+        ax.set_title(f"{description}\n({sens.figures[key] * scale:.4g} {unit})", fontsize="small")
+        ax.axvline(0.0, color="k", lw=0.6)
+        ax.grid(True, axis="x", alpha=0.3)
+        ax.tick_params(labelsize="small")
+    for ax in np.ravel(axes)[len(keys) :]:
+        ax.set_visible(False)
+    fig.supxlabel("elasticity: % change of the figure per % change of the parameter", fontsize="small")
     if title:
         fig.suptitle(title)
     return finish(fig, file, plt)

@@ -57,3 +57,17 @@ def test_a_servovalve_no_one_could_build_is_refused(changes, message):
 def test_a_supply_at_the_return_pressure_is_refused():
     with pytest.raises(ParameterError, match="supply p_s = 100000 Pa: expected above the return pressure"):
         static_point(0.01, p_s=1e5)
+
+
+def test_the_design_study_ranks_what_a_designer_expects():
+    from hydroservo.analysis.servovalve import sensitivity
+
+    s = sensitivity()
+    e = s.elasticity["rated_flow"]
+    # force feedback: the spool goes where the motor's torque deflects the feedback spring, Q ~ K_i / (K_f l_f)
+    assert e["N"] == pytest.approx(1.0, abs=0.02)  # K_i grows with the turns (eq. 5)
+    assert e["K_f"] == pytest.approx(-1.0, abs=0.1)
+    assert s.ranked("rated_flow", 1)[0][0] == "x_p0"  # the air gap: K_i ~ 1/x_p0^2, and the magnetic spring
+    # the first stage's null flow grows with the constant orifices' area, less the pressure it leaves them
+    assert s.elasticity["first_stage_null"]["d_o"] == pytest.approx(1.0, abs=0.1)
+    assert s.figures["rated_flow"] * 6e4 == pytest.approx(11.994, abs=0.001)
