@@ -71,3 +71,23 @@ def test_the_design_study_ranks_what_a_designer_expects():
     # the first stage's null flow grows with the constant orifices' area, less the pressure it leaves them
     assert s.elasticity["first_stage_null"]["d_o"] == pytest.approx(1.0, abs=0.1)
     assert s.figures["rated_flow"] * 6e4 == pytest.approx(11.994, abs=0.001)
+
+
+@pytest.mark.parametrize("i", [0.0, 0.004, -0.01])
+def test_the_first_stage_conserves_its_flow_at_rest(i):
+    # with the spool at rest each constant orifice feeds its nozzle, and both nozzles leave through the drain
+    from hydroservo.analysis.servovalve import first_stage_null
+    from hydroservo.laws import flapper_nozzle as fn
+
+    v = table1()
+    null = first_stage_null(210e5, v)
+    start = [0.0, 0.0, 0.0, null["p_d"]] if i == 0.0 else None
+    p = flow_characteristic([i])[0] if start is None else static_point(0.0, 210e5, v, start)
+    b = fn.nozzle_conductance(v["K_n"], v["d_n"], v["x_0"] - p.x, v["rho"])
+    c = fn.nozzle_conductance(v["K_n"], v["d_n"], v["x_0"] + p.x, v["rho"])
+    q_ol, q_or = null["a"] * np.sqrt(210e5 - p.p_l), null["a"] * np.sqrt(210e5 - p.p_r)
+    q_nl, q_nr = b * np.sqrt(p.p_l - p.p_d), c * np.sqrt(p.p_r - p.p_d)
+    q_d = null["a_d"] * np.sqrt(p.p_d - v["p_0"])
+    assert q_ol == pytest.approx(q_nl, rel=1e-9) and q_or == pytest.approx(q_nr, rel=1e-9)
+    assert q_nl + q_nr == pytest.approx(q_d, rel=1e-9)
+    assert p.extra["Q_first_stage"] == pytest.approx(q_ol + q_or, rel=1e-12)
