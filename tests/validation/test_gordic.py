@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from hydroservo.validation.gordic import null_coefficients
+from hydroservo.analysis.servovalve import first_stage_null, table1
 
 
 def test_servovalve_constants_from_table_1(validated) -> None:
@@ -24,7 +24,7 @@ def test_servovalve_constants_from_table_1(validated) -> None:
 
 
 def test_the_first_stage_at_null() -> None:
-    null = null_coefficients(140e5, 70e5)
+    null = first_stage_null(140e5, table1(), p_n=70e5)  # the assembly rule
     # Lichtarowicz at the null Reynolds numbers: 1630 for the constant orifices, about 1440 for the drain
     assert null["K_o"] == pytest.approx(0.776, abs=5e-4)
     assert null["K_od"] == pytest.approx(0.789, abs=5e-4)

@@ -37,6 +37,7 @@ from hydroservo.laws import torque_motor as tm
 
 __all__ = [
     "TABLE_1",
+    "PARAMETER_UNITS",
     "table1",
     "check_geometry",
     "first_stage_null",
@@ -89,6 +90,16 @@ TABLE_1 = {
 #: Von Mises' spool-orifice constants ([GordicND] section 2.5): flow and contraction coefficients, jet angle.
 VON_MISES = {"K_t": 0.611, "K_c": 0.673, "alpha": float(np.radians(69.0))}
 
+#: The SI unit of every parameter of :func:`table1` (for values given with units).
+PARAMETER_UNITS = {
+    **{key: unit for key, (_, _, unit) in TABLE_1.items() if key not in ("f_width", "f_ports")},
+    "f": "m",
+    "K_t": "",
+    "K_c": "",
+    "alpha": "rad",
+    "K_n": "",
+}
+
 
 def table1(**overrides: float) -> dict[str, float]:
     """The published valve's parameters in SI (parameter set ``GordicND``), with ``overrides`` (SI) applied."""
@@ -136,19 +147,25 @@ def check_geometry(v: dict[str, float], p_s: float | None = None) -> None:
         )
 
 
-def first_stage_null(p_s: float, v: dict[str, float]) -> dict[str, float]:
+def first_stage_null(p_s: float, v: dict[str, float], p_n: float | None = None) -> dict[str, float]:
     """The flapper-nozzle stage with the flapper centred at supply ``p_s``: nozzle and drain pressures, and the
-    constant and drain orifices' coefficients at their Reynolds numbers (Lichtarowicz), solved together."""
+    constant and drain orifices' coefficients at their Reynolds numbers (Lichtarowicz), solved together.
+
+    With ``p_n`` the nozzle pressure is given instead (the assembly rule of [GordicND] section 3: 70 bar at
+    140 bar supply), and the gap ``x_0`` of ``v`` is not used.
+    """
     rho, nu, p_0 = v["rho"], v["nu"], v["p_0"]
     b = fn.nozzle_conductance(v["K_n"], v["d_n"], v["x_0"], rho)
     K_o = K_od = 0.8
-    p_n, p_d = 0.5 * (p_s + p_0), p_0
+    fixed = p_n is not None
+    p_n, p_d = (0.5 * (p_s + p_0) if p_n is None else p_n), p_0
     for _ in range(200):
         a = fn.orifice_conductance(K_o, v["d_o"], rho)
         a_d = fn.orifice_conductance(K_od, v["d_od"], rho)
         # a sqrt(p_s - p_n) = b sqrt(p_n - p_d) and 2 a sqrt(p_s - p_n) = a_d sqrt(p_d - p_0), in p_n
+        p_d = float(fn.null_drain_pressure(p_s, p_n, p_0, a, a_d))
         lo, hi = p_0, p_s
-        for _ in range(100):
+        for _ in range(0 if fixed else 100):
             p_n = 0.5 * (lo + hi)
             p_d = float(fn.null_drain_pressure(p_s, p_n, p_0, a, a_d))
             if p_d >= p_n or a * np.sqrt(p_s - p_n) < b * np.sqrt(p_n - p_d):

@@ -13,24 +13,37 @@ __all__ = ["add_parsers"]
 VALVES = {"gordic-table1": "PPT B.31.210.12.1000.U2V, Table 1 of GordicND (12 L/min at 10 mA, 210 bar)"}
 
 
-def _parameters(sets: list[str]) -> dict[str, float]:
-    """Table 1 with ``--set NAME=VALUE`` applied (values with units)."""
-    from hydroservo.analysis.servovalve import TABLE_1, table1
+def _design_point(args: argparse.Namespace) -> tuple[dict[str, float], float, float]:
+    """The valve's parameters (Table 1 with ``--set NAME=VALUE`` applied, values with units), the supply
+    pressure and the rated current, each checked and named in its error."""
+    from hydroservo.analysis.servovalve import PARAMETER_UNITS, table1
     from hydroservo.units import to_si
 
-    base = table1()
-    units = {key: unit for key, (_, _, unit) in TABLE_1.items()}
-    units.update({"f": "m", "K_t": "", "K_c": "", "K_n": "", "alpha": "rad"})
+    if args.valve not in VALVES:
+        raise ParameterError(f"servovalve {args.valve!r}: unknown; built-in: {', '.join(VALVES)}")
     changes: dict[str, float] = {}
-    for item in sets:
+    for item in args.set or []:
         key, sep, value = item.partition("=")
         key = key.strip()
-        if not sep or key not in base:
+        if not sep or key not in PARAMETER_UNITS:
             raise ParameterError(
-                f"--set {item!r}: expected NAME=VALUE with NAME one of {', '.join(sorted(base))}"
+                f"--set {item!r}: expected NAME=VALUE with NAME one of {', '.join(sorted(PARAMETER_UNITS))}"
             )
-        changes[key] = to_si(value.strip(), units.get(key, ""), what=f"--set {key}")
-    return table1(**changes)
+        changes[key] = to_si(value.strip(), PARAMETER_UNITS[key], what=f"--set {key}")
+    p_s = to_si(args.supply, "Pa", what="--supply")
+    i_rated = to_si(args.current, "A", what="--current")
+    if not i_rated > 0:
+        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    return table1(**changes), p_s, i_rated
+
+
+def _add_design_point_options(p: Any, set_help: str) -> None:
+    """The valve, ``--supply``, ``--current``, ``--set`` and ``--json`` every servovalve command takes."""
+    p.add_argument("valve", nargs="?", default="gordic-table1", help=f"built-in servovalve ({', '.join(VALVES)})")
+    p.add_argument("--supply", default="210 bar", help="supply pressure (default 210 bar)")
+    p.add_argument("--current", default="10 mA", help="rated current (default 10 mA)")
+    p.add_argument("--set", action="append", metavar="NAME=VALUE", help=set_help)
+    p.add_argument("--json", action="store_true")
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
@@ -38,15 +51,8 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from hydroservo.cli.common import output_folder, print_json
     from hydroservo.io.servovalve import write_static_characteristic
     from hydroservo.plotting.servovalve import plot_static_bench
-    from hydroservo.units import to_si
 
-    if args.valve not in VALVES:
-        raise ParameterError(f"servovalve {args.valve!r}: unknown; built-in: {', '.join(VALVES)}")
-    params = _parameters(args.set or [])
-    p_s = to_si(args.supply, "Pa", what="--supply")
-    i_rated = to_si(args.current, "A", what="--current")
-    if not i_rated > 0:
-        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    params, p_s, i_rated = _design_point(args)
     if not 5 <= args.points <= 401:
         raise ParameterError(f"--points {args.points}: expected 5 to 401 currents")
     out = output_folder(args, f"hydroservo-servovalve-{args.valve}")
@@ -75,7 +81,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
     width = max(len(n) for n, _, _ in bench.table())
     for name, value, unit in bench.table():
         print(f"  {name.ljust(width)}  {float(value):10.4g} {unit}")
-    print("(dynamic tests, hysteresis and the design study: issue 12, in progress)")
+    print("(dynamic tests and hysteresis: issue 12, in progress; what moves each figure: servovalve design)")
     print(f"wrote {', '.join(files)}")
     return 0
 
@@ -85,15 +91,8 @@ def cmd_design(args: argparse.Namespace) -> int:
     from hydroservo.cli.common import output_folder, print_json
     from hydroservo.io.servovalve import write_sensitivity
     from hydroservo.plotting.servovalve import plot_sensitivity
-    from hydroservo.units import to_si
 
-    if args.valve not in VALVES:
-        raise ParameterError(f"servovalve {args.valve!r}: unknown; built-in: {', '.join(VALVES)}")
-    params = _parameters(args.set or [])
-    p_s = to_si(args.supply, "Pa", what="--supply")
-    i_rated = to_si(args.current, "A", what="--current")
-    if not i_rated > 0:
-        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    params, p_s, i_rated = _design_point(args)
     if not 1 <= args.top <= 50:
         raise ParameterError(f"--top {args.top}: expected 1 to 50 parameters per figure")
     out = output_folder(args, f"hydroservo-servovalve-design-{args.valve}")
@@ -132,22 +131,12 @@ def add_parsers(sub: Any) -> None:
     group = sub.add_parser("servovalve", help="the first-principles two-stage servovalve (GordicND) on its bench")
     commands = group.add_subparsers(dest="servovalve_command", required=True, metavar="COMMAND")
     p = commands.add_parser("bench", help="static tests: rated flow, symmetry, linearity, flow gain, leakage")
-    p.add_argument("valve", nargs="?", default="gordic-table1", help=f"built-in servovalve ({', '.join(VALVES)})")
-    p.add_argument("--supply", default="210 bar", help="supply pressure (default 210 bar)")
-    p.add_argument("--current", default="10 mA", help="rated current (default 10 mA)")
-    p.add_argument(
-        "--set", action="append", metavar="NAME=VALUE", help="change a physical parameter, e.g. --set 'K_f=2100 N/m'"
-    )
+    _add_design_point_options(p, "change a physical parameter, e.g. --set 'K_f=2100 N/m'")
     p.add_argument("--points", type=int, default=41, help="currents of the characteristic (default 41)")
-    p.add_argument("--json", action="store_true")
     add_output_options(p, "hydroservo-servovalve-NAME")
     p.set_defaults(func=cmd_bench)
     d = commands.add_parser("design", help="what moves each figure: elasticities to every physical parameter, ranked")
-    d.add_argument("valve", nargs="?", default="gordic-table1", help=f"built-in servovalve ({', '.join(VALVES)})")
-    d.add_argument("--supply", default="210 bar", help="supply pressure (default 210 bar)")
-    d.add_argument("--current", default="10 mA", help="rated current (default 10 mA)")
-    d.add_argument("--set", action="append", metavar="NAME=VALUE", help="the design point: change a parameter first")
+    _add_design_point_options(d, "the design point: change a parameter first")
     d.add_argument("--top", type=int, default=8, help="parameters shown per figure (default 8)")
-    d.add_argument("--json", action="store_true")
     add_output_options(d, "hydroservo-servovalve-design-NAME")
     d.set_defaults(func=cmd_design)

@@ -29,6 +29,7 @@ from hydroservo.io.curves import read_bench_curves, read_csv_table, read_static_
 from hydroservo.io.datasheet import read_datasheet
 from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
 from hydroservo.io.results import write_csv, write_mat
+from hydroservo.io.servovalve import write_sensitivity, write_static_characteristic
 from hydroservo.io.tables import read_time_table
 from hydroservo.io.toml import read_toml
 
@@ -54,4 +55,6 @@ __all__ = [
     "write_mat",
     "read_time_table",
     "read_toml",
+    "write_static_characteristic",
+    "write_sensitivity",
 ]

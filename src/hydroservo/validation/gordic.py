@@ -10,15 +10,14 @@ static equilibrium of the whole valve (:mod:`hydroservo.analysis.servovalve`).
 
 from __future__ import annotations
 
+from hydroservo.analysis.servovalve import first_stage_null, static_point, table1
 from hydroservo.data import parameter_set
-from hydroservo.laws import armature, flapper_nozzle, orifice, torque_motor
+from hydroservo.laws import armature, flapper_nozzle, torque_motor
 from hydroservo.validation import Row
 
-__all__ = ["rows", "compute", "null_coefficients", "SHARP_EDGED"]
+__all__ = ["rows", "compute"]
 
 _T1 = "GordicND Table 1"
-#: The flapper-nozzle coefficient taken at null: a sharp-edged orifice's, pi/(pi+2) (Fig. 4-b is not in the text).
-SHARP_EDGED = orifice.DISCHARGE_COEFFICIENT
 
 
 def rows() -> list[Row]:
@@ -103,28 +102,6 @@ def rows() -> list[Row]:
     ]
 
 
-def null_coefficients(p_s: float, p_n: float) -> dict[str, float]:
-    """The first stage at null for supply ``p_s`` and nozzle pressure ``p_n`` [Pa]: the constant and drain
-    orifices' coefficients (Lichtarowicz at their Reynolds numbers), their conductances and the drain pressure."""
-    ps = parameter_set("GordicND")
-    rho = ps.si("fluid", "rho", "kg/m^3")
-    nu = ps.si("fluid", "nu", "m^2/s")
-    d_o, l_o = ps.si("first_stage", "d_o", "m"), ps.si("first_stage", "l_o", "m")
-    d_od, l_od = ps.si("first_stage", "d_od", "m"), ps.si("first_stage", "l_od", "m")
-    p_0 = ps.si("first_stage", "p_0", "Pa")
-    K_o = float(orifice.short_tube_discharge(orifice.flow_number(d_o, p_s - p_n, rho, nu), l_o / d_o))
-    a = float(flapper_nozzle.orifice_conductance(K_o, d_o, rho))
-    K_od, p_d = 0.8, p_0
-    for _ in range(100):  # the drain's coefficient depends on its drop, which depends on the coefficient
-        a_d = float(flapper_nozzle.orifice_conductance(K_od, d_od, rho))
-        p_d = float(flapper_nozzle.null_drain_pressure(p_s, p_n, p_0, a, a_d))
-        K_new = float(orifice.short_tube_discharge(orifice.flow_number(d_od, p_d - p_0, rho, nu), l_od / d_od))
-        if abs(K_new - K_od) < 1e-12:
-            break
-        K_od = K_new
-    return {"K_o": K_o, "K_od": K_od, "a": a, "a_d": a_d, "p_d": p_d}
-
-
 def compute() -> dict[str, float]:
     """The constants from Table 1."""
     ps = parameter_set("GordicND")
@@ -137,10 +114,9 @@ def compute() -> dict[str, float]:
     mu_m = tm("mu_m", "") * torque_motor.MU_0
     p_s = ps.si("rating", "p_assembly_supply", "Pa")
     p_n = ps.si("rating", "p_assembly_nozzle", "Pa")
-    null = null_coefficients(p_s, p_n)
-    x_0 = flapper_nozzle.null_gap(
-        p_s, p_n, null["p_d"], null["a"], SHARP_EDGED, ps.si("first_stage", "d_n", "m"), ps.si("fluid", "rho", "kg/m^3")
-    )
+    valve = table1()  # the nozzle restriction's coefficient: a sharp-edged orifice's (Fig. 4-b is not in the text)
+    null = first_stage_null(p_s, valve, p_n)
+    x_0 = flapper_nozzle.null_gap(p_s, p_n, null["p_d"], null["a"], valve["K_n"], valve["d_n"], valve["rho"])
     return {
         "K_i": float(torque_motor.torque_gain(r, A_p, x_p0, M_m, tm("N", ""), tm("k_c", ""), k_r)),
         "K_m": float(torque_motor.magnetic_spring(r, A_p, x_p0, M_m, k_r)),
@@ -154,7 +130,5 @@ def compute() -> dict[str, float]:
 
 
 def _rated_flow() -> float:
-    from hydroservo.analysis.servovalve import static_point
-
     ps = parameter_set("GordicND")
     return static_point(ps.si("rating", "i_rated", "A"), ps.si("rating", "p_s", "Pa")).Q_SV

@@ -91,3 +91,9 @@ def test_the_first_stage_conserves_its_flow_at_rest(i):
     assert q_ol == pytest.approx(q_nl, rel=1e-9) and q_or == pytest.approx(q_nr, rel=1e-9)
     assert q_nl + q_nr == pytest.approx(q_d, rel=1e-9)
     assert p.extra["Q_first_stage"] == pytest.approx(q_ol + q_or, rel=1e-12)
+
+
+def test_every_parameter_has_its_unit():
+    from hydroservo.analysis.servovalve import PARAMETER_UNITS
+
+    assert set(PARAMETER_UNITS) == set(table1())
