@@ -9,7 +9,7 @@ import numpy as np
 
 from hydroservo import backend as bk
 from hydroservo.components.base import Component, Param, Port, register
-from hydroservo.components.valves.ports import FLOW_OUTPUTS, HYDRAULIC_PORTS, PRESSURE_PORTS
+from hydroservo.components.valves.ports import FLOW_OUTPUTS, FLUID_PARAMETERS, HYDRAULIC_PORTS, PRESSURE_PORTS
 from hydroservo.errors import ParameterError
 from hydroservo.laws.four_way import four_way_valve_flows
 from hydroservo.laws.orifice import transition_pressure
@@ -49,19 +49,10 @@ class FourWayValve(Component):
         "x_PB": Param(0.0, "m", "overlap of edge P-B"),
         "x_BT": Param(0.0, "m", "overlap of edge B-T"),
         "G_leak": Param(0.0, "m^3/s/Pa", "laminar clearance leakage conductance of each edge", min=0.0),
-        "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False, fluid="density"),
-        "nu": Param(
-            32e-6,
-            "m^2/s",
-            "kinematic viscosity (ISO VG 32 at 40 degC)",
-            min=0.0,
-            min_inclusive=False,
-            fluid="kinematic_viscosity",
-        ),
+        **FLUID_PARAMETERS,
         "D_h": Param(
             1e-3, "m", "hydraulic diameter at which the laminar transition is evaluated", min=0.0, min_inclusive=False
         ),
-        "lambda_crit": Param(1000.0, "", "critical flow number (MareAttarND eq. 4)", min=0.0, min_inclusive=False),
     }
     INPUTS = {
         "xv": Port("m", "spool position"),

@@ -54,6 +54,8 @@ TWO_PORT_HYDRAULIC = {
 #: Density, viscosity and critical flow number of the orifice law (taken from the circuit's fluid).
 FLUID_PARAMETERS = {
     "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False, fluid="density"),
-    "nu": Param(32e-6, "m^2/s", "kinematic viscosity", min=0.0, min_inclusive=False, fluid="kinematic_viscosity"),
+    "nu": Param(
+        32e-6, "m^2/s", "kinematic viscosity (ISO VG 32 at 40 degC)", min=0.0, min_inclusive=False, fluid="kinematic_viscosity"
+    ),
     "lambda_crit": Param(1000.0, "", "critical flow number (MareAttarND eq. 4)", min=0.0, min_inclusive=False),
 }
