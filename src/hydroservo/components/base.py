@@ -4,6 +4,9 @@ A component is a small class. At the top it declares
 
 * ``PARAMETERS``: name -> :class:`Param` (default in SI, unit, allowed range),
 * ``STATES``: name -> :class:`State` (unit, initial value, nominal magnitude),
+* ``ALGEBRAIC``: name -> :class:`Algebraic`, unknowns defined implicitly by
+  an equation rather than by a rate (a flapper tip bent by the very jets it
+  throttles; the pressure of a junction without volume),
 * ``INPUTS``: name -> :class:`Port` (unit; a default if it may stay unconnected),
 * ``OUTPUTS``: name -> :class:`Output` (unit),
 * ``OPTIONS``: name -> :class:`Option` (structural choices, such as a
@@ -23,7 +26,13 @@ and below it writes two methods with CasADi expressions:
   inputs that the outputs really depend on (the system resolves inputs lazily,
   so an output computed from states alone never creates an algebraic loop);
 * ``state_equations(t, x, u, p, y)`` returns the time derivative of every state
-  (``y`` holds this component's own outputs).
+  (``y`` holds this component's own outputs);
+* with algebraic unknowns, ``residual_equations(t, x, u, p)`` returns for each
+  the residual that vanishes at its solution (in the unknown's own unit where
+  the equation allows, ``z - g(z)``), and ``guess_equations(t, x, u, p)`` an
+  explicit approximation of it from the states (Newton starts there:
+  :mod:`hydroservo.system.implicit`). ``x`` then holds the algebraic unknowns
+  beside the states, and every equation may read them.
 
 ``x``, ``u``, ``p`` and ``y`` are mappings from the declared names to
 expressions. A component never sees another component: only its inputs.
@@ -52,6 +61,7 @@ __all__ = [
     "FromSet",
     "Param",
     "State",
+    "Algebraic",
     "Port",
     "Output",
     "Option",
@@ -152,6 +162,19 @@ class State:
 
 
 @dataclass(frozen=True)
+class Algebraic:
+    """An algebraic unknown: defined by a residual equation (``residual_equations``), not by a rate.
+
+    ``nominal`` is its typical magnitude: the solution is accepted when Newton's last correction is below
+    :data:`hydroservo.system.implicit.TOLERANCE` times it.
+    """
+
+    unit: str
+    description: str
+    nominal: float = 1.0
+
+
+@dataclass(frozen=True)
 class Port:
     """An input; ``default`` is used when it is left unconnected (None: must be connected)."""
 
@@ -238,6 +261,7 @@ class Component:
 
     PARAMETERS: ClassVar[dict[str, Param]] = {}
     STATES: ClassVar[dict[str, State]] = {}
+    ALGEBRAIC: ClassVar[dict[str, Algebraic]] = {}
     INPUTS: ClassVar[dict[str, Port]] = {}
     OUTPUTS: ClassVar[dict[str, Output]] = {}
     OPTIONS: ClassVar[dict[str, Option]] = {}
@@ -285,6 +309,7 @@ class Component:
         self.INPUTS = {k: replace(v, unit=sub(v.unit)) for k, v in self.INPUTS.items()}  # type: ignore[misc]
         self.OUTPUTS = {k: replace(v, unit=sub(v.unit)) for k, v in self.OUTPUTS.items()}  # type: ignore[misc]
         self.STATES = {k: replace(v, unit=sub(v.unit)) for k, v in self.STATES.items()}  # type: ignore[misc]
+        self.ALGEBRAIC = {k: replace(v, unit=sub(v.unit)) for k, v in self.ALGEBRAIC.items()}  # type: ignore[misc]
 
     # -- parameters -----------------------------------------------------
     def set(self, **values: Any) -> None:
@@ -372,6 +397,16 @@ class Component:
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {}
+
+    def residual_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        """The residual of each algebraic unknown (zero at its solution)."""
+        return {}
+
+    def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        """An explicit first guess of each algebraic unknown (from states, inputs and parameters; default 0)."""
+        return {k: 0.0 for k in self.ALGEBRAIC}
 
     def check(self) -> None:
         """Cross-parameter checks (override); raise ParameterError."""

@@ -1,9 +1,11 @@
 """Assembly of a system's components into one CasADi expression graph.
 
-Every parameter and state becomes a symbol; each component's outputs are
+Every parameter, state and algebraic unknown becomes a symbol; each component's outputs are
 built once, on first demand, from its inputs, which are the outputs of other
 components (so an output that depends on states alone never creates an
 algebraic loop, and a true loop is reported with its chain of components).
+Algebraic unknowns declared by components are then solved for in the graph
+(:mod:`hydroservo.system.implicit`), and become outputs.
 """
 
 from __future__ import annotations
@@ -18,6 +20,7 @@ import numpy as np
 from hydroservo.components.base import Component
 from hydroservo.errors import ModelError
 from hydroservo.system.expressions import check_dimension, evaluate
+from hydroservo.system.implicit import newton
 from hydroservo.system.plausibility import Watched
 
 __all__ = ["Structure", "assemble"]
@@ -66,12 +69,20 @@ class _Assembler:
         self.t = ca.SX.sym("t")
         self.p: dict[str, dict[str, ca.SX]] = {}
         self.x: dict[str, dict[str, ca.SX]] = {}
+        self.z: dict[str, dict[str, ca.SX]] = {}
+        #: What a component's equations see as ``x``: its states and its algebraic unknowns.
+        self.xz: dict[str, dict[str, ca.SX]] = {}
         self.out: dict[str, dict[str, Any]] = {}
         self.stack: list[str] = []
         self.fed = system.hydraulic_inputs()
         for cname, comp in system.components.items():
             self.p[cname] = {k: ca.SX.sym(f"{cname}.{k}") for k in comp.PARAMETERS}
             self.x[cname] = {k: ca.SX.sym(f"{cname}.{k}") for k in comp.STATES}
+            clash = set(comp.STATES) & set(comp.ALGEBRAIC)
+            if clash:
+                raise ModelError(f"{type(comp).__name__} declares {', '.join(sorted(clash))} as a state and an algebraic unknown")
+            self.z[cname] = {k: ca.SX.sym(f"{cname}.{k}") for k in comp.ALGEBRAIC}
+            self.xz[cname] = {**self.x[cname], **self.z[cname]}
 
     def input(self, cname: str, key: str) -> Any:
         comp = self.system.components[cname]
@@ -103,7 +114,7 @@ class _Assembler:
             raise ModelError(f"algebraic loop through the outputs of {loop}: one of them must hold a state")
         self.stack.append(cname)
         comp = self.system.components[cname]
-        out = comp.output_equations(self.t, self.x[cname], _Inputs(self, cname), self.p[cname])
+        out = comp.output_equations(self.t, self.xz[cname], _Inputs(self, cname), self.p[cname])
         if set(out) != set(comp.OUTPUTS):
             raise ModelError(
                 f"{type(comp).__name__}.output_equations returned {sorted(out)}, declared {sorted(comp.OUTPUTS)}"
@@ -143,7 +154,7 @@ def _states(asm: _Assembler, units: dict[str, str], descriptions: dict[str, str]
         y = asm.outputs(cname)
         if not comp.STATES:
             continue
-        der = comp.state_equations(asm.t, asm.x[cname], _Inputs(asm, cname), asm.p[cname], y)
+        der = comp.state_equations(asm.t, asm.xz[cname], _Inputs(asm, cname), asm.p[cname], y)
         if set(der) != set(comp.STATES):
             raise ModelError(
                 f"{type(comp).__name__}.state_equations returned {sorted(der)}, declared {sorted(comp.STATES)}"
@@ -173,6 +184,10 @@ def _outputs(
                 continue
             outputs.add(full, signals[full])
             units[full], descriptions[full] = spec.unit, spec.description
+    for cname, unknowns in asm.z.items():  # algebraic unknowns are recorded as outputs
+        for zname, sym in unknowns.items():
+            signals[f"{cname}.{zname}"] = sym
+            outputs.add(f"{cname}.{zname}", sym)
     for aname, alias in system.aliases.items():
         if aname in signals:
             raise ModelError(f"alias {aname!r} clashes with a signal name")
@@ -210,6 +225,8 @@ def _limits(asm: _Assembler) -> list[tuple[Watched, Any, Any, Any]]:
         for sig, lim in comp.LIMITS.items():
             if sig in comp.STATES:
                 name, expr = f"{cname}.{sig}", asm.x[cname][sig]
+            elif sig in comp.ALGEBRAIC:
+                name, expr = f"{cname}.{sig}", asm.z[cname][sig]
             elif sig in comp.OUTPUTS:
                 name, expr = f"{cname}.{sig}", asm.out[cname][sig]
             elif sig in comp.INPUTS:
@@ -225,6 +242,41 @@ def _limits(asm: _Assembler) -> list[tuple[Watched, Any, Any, Any]]:
             lo = asm.p[cname][lim.lower] if lim.lower else nan
             hi = asm.p[cname][lim.upper] if lim.upper else nan
             found.append((Watched(name, lim.kind, cname, lim.lower, lim.upper, lim.hint), expr, lo, hi))
+    return found
+
+
+@dataclass
+class _Implicit:
+    """The algebraic unknowns of all components: symbols, residuals, first guesses."""
+
+    names: list[str] = field(default_factory=list)
+    z: list[Any] = field(default_factory=list)
+    residual: list[Any] = field(default_factory=list)
+    guess: list[Any] = field(default_factory=list)
+    nominal: list[float] = field(default_factory=list)
+
+
+def _algebraic(asm: _Assembler, units: dict[str, str], descriptions: dict[str, str]) -> _Implicit:
+    """Every component's algebraic unknowns with their residuals and guesses, checked against the declarations."""
+    found = _Implicit()
+    for cname, comp in asm.system.components.items():
+        if not comp.ALGEBRAIC:
+            continue
+        args = (asm.t, asm.xz[cname], _Inputs(asm, cname), asm.p[cname])
+        res, guess = comp.residual_equations(*args), comp.guess_equations(*args)
+        for what, got in (("residual_equations", res), ("guess_equations", guess)):
+            if set(got) != set(comp.ALGEBRAIC):
+                raise ModelError(
+                    f"{type(comp).__name__}.{what} returned {sorted(got)}, declared {sorted(comp.ALGEBRAIC)}"
+                )
+        for zname, spec in comp.ALGEBRAIC.items():
+            full = f"{cname}.{zname}"
+            found.names.append(full)
+            found.z.append(asm.z[cname][zname])
+            found.residual.append(ca.SX(res[zname]))
+            found.guess.append(ca.SX(guess[zname]))
+            found.nominal.append(spec.nominal if spec.nominal > 0 else 1.0)
+            units[full], descriptions[full] = spec.unit, spec.description
     return found
 
 
@@ -245,9 +297,21 @@ def assemble(system: Structure) -> tuple[Any, ...]:
     units: dict[str, str] = {}
     descriptions: dict[str, str] = {}
     states, rates, nominal = _states(asm, units, descriptions)
+    implicit = _algebraic(asm, units, descriptions)
     params = {f"{c}.{k}": sym for c, d in asm.p.items() for k, sym in d.items()}
     outputs = _outputs(asm, states, params, units, descriptions)
     x0 = _initial_state(asm, states, params)
+    limits = _limits(asm)
+    convergence = None
+    if implicit.names:
+        zsym = ca.vertcat(*implicit.z)
+        solution, correction = newton(
+            zsym, ca.vertcat(*implicit.residual), ca.vertcat(*implicit.guess), implicit.nominal, implicit.names
+        )
+        rates.exprs = [ca.substitute(e, zsym, solution) for e in rates.exprs]
+        outputs.exprs = [ca.substitute(e, zsym, solution) for e in outputs.exprs]
+        limits = [(w, ca.substitute(ca.SX(e), zsym, solution), lo, hi) for w, e, lo, hi in limits]
+        convergence = (implicit.names, correction)
     param_units = {
         f"{c}.{k}": spec.unit for c, comp in system.components.items() for k, spec in comp.PARAMETERS.items()
     }
@@ -266,5 +330,6 @@ def assemble(system: Structure) -> tuple[Any, ...]:
         descriptions,
         np.array(nominal, dtype=float),
         param_units,
-        _limits(asm),
+        limits,
+        convergence,
     )

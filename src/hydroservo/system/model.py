@@ -21,6 +21,7 @@ import casadi as ca
 import numpy as np
 
 from hydroservo.errors import ImplausibleResultWarning, ParameterError, SolverError, TrimError
+from hydroservo.system.implicit import NEWTON_STEPS, TOLERANCE
 from hydroservo.system.integration import (
     SolverSettings,
     batch_columns,
@@ -65,6 +66,7 @@ class Model:
         nominal: np.ndarray,
         parameter_units: dict[str, str],
         limits: Sequence[tuple[Watched, Any, Any, Any]] = (),
+        convergence: tuple[list[str], Any] | None = None,
     ) -> None:
         self.name = name
         self.state_names = state_names
@@ -102,6 +104,10 @@ class Model:
         uppers = [ca.SX(upper) for _, _, _, upper in limits]
         bounds = [ca.vertcat(*col) if col else ca.SX(0, 1) for col in (lowers, uppers)]
         self._limit_bounds = ca.Function("limit_bounds", [p], bounds)
+        #: Algebraic unknowns solved inside the model (:mod:`hydroservo.system.implicit`), recorded as outputs.
+        self.algebraic_names: list[str] = list(convergence[0]) if convergence else []
+        correction = ca.substitute(convergence[1], x, z * nom) if convergence else ca.SX(0, 1)
+        self._convergence = ca.Function("convergence", [t, z, p], [correction])
         self._integrators: dict[Any, ca.Function] = {}
         self._maps: dict[int, ca.Function] = {}
         self._limit_maps: dict[int, ca.Function] = {}
@@ -142,6 +148,25 @@ class Model:
             k = int(np.argmax(~np.isfinite(vec)))
             raise ParameterError(f"{self.parameter_names[k]} = {vec[k]!r}: expected a finite value")
         return vec
+
+    def unconverged(self, grid: np.ndarray, Z: np.ndarray, p: np.ndarray) -> str | None:
+        """Why the algebraic unknowns were not solved at some output time (``Z``: scaled states), or None."""
+        if not self.algebraic_names:
+            return None
+        C = np.asarray(self._convergence.map(grid.size)(grid[None, :], Z, p), dtype=float).reshape(
+            len(self.algebraic_names), grid.size
+        )
+        bad = ~(C <= TOLERANCE)  # NaN counts as not converged
+        if not bad.any():
+            return None
+        j, k = (int(v) for v in np.argwhere(bad)[0])
+        name = self.algebraic_names[j]
+        return (
+            f"the algebraic unknown {name} ({self.descriptions.get(name, '')}) was not solved at t = {grid[k]:.6g} s: "
+            f"Newton's last correction was {C[j, k]:.3g} of its nominal magnitude after {NEWTON_STEPS} steps "
+            f"(accepted: {TOLERANCE:g}); the first guess is too far from the solution there, or the equation has "
+            "no solution"
+        )
 
     def _check_initial(self, x0: np.ndarray) -> None:
         if not np.all(np.isfinite(x0)):
@@ -218,6 +243,9 @@ class Model:
         self._check_initial(x0)
         if self.nx == 0:  # nothing to integrate: a system of sources and algebraic blocks
             return self._result(grid, np.zeros((0, grid.size)), p, {"wall_time_s": 0.0})
+        why = self.unconverged(grid[:1], (x0 / self.nominal)[:, None], p)
+        if why is not None:
+            raise SolverError(f"integration of {self.name!r} cannot start: {why}")
         integ = self._integrator(grid, settings)
         start = time.perf_counter()
         try:
@@ -234,6 +262,9 @@ class Model:
                 f"integration of {self.name!r}: the solution became NaN/Inf between t = {grid[k - 1]:.6g} s "
                 f"and {grid[k]:.6g} s in {', '.join(bad)}. {self._hint(float(grid[k - 1]), X[:, k - 1], p)}"
             )
+        why = self.unconverged(grid, np.asarray(xf, dtype=float), p)
+        if why is not None:
+            raise SolverError(f"integration of {self.name!r}: {why}")
         stats = {k: v for k, v in integ.stats().items() if not k.endswith("B") and isinstance(v, (int, float))}
         stats = {
             k: stats[k] for k in ("nsteps", "nfevals", "nlinsetups", "netfails", "nniters", "nncfails") if k in stats
@@ -303,8 +334,11 @@ class Model:
                     f"max_steps = {settings.max_steps} shared over {grid.size - 1} output intervals: a model that "
                     "is only slow here runs with a larger max_steps or fewer output points)"
                 )
-        x = reached[min(k_fail, len(reached) - 1)] * self.nominal
-        return SolverError(f"{where}{note}. {self._hint(t0, x, p)}")
+        z = reached[min(k_fail, len(reached) - 1)]
+        why = self.unconverged(np.array([t0]), z[:, None], p)
+        if why is not None:  # the cause, more likely than anything the linearisation says
+            where += f"; {why}"
+        return SolverError(f"{where}{note}. {self._hint(t0, z * self.nominal, p)}")
 
     def _hint(self, t: float, x: np.ndarray, p: np.ndarray) -> str:
         """The state changing fastest at (t, x), and the fastest mode of the model linearised there."""
@@ -419,6 +453,9 @@ class Model:
                 f"no equilibrium found for {self.name!r}: the largest remaining rate is in "
                 f"{self.state_names[worst]} ({r[worst] * self.nominal[worst]:.3g} {si_unit(self.units[self.state_names[worst]])}/s)"
             )
+        why = self.unconverged(np.array([t]), sol.x[:, None], p)
+        if why is not None:
+            raise TrimError(f"no equilibrium found for {self.name!r}: {why}")
         xs = sol.x * self.nominal
         return dict(zip(self.state_names, xs.tolist()))
 
@@ -472,6 +509,11 @@ class Model:
         for j in np.flatnonzero(good & ~np.all(np.isfinite(X0), axis=0)).tolist():
             bad = [nm for nm, v in zip(self.state_names, X0[:, j]) if not np.isfinite(v)]
             failures[j] = f"initial state not finite in {', '.join(bad)}"
+        if self.algebraic_names:
+            for j in range(n):
+                why = None if j in failures else self.unconverged(grid[:1], X0[:, j : j + 1] / self.nominal[:, None], P[:, j])
+                if why is not None:
+                    failures[j] = f"cannot start: {why}"
         todo = [i for i in range(n) if i not in failures]
         nthreads = threads or os.cpu_count() or 1
         X = np.full((self.nx, n, nt), np.nan)
@@ -495,6 +537,10 @@ class Model:
                 k = int(np.argmax(~np.all(np.isfinite(X[:, i]), axis=0)))
                 bad = [nm for nm, v in zip(self.state_names, X[:, i, k]) if not np.isfinite(v)]
                 failures[i] = f"the solution became NaN/Inf at t = {grid[k]:.6g} s in {', '.join(bad)}"
+            elif i not in failures and self.algebraic_names:
+                why = self.unconverged(grid, X[:, i] / self.nominal[:, None], P[:, i])
+                if why is not None:
+                    failures[i] = why
         for i in failures:
             X[:, i] = np.nan
         data = {name: X[j] for j, name in enumerate(self.state_names)}
