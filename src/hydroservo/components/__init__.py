@@ -59,6 +59,7 @@ from hydroservo.components.valves import (
     ReliefValve,
     ServoSolenoidValve,
     StagedSlotValve,
+    TwoStageServovalve,
 )
 from hydroservo.components.volume import Volume
 
@@ -89,6 +90,7 @@ __all__ = [
     "PseudoSectionValve",
     "ServoSolenoidValve",
     "StagedSlotValve",
+    "TwoStageServovalve",
     "Orifice",
     "CheckValve",
     "ReliefValve",

@@ -5,7 +5,8 @@ One file per valve kind: :mod:`.four_way` (sharp edges, per-edge laps,
 [FerreiraND]), :mod:`.staged_slot` (the staged-slot valve across temperature
 of [MareAttarND]), :mod:`.orifice` (the fixed orifice), :mod:`.check` (check
 valves), :mod:`.pressure_control` (relief, pressure-reducing and counterbalance
-valves). A new valve goes into a new file here.
+valves), :mod:`.two_stage` (the first-principles two-stage servovalve of
+[GordicND]). A new valve goes into a new file here.
 """
 
 from hydroservo.components.valves.check import CheckValve
@@ -14,6 +15,7 @@ from hydroservo.components.valves.orifice import Orifice
 from hydroservo.components.valves.pressure_control import CounterbalanceValve, PressureReducingValve, ReliefValve
 from hydroservo.components.valves.pseudo_section import PseudoSectionValve, ServoSolenoidValve
 from hydroservo.components.valves.staged_slot import StagedSlotValve
+from hydroservo.components.valves.two_stage import TwoStageServovalve
 
 __all__ = [
     "FourWayValve",
@@ -25,4 +27,5 @@ __all__ = [
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
+    "TwoStageServovalve",
 ]

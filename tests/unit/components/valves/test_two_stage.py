@@ -1,0 +1,122 @@
+"""The first-principles two-stage servovalve as a component ([GordicND]): at rest, in motion, at every fidelity."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import hydroservo as hs
+from hydroservo.analysis.servovalve import first_stage_null, static_point, table1
+from hydroservo.components import ConstantPressure, Square, Step, Tank, TwoStageServovalve
+from hydroservo.errors import ParameterError
+from hydroservo.laws import servo_spool as sp
+
+RATED = 0.01  # A, Table 1
+
+
+def no_load(valve: TwoStageServovalve, current: object, p_s: float = 209e5) -> hs.System:
+    """The valve between 209 bar (gauge: 210 bar absolute) and tank, both use ports at half supply (eq. 57)."""
+    s = hs.System("bench")
+    s.add(valve)
+    s.add(current)  # type: ignore[arg-type]
+    s.add(ConstantPressure("ps", p=p_s))
+    s.add(Tank("tank"))
+    s.add(ConstantPressure("pa", p=p_s / 2))
+    s.add(ConstantPressure("pb", p=p_s / 2))
+    s.connect(f"{current.name}.y", f"{valve.name}.i")  # type: ignore[attr-defined]
+    for port, node in (("P", "ps.P"), ("T", "tank.P"), ("A", "pa.P"), ("B", "pb.P")):
+        s.connect(f"{valve.name}.{port}", node)
+    return s
+
+
+@pytest.mark.parametrize("i", [RATED, 0.2 * RATED, -0.5 * RATED])
+def test_at_rest_it_is_the_static_model(i: float) -> None:
+    """The component's equilibrium is analysis.servovalve's static point (solved independently by SciPy from the
+    laws), with the one difference the component adds: the leakage of the overlapped orifice 4 (or 1), eqs.
+    52-56, which the static model leaves out. Same supply: 210 bar absolute is 209 bar gauge over a 1 bar return."""
+    null = first_stage_null(210e5, table1())
+    valve = TwoStageServovalve("sv", K_o0=null["K_o"], K_od0=null["K_od"])
+    s = no_load(valve, Step("cur", unit="A", amplitude=i))
+    model = s.build()
+    st = static_point(i)
+    trim = model.trim(s.parameter_vector(), x_guess=np.array([st.theta, 0.0, st.y, 0.0, st.p_d - 1e5]))
+    x = np.array([trim[n] for n in model.state_names])
+    out = dict(zip(model.output_names, np.asarray(model.outputs(0.0, x, s.parameter_vector())).ravel()))
+    v = table1()
+    closed = 3 if i > 0 else 0  # orifice 4 (L1 to return) is overlapped for positive travel, 1 for negative
+    drops = sp.orifice_drops(210e5, 1e5, 105.5e5, 105.5e5)
+    leak = float(sp.lapped_leakage(abs(st.y), drops[closed], v["K_t"], v["f"], v["rho"], v["rho"] * v["nu"],
+                                   v["delta"], v["r_s"], v["r_b"], v["d_s"]))
+    assert out["sv.QA"] == pytest.approx(st.Q_SV - np.sign(i) * leak, rel=2e-4)
+    # the component's flow force also counts the overlapped orifice's leakage jet (its equivalent opening),
+    # which moves the spool by 1.6e-4 of its travel at 2 mA, less at larger currents
+    assert trim["sv.y"] == pytest.approx(st.y, rel=3e-4)
+    assert out["sv.x"] == pytest.approx(st.x, rel=1e-2)  # the tip, under 1 um here, balances that force too
+    assert trim["sv.p_d"] == pytest.approx(st.p_d - 1e5, abs=5.0)  # Pa: the orifice laws' 100 Pa regularisation
+
+
+def test_flapper_reaches_the_nozzle_at_25_percent_only() -> None:
+    """[GordicND] section 4, Fig. 9: at a 10 Hz square wave of 5 and 10 % of rated current the flapper stays off
+    the nozzles; at 25 % it reaches one (|x| = x_0 = 38.5 um), which slows the response."""
+    peaks = {}
+    for frac in (0.05, 0.10, 0.25):
+        s = no_load(TwoStageServovalve("sv"), Square("cur", unit="A", amplitude=frac * RATED, frequency=10.0))
+        r = s.simulate(0.15, n_points=1501)
+        peaks[frac] = float(np.max(np.abs(r["sv.x"])))
+    x0 = 38.5e-6
+    assert peaks[0.05] < 0.5 * x0 and peaks[0.10] < 0.85 * x0
+    assert peaks[0.25] > 0.999 * x0
+
+
+@pytest.mark.parametrize("first_stage", ["quasi-static", "compressible"])
+@pytest.mark.parametrize("flapper", ["bent", "rigid"])
+def test_every_rung_runs_and_conserves_oil(first_stage: str, flapper: str) -> None:
+    """At rest, what supply gives leaves through A, B and the return (the first stage's volumes are steady)."""
+    valve = TwoStageServovalve("sv", first_stage=first_stage, flapper=flapper)
+    s = no_load(valve, Step("cur", unit="A", amplitude=0.3 * RATED))
+    r = s.simulate(0.03, n_points=301)
+    QS, QT, QA, QB = (r[f"sv.{k}"][-1] for k in ("QS", "QT", "QA", "QB"))
+    assert QS - QT - QA - QB == pytest.approx(0.0, abs=1e-6 * QS)
+    assert QA == pytest.approx(-QB, rel=1e-6)
+    assert 2.5 / 6e4 < QA < 4.5 / 6e4  # about 30 % of 12 L/min
+    assert ("sv.x" in valve.ALGEBRAIC) is False and (("x" in valve.ALGEBRAIC) == (flapper == "bent"))
+    assert ("p_l" in valve.STATES) == (first_stage == "compressible")
+
+
+def test_the_bent_flapper_is_solved_at_every_output_time() -> None:
+    """Eq. 14 holds along a transient: the tip is the armature's rotation less the jets' bending, and the bending
+    is not negligible (the paper's point against x = theta l_a)."""
+    from hydroservo.laws.armature import flapper_tip
+
+    valve = TwoStageServovalve("sv")
+    s = no_load(valve, Square("cur", unit="A", amplitude=0.1 * RATED, frequency=10.0))
+    r = s.simulate(0.1, n_points=1001)
+    v = valve.values
+    tip = flapper_tip(r["sv.theta"], r["sv.F_h"], v["l_a"], v["l_fl"], v["B_fl"], v["l_t"], v["B_t"])
+    assert np.max(np.abs(r["sv.x"] - tip)) < 1e-14  # m: Newton's solution, to round-off
+    bending = np.abs(r["sv.theta"] * v["l_a"] - r["sv.x"])
+    assert np.max(bending) > 0.2 * np.max(np.abs(r["sv.x"]))
+
+
+@pytest.mark.parametrize(
+    ("changes", "message"),
+    [
+        ({"l_a": 14e-3}, "pivot must lie within the flapper"),
+        ({"F_cn": 5e-3}, "sliding friction above the static"),
+        ({"K_f": -1.0}, "sv.K_f = -1 N/m: expected > 0"),
+        ({"x_0": 0.0}, "sv.x_0 = 0 m: expected > 0"),
+    ],
+)
+def test_a_servovalve_no_one_could_build_is_refused(changes: dict, message: str) -> None:
+    with pytest.raises(ParameterError, match=message):
+        valve = TwoStageServovalve("sv", **changes)
+        no_load(valve, Step("cur", unit="A")).build()
+
+
+def test_default_null_coefficients_are_lichtarowicz_at_210_bar() -> None:
+    """K_o0 and K_od0 default to the constant and drain orifices' coefficients at null at 210 bar, to the three
+    digits declared (analysis.servovalve.first_stage_null solves them)."""
+    null = first_stage_null(210e5, table1())
+    spec = TwoStageServovalve.PARAMETERS
+    assert spec["K_o0"].default == pytest.approx(null["K_o"], abs=5e-4)
+    assert spec["K_od0"].default == pytest.approx(null["K_od"], abs=5e-4)
