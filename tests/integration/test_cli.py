@@ -113,12 +113,21 @@ def test_servovalve_bench_writes_its_report_and_refuses_bad_values(tmp_path, cli
     import json
 
     out = tmp_path / "sv"
-    code, text, err = cli("servovalve", "bench", "--points", "11", "--out", str(out), "--json")
+    code, text, err = cli(
+        "servovalve", "bench", "--points", "11", "--tests", "static,steps", "--out", str(out), "--json"
+    )
     assert code == 0, err
     report = json.loads(text)
     rated = next(f for f in report["figures"] if f["figure"] == "rated flow at +rated current")
     assert rated["value"] == pytest.approx(11.99, abs=0.01) and rated["unit"] == "L/min"
-    assert sorted(p.name for p in out.iterdir()) == ["characteristic.csv", "characteristic.png"]
+    reaches = next(f for f in report["figures"] if f["figure"] == "step +-25 %: flapper reaches a nozzle")
+    assert reaches["value"] == 1.0
+    expected = ["characteristic.csv", "figures.csv", "flow-current.png", "steps.csv", "steps.png"]
+    assert sorted(p.name for p in out.iterdir()) == expected
+    code, _, err = cli("servovalve", "bench", "--tests", "static,noise", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "--tests 'static,noise'" in err
+    code, _, err = cli("servovalve", "bench", "--set", "z_9=1", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "NAME a parameter of TwoStageServovalve" in err
     code, _, err = cli("servovalve", "bench", "--set", "K_f=-1 N/m", "--out", str(tmp_path / "bad"))
     assert code == 2 and "K_f" in err and not (tmp_path / "bad").exists()
     code, _, err = cli("servovalve", "bench", "--supply", "3 kg", "--out", str(tmp_path / "bad"))

@@ -46,43 +46,115 @@ def _add_design_point_options(p: Any, set_help: str) -> None:
     p.add_argument("--json", action="store_true")
 
 
-def cmd_bench(args: argparse.Namespace) -> int:
-    from hydroservo.analysis.servovalve import static_bench
-    from hydroservo.cli.common import output_folder, print_json
-    from hydroservo.io.servovalve import write_static_characteristic
-    from hydroservo.plotting.servovalve import plot_static_bench
+def _bench_valve(args: argparse.Namespace) -> Any:
+    """The servovalve component of the bench: Table 1, the chosen fidelity, ``--set`` applied (values with units)."""
+    from hydroservo.components import TwoStageServovalve
 
-    params, p_s, i_rated = _design_point(args)
+    if args.valve not in VALVES:
+        raise ParameterError(f"servovalve {args.valve!r}: unknown; built-in: {', '.join(VALVES)}")
+    valve = TwoStageServovalve("sv", first_stage=args.first_stage, flapper=args.flapper)
+    for item in args.set or []:
+        key, sep, value = item.partition("=")
+        key = key.strip()
+        if not sep or key not in valve.PARAMETERS:
+            raise ParameterError(
+                f"--set {item!r}: expected NAME=VALUE with NAME a parameter of TwoStageServovalve "
+                f"({', '.join(sorted(valve.PARAMETERS))})"
+            )
+        valve.set(**{key: value.strip()})
+    valve.check()
+    return valve
+
+
+#: The bench's files per test.
+BENCH_FILES = {
+    "static": ["characteristic.csv", "flow-current.png"],
+    "blocked": ["blocked.csv", "blocked.png"],
+    "steps": ["steps.csv", "steps.png"],
+    "hysteresis": ["hysteresis.csv"],
+    "bode": ["bode.csv", "bode.png"],
+}
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    import sys
+
+    from hydroservo.analysis.servovalve_bench import TESTS, bench_report
+    from hydroservo.cli.common import output_folder, print_json
+    from hydroservo.io import servovalve as files
+    from hydroservo.plotting import servovalve as plots
+    from hydroservo.units import to_si
+
+    valve = _bench_valve(args)
+    p_s = to_si(args.supply, "Pa", what="--supply")
+    i_rated = to_si(args.current, "A", what="--current")
+    if not i_rated > 0:
+        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    tests = [t.strip() for t in args.tests.split(",") if t.strip()]
+    unknown = [t for t in tests if t not in TESTS]
+    if unknown or not tests:
+        raise ParameterError(f"--tests {args.tests!r}: expected a comma-separated choice of {', '.join(TESTS)}")
+    names = ["figures.csv"] + [f for t in TESTS if t in tests for f in BENCH_FILES[t]]
+    if "hysteresis" in tests and "static" not in tests:
+        names.append("flow-current.png")
+    out = output_folder(args, f"hydroservo-servovalve-{args.valve}")
+    out.expect(names)
+    label = f"{args.valve} ({args.first_stage}, {args.flapper} flapper)" + (f", {', '.join(args.set)}" if args.set else "")
+
+    def progress(name: str) -> None:
+        if not args.json:
+            print(f"  running the {name} tests ...", file=sys.stderr, flush=True)
+
     if not 5 <= args.points <= 401:
         raise ParameterError(f"--points {args.points}: expected 5 to 401 currents")
-    out = output_folder(args, f"hydroservo-servovalve-{args.valve}")
-    out.expect(["characteristic.csv", "characteristic.png"])
-    bench = static_bench(p_s, i_rated, params, args.points)
-    title = f"{args.valve}" + (f" ({', '.join(args.set)})" if args.set else "")
+    report = bench_report(valve, p_s, i_rated, tests=tests, label=label, progress=progress, points=args.points)
     with out:
-        write_static_characteristic(bench, out.file("characteristic.csv"))
-        plot_static_bench(bench, title=title, file=out.file("characteristic.png"))
-    files = [out.final("characteristic.csv"), out.final("characteristic.png")]
+        files.write_figures(report, out.file("figures.csv"))
+        if report.static is not None:
+            files.write_static_characteristic(report.static, out.file("characteristic.csv"))
+        if report.static is not None or report.hysteresis is not None:
+            plots.plot_flow_current(report, title=label, file=out.file("flow-current.png"))
+        if report.hysteresis is not None:
+            files.write_hysteresis(report, out.file("hysteresis.csv"))
+        if report.blocked is not None:
+            files.write_blocked(report, out.file("blocked.csv"))
+            plots.plot_blocked(report, title=label, file=out.file("blocked.png"))
+        if report.steps:
+            files.write_steps(report, out.file("steps.csv"))
+            plots.plot_steps(report, title=label, file=out.file("steps.png"))
+        if report.bode is not None:
+            files.write_bench_bode(report, out.file("bode.csv"))
+            plots.plot_bench_bode(report, title=label, file=out.file("bode.png"))
+    written = [out.final(n) for n in names]
+    unsettled = report.bode.info["unsettled"] if report.bode is not None else []
     if args.json:
         print_json(
             {
                 "valve": args.valve,
+                "first_stage": args.first_stage,
+                "flapper": args.flapper,
                 "changes": args.set or [],
                 "supply_bar": p_s / 1e5,
                 "rated_current_mA": i_rated * 1e3,
-                "figures": [{"figure": n, "value": float(v), "unit": u} for n, v, u in bench.table()],
-                "files": files,
+                "figures": [{"figure": n, "value": float(v), "unit": u} for n, v, u in report.table()],
+                "not_periodic": [{"amplitude": a, "frequency_Hz": f} for a, f, _ in unsettled],
+                "files": written,
             }
         )
         return 0
-    print(f"{VALVES[args.valve]}: static tests at {p_s / 1e5:g} bar, no load, rated current {i_rated * 1e3:g} mA")
-    if args.set:
-        print(f"changed: {', '.join(args.set)}")
-    width = max(len(n) for n, _, _ in bench.table())
-    for name, value, unit in bench.table():
+    print(f"{VALVES[args.valve]}: bench tests at {p_s / 1e5:g} bar, rated current {i_rated * 1e3:g} mA")
+    print(f"model: first stage {args.first_stage}, {args.flapper} flapper" + (f"; changed: {', '.join(args.set)}" if args.set else ""))
+    rows = report.table()
+    width = max(len(n) for n, _, _ in rows)
+    for name, value, unit in rows:
         print(f"  {name.ljust(width)}  {float(value):10.4g} {unit}")
-    print("(dynamic tests and hysteresis: issue 12, in progress; what moves each figure: servovalve design)")
-    print(f"wrote {', '.join(files)}")
+    if unsettled:
+        by_amp: dict[float, list[float]] = {}
+        for a, f, _ in unsettled:
+            by_amp.setdefault(a, []).append(f)
+        for a, fs in by_amp.items():
+            print(f"  no periodic response at +-{a * 100:g} % from {min(fs):.3g} Hz (the flapper bounces on the nozzles)")
+    print(f"wrote {', '.join(written)}")
     return 0
 
 
@@ -130,9 +202,17 @@ def add_parsers(sub: Any) -> None:
 
     group = sub.add_parser("servovalve", help="the first-principles two-stage servovalve (GordicND) on its bench")
     commands = group.add_subparsers(dest="servovalve_command", required=True, metavar="COMMAND")
-    p = commands.add_parser("bench", help="static tests: rated flow, symmetry, linearity, flow gain, leakage")
-    _add_design_point_options(p, "change a physical parameter, e.g. --set 'K_f=2100 N/m'")
-    p.add_argument("--points", type=int, default=41, help="currents of the characteristic (default 41)")
+    p = commands.add_parser(
+        "bench", help="the test bench: flow-current, blocked ports, square-wave steps, hysteresis, frequency response"
+    )
+    _add_design_point_options(p, "change a parameter of TwoStageServovalve, e.g. --set 'K_f=2100 N/m'")
+    p.add_argument("--first-stage", default="quasi-static", choices=["quasi-static", "compressible"],
+                   help="the flapper-nozzle stage: the paper's simplified model (default) or eqs. 20-22 whole")
+    p.add_argument("--flapper", default="bent", choices=["bent", "rigid"],
+                   help="flapper tip from eqs. 13-14 (default) or theta l_a")
+    p.add_argument("--tests", default="static,blocked,steps,hysteresis,bode",
+                   help="comma-separated tests (default all: static,blocked,steps,hysteresis,bode)")
+    p.add_argument("--points", type=int, default=41, help="currents of the static characteristic (default 41)")
     add_output_options(p, "hydroservo-servovalve-NAME")
     p.set_defaults(func=cmd_bench)
     d = commands.add_parser("design", help="what moves each figure: elasticities to every physical parameter, ranked")

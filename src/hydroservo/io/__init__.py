@@ -29,7 +29,15 @@ from hydroservo.io.curves import read_bench_curves, read_csv_table, read_static_
 from hydroservo.io.datasheet import read_datasheet
 from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
 from hydroservo.io.results import write_csv, write_mat
-from hydroservo.io.servovalve import write_sensitivity, write_static_characteristic
+from hydroservo.io.servovalve import (
+    write_bench_bode,
+    write_blocked,
+    write_figures,
+    write_hysteresis,
+    write_sensitivity,
+    write_static_characteristic,
+    write_steps,
+)
 from hydroservo.io.tables import read_time_table
 from hydroservo.io.toml import read_toml
 
@@ -57,4 +65,9 @@ __all__ = [
     "read_toml",
     "write_static_characteristic",
     "write_sensitivity",
+    "write_figures",
+    "write_steps",
+    "write_hysteresis",
+    "write_blocked",
+    "write_bench_bode",
 ]

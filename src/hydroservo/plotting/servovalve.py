@@ -9,7 +9,7 @@ import numpy as np
 
 from hydroservo.plotting import finish, lpm, pyplot
 
-__all__ = ["plot_static_bench", "plot_sensitivity"]
+__all__ = ["plot_static_bench", "plot_sensitivity", "plot_flow_current", "plot_steps", "plot_bench_bode", "plot_blocked"]
 
 
 def plot_static_bench(bench: Any, *, title: str = "", file: str | Path | None = None) -> Any:
@@ -61,6 +61,117 @@ def plot_sensitivity(sens: Any, figures: Any, *, top: int = 8, title: str = "", 
     for ax in np.ravel(axes)[len(keys) :]:
         ax.set_visible(False)
     fig.supxlabel("elasticity: % change of the figure per % change of the parameter", fontsize="small")
+    if title:
+        fig.suptitle(title)
+    return finish(fig, file, plt)
+
+
+def plot_flow_current(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+    """The flow-current characteristic at rest (points) with the slow-sine loop (line): whole range (left) and
+    within 10 % of rated current of null (right), where hysteresis and the null show.
+
+    ``report`` is a :class:`hydroservo.analysis.servovalve_bench.Report` (read by its attributes).
+    """
+    plt = pyplot(file)
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    st, hy = report.static, report.hysteresis
+    for ax in axes:
+        if st is not None:
+            i_ma = np.asarray(st.currents) * 1e3
+            ax.plot(i_ma, lpm(st.flows), "o", ms=3, label="at rest (trim)")
+            ax.plot(i_ma, lpm(st.rated_flow / st.i_rated * np.asarray(st.currents)), "k--", lw=0.8, label="rated line")
+        if hy is not None:
+            ax.plot(np.asarray(hy.currents) * 1e3, lpm(hy.flows), "-", lw=1.0, color="tab:orange",
+                    label=f"sine {hy.frequency:.3g} Hz: hysteresis {hy.hysteresis * 100:.2f} %")
+        ax.set_xlabel("current i [mA]")
+        ax.set_ylabel("no-load flow [L/min]")
+        ax.grid(True, alpha=0.3)
+    axes[0].set_title(f"flow-current characteristic, {report.p_s / 1e5:g} bar")
+    axes[0].legend(loc="upper left", fontsize="small")
+    zoom = 0.1 * report.i_rated * 1e3
+    axes[1].set_xlim(-zoom, zoom)
+    q_zoom = 0.15 * abs(st.rated_flow if st is not None else max(abs(np.asarray(hy.flows)))) * 6e4
+    axes[1].set_ylim(-q_zoom, q_zoom)
+    axes[1].set_title("near null")
+    if title:
+        fig.suptitle(title)
+    return finish(fig, file, plt)
+
+
+def plot_steps(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+    """The square-wave tests ([GordicND] Fig. 9): the flow (left) and the flapper tip against the nozzle gap (right)."""
+    plt = pyplot(file)
+    fig, (ax_q, ax_x) = plt.subplots(1, 2, figsize=(11, 4.5))
+    x0 = None
+    for st in report.steps or []:
+        t_ms = np.asarray(st.t) * 1e3
+        label = f"+-{st.fraction * 100:g} %: rise {st.rise_time * 1e3:.2f} ms, overshoot {st.overshoot:.1f} %"
+        line = ax_q.plot(t_ms, lpm(st.flow), label=label)[0]
+        ax_x.plot(t_ms, np.asarray(st.flapper) * 1e6, color=line.get_color(),
+                  label=f"+-{st.fraction * 100:g} %" + (": reaches a nozzle" if st.reaches_nozzle else ""))
+        x0 = st.x_0
+    if x0 is not None and np.isfinite(x0):
+        ax_x.axhline(x0 * 1e6, color="k", lw=0.8, ls="--", label="nozzle")
+        ax_x.axhline(-x0 * 1e6, color="k", lw=0.8, ls="--")
+    ax_q.set_xlabel("time from the rising step [ms]")
+    ax_q.set_ylabel("no-load flow [L/min]")
+    ax_q.set_title("square wave between -i and +i")
+    ax_x.set_xlabel("time from the rising step [ms]")
+    ax_x.set_ylabel("flapper tip x [um]")
+    ax_x.set_title("flapper tip")
+    for ax in (ax_q, ax_x):
+        ax.grid(True, alpha=0.3)
+        ax.legend(loc="lower right", fontsize="small")
+    if title:
+        fig.suptitle(title)
+    return finish(fig, file, plt)
+
+
+def plot_bench_bode(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+    """Amplitude ratio and phase of the no-load flow against current, one line per amplitude."""
+    plt = pyplot(file)
+    bode = report.bode
+    fig, (ax_g, ax_p) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    for k, amp in enumerate(bode.amplitudes):
+        label = f"+-{amp * 100:g} %"
+        if np.isfinite(bode.f_3db[k]):
+            label += f": -3 dB at {bode.f_3db[k]:.0f} Hz"
+        if np.isfinite(bode.f_90[k]):
+            label += f", -90 deg at {bode.f_90[k]:.0f} Hz"
+        line = ax_g.semilogx(bode.frequencies, bode.gain_db[k], "o-", ms=3, label=label)[0]
+        ax_p.semilogx(bode.frequencies, bode.phase_deg[k], "o-", ms=3, color=line.get_color())
+    ax_g.axhline(-3.0, color="k", lw=0.6, ls="--")
+    ax_p.axhline(-90.0, color="k", lw=0.6, ls="--")
+    ax_g.set_ylabel("amplitude ratio [dB]")
+    ax_p.set_ylabel("phase [deg]")
+    ax_p.set_xlabel("frequency [Hz]")
+    ax_g.set_title("no-load flow against current (relative to the lowest frequency)")
+    ax_g.legend(loc="lower left", fontsize="small")
+    for ax in (ax_g, ax_p):
+        ax.grid(True, which="both", alpha=0.3)
+    if title:
+        fig.suptitle(title)
+    return finish(fig, file, plt)
+
+
+def plot_blocked(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+    """Ports blocked: load pressure through null (left) and internal leakage over the whole range (right)."""
+    plt = pyplot(file)
+    bl = report.blocked
+    fig, (ax, ax_l) = plt.subplots(1, 2, figsize=(11, 4.5))
+    ax.plot(np.asarray(bl.currents) * 1e3, np.asarray(bl.load_pressure) / 1e5, "-", lw=1.0)
+    ax.set_xlabel("current i [mA]")
+    ax.set_ylabel("load pressure p_A - p_B [bar]")
+    gain = bl.pressure_gain_40 * bl.i_rated / 100 / 1e5
+    note = "" if bl.resolved else " (a jump: at least)"
+    ax.set_title(f"load pressure, {bl.frequency:g} Hz sweep\n{gain:.3g} bar/% rated current{note}", fontsize="medium")
+    ax_l.plot(np.asarray(bl.leak_currents) * 1e3, lpm(bl.leak_flows), "-", color="tab:purple")
+    ax_l.set_xlabel("current i [mA]")
+    ax_l.set_ylabel("flow from supply [L/min]")
+    ax_l.set_ylim(bottom=0.0)
+    ax_l.set_title("internal leakage")
+    for a in (ax, ax_l):
+        a.grid(True, alpha=0.3)
     if title:
         fig.suptitle(title)
     return finish(fig, file, plt)

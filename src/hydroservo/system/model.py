@@ -465,6 +465,111 @@ class Model:
             x = np.array([x[n] for n in self.state_names])
         return np.asarray(self.jac_x(t, x, p), dtype=float)
 
+    # -- periodic orbits -------------------------------------------------------
+    def periodic(
+        self,
+        p: np.ndarray,
+        period: float,
+        *,
+        n_points: int = 129,
+        x_guess: np.ndarray | None = None,
+        settle_periods: int = 1,
+        tol: float = 1e-5,
+        accept: float | None = None,
+        max_iter: int = 40,
+        rtol: float = 1e-7,
+        atol: float = 1e-9,
+        max_steps: int = 1_000_000,
+    ) -> tuple[np.ndarray, np.ndarray, float]:
+        r"""The periodic orbit of a system driven with ``period`` [s]: states (SI) at ``n_points`` times over it.
+
+        Shooting, with the stiff integrator: from ``x_guess`` (default: the parameter-based initial state),
+        after ``settle_periods`` plain periods, the map :math:`\Phi` (one period of CVODES, on states scaled by
+        their nominal magnitudes) is iterated while it contracts fast (each period at least 3 times closer);
+        where it does not (a slowly decaying drift), a Newton step on :math:`\Phi(z_0) = z_0` with the
+        Jacobian from CVODES' forward sensitivities. The drive must repeat with ``period`` from t = 0.
+        ``tol`` bounds the mismatch of the orbit found, in nominal magnitudes of the states; with ``accept``,
+        the best orbit found in ``max_iter`` iterations is returned if its mismatch is below ``accept``
+        (a drive that makes the system hit a stop converges slowly: its orbit is still as good as that).
+
+        Returns
+        -------
+        (t, X, mismatch)
+            The times [s] from 0 to ``period``, the states there (rows: states), and how far one period
+            moves the orbit's start (in nominal magnitudes).
+
+        Raises
+        ------
+        SolverError
+            If the mismatch :math:`\|\Phi(z_0) - z_0\|_\infty` does not fall below ``tol`` in ``max_iter``
+            iterations, or the integrator fails.
+        """
+        if not (np.isfinite(period) and period > 0):
+            raise ParameterError(f"period = {period!r} s: expected a positive duration")
+        settings = SolverSettings(rtol, atol, max_steps)
+        grid = np.linspace(0.0, float(period), int(n_points))
+        p = self._check_parameters(p)
+        key = ("periodic", grid.tobytes(), rtol, atol, max_steps)
+        if key not in self._integrators:
+            integ = self._integrator(grid, settings)
+            z0, pp = ca.MX.sym("z0", self.nx), ca.MX.sym("p", self.np)
+            end = integ(x0=z0, p=pp)["xf"][:, -1]
+            self._integrators[key] = ca.Function("shoot", [z0, pp], [end, ca.jacobian(end, z0)])
+        shoot, integ = self._integrators[key], self._integrator(grid, settings)
+        if x_guess is not None and np.asarray(x_guess).shape != (self.nx,):
+            raise ParameterError(f"x_guess: {np.asarray(x_guess).shape} values; expected {self.nx} states")
+        z = (np.asarray(self.x0(p), dtype=float).ravel() if x_guess is None else np.asarray(x_guess, dtype=float)) / self.nominal
+        where = f"periodic orbit of {self.name!r} (period {period:.6g} s)"
+
+        def one_period(z: np.ndarray) -> np.ndarray:
+            return np.asarray(integ(x0=z, p=p)["xf"], dtype=float)
+
+        try:
+            with captured():
+                for _ in range(settle_periods):
+                    z = one_period(z)[:, -1]
+                best: tuple[float, np.ndarray, np.ndarray] | None = None  # mismatch, start, orbit
+                previous, plain = np.inf, 0
+                for _ in range(max_iter):
+                    Z = one_period(z)
+                    r = Z[:, -1] - z
+                    size = float(np.max(np.abs(r)))
+                    if not np.isfinite(size):
+                        raise SolverError(f"{where}: the states became NaN/Inf over a period")
+                    if best is not None and size > best[0] and plain == 0:  # the Newton step made it worse
+                        z, plain = best[1], 3  # back to the best start, and a few plain periods from there
+                        continue
+                    if best is None or size < best[0]:
+                        best = (size, z, Z)
+                    if size < tol:
+                        break
+                    if plain == 0 and size > 0.3 * previous:  # plain periods converge slowly here: Newton
+                        J = np.asarray(shoot(z, p)[1], dtype=float)
+                        try:
+                            z = z - np.linalg.solve(J - np.eye(self.nx), r)
+                        except np.linalg.LinAlgError:
+                            z = Z[:, -1]
+                        previous = np.inf
+                        continue
+                    plain = max(plain - 1, 0)
+                    previous, z = size, Z[:, -1]
+        except SolverError:
+            raise
+        except RuntimeError as exc:
+            raise SolverError(f"{where}: {translate(str(exc))}") from None
+        assert best is not None
+        mismatch, z, Z = best
+        if mismatch >= (tol if accept is None else max(tol, accept)):
+            raise SolverError(
+                f"{where} not found: after {max_iter} iterations one period still moves the states by "
+                f"{mismatch:.3g} of their nominal magnitudes (accepted: {tol:g}); the response may not be "
+                "periodic (a subharmonic, or a drift slower than the iterations)"
+            )
+        why = self.unconverged(grid, Z, p)
+        if why is not None:
+            raise SolverError(f"{where}: {why}")
+        return grid, Z * self.nominal[:, None], mismatch
+
     # -- batch ---------------------------------------------------------------
     def batch(
         self,

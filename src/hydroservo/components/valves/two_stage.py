@@ -142,13 +142,15 @@ class TwoStageServovalve(Component):
         "c_s": Param(1e-4, "m/s", "velocity over which static friction falls to sliding", min=0.0, min_inclusive=False),
         "K_t": Param(0.611, "", "spool orifices' flow coefficient (Von Mises)", min=0.0, max=1.0, min_inclusive=False),
         "K_c": Param(0.673, "", "spool orifices' contraction coefficient (Von Mises)", min=0.0, max=1.0, min_inclusive=False),
-        "alpha": Param(float(np.radians(69.0)), "rad", "jet angle (Von Mises)", min=0.0, max=np.pi / 2, min_inclusive=False),
+        "jet_angle": Param(
+            float(np.radians(69.0)), "rad", "jet angle alpha (Von Mises)", min=0.0, max=np.pi / 2, min_inclusive=False
+        ),
         # oil
         "rho": Param(_set("fluid", "rho"), "kg/m^3", "oil density", min=0.0, min_inclusive=False, fluid="density"),
         "nu": Param(
             _set("fluid", "nu"), "m^2/s", "kinematic viscosity", min=0.0, min_inclusive=False, fluid="kinematic_viscosity"
         ),
-        "beta": Param(_set("fluid", "beta"), "Pa", "bulk modulus", min=0.0, min_inclusive=False, fluid="bulk_modulus"),
+        "beta_e": Param(_set("fluid", "beta"), "Pa", "bulk modulus", min=0.0, min_inclusive=False, fluid="bulk_modulus"),
         # initial pressures of the first stage (near their null values at 210 bar)
         "p_d0": Param(16e5, "Pa", "initial drain compartment pressure", min=0.0),
         "p_n0": Param(110e5, "Pa", "initial nozzle pressures (option compressible)", min=0.0),
@@ -282,7 +284,7 @@ class TwoStageServovalve(Component):
             flow = bk.if_else(j < 0, leak, opened)
             Q.append(flow)
             equivalent.append(bk.fabs(flow) / (c * bk.fmax(root, 1.0)))
-        F_a = sp.steady_flow_force(equivalent, drops, p["K_t"], p["K_c"], f, p["alpha"]) + sp.transient_flow_force(
+        F_a = sp.steady_flow_force(equivalent, drops, p["K_t"], p["K_c"], f, p["jet_angle"]) + sp.transient_flow_force(
             y, x["v"], drops, p["K_t"], f, rho, p["l_1"], p["l_2"]
         )
         return {"Q": Q, "F_a": F_a}
@@ -327,10 +329,10 @@ class TwoStageServovalve(Component):
             "omega": torque / p["J_a"],
             "y": x["v"],
             "v": force / p["m_s"],
-            "p_d": p["beta"] / p["V_d"] * (stage["Q_nl"] + stage["Q_nr"] - stage["Q_od"]),
+            "p_d": p["beta_e"] / p["V_d"] * (stage["Q_nl"] + stage["Q_nr"] - stage["Q_od"]),
         }
         if self.option("first_stage") == "compressible":
-            k = p["beta"] / p["V_1"]
+            k = p["beta_e"] / p["V_1"]
             rates["p_l"] = k * (stage["Q_ol"] - stage["Q_nl"] - A_s * x["v"] + stage["Q_leak_l"])
             rates["p_r"] = k * (stage["Q_or"] - stage["Q_nr"] + A_s * x["v"] + stage["Q_leak_r"])
         return rates
