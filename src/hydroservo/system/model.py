@@ -485,8 +485,8 @@ class Model:
 
         Shooting, with the stiff integrator: from ``x_guess`` (default: the parameter-based initial state),
         after ``settle_periods`` plain periods, the map :math:`\Phi` (one period of CVODES, on states scaled by
-        their nominal magnitudes) is iterated while it contracts fast (each period at least 3 times closer);
-        where it does not (a slowly decaying drift), a Newton step on :math:`\Phi(z_0) = z_0` with the
+        their nominal magnitudes) is iterated while it contracts (each period at most 0.6 times the last
+        mismatch); where it does not (a slowly decaying drift), a Newton step (at most four) on :math:`\Phi(z_0) = z_0` with the
         Jacobian from CVODES' forward sensitivities. The drive must repeat with ``period`` from t = 0.
         ``tol`` bounds the mismatch of the orbit found, in nominal magnitudes of the states; with ``accept``,
         the best orbit found in ``max_iter`` iterations is returned if its mismatch is below ``accept``
@@ -529,7 +529,7 @@ class Model:
                 for _ in range(settle_periods):
                     z = one_period(z)[:, -1]
                 best: tuple[float, np.ndarray, np.ndarray] | None = None  # mismatch, start, orbit
-                previous, plain = np.inf, 0
+                previous, plain, newton = np.inf, 0, 0
                 for _ in range(max_iter):
                     Z = one_period(z)
                     r = Z[:, -1] - z
@@ -543,7 +543,8 @@ class Model:
                         best = (size, z, Z)
                     if size < tol:
                         break
-                    if plain == 0 and size > 0.3 * previous:  # plain periods converge slowly here: Newton
+                    if plain == 0 and size > 0.6 * previous and newton < 4:  # plain periods converge slowly: Newton
+                        newton += 1
                         J = np.asarray(shoot(z, p)[1], dtype=float)
                         try:
                             z = z - np.linalg.solve(J - np.eye(self.nx), r)
