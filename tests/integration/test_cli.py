@@ -148,3 +148,24 @@ def test_servovalve_design_ranks_the_parameters(tmp_path, cli) -> None:  # type:
     assert sorted(p.name for p in (tmp_path / "d").iterdir()) == ["sensitivity.csv", "sensitivity.png"]
     code, _, err = cli("servovalve", "design", "--top", "0", "--out", str(tmp_path / "bad"))
     assert code == 2 and "--top 0" in err and not (tmp_path / "bad").exists()
+
+
+def test_servovalve_fit_catalogue_writes_loadable_models(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
+    import json
+
+    from hydroservo.io.component_file import read_component_file
+
+    out = tmp_path / "cat"
+    code, text, err = cli("servovalve", "fit-catalogue", "--orders", "2,3", "--out", str(out), "--json")
+    assert code == 0, err
+    report = json.loads(text)
+    third = next(f for f in report["fits"] if f["order"] == "3")
+    assert third["gain_error_dB"] < 0.5 and third["phase_error_deg"] < 3.0
+    names = sorted(p.name for p in out.iterdir())
+    assert names == ["catalogue-bode.png", "catalogue-order2.toml", "catalogue-order3.toml", "catalogue.csv"]
+    table = read_component_file(out / "catalogue-order3.toml")
+    assert table["type"] == "CatalogueServovalve" and table["order"] == "3"
+    code, _, err = cli("servovalve", "fit-catalogue", "--orders", "4", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "--orders '4'" in err and not (tmp_path / "bad").exists()
+    code, _, err = cli("servovalve", "fit-catalogue", "--amplitude", "150 %", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "--amplitude '150 %'" in err

@@ -473,7 +473,7 @@ def frequency_test(
     i_rated: float = 0.01,
     p_0: float = 1e5,
     amplitudes: Sequence[float] = (0.05, 0.25, 1.0),
-    frequencies: Sequence[float] | None = None,
+    frequencies: Sequence[float] | np.ndarray | None = None,
     progress: Callable[[int, int], None] | None = None,
 ) -> Bode:
     """Fundamental of the no-load flow against the current's, on the periodic orbit at each amplitude and frequency.

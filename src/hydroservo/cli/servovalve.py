@@ -158,6 +158,76 @@ def cmd_bench(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_fit_catalogue(args: argparse.Namespace) -> int:
+    import numpy as np
+
+    from hydroservo.analysis.servovalve_bench import frequency_test, static_tests
+    from hydroservo.cli.common import output_folder, print_json
+    from hydroservo.identification.servovalve_catalogue import ORDERS, fit_catalogue
+    from hydroservo.io.component_file import component_file_text
+    from hydroservo.plotting.servovalve import plot_catalogue_fits
+    from hydroservo.units import to_si
+
+    valve = _bench_valve(args)
+    p_s = to_si(args.supply, "Pa", what="--supply")
+    i_rated = to_si(args.current, "A", what="--current")
+    if not i_rated > 0:
+        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    orders = [o.strip() for o in args.orders.split(",") if o.strip()]
+    if not orders or any(o not in ORDERS for o in orders):
+        raise ParameterError(f"--orders {args.orders!r}: expected a comma-separated choice of 1, 2, 3")
+    amplitude = to_si(args.amplitude, "", what="--amplitude")
+    if not 0 < amplitude <= 1:
+        raise ParameterError(f"--amplitude {args.amplitude!r}: expected a fraction of rated current, e.g. '5 %'")
+    f_max = to_si(args.f_max, "Hz", what="--f-max")
+    if not 10 <= f_max <= 2000:
+        raise ParameterError(f"--f-max {args.f_max!r}: expected 10 Hz to 2 kHz")
+    names = ["catalogue.csv", "catalogue-bode.png"] + [f"catalogue-order{o}.toml" for o in orders]
+    out = output_folder(args, f"hydroservo-servovalve-catalogue-{args.valve}")
+    out.expect(names)
+    static = static_tests(valve, p_s, i_rated, points=11)
+    bode = frequency_test(valve, p_s, i_rated, amplitudes=(amplitude,), frequencies=np.geomspace(5.0, f_max, 12))
+    fits = [
+        fit_catalogue(bode, o, rated_flow=static.rated_flow, i_rated=i_rated, dp_rated=p_s - 1e5,
+                      leakage_null=static.internal_leakage_null)
+        for o in orders
+    ]
+    label = f"{args.valve} ({args.first_stage}, {args.flapper} flapper)" + (f", {', '.join(args.set)}" if args.set else "")
+    with out:
+        lines = [
+            f"# catalogue models of {label}, fitted at +-{amplitude * 100:g} % of rated current, 5 Hz to {f_max:g} Hz",
+            "order, tau [ms], omega_n [rad/s], zeta [-], gain error [dB], phase error [deg]",
+        ]
+        for fit in fits:
+            tau = fit.params.get("tau", float("nan")) * 1e3
+            lines.append(f"{fit.order}, {tau!r}, {fit.params.get('omega_n', float('nan'))!r}, "
+                         f"{fit.params.get('zeta', float('nan'))!r}, {fit.gain_error_db!r}, {fit.phase_error_deg!r}")
+            header = (f"CatalogueServovalve of order {fit.order} fitted to {label}\nat +-{amplitude * 100:g} % of "
+                      f"rated current up to {f_max:g} Hz: within {fit.gain_error_db:.2f} dB and {fit.phase_error_deg:.1f} deg")
+            used = ["Q_N", "dp_N", "i_N", *ORDERS[fit.order], "G_leak", "p_tr"]
+            out.file(f"catalogue-order{fit.order}.toml").write_text(component_file_text(fit.valve, used, header=header))
+        out.file("catalogue.csv").write_text("\n".join(lines) + "\n")
+        plot_catalogue_fits(bode, fits, title=label, file=out.file("catalogue-bode.png"))
+    written = [out.final(n) for n in names]
+    if args.json:
+        print_json({
+            "valve": args.valve, "amplitude": amplitude, "f_max_Hz": f_max,
+            "rated_flow_L_min": static.rated_flow * 6e4,
+            "fits": [{"order": f.order, "params": f.params, "gain_error_dB": f.gain_error_db,
+                      "phase_error_deg": f.phase_error_deg} for f in fits],
+            "files": written,
+        })
+        return 0
+    print(f"catalogue models of {label}: +-{amplitude * 100:g} % of rated current, 5 Hz to {f_max:g} Hz")
+    print(f"  rated flow {static.rated_flow * 6e4:.4g} L/min, internal leakage at null {static.internal_leakage_null * 6e4:.3g} L/min")
+    for fit in fits:
+        shown = ", ".join(f"{k} = {v * 1e3:.4g} ms" if k == "tau" else f"{k} = {v:.4g}" + (" rad/s" if k == "omega_n" else "")
+                          for k, v in fit.params.items())
+        print(f"  order {fit.order}: {shown}; within {fit.gain_error_db:.2f} dB and {fit.phase_error_deg:.1f} deg")
+    print(f"wrote {', '.join(written)}")
+    return 0
+
+
 def cmd_design(args: argparse.Namespace) -> int:
     from hydroservo.analysis.servovalve import DESIGN_FIGURES, sensitivity
     from hydroservo.cli.common import output_folder, print_json
@@ -197,7 +267,7 @@ def cmd_design(args: argparse.Namespace) -> int:
 
 
 def add_parsers(sub: Any) -> None:
-    """Add ``servovalve bench`` and ``servovalve design``."""
+    """Add ``servovalve bench``, ``servovalve fit-catalogue`` and ``servovalve design``."""
     from hydroservo.cli.common import add_output_options
 
     group = sub.add_parser("servovalve", help="the first-principles two-stage servovalve (GordicND) on its bench")
@@ -215,6 +285,17 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--points", type=int, default=41, help="currents of the static characteristic (default 41)")
     add_output_options(p, "hydroservo-servovalve-NAME")
     p.set_defaults(func=cmd_bench)
+    c = commands.add_parser(
+        "fit-catalogue", help="catalogue models (first to third order) fitted to the valve's small-signal response"
+    )
+    _add_design_point_options(c, "change a parameter of TwoStageServovalve, e.g. --set 'K_f=2100 N/m'")
+    c.add_argument("--first-stage", default="quasi-static", choices=["quasi-static", "compressible"])
+    c.add_argument("--flapper", default="bent", choices=["bent", "rigid"])
+    c.add_argument("--orders", default="1,2,3", help="orders to fit (default 1,2,3)")
+    c.add_argument("--amplitude", default="5 %", help="amplitude of the response fitted (default 5 %% of rated current)")
+    c.add_argument("--f-max", default="150 Hz", help="highest frequency fitted (default 150 Hz)")
+    add_output_options(c, "hydroservo-servovalve-catalogue-NAME")
+    c.set_defaults(func=cmd_fit_catalogue)
     d = commands.add_parser("design", help="what moves each figure: elasticities to every physical parameter, ranked")
     _add_design_point_options(d, "the design point: change a parameter first")
     d.add_argument("--top", type=int, default=8, help="parameters shown per figure (default 8)")

@@ -50,6 +50,7 @@ from hydroservo.components.spools import (
     TorqueMotor,
 )
 from hydroservo.components.valves import (
+    CatalogueServovalve,
     CheckValve,
     CounterbalanceValve,
     FourWayValve,
@@ -91,6 +92,7 @@ __all__ = [
     "ServoSolenoidValve",
     "StagedSlotValve",
     "TwoStageServovalve",
+    "CatalogueServovalve",
     "Orifice",
     "CheckValve",
     "ReliefValve",

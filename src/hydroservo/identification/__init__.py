@@ -10,6 +10,8 @@ module                   fits
                          amplitude-dependent Bode data ([FerreiraND] eq. 43)
 :mod:`.staged_slot`      the staged-slot valve from test-bench curves, two steps
                          ([MareAttarND] eqs. 21-24)
+:mod:`.servovalve_...`   catalogue servovalves (first to third order) from a
+``catalogue``            small-signal frequency response and the static bench
 =======================  ========================================================
 
 Each fit returns the components it identified, so that a fitted valve is the
@@ -18,10 +20,13 @@ same object a system simulates.
 
 from hydroservo.identification.curves import fit_curves
 from hydroservo.identification.datasheet import Datasheet, PseudoSectionFit, fit_datasheet
+from hydroservo.identification.servovalve_catalogue import CatalogueFit, fit_catalogue
 from hydroservo.identification.spool_dynamics import SPOOL_MODELS, SpoolFit, fit_spool_dynamics, spool_response
 from hydroservo.identification.staged_slot import StagedSlotIdentification, identify_staged_slot
 
 __all__ = [
+    "CatalogueFit",
+    "fit_catalogue",
     "Datasheet",
     "PseudoSectionFit",
     "fit_datasheet",

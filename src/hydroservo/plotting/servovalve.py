@@ -7,9 +7,10 @@ from typing import Any
 
 import numpy as np
 
+from hydroservo.identification.servovalve_catalogue import catalogue_response
 from hydroservo.plotting import finish, lpm, pyplot
 
-__all__ = ["plot_static_bench", "plot_sensitivity", "plot_flow_current", "plot_steps", "plot_bench_bode", "plot_blocked"]
+__all__ = ["plot_static_bench", "plot_sensitivity", "plot_flow_current", "plot_steps", "plot_bench_bode", "plot_blocked", "plot_catalogue_fits"]
 
 
 def plot_static_bench(bench: Any, *, title: str = "", file: str | Path | None = None) -> Any:
@@ -172,6 +173,36 @@ def plot_blocked(report: Any, *, title: str = "", file: str | Path | None = None
     ax_l.set_title("internal leakage")
     for a in (ax, ax_l):
         a.grid(True, alpha=0.3)
+    if title:
+        fig.suptitle(title)
+    return finish(fig, file, plt)
+
+
+def plot_catalogue_fits(bode: Any, fits: Any, *, amplitude: int = 0, title: str = "", file: str | Path | None = None) -> Any:
+    """The servovalve's frequency response (points) and the catalogue models fitted to it (lines).
+
+    ``bode`` is a :class:`hydroservo.analysis.servovalve_bench.Bode`, ``fits`` a sequence of
+    :class:`hydroservo.identification.servovalve_catalogue.CatalogueFit`.
+    """
+    plt = pyplot(file)
+    fig, (ax_g, ax_p) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+    f = np.asarray(bode.frequencies)
+    label = f"physical model, +-{bode.amplitudes[amplitude] * 100:g} %"
+    ax_g.semilogx(f, bode.gain_db[amplitude], "ko", ms=4, label=label)
+    ax_p.semilogx(f, bode.phase_deg[amplitude], "ko", ms=4)
+    for fit in fits:
+        fine = np.geomspace(f[0], f[-1], 200)
+        H = catalogue_response(fit.order, fit.params, fine) / abs(catalogue_response(fit.order, fit.params, fine[:1])[0])
+        text = f"order {fit.order}: within {fit.gain_error_db:.2f} dB, {fit.phase_error_deg:.1f} deg"
+        line = ax_g.semilogx(fine, 20 * np.log10(np.abs(H)), "-", label=text)[0]
+        ax_p.semilogx(fine, np.degrees(np.unwrap(np.angle(H))), "-", color=line.get_color())
+    ax_g.set_ylabel("amplitude ratio [dB]")
+    ax_p.set_ylabel("phase [deg]")
+    ax_p.set_xlabel("frequency [Hz]")
+    ax_g.set_title("catalogue models fitted to the small-signal response")
+    ax_g.legend(loc="lower left", fontsize="small")
+    for ax in (ax_g, ax_p):
+        ax.grid(True, which="both", alpha=0.3)
     if title:
         fig.suptitle(title)
     return finish(fig, file, plt)

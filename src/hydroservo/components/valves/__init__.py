@@ -6,9 +6,10 @@ One file per valve kind: :mod:`.four_way` (sharp edges, per-edge laps,
 of [MareAttarND]), :mod:`.orifice` (the fixed orifice), :mod:`.check` (check
 valves), :mod:`.pressure_control` (relief, pressure-reducing and counterbalance
 valves), :mod:`.two_stage` (the first-principles two-stage servovalve of
-[GordicND]). A new valve goes into a new file here.
+[GordicND]), :mod:`.catalogue` (a servovalve as its catalogue gives it). A new valve goes into a new file here.
 """
 
+from hydroservo.components.valves.catalogue import CatalogueServovalve
 from hydroservo.components.valves.check import CheckValve
 from hydroservo.components.valves.four_way import FourWayValve
 from hydroservo.components.valves.orifice import Orifice
@@ -28,4 +29,5 @@ __all__ = [
     "PressureReducingValve",
     "CounterbalanceValve",
     "TwoStageServovalve",
+    "CatalogueServovalve",
 ]
