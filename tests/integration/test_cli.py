@@ -137,6 +137,7 @@ def test_servovalve_bench_writes_its_report_and_refuses_bad_values(tmp_path, cli
     assert not (tmp_path / "bad").exists()
 
 
+@pytest.mark.slow  # about 20 s: every parameter, three kinds of derivative
 def test_servovalve_design_ranks_the_parameters(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
     import json
 
@@ -144,7 +145,9 @@ def test_servovalve_design_ranks_the_parameters(tmp_path, cli) -> None:  # type:
     assert code == 0, err
     report = json.loads(text)
     assert report["figures"]["rated_flow"]["value"] == pytest.approx(11.99, abs=0.01)
+    assert report["figures"]["rated_flow"]["derivatives"] == "exact"
     assert report["elasticity"]["rated_flow"]["N"] == pytest.approx(1.0, abs=0.02)
+    assert report["figures"]["f_90"]["value"] == pytest.approx(123.0, abs=2.0)
     assert sorted(p.name for p in (tmp_path / "d").iterdir()) == ["sensitivity.csv", "sensitivity.png"]
     code, _, err = cli("servovalve", "design", "--top", "0", "--out", str(tmp_path / "bad"))
     assert code == 2 and "--top 0" in err and not (tmp_path / "bad").exists()

@@ -13,36 +13,16 @@ __all__ = ["add_parsers"]
 VALVES = {"gordic-table1": "PPT B.31.210.12.1000.U2V, Table 1 of GordicND (12 L/min at 10 mA, 210 bar)"}
 
 
-def _design_point(args: argparse.Namespace) -> tuple[dict[str, float], float, float]:
-    """The valve's parameters (Table 1 with ``--set NAME=VALUE`` applied, values with units), the supply
-    pressure and the rated current, each checked and named in its error."""
-    from hydroservo.analysis.servovalve import PARAMETER_UNITS, table1
-    from hydroservo.units import to_si
-
-    if args.valve not in VALVES:
-        raise ParameterError(f"servovalve {args.valve!r}: unknown; built-in: {', '.join(VALVES)}")
-    changes: dict[str, float] = {}
-    for item in args.set or []:
-        key, sep, value = item.partition("=")
-        key = key.strip()
-        if not sep or key not in PARAMETER_UNITS:
-            raise ParameterError(
-                f"--set {item!r}: expected NAME=VALUE with NAME one of {', '.join(sorted(PARAMETER_UNITS))}"
-            )
-        changes[key] = to_si(value.strip(), PARAMETER_UNITS[key], what=f"--set {key}")
-    p_s = to_si(args.supply, "Pa", what="--supply")
-    i_rated = to_si(args.current, "A", what="--current")
-    if not i_rated > 0:
-        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
-    return table1(**changes), p_s, i_rated
-
-
 def _add_design_point_options(p: Any, set_help: str) -> None:
-    """The valve, ``--supply``, ``--current``, ``--set`` and ``--json`` every servovalve command takes."""
+    """The valve, ``--supply``, ``--current``, ``--set``, the fidelity and ``--json`` every servovalve command takes."""
     p.add_argument("valve", nargs="?", default="gordic-table1", help=f"built-in servovalve ({', '.join(VALVES)})")
     p.add_argument("--supply", default="210 bar", help="supply pressure (default 210 bar)")
     p.add_argument("--current", default="10 mA", help="rated current (default 10 mA)")
     p.add_argument("--set", action="append", metavar="NAME=VALUE", help=set_help)
+    p.add_argument("--first-stage", default="quasi-static", choices=["quasi-static", "compressible"],
+                   help="the flapper-nozzle stage: the paper's simplified model (default) or eqs. 20-22 whole")
+    p.add_argument("--flapper", default="bent", choices=["bent", "rigid"],
+                   help="flapper tip from eqs. 13-14 (default) or theta l_a")
     p.add_argument("--json", action="store_true")
 
 
@@ -229,20 +209,33 @@ def cmd_fit_catalogue(args: argparse.Namespace) -> int:
 
 
 def cmd_design(args: argparse.Namespace) -> int:
-    from hydroservo.analysis.servovalve import DESIGN_FIGURES, sensitivity
+    import sys
+
+    from hydroservo.analysis.servovalve_design import FIGURES, design_study
     from hydroservo.cli.common import output_folder, print_json
     from hydroservo.io.servovalve import write_sensitivity
     from hydroservo.plotting.servovalve import plot_sensitivity
+    from hydroservo.units import to_si
 
-    params, p_s, i_rated = _design_point(args)
+    valve = _bench_valve(args)
+    p_s = to_si(args.supply, "Pa", what="--supply")
+    i_rated = to_si(args.current, "A", what="--current")
+    if not i_rated > 0:
+        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
     if not 1 <= args.top <= 50:
         raise ParameterError(f"--top {args.top}: expected 1 to 50 parameters per figure")
     out = output_folder(args, f"hydroservo-servovalve-design-{args.valve}")
     out.expect(["sensitivity.csv", "sensitivity.png"])
-    sens = sensitivity(p_s, i_rated, params)
+
+    def progress(stage: str) -> None:
+        if not args.json:
+            print(f"  {stage} ...", file=sys.stderr, flush=True)
+
+    study = design_study(valve, p_s, i_rated, progress=progress)
+    shown = {k: v[:3] for k, v in FIGURES.items()}
     with out:
-        write_sensitivity(sens, out.file("sensitivity.csv"))
-        plot_sensitivity(sens, DESIGN_FIGURES, top=args.top, title=f"{args.valve}: what moves each figure", file=out.file("sensitivity.png"))
+        write_sensitivity(study, out.file("sensitivity.csv"))
+        plot_sensitivity(study, shown, top=args.top, title=f"{args.valve}: what moves each figure", file=out.file("sensitivity.png"))
     files = [out.final("sensitivity.csv"), out.final("sensitivity.png")]
     if args.json:
         print_json(
@@ -250,18 +243,19 @@ def cmd_design(args: argparse.Namespace) -> int:
                 "valve": args.valve,
                 "changes": args.set or [],
                 "figures": {
-                    k: {"value": sens.figures[k] * DESIGN_FIGURES[k][2], "unit": DESIGN_FIGURES[k][1]} for k in sens.figures
+                    k: {"value": study.figures[k] * FIGURES[k][2], "unit": FIGURES[k][1], "derivatives": FIGURES[k][3]}
+                    for k in study.figures
                 },
-                "elasticity": sens.elasticity,
+                "elasticity": study.elasticity,
                 "files": files,
             }
         )
         return 0
     print(f"{VALVES[args.valve]}: what moves each figure at {p_s / 1e5:g} bar, {i_rated * 1e3:g} mA")
     print("(elasticity: % change of the figure per % change of the parameter, the largest first)")
-    for key, (description, unit, scale) in DESIGN_FIGURES.items():
-        ranked = ", ".join(f"{n} {e:+.2f}" for n, e in sens.ranked(key, args.top))
-        print(f"  {description} = {sens.figures[key] * scale:.4g} {unit}: {ranked}")
+    for key, (description, unit, scale, how) in FIGURES.items():
+        ranked = ", ".join(f"{n} {e:+.2f}" for n, e in study.ranked(key, args.top))
+        print(f"  {description} = {study.figures[key] * scale:.4g} {unit} ({how}): {ranked}")
     print(f"wrote {', '.join(files)}")
     return 0
 
@@ -276,10 +270,6 @@ def add_parsers(sub: Any) -> None:
         "bench", help="the test bench: flow-current, blocked ports, square-wave steps, hysteresis, frequency response"
     )
     _add_design_point_options(p, "change a parameter of TwoStageServovalve, e.g. --set 'K_f=2100 N/m'")
-    p.add_argument("--first-stage", default="quasi-static", choices=["quasi-static", "compressible"],
-                   help="the flapper-nozzle stage: the paper's simplified model (default) or eqs. 20-22 whole")
-    p.add_argument("--flapper", default="bent", choices=["bent", "rigid"],
-                   help="flapper tip from eqs. 13-14 (default) or theta l_a")
     p.add_argument("--tests", default="static,blocked,steps,hysteresis,bode",
                    help="comma-separated tests (default all: static,blocked,steps,hysteresis,bode)")
     p.add_argument("--points", type=int, default=41, help="currents of the static characteristic (default 41)")
@@ -289,15 +279,13 @@ def add_parsers(sub: Any) -> None:
         "fit-catalogue", help="catalogue models (first to third order) fitted to the valve's small-signal response"
     )
     _add_design_point_options(c, "change a parameter of TwoStageServovalve, e.g. --set 'K_f=2100 N/m'")
-    c.add_argument("--first-stage", default="quasi-static", choices=["quasi-static", "compressible"])
-    c.add_argument("--flapper", default="bent", choices=["bent", "rigid"])
     c.add_argument("--orders", default="1,2,3", help="orders to fit (default 1,2,3)")
     c.add_argument("--amplitude", default="5 %", help="amplitude of the response fitted (default 5 %% of rated current)")
     c.add_argument("--f-max", default="150 Hz", help="highest frequency fitted (default 150 Hz)")
     add_output_options(c, "hydroservo-servovalve-catalogue-NAME")
     c.set_defaults(func=cmd_fit_catalogue)
     d = commands.add_parser("design", help="what moves each figure: elasticities to every physical parameter, ranked")
-    _add_design_point_options(d, "the design point: change a parameter first")
+    _add_design_point_options(d, "the design point: change a parameter of TwoStageServovalve first")
     d.add_argument("--top", type=int, default=8, help="parameters shown per figure (default 8)")
     add_output_options(d, "hydroservo-servovalve-design-NAME")
     d.set_defaults(func=cmd_design)

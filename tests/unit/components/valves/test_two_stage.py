@@ -6,10 +6,9 @@ import numpy as np
 import pytest
 
 import hydroservo as hs
-from hydroservo.analysis.servovalve import first_stage_null, static_point, table1
+from hydroservo.analysis.servovalve import first_stage_null, table1
 from hydroservo.components import ConstantPressure, Square, Step, Tank, TwoStageServovalve
 from hydroservo.errors import ParameterError
-from hydroservo.laws import servo_spool as sp
 
 RATED = 0.01  # A, Table 1
 
@@ -29,30 +28,19 @@ def no_load(valve: TwoStageServovalve, current: object, p_s: float = 209e5) -> h
     return s
 
 
-@pytest.mark.parametrize("i", [RATED, 0.2 * RATED, -0.5 * RATED])
-def test_at_rest_it_is_the_static_model(i: float) -> None:
-    """The component's equilibrium is analysis.servovalve's static point (solved independently by SciPy from the
-    laws), with the one difference the component adds: the leakage of the overlapped orifice 4 (or 1), eqs.
-    52-56, which the static model leaves out. Same supply: 210 bar absolute is 209 bar gauge over a 1 bar return."""
-    null = first_stage_null(210e5, table1())
-    valve = TwoStageServovalve("sv", K_o0=null["K_o"], K_od0=null["K_od"])
-    s = no_load(valve, Step("cur", unit="A", amplitude=i))
-    model = s.build()
-    st = static_point(i)
-    trim = model.trim(s.parameter_vector(), x_guess=np.array([st.theta, 0.0, st.y, 0.0, st.p_d - 1e5]))
-    x = np.array([trim[n] for n in model.state_names])
-    out = dict(zip(model.output_names, np.asarray(model.outputs(0.0, x, s.parameter_vector())).ravel()))
-    v = table1()
-    closed = 3 if i > 0 else 0  # orifice 4 (L1 to return) is overlapped for positive travel, 1 for negative
-    drops = sp.orifice_drops(210e5, 1e5, 105.5e5, 105.5e5)
-    leak = float(sp.lapped_leakage(abs(st.y), drops[closed], v["K_t"], v["f"], v["rho"], v["rho"] * v["nu"],
-                                   v["delta"], v["r_s"], v["r_b"], v["d_s"]))
-    assert out["sv.QA"] == pytest.approx(st.Q_SV - np.sign(i) * leak, rel=2e-4)
-    # the component's flow force also counts the overlapped orifice's leakage jet (its equivalent opening),
-    # which moves the spool by 1.6e-4 of its travel at 2 mA, less at larger currents
-    assert trim["sv.y"] == pytest.approx(st.y, rel=3e-4)
-    assert out["sv.x"] == pytest.approx(st.x, rel=1e-2)  # the tip, under 1 um here, balances that force too
-    assert trim["sv.p_d"] == pytest.approx(st.p_d - 1e5, abs=5.0)  # Pa: the orifice laws' 100 Pa regularisation
+def test_at_rest_it_agrees_with_a_hand_written_scipy_implementation() -> None:
+    """The bench's static test (the component's trim) against benchmarks/reference_servovalve.py: the same
+    equations written out by hand with NumPy, solved by scipy.optimize.root, at 41 currents."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).resolve().parents[4] / "benchmarks"))
+    import bench_servovalve
+
+    from hydroservo.analysis.servovalve_bench import static_tests
+
+    flows = bench_servovalve.scipy_static(41)
+    assert np.max(np.abs(static_tests(points=41).flows - flows)) < 1e-9 / 6e4  # L/min
 
 
 def test_flapper_reaches_the_nozzle_at_25_percent_only() -> None:
