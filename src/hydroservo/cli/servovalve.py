@@ -46,6 +46,18 @@ def _bench_valve(args: argparse.Namespace) -> Any:
     return valve
 
 
+def _design_point(args: argparse.Namespace) -> tuple[Any, float, float]:
+    """The valve (:func:`_bench_valve`), the supply pressure and the rated current, each checked."""
+    from hydroservo.units import to_si
+
+    valve = _bench_valve(args)
+    p_s = to_si(args.supply, "Pa", what="--supply")
+    i_rated = to_si(args.current, "A", what="--current")
+    if not i_rated > 0:
+        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    return valve, p_s, i_rated
+
+
 #: The bench's files per test.
 BENCH_FILES = {
     "static": ["characteristic.csv", "flow-current.png"],
@@ -63,13 +75,8 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from hydroservo.cli.common import output_folder, print_json
     from hydroservo.io import servovalve as files
     from hydroservo.plotting import servovalve as plots
-    from hydroservo.units import to_si
 
-    valve = _bench_valve(args)
-    p_s = to_si(args.supply, "Pa", what="--supply")
-    i_rated = to_si(args.current, "A", what="--current")
-    if not i_rated > 0:
-        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    valve, p_s, i_rated = _design_point(args)
     tests = [t.strip() for t in args.tests.split(",") if t.strip()]
     unknown = [t for t in tests if t not in TESTS]
     if unknown or not tests:
@@ -148,11 +155,7 @@ def cmd_fit_catalogue(args: argparse.Namespace) -> int:
     from hydroservo.plotting.servovalve import plot_catalogue_fits
     from hydroservo.units import to_si
 
-    valve = _bench_valve(args)
-    p_s = to_si(args.supply, "Pa", what="--supply")
-    i_rated = to_si(args.current, "A", what="--current")
-    if not i_rated > 0:
-        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    valve, p_s, i_rated = _design_point(args)
     orders = [o.strip() for o in args.orders.split(",") if o.strip()]
     if not orders or any(o not in ORDERS for o in orders):
         raise ParameterError(f"--orders {args.orders!r}: expected a comma-separated choice of 1, 2, 3")
@@ -215,13 +218,8 @@ def cmd_design(args: argparse.Namespace) -> int:
     from hydroservo.cli.common import output_folder, print_json
     from hydroservo.io.servovalve import write_sensitivity
     from hydroservo.plotting.servovalve import plot_sensitivity
-    from hydroservo.units import to_si
 
-    valve = _bench_valve(args)
-    p_s = to_si(args.supply, "Pa", what="--supply")
-    i_rated = to_si(args.current, "A", what="--current")
-    if not i_rated > 0:
-        raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
+    valve, p_s, i_rated = _design_point(args)
     if not 1 <= args.top <= 50:
         raise ParameterError(f"--top {args.top}: expected 1 to 50 parameters per figure")
     out = output_folder(args, f"hydroservo-servovalve-design-{args.valve}")

@@ -143,16 +143,7 @@ def plot_bench_bode(report: Any, *, title: str = "", file: str | Path | None = N
         ax_p.semilogx(bode.frequencies, bode.phase_deg[k], "o-", ms=3, color=line.get_color())
     ax_g.axhline(-3.0, color="k", lw=0.6, ls="--")
     ax_p.axhline(-90.0, color="k", lw=0.6, ls="--")
-    ax_g.set_ylabel("amplitude ratio [dB]")
-    ax_p.set_ylabel("phase [deg]")
-    ax_p.set_xlabel("frequency [Hz]")
-    ax_g.set_title("no-load flow against current (relative to the lowest frequency)")
-    ax_g.legend(loc="lower left", fontsize="small")
-    for ax in (ax_g, ax_p):
-        ax.grid(True, which="both", alpha=0.3)
-    if title:
-        fig.suptitle(title)
-    return finish(fig, file, plt)
+    return _finish_bode(fig, ax_g, ax_p, "no-load flow against current (relative to the lowest frequency)", title, file, plt)
 
 
 def plot_blocked(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
@@ -196,10 +187,15 @@ def plot_catalogue_fits(bode: Any, fits: Any, *, amplitude: int = 0, title: str 
         text = f"order {fit.order}: within {fit.gain_error_db:.2f} dB, {fit.phase_error_deg:.1f} deg"
         line = ax_g.semilogx(fine, 20 * np.log10(np.abs(H)), "-", label=text)[0]
         ax_p.semilogx(fine, np.degrees(np.unwrap(np.angle(H))), "-", color=line.get_color())
+    return _finish_bode(fig, ax_g, ax_p, "catalogue models fitted to the small-signal response", title, file, plt)
+
+
+def _finish_bode(fig: Any, ax_g: Any, ax_p: Any, heading: str, title: str, file: str | Path | None, plt: Any) -> Any:
+    """Label, grid and finish the gain and phase axes of a servovalve Bode plot."""
     ax_g.set_ylabel("amplitude ratio [dB]")
     ax_p.set_ylabel("phase [deg]")
     ax_p.set_xlabel("frequency [Hz]")
-    ax_g.set_title("catalogue models fitted to the small-signal response")
+    ax_g.set_title(heading)
     ax_g.legend(loc="lower left", fontsize="small")
     for ax in (ax_g, ax_p):
         ax.grid(True, which="both", alpha=0.3)
