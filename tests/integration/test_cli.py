@@ -128,6 +128,12 @@ def test_servovalve_bench_writes_its_report_and_refuses_bad_values(tmp_path, cli
     assert code == 2 and "--tests 'static,noise'" in err
     code, _, err = cli("servovalve", "bench", "--set", "z_9=1", "--out", str(tmp_path / "bad"))
     assert code == 2 and "NAME a parameter of TwoStageServovalve" in err
+    code, _, err = cli("servovalve", "bench", "--set", "x_0=0 m", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "sv.x_0 = '0 m' (= 0 m): expected > 0 m (flapper-nozzle gap at null)" in err
+    code, _, err = cli("servovalve", "bench", "--set", "l_a=20 mm", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "the pivot must lie within the flapper" in err
+    code, _, err = cli("servovalve", "bench", "--supply", "1 bar", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "--supply '1 bar': expected above the return" in err
     code, _, err = cli("servovalve", "bench", "--set", "K_f=-1 N/m", "--out", str(tmp_path / "bad"))
     assert code == 2 and "K_f" in err and not (tmp_path / "bad").exists()
     code, _, err = cli("servovalve", "bench", "--supply", "3 kg", "--out", str(tmp_path / "bad"))

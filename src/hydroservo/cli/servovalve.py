@@ -52,6 +52,10 @@ def _design_point(args: argparse.Namespace) -> tuple[Any, float, float]:
 
     valve = _bench_valve(args)
     p_s = to_si(args.supply, "Pa", what="--supply")
+    if not p_s > 2e5:
+        raise ParameterError(
+            f"--supply {args.supply!r}: expected above the return (1 bar absolute, Table 1's p_0), e.g. '210 bar'"
+        )
     i_rated = to_si(args.current, "A", what="--current")
     if not i_rated > 0:
         raise ParameterError(f"--current {args.current!r}: expected a positive rated current, e.g. '10 mA'")
