@@ -18,6 +18,8 @@ and a tank, and runs the tests a manufacturer runs:
 * **hysteresis**: a slow sine of rated amplitude ([GordicND] Fig. 10: 1/16
   Hz), the flow-current loop and its widest current difference at equal
   flow;
+* **threshold**: a slow triangle of ±2 % about half rated current, the
+  current change after each reversal before the flow turns;
 * **frequency response**: sines of several amplitudes, the fundamental of
   the no-load flow against the current's, in dB relative to the lowest
   frequency, with the -3 dB and -90 degree frequencies.
@@ -40,7 +42,7 @@ import numpy as np
 
 from hydroservo.analysis.step import step_metrics
 from hydroservo.components.base import Component
-from hydroservo.components.signals import Sine, Square, Step
+from hydroservo.components.signals import Sine, Square, Step, Table
 from hydroservo.components.sources import ConstantPressure, Tank
 from hydroservo.components.valves.two_stage import TwoStageServovalve
 from hydroservo.components.volume import Volume
@@ -57,6 +59,8 @@ __all__ = [
     "step_tests",
     "Hysteresis",
     "hysteresis_test",
+    "Threshold",
+    "threshold_test",
     "Bode",
     "frequency_test",
     "Report",
@@ -425,6 +429,64 @@ def hysteresis_test(
     return Hysteresis(frequency, i, q, float(np.max(width)) / i_rated, float(zero))
 
 
+@dataclass(frozen=True)
+class Threshold:
+    """A slow triangle of small amplitude about a bias: how much the current reverses before the flow does (SI)."""
+
+    bias: float  #: [A]
+    amplitude: float  #: [A]
+    t: np.ndarray  #: [s]
+    currents: np.ndarray  #: [A]
+    flows: np.ndarray  #: no-load flow [m^3/s]
+    reversals: np.ndarray  #: current change after each reversal before the flow reverses [A]
+    threshold: float  #: their mean, over rated current [-]
+
+
+def threshold_test(
+    valve: Component | None = None,
+    p_s: float = 210e5,
+    i_rated: float = 0.01,
+    p_0: float = 1e5,
+    bias: float = 0.5,
+    amplitude: float = 0.02,
+    period: float = 8.0,
+) -> Threshold:
+    """ISO 10770-1's threshold: a triangle of ``amplitude`` (of rated current) about ``bias``, ``period`` long.
+
+    After each reversal of the current, the current change until the flow has turned too, by a hundredth of
+    the triangle's flow swing from its extreme (the detection level, 0.04 % of rated current for the defaults,
+    is subtracted); the mean over four reversals. The current first ramps to the triangle's low end in a
+    quarter period.
+    """
+    _check_current(i_rated)
+    if not (0 <= bias < 1 and 0 < amplitude <= 0.25 and bias + amplitude <= 1):
+        raise ParameterError(f"threshold bias {bias!r}, amplitude {amplitude!r}: expected fractions of rated current, "
+                             "bias + amplitude at most 1")
+    lo, hi, half = (bias - amplitude) * i_rated, (bias + amplitude) * i_rated, period / 2
+    times = [0.0, period / 4] + [period / 4 + k * half for k in range(1, 6)]
+    values = [0.0, lo] + [hi if k % 2 else lo for k in range(1, 6)]
+    system = bench_system(valve, Table(DRIVE, unit="A", times=times, values=values), p_s, p_0, "none")
+    grid = np.linspace(0.0, times[-1], 20001)
+    r = system.simulate(t_eval=grid, max_steps=5_000_000)
+    i = r[f"{DRIVE}.y"]
+    q = (r[f"{VALVE}.QA"] - r[f"{VALVE}.QB"]) / 2
+    level = 0.01 * (np.interp(hi, i[grid < times[2]], q[grid < times[2]]) - np.interp(lo, i[grid < times[2]], q[grid < times[2]]))
+    found = []
+    for k in range(2, 6):  # the reversals at times[2] ... times[5]
+        start, end = np.searchsorted(grid, times[k]), np.searchsorted(grid, times[k + 1])
+        sign = 1.0 if values[k] == hi else -1.0  # at a top the flow must fall
+        seg_q, seg_i = q[start - 200 : end], i[start - 200 : end]
+        extreme = np.maximum.accumulate(sign * seg_q)
+        turned = np.flatnonzero(sign * seg_q <= extreme - abs(level))
+        turned = turned[turned > 200]
+        if turned.size:
+            detect = abs(level) / abs(np.interp(0.5 * (lo + hi), i, q, period=None) / max(0.5 * (lo + hi), 1e-30))
+            found.append(max(abs(values[k] - seg_i[int(turned[0])]) - detect, 0.0))
+    reversals = np.array(found)
+    return Threshold(bias * i_rated, amplitude * i_rated, grid, i, q, reversals,
+                     float(np.mean(reversals)) / i_rated if reversals.size else float("nan"))
+
+
 def _inverse(q: np.ndarray, i: np.ndarray, levels: np.ndarray) -> np.ndarray:
     """The current at which a monotone-in-current branch passes each flow level (interpolated)."""
     order = np.argsort(q)
@@ -559,6 +621,7 @@ class Report:
     blocked: BlockedTests | None = None
     steps: list[StepTest] | None = None
     hysteresis: Hysteresis | None = None
+    threshold: Threshold | None = None
     bode: Bode | None = None
 
     def table(self) -> list[tuple[str, float, str]]:
@@ -580,13 +643,15 @@ class Report:
                 ("hysteresis (slow sine of rated amplitude)", self.hysteresis.hysteresis * 100, "% of rated current"),
                 ("null shift (current at zero flow)", self.hysteresis.null_shift * 1e3, "mA"),
             ]
+        if self.threshold is not None:
+            rows.append(("threshold (+-2 % triangle about 50 %)", self.threshold.threshold * 100, "% of rated current"))
         if self.bode is not None:
             rows += self.bode.table()
         return rows
 
 
 #: The tests of a bench report, in the order they run.
-TESTS = ("static", "blocked", "steps", "hysteresis", "bode")
+TESTS = ("static", "blocked", "steps", "hysteresis", "threshold", "bode")
 
 
 def bench_report(
@@ -610,6 +675,7 @@ def bench_report(
         "blocked": lambda: blocked_tests(valve, p_s, i_rated, p_0),
         "steps": lambda: step_tests(valve, p_s, i_rated, p_0),
         "hysteresis": lambda: hysteresis_test(valve, p_s, i_rated, p_0),
+        "threshold": lambda: threshold_test(valve, p_s, i_rated, p_0),
         "bode": lambda: frequency_test(valve, p_s, i_rated, p_0),
     }
     for name in TESTS:

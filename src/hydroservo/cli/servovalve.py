@@ -68,6 +68,7 @@ BENCH_FILES = {
     "blocked": ["blocked.csv", "blocked.png"],
     "steps": ["steps.csv", "steps.png"],
     "hysteresis": ["hysteresis.csv"],
+    "threshold": [],
     "bode": ["bode.csv", "bode.png"],
 }
 
@@ -272,8 +273,8 @@ def add_parsers(sub: Any) -> None:
         "bench", help="the test bench: flow-current, blocked ports, square-wave steps, hysteresis, frequency response"
     )
     _add_design_point_options(p, "change a parameter of TwoStageServovalve, e.g. --set 'K_f=2100 N/m'")
-    p.add_argument("--tests", default="static,blocked,steps,hysteresis,bode",
-                   help="comma-separated tests (default all: static,blocked,steps,hysteresis,bode)")
+    p.add_argument("--tests", default="static,blocked,steps,hysteresis,threshold,bode",
+                   help="comma-separated tests (default all: static,blocked,steps,hysteresis,threshold,bode)")
     p.add_argument("--points", type=int, default=41, help="currents of the static characteristic (default 41)")
     add_output_options(p, "hydroservo-servovalve-NAME")
     p.set_defaults(func=cmd_bench)

@@ -43,6 +43,17 @@ def test_hysteresis_comes_from_the_feedback_ball_clearance_and_friction() -> Non
     assert abs(with_play.null_shift) < 1e-3 * RATED  # symmetric: the loop is centred
 
 
+def test_the_threshold_away_from_null_is_below_a_hundredth_of_a_per_cent() -> None:
+    """Away from null the spool moves with the current as soon as it reverses: the ball's clearance is taken up
+    by the pressure force that holds the spool, and dry friction is 3 mN against newtons."""
+    th = sb.threshold_test()
+    assert th.reversals.size == 4
+    assert 0 <= th.threshold < 1e-4
+    # a hundred times the spool's dry friction (0.3 N) holds it after each reversal: the threshold shows it
+    sticky = sb.threshold_test(TwoStageServovalve("v", F_c0=0.3, F_cn=0.3))
+    assert sticky.threshold > 5 * th.threshold and sticky.threshold > 2e-4
+
+
 def test_blocked_ports_give_load_pressure_and_leakage() -> None:
     bl = sb.blocked_tests()
     span = 209e5
