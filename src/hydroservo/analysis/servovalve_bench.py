@@ -419,6 +419,13 @@ def hysteresis_test(
     keep = grid >= 0.25 * period - 1e-9  # from the positive peak: one falling and one rising branch
     i = r[f"{DRIVE}.y"][keep]
     q = ((r[f"{VALVE}.QA"] - r[f"{VALVE}.QB"]) / 2)[keep]
+    width, zero = hysteresis_loop(i, q)
+    return Hysteresis(frequency, i, q, width / i_rated, zero)
+
+
+def hysteresis_loop(i: np.ndarray, q: np.ndarray) -> tuple[float, float]:
+    """The widest current difference at equal flow between the falling and the rising branch of a loop that
+    starts at its positive peak, and the current at zero flow (the mean of both branches) [A]."""
     turn = int(np.argmin(i))
     down_i, down_q = i[: turn + 1][::-1], q[: turn + 1][::-1]  # falling branch, as increasing current
     up_i, up_q = i[turn:], q[turn:]
@@ -426,7 +433,7 @@ def hysteresis_test(
     levels = np.linspace(lo, hi, 401)[5:-5]  # away from the turning points
     width = np.abs(_inverse(down_q, down_i, levels) - _inverse(up_q, up_i, levels))
     zero = 0.5 * (_inverse(down_q, down_i, np.array([0.0]))[0] + _inverse(up_q, up_i, np.array([0.0]))[0])
-    return Hysteresis(frequency, i, q, float(np.max(width)) / i_rated, float(zero))
+    return float(np.max(width)), float(zero)
 
 
 @dataclass(frozen=True)
