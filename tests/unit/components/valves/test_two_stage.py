@@ -108,3 +108,33 @@ def test_default_null_coefficients_are_lichtarowicz_at_210_bar() -> None:
     spec = TwoStageServovalve.PARAMETERS
     assert spec["K_o0"].default == pytest.approx(null["K_o"], abs=5e-4)
     assert spec["K_od0"].default == pytest.approx(null["K_od"], abs=5e-4)
+
+
+def test_the_amplifier_of_eqs_1_2_drives_it_in_a_system() -> None:
+    """Eq. 1: i = sat(K_a U); eq. 2 adds electrical feedback of the spool, U - K_p y. The package's Amplifier
+    (saturating) and Sum in front of the valve: a command that would ask 30 mA is held at the 12 mA limit,
+    and the feedback of the spool position lowers the current the valve settles at."""
+    from hydroservo.components import Amplifier, Gain, Sum
+
+    def run(k_p: float) -> hs.Result:
+        s = hs.System("driven")
+        s.add(TwoStageServovalve("sv"))
+        s.add(Step("u", unit="V", amplitude=3.0))
+        s.add(Sum("err", unit="V"))
+        s.add(Gain("kp", unit="V", input_unit="m", K=k_p))
+        s.add(Amplifier("amp", G_a=1.0, R=100.0, I_max=0.012))  # 10 mA/V: 3 V asks 30 mA
+        for name, p in (("ps", 209e5), ("pa", 104.5e5), ("pb", 104.5e5)):
+            s.add(ConstantPressure(name, p=p))
+        s.add(Tank("tank"))
+        s.connect("u.y", "err.u1")
+        s.connect("kp.y", "err.u2")
+        s.connect("sv.y", "kp.u")
+        s.connect("err.y", "amp.E")
+        s.connect("amp.i", "sv.i")
+        for port, node in (("P", "ps.P"), ("T", "tank.P"), ("A", "pa.P"), ("B", "pb.P")):
+            s.connect(f"sv.{port}", node)
+        return s.simulate(0.05, n_points=51)
+
+    open_loop, closed = run(0.0), run(5000.0)  # 5000 V/m: 0.44 mm of spool feeds back 2.2 V
+    assert open_loop["amp.i"][-1] == pytest.approx(0.012, rel=1e-9)
+    assert closed["amp.i"][-1] < 0.012 and closed["sv.y"][-1] < open_loop["sv.y"][-1]
