@@ -157,6 +157,8 @@ def test_servovalve_design_ranks_the_parameters(tmp_path, cli) -> None:  # type:
     assert sorted(p.name for p in (tmp_path / "d").iterdir()) == ["sensitivity.csv", "sensitivity.png"]
     code, _, err = cli("servovalve", "design", "--top", "0", "--out", str(tmp_path / "bad"))
     assert code == 2 and "--top 0" in err and not (tmp_path / "bad").exists()
+    code, _, err = cli("servovalve", "design", "--figures", "bandwidth", "--out", str(tmp_path / "bad"))
+    assert code == 2 and "--figures 'bandwidth'" in err and not (tmp_path / "bad").exists()
 
 
 def test_servovalve_fit_catalogue_writes_loadable_models(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]

@@ -227,14 +227,16 @@ def cmd_design(args: argparse.Namespace) -> int:
     valve, p_s, i_rated = _design_point(args)
     if not 1 <= args.top <= 50:
         raise ParameterError(f"--top {args.top}: expected 1 to 50 parameters per figure")
-    out = output_folder(args, f"hydroservo-servovalve-design-{args.valve}")
-    out.expect(["sensitivity.csv", "sensitivity.png"])
-
     def progress(stage: str) -> None:
         if not args.json:
             print(f"  {stage} ...", file=sys.stderr, flush=True)
 
-    study = design_study(valve, p_s, i_rated, progress=progress)
+    figures = None if args.figures == "all" else [f.strip() for f in args.figures.split(",") if f.strip()]
+    if figures is not None and (not figures or set(figures) - set(FIGURES)):
+        raise ParameterError(f"--figures {args.figures!r}: expected 'all' or a comma-separated choice of {', '.join(FIGURES)}")
+    out = output_folder(args, f"hydroservo-servovalve-design-{args.valve}")
+    out.expect(["sensitivity.csv", "sensitivity.png"])
+    study = design_study(valve, p_s, i_rated, progress=progress, figures=figures)
     shown = {k: v[:3] for k, v in FIGURES.items()}
     with out:
         write_sensitivity(study, out.file("sensitivity.csv"))
@@ -257,6 +259,8 @@ def cmd_design(args: argparse.Namespace) -> int:
     print(f"{VALVES[args.valve]}: what moves each figure at {p_s / 1e5:g} bar, {i_rated * 1e3:g} mA")
     print("(elasticity: % change of the figure per % change of the parameter, the largest first)")
     for key, (description, unit, scale, how) in FIGURES.items():
+        if key not in study.figures:
+            continue
         ranked = ", ".join(f"{n} {e:+.2f}" for n, e in study.ranked(key, args.top))
         print(f"  {description} = {study.figures[key] * scale:.4g} {unit} ({how}): {ranked}")
     print(f"wrote {', '.join(files)}")
@@ -290,5 +294,6 @@ def add_parsers(sub: Any) -> None:
     d = commands.add_parser("design", help="what moves each figure: elasticities to every physical parameter, ranked")
     _add_design_point_options(d, "the design point: change a parameter of TwoStageServovalve first")
     d.add_argument("--top", type=int, default=8, help="parameters shown per figure (default 8)")
+    d.add_argument("--figures", default="all", help="comma-separated figures, e.g. rated_flow,f_90 (default all)")
     add_output_options(d, "hydroservo-servovalve-design-NAME")
     d.set_defaults(func=cmd_design)

@@ -46,7 +46,7 @@ def plot_sensitivity(sens: Any, figures: Any, *, top: int = 8, title: str = "", 
     """
     plt = pyplot(file)
     keys = list(sens.figures)
-    cols = 3
+    cols = min(3, len(keys))
     rows = (len(keys) + cols - 1) // cols
     fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.2 * rows))
     for ax, key in zip(np.ravel(axes), keys, strict=False):
