@@ -170,7 +170,7 @@ def main(quick: bool = False) -> dict[str, float]:
     if not quick:
         t_r, report = median_time(lambda: sb.bench_report(), 1)
         out["report_s"] = t_r
-        print(f"hydroservo's whole report (static, blocked, steps, hysteresis, Bode at 5/25/100 % x 19 frequencies): {t_r:.1f} s")
+        print(f"hydroservo's whole report (static, blocked, steps, hysteresis, threshold, Bode at 5/25/100 % x 19 frequencies): {t_r:.1f} s")
     return out
 
 
