@@ -835,8 +835,17 @@ def _rng(seed: int, label: str, salt: str = "") -> np.random.Generator:
 
 
 def _sets_table(system: Any, sets: list[dict[str, float]]) -> dict[str, list[float]]:
-    """Random sets (each its own keys) as one ``batch`` mapping: missing keys keep the model's value."""
-    base = system.parameter_values()
+    """Random sets (each its own keys) as one ``batch`` mapping: missing keys keep the model's value.
+
+    A valve and the spool that drives it have one stroke (``System.stroke_pairs``): a set that gives one of
+    the pair gives it to both, as ``simulate(params=...)`` does, so that the batch runs what the set ran alone.
+    """
+    base = dict(zip(system.build().parameter_names, system.parameter_vector().tolist()))  # the strokes shared
+    sets = [dict(s) for s in sets]
+    for a, b in system.stroke_pairs():
+        for s in sets:
+            if (a in s) != (b in s):
+                s[b if a in s else a] = s[a if a in s else b]
     keys = sorted({k for s in sets for k in s})
     return {k: [s.get(k, base[k]) for s in sets] for k in keys}
 

@@ -482,6 +482,7 @@ def _overwrite_cases() -> dict[str, tuple[Callable[[Workspace], list[Any]], str]
             "identified.toml",
         ),
         "examples-over-existing-files": (lambda w: ["examples", w.out], "valve_cylinder.toml"),
+        "linearize-over-existing-json": (lambda w: ["linearize", "robot-arm", "--out", w.out], "robot-arm-linear.json"),
     }
 
 
@@ -502,6 +503,7 @@ OUT_IS_FILE: dict[str, Callable[[Workspace], list[Any]]] = {
     "characteristics": lambda w: ["valve", "characteristics", "aerospace-example", "--temperature", "-15", "--out", w.out],
     "identify": identify_argv,
     "examples": lambda w: ["examples", w.out],
+    "linearize": lambda w: ["linearize", "robot-arm", "--out", w.out],
 }
 
 
@@ -753,6 +755,7 @@ def _good_content(kind: str) -> str:
         "staged-slot-valve-file": ex["guess.toml"] + '\n[bench]\nP_s = "3000 psi"\nX_n = "0.4 mm"\n',
         "bench-csv": ex["flow_gain.csv"],
         "identify-start-file": ex["guess.toml"],
+        "operating-point-file": '"cyl.pA" = "6 bar"\n',
     }[kind]
 
 
@@ -786,6 +789,8 @@ def _reader_argv(ws: Workspace, kind: str, bad: Path) -> list[Any]:
         return ["valve", "identify", bad, "--start", ws.inp / "guess.toml", *out]
     if kind == "identify-start-file":
         return ["valve", "identify", ws.inp / "flow_gain.csv", "--start", bad, *out]
+    if kind == "operating-point-file":
+        return ["linearize", "robot-arm", "--at", bad, *out]
     raise AssertionError(kind)
 
 
@@ -801,6 +806,7 @@ READER_KINDS = {
     "staged-slot-valve-file": ".toml",
     "bench-csv": ".csv",
     "identify-start-file": ".toml",
+    "operating-point-file": ".toml",
 }
 BAD_FILES = ["binary", "latin-1", "empty", "a-folder", "missing"]
 

@@ -180,3 +180,47 @@ def test_servovalve_fit_catalogue_writes_loadable_models(tmp_path, cli) -> None:
     assert code == 2 and "--orders '4'" in err and not (tmp_path / "bad").exists()
     code, _, err = cli("servovalve", "fit-catalogue", "--amplitude", "150 %", "--out", str(tmp_path / "bad"))
     assert code == 2 and "--amplitude '150 %'" in err
+
+
+def test_linearize_prints_modes_and_writes_its_files(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
+    """The robot arm in steady motion: matrices and modes as JSON, the files written, the valve coefficients."""
+    import json
+
+    out = tmp_path / "lin"
+    code, text, err = cli("linearize", "robot-arm", "--t", "0.3", "--free", "load.x", "--frequencies", "1,10,100",
+                          "--out", str(out), "--json")
+    assert code == 0, err
+    report = json.loads(text)
+    assert report["states"] == ["spool.s", "cyl.pA", "cyl.pB", "load.x", "load.v"]
+    assert report["inputs"] == ["spool.u", "load.F_ext"]
+    assert len(report["A"]) == 5 and len(report["B"][0]) == 2
+    assert report["operating_point"]["drift"]["load.x"] > 0.05  # the arm moves at its steady speed
+    (valve,) = report["valves"]
+    assert valve["model"]["K_Qx_A"] == pytest.approx(valve["closed_form"]["K_Qx_A"], rel=1e-3)
+    assert any(m["damping"] is not None and m["damping"] < 0.5 for m in report["modes"])  # the hydraulic resonance
+    assert {f["input"] for f in report["frequency_response"]} == {"spool.u", "load.F_ext"}
+    assert sorted(p.name for p in out.iterdir()) == ["robot-arm-bode.png", "robot-arm-linear.json", "robot-arm-poles.png"]
+    code, text, _ = cli("linearize", "robot-arm", "--at", "initial", "--inputs", "supply.scale", "--outputs", "load.v",
+                        "--out", str(tmp_path / "lin2"))
+    assert code == 0 and "modes (slowest first)" in text
+
+
+@pytest.mark.parametrize(
+    "argv, patterns",
+    [
+        (["--free", "load.q"], [r"free", r"load\.q", r"not a state"]),
+        (["--inputs", "valve.nothing"], [r"valve\.nothing", r"neither a component input nor a parameter"]),
+        (["--outputs", "cyl.pC"], [r"cyl\.pC", r"not a state, output or alias"]),
+        (["--at", "cyl.pQ=3bar"], [r"cyl\.pQ", r"not a state"]),
+        (["--at", "cyl.pA=3 kg"], [r"cyl\.pA", r"kg"]),
+        (["--at", "cyl.pA=3bar,junk"], [r"--at", r"junk", r"STATE=VALUE"]),
+    ],
+)
+def test_linearize_refuses_bad_options(tmp_path, cli, argv, patterns) -> None:  # type: ignore[no-untyped-def]
+    import re
+
+    code, _, err = cli("linearize", "robot-arm", *argv, "--out", str(tmp_path / "out"))
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err
+    for pat in patterns:
+        assert re.search(pat, err), (pat, err)
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())

@@ -4,6 +4,7 @@
 module                 commands
 =====================  ==========================================================
 :mod:`.models`         ``models``, ``simulate``, ``export``
+:mod:`.linear`         ``linearize``
 :mod:`.components`     ``components``, ``describe``
 :mod:`.valve`          ``valve fit``, ``valve bode``, ``valve fit-dynamics``
 :mod:`.valve_bench`    ``valve characteristics``, ``valve identify``
@@ -27,7 +28,7 @@ import warnings
 from collections.abc import Sequence
 from typing import NoReturn
 
-from hydroservo.cli import components, examples, fluid, models, servovalve, validate, valve
+from hydroservo.cli import components, examples, fluid, linear, models, servovalve, validate, valve
 from hydroservo.errors import FluidRangeWarning, HydroservoError, ImplausibleResultWarning, RenamedWarning
 from hydroservo.version import __version__
 
@@ -49,6 +50,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--debug", action="store_true", help="show tracebacks on errors")
     sub = parser.add_subparsers(dest="command", required=True)
     models.add_parsers(sub)
+    linear.add_parsers(sub)
     components.add_parsers(sub)
     valve.add_parsers(sub)
     servovalve.add_parsers(sub)
@@ -61,6 +63,7 @@ def build_parser() -> argparse.ArgumentParser:
 #: Options whose value may start with a minus sign.
 _NUMERIC_OPTIONS = (
     "--temperature", "--pressure", "--amplitudes", "--frequencies", "--predict", "--reference", "--current", "--supply",
+    "--at",
 )
 
 

@@ -15,7 +15,7 @@ module                 components
                        PressureReducingValve, CounterbalanceValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
-:mod:`.signals`        Step, Ramp, Sine, Square, Table
+:mod:`.signals`        Step, Pulse, Ramp, Sine, Square, Table
 :mod:`.control`        Sum, Gain, Lag, Saturation, PID, Amplifier, Transducer
 =====================  ==========================================================
 
@@ -40,7 +40,7 @@ from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.mass import Mass
 from hydroservo.components.pumps import Motor, Pump, VariablePump
-from hydroservo.components.signals import Ramp, Sine, Square, Step, Table
+from hydroservo.components.signals import Pulse, Ramp, Sine, Square, Step, Table
 from hydroservo.components.sources import ConstantPressure, PressureTable, Tank
 from hydroservo.components.spools import (
     FlapperNozzleSpool,
@@ -104,6 +104,7 @@ __all__ = [
     "TorqueMotor",
     "FlapperNozzleSpool",
     "Step",
+    "Pulse",
     "Ramp",
     "Sine",
     "Square",

@@ -16,7 +16,7 @@ from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Output, Param, register
 from hydroservo.errors import ParameterError
 
-__all__ = ["Step", "Ramp", "Sine", "Square", "Table", "SIGNAL_OUTPUT"]
+__all__ = ["Step", "Pulse", "Ramp", "Sine", "Square", "Table", "SIGNAL_OUTPUT"]
 
 #: The output of every signal block.
 SIGNAL_OUTPUT = {"y": Output(SIGNAL, "signal")}
@@ -37,6 +37,29 @@ class Step(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"y": p["offset"] + bk.if_else(t >= p["t_step"], p["amplitude"], 0.0)}
+
+
+@register
+class Pulse(Component):
+    """Pulse: ``offset + amplitude`` from ``t_start`` for ``duration``, ``offset`` before and after.
+
+    A valve-signal step that ends: the open-loop steps of [Efe2014] section 5.2
+    move the arm by the valve held open for a while, then closed.
+    """
+
+    PARAMETERS = {
+        "amplitude": Param(1.0, SIGNAL, "pulse height"),
+        "t_start": Param(0.0, "s", "time the pulse starts", min=0.0),
+        "duration": Param(1.0, "s", "how long it lasts", min=0.0),
+        "offset": Param(0.0, SIGNAL, "value outside the pulse"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        on = bk.if_else(t >= p["t_start"], 1.0, 0.0) * bk.if_else(t < p["t_start"] + p["duration"], 1.0, 0.0)
+        return {"y": p["offset"] + p["amplitude"] * on}
 
 
 @register

@@ -10,7 +10,7 @@ import numpy as np
 from hydroservo import backend as bk
 from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, register
 from hydroservo.errors import ParameterError
-from hydroservo.units import VACUUM
+from hydroservo.units import VACUUM, to_si
 
 __all__ = ["ConstantPressure", "Tank", "PressureTable"]
 
@@ -64,8 +64,9 @@ class PressureTable(Component):
         self.set_table(times, pressures)
 
     def set_table(self, times: Any, pressures: Any) -> None:
-        t = np.asarray(times, dtype=float).ravel()
-        pr = np.asarray(pressures, dtype=float).ravel()
+        """Set the table: numbers in SI, or quantities with units (``"30 bar"``, as a model file keeps them)."""
+        t = np.asarray(_si_list(times, "s", f"{self.name}.times"), dtype=float).ravel()
+        pr = np.asarray(_si_list(pressures, "Pa", f"{self.name}.pressures"), dtype=float).ravel()
         if t.size == 0 or t.size != pr.size:
             raise ParameterError(
                 f"{self.name}: times and pressures must be equally long and non-empty; got {t.size} and {pr.size}"
@@ -77,11 +78,24 @@ class PressureTable(Component):
         if np.any(pr < 0):
             raise ParameterError(f"{self.name}.pressures: expected gauge pressures ≥ 0 Pa, got min {pr.min():g} Pa")
         self.times, self.pressures = t, pr
+        given = [*np.atleast_1d(np.asarray(times, dtype=object)).ravel(), *np.atleast_1d(np.asarray(pressures, dtype=object)).ravel()]
+        #: The table as given with its units, so that a model file is written back as its author wrote it.
+        self.table_given: dict[str, list[Any]] | None = (
+            {"times": list(times), "pressures": list(pressures)} if any(isinstance(v, str) for v in given) else None
+        )
 
     def config(self) -> dict[str, Any]:
+        if self.table_given is not None:
+            return dict(self.table_given)
         return {"times": self.times.tolist(), "pressures": self.pressures.tolist()}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"p": p["scale"] * bk.interp(t, self.times, self.pressures)}
+
+
+def _si_list(values: Any, unit: str, what: str) -> list[float]:
+    """A list of numbers (SI) or of quantities with units, in SI."""
+    items = np.atleast_1d(np.asarray(values, dtype=object)).ravel().tolist()
+    return [to_si(v, unit, what=what) if isinstance(v, str) else float(v) for v in items]

@@ -10,6 +10,7 @@ module                   files
 :mod:`.bode`             Bode data (CSV)
 :mod:`.tables`           time tables (CSV) of recorded signals
 :mod:`.results`          simulation results (CSV, MAT)
+:mod:`.linear`           operating points (TOML) and linear models (JSON)
 :mod:`.toml`             the TOML reader and value writer they share
 =======================  ========================================================
 
@@ -27,6 +28,7 @@ from hydroservo.io.component_file import (
 )
 from hydroservo.io.curves import read_bench_curves, read_csv_table, read_static_curves, write_bench_curves
 from hydroservo.io.datasheet import read_datasheet
+from hydroservo.io.linear import read_operating_point, write_linear_model
 from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
 from hydroservo.io.results import write_csv, write_mat
 from hydroservo.io.servovalve import (
@@ -62,6 +64,8 @@ __all__ = [
     "write_csv",
     "write_mat",
     "read_time_table",
+    "read_operating_point",
+    "write_linear_model",
     "read_toml",
     "write_static_characteristic",
     "write_sensitivity",

@@ -15,6 +15,8 @@ module                 plots
                        across temperature ([MareAttarND] Figs. 3-4, 6-8)
 :mod:`.study`          parameter studies: a family of responses coloured by a
                        parameter, metrics against a parameter
+:mod:`.linear`         linear models: the poles with their modes, Bode plots of
+                       input-output pairs
 =====================  ==========================================================
 """
 

@@ -64,8 +64,10 @@ class _Inputs(Mapping[str, Any]):
 
 
 class _Assembler:
-    def __init__(self, system: Structure) -> None:
+    def __init__(self, system: Structure, perturbed: tuple[str, ...] = ()) -> None:
         self.system = system
+        #: A symbol added to each of these inputs (``component.input``): the inputs of a linearisation.
+        self.perturb = {target: ca.SX.sym(f"d({target})") for target in perturbed}
         self.t = ca.SX.sym("t")
         self.p: dict[str, dict[str, ca.SX]] = {}
         self.x: dict[str, dict[str, ca.SX]] = {}
@@ -85,6 +87,11 @@ class _Assembler:
             self.xz[cname] = {**self.x[cname], **self.z[cname]}
 
     def input(self, cname: str, key: str) -> Any:
+        value = self._input(cname, key)
+        target = f"{cname}.{key}"
+        return value + self.perturb[target] if target in self.perturb else value
+
+    def _input(self, cname: str, key: str) -> Any:
         comp = self.system.components[cname]
         if key not in comp.INPUTS:
             raise ModelError(f"{type(comp).__name__} {cname!r} reads undeclared input {key!r}")
@@ -280,8 +287,13 @@ def _algebraic(asm: _Assembler, units: dict[str, str], descriptions: dict[str, s
     return found
 
 
-def assemble(system: Structure) -> tuple[Any, ...]:
-    """The arguments of :class:`~hydroservo.system.model.Model` for ``system``."""
+def assemble(system: Structure, perturbed: tuple[str, ...] = ()) -> tuple[Any, ...]:
+    """The arguments of :class:`~hydroservo.system.model.Model` for ``system``.
+
+    ``perturbed`` names component inputs (``"valve.xv"``) to which a symbol
+    is added, whatever feeds them: the inputs of a linearisation. Their symbols
+    come last in the parameter vector, named ``d(valve.xv)``, in the input's unit.
+    """
     if not system.components:
         raise ModelError(f"system {system.name!r} has no components")
     _check_connections(system)
@@ -293,7 +305,12 @@ def assemble(system: Structure) -> tuple[Any, ...]:
                 f"initial condition {full!r}: {cname!r} has no state {sname!r} (its states depend on its options "
                 f"or size); states: {known}"
             )
-    asm = _Assembler(system)
+    for target in perturbed:
+        cname, _, key = target.partition(".")
+        if cname not in system.components or key not in system.components[cname].INPUTS:
+            known = ", ".join(system.components[cname].INPUTS) if cname in system.components else "no such component"
+            raise ModelError(f"input {target!r}: not an input of the system's components (inputs of {cname!r}: {known})")
+    asm = _Assembler(system, tuple(perturbed))
     units: dict[str, str] = {}
     descriptions: dict[str, str] = {}
     states, rates, nominal = _states(asm, units, descriptions)
@@ -315,6 +332,10 @@ def assemble(system: Structure) -> tuple[Any, ...]:
     param_units = {
         f"{c}.{k}": spec.unit for c, comp in system.components.items() for k, spec in comp.PARAMETERS.items()
     }
+    for target, sym in asm.perturb.items():
+        cname, _, key = target.partition(".")
+        params[sym.name()] = sym
+        param_units[sym.name()] = system.components[cname].INPUTS[key].unit
     return (
         system.name,
         asm.t,

@@ -417,7 +417,13 @@ class Model:
 
     # -- equilibrium -------------------------------------------------------
     def trim(
-        self, p: np.ndarray, *, t: float = 0.0, x_guess: np.ndarray | None = None, tol: float = 1e-9
+        self,
+        p: np.ndarray,
+        *,
+        t: float = 0.0,
+        x_guess: np.ndarray | None = None,
+        tol: float = 1e-9,
+        free: Sequence[str] = (),
     ) -> dict[str, float]:
         """Equilibrium :math:`f(t, x, p) = 0` for the inputs at time ``t``.
 
@@ -425,6 +431,10 @@ class Model:
         Jacobian, from ``x_guess`` (default: the parameter-based initial state).
         Where the equilibrium is not unique (a free integrator, such as an
         open-loop cylinder), the solution nearest the guess is returned.
+
+        ``free`` names states that keep their guessed value and whose rates need
+        not vanish: with a piston's position free, the trim is the *steady
+        motion* of an open-loop drive (constant speed, pressures and spool).
 
         Raises
         ------
@@ -435,29 +445,44 @@ class Model:
 
         p = np.asarray(p, dtype=float)
         x = np.asarray(self.x0(p), dtype=float).ravel() if x_guess is None else np.asarray(x_guess, dtype=float)
+        unknown_free = [n for n in free if n not in self.state_names]
+        if unknown_free:
+            raise TrimError(f"trim of {self.name!r}: free = {unknown_free[0]!r} is not a state; states: {', '.join(self.state_names)}")
+        solved = np.array([n not in free for n in self.state_names])
         z0 = x / self.nominal
 
-        def res(z: np.ndarray) -> np.ndarray:
-            return np.asarray(self._fz(t, z, p), dtype=float).ravel()
+        def full(zs: np.ndarray) -> np.ndarray:
+            z = z0.copy()
+            z[solved] = zs
+            return z
 
-        def jac(z: np.ndarray) -> np.ndarray:
-            return np.asarray(self._jz(t, z, p), dtype=float)
+        def res(zs: np.ndarray) -> np.ndarray:
+            r: np.ndarray = np.asarray(self._fz(t, full(zs), p), dtype=float).ravel()
+            rs: np.ndarray = r[solved]
+            return rs
 
-        sol = least_squares(res, z0, jac=jac, method="trf", xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)
+        def jac(zs: np.ndarray) -> np.ndarray:
+            J: np.ndarray = np.asarray(self._jz(t, full(zs), p), dtype=float)
+            Js: np.ndarray = J[np.ix_(solved, solved)]
+            return Js
+
+        sol = least_squares(res, z0[solved], jac=jac, method="trf", xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)
         r = res(sol.x)
-        worst = int(np.argmax(np.abs(r)))
-        if not np.all(np.isfinite(r)) or np.abs(r[worst]) > tol * max(
-            1.0, np.abs(np.asarray(self._fz(t, z0, p))).max()
+        names = [n for n, keep in zip(self.state_names, solved) if keep]
+        worst = int(np.argmax(np.abs(r))) if r.size else 0
+        if r.size and (
+            not np.all(np.isfinite(r)) or np.abs(r[worst]) > tol * max(1.0, np.abs(res(z0[solved])).max())
         ):
+            nominal = self.nominal[solved][worst]
             raise TrimError(
                 f"no equilibrium found for {self.name!r}: the largest remaining rate is in "
-                f"{self.state_names[worst]} ({r[worst] * self.nominal[worst]:.3g} {si_unit(self.units[self.state_names[worst]])}/s)"
+                f"{names[worst]} ({r[worst] * nominal:.3g} {si_unit(self.units[names[worst]])}/s)"
             )
-        why = self.unconverged(np.array([t]), sol.x[:, None], p)
+        z = full(sol.x)
+        why = self.unconverged(np.array([t]), z[:, None], p)
         if why is not None:
             raise TrimError(f"no equilibrium found for {self.name!r}: {why}")
-        xs = sol.x * self.nominal
-        return dict(zip(self.state_names, xs.tolist()))
+        return dict(zip(self.state_names, (z * self.nominal).tolist()))
 
     def linearize(self, x: np.ndarray | Mapping[str, float], p: np.ndarray, t: float = 0.0) -> np.ndarray:
         """Exact Jacobian :math:`A = \\partial f/\\partial x` at ``(t, x, p)`` (SI)."""

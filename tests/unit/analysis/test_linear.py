@@ -1,0 +1,161 @@
+"""Linear analysis: matrices against hand-derived Jacobians, modes, responses, valve coefficients."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import hydroservo as hs
+from hydroservo import components as c
+from hydroservo.analysis.linear import linearize, operating_point, valve_coefficients
+from hydroservo.errors import ParameterError, TrimError
+from hydroservo.laws.four_way import valve_coefficients as closed_form
+
+
+def mass_spring(m: float = 2.0, B: float = 3.0, k: float = 50.0) -> hs.System:
+    s = hs.System("msd")
+    s.add(c.Mass("m", m=m, B=B, k_spring=k, incline=0.0))
+    s.add(c.Step("f", unit="N", amplitude=1.0))
+    s.connect("f.y", "m.F_ext")
+    return s
+
+
+def test_mass_spring_matrices_modes_and_responses() -> None:
+    """m x'' + B x' + k x = F: A, B exact; one mode at sqrt(k/m) with damping B/(2 sqrt(k m)); static gain 1/k."""
+    m, B, k = 2.0, 3.0, 50.0
+    lin = linearize(mass_spring(m, B, k))
+    assert lin.inputs == ["m.F_ext"] and lin.states == ["m.x", "m.v"]
+    np.testing.assert_allclose(lin.A, [[0, 1], [-k / m, -B / m]], rtol=1e-12)
+    np.testing.assert_allclose(lin.B, [[0], [1 / m]], rtol=1e-12)
+    np.testing.assert_allclose(lin.C, np.eye(2))
+    assert lin.x0["m.x"] == pytest.approx(1.0 / k)  # the trim under the step's 1 N
+    (mode,) = lin.modes()
+    assert mode.frequency == pytest.approx(np.sqrt(k / m) / (2 * np.pi), rel=1e-12)
+    assert mode.damping == pytest.approx(B / (2 * np.sqrt(k * m)), rel=1e-12)
+    assert mode.participation == pytest.approx({"m.x": 0.5, "m.v": 0.5})
+    H = lin.transfer([0.0, np.sqrt(k / m) / (2 * np.pi)], output="m.x")
+    assert abs(H[0]) == pytest.approx(1 / k)
+    assert abs(H[1]) == pytest.approx(1 / (B * np.sqrt(k / m)))  # at resonance |X/F| = 1/(B w_n)
+    t, Y = lin.step(20.0, amplitude=2.0, n_points=2001)
+    assert Y["m.x"][0] == pytest.approx(1 / k)
+    assert Y["m.x"][-1] == pytest.approx(1 / k + 2.0 / k, rel=1e-4)  # settled (tau = 1.33 s)
+    bode = lin.bode(np.logspace(-1, 1, 5), output="m.v")
+    assert bode.gain_db.shape == (1, 5)
+
+
+def test_exports_keep_names() -> None:
+    control = pytest.importorskip("control")
+    lin = linearize(mass_spring())
+    sys = lin.to_control()
+    assert isinstance(sys, control.StateSpace)
+    assert list(sys.state_labels) == ["m:x", "m:v"] and list(sys.input_labels) == ["m:F_ext"]
+    np.testing.assert_allclose(np.ravel(control.dcgain(sys)), [1 / 50, 0.0], atol=1e-12)
+    ss = lin.to_scipy()
+    np.testing.assert_allclose(ss.A, lin.A)
+    d = lin.to_dict()
+    assert d["states"] == ["m.x", "m.v"] and len(d["modes"]) == 1
+
+
+def drive(xv: float = 3e-4, lap: float = 0.0) -> hs.System:
+    """Zero-lapped (or lapped) valve, cylinder with constant bulk modulus and leakage, viscous load."""
+    s = hs.System("drive")
+    s.add(c.ConstantPressure("supply", p=100e5))
+    s.add(c.Tank("tank", p=0.0))
+    s.add(c.Step("cmd", unit="m", amplitude=xv))
+    s.add(
+        c.FourWayValve("valve", c_v=2e-4, D_h=0.02, x_PA=lap, x_AT=lap, x_PB=lap, x_BT=lap)
+    )  # D_h 20 mm: transition at a few Pa, the turbulent law
+    s.add(c.Cylinder("cyl", A_A=2e-3, A_B=1e-3, V_A0=3e-4, V_B0=5e-4, C_Li=1e-12, beta_e=1.2e9, x_min=-0.1, x_max=0.1))
+    s.add(c.Mass("load", m=50.0, B=4e3, incline=0.0))
+    s.connect("cmd.y", "valve.xv")
+    for a, b in (("supply.p", "valve.pS"), ("tank.p", "valve.pT"), ("cyl.pA", "valve.pA"), ("cyl.pB", "valve.pB")):
+        s.connect(a, b)
+    for a, b in (("valve.QA", "cyl.QA"), ("valve.QB", "cyl.QB"), ("load.x", "cyl.x"), ("load.v", "cyl.v"), ("cyl.F", "load.F")):
+        s.connect(a, b)
+    return s
+
+
+def test_steady_motion_against_hand_derived_jacobian() -> None:
+    """The drive moving at constant speed: A and B against the equations written out by hand.
+
+    With N_A = Q_A - A_A v - C_Li (p_A - p_B) zero at a steady motion, the
+    derivative of beta/V_A(x) N_A is beta/V_A dN_A ([Efe2014] eq. 4.13: frozen volumes).
+    """
+    s = drive()
+    lin = linearize(s, t=0.1, free=["load.x"], inputs=["valve.xv", "supply.p"], outputs=["load.v", "cyl.pA"])
+    x0 = lin.x0
+    pA, pB, v = x0["cyl.pA"], x0["cyl.pB"], x0["load.v"]
+    k = closed_form(3e-4, 100e5, 0.0, pA, pB, 2e-4)
+    # the steady motion itself: flows match the piston, forces balance the viscous load
+    assert k["K_Qx_A"] * 3e-4 == pytest.approx(2e-3 * v + 1e-12 * (pA - pB), rel=1e-6)
+    assert pA * 2e-3 - pB * 1e-3 == pytest.approx(4e3 * v, rel=1e-9)
+    assert lin.drift["load.x"] == pytest.approx(v) and abs(lin.drift["load.v"]) < 1e-9
+    VA, VB, beta, CL = 3e-4 + 2e-3 * x0["load.x"], 5e-4 - 1e-3 * x0["load.x"], 1.2e9, 1e-12
+    A = np.zeros((4, 4))  # states: pA, pB, x, v
+    A[0] = [beta / VA * (k["K_Qp_A"] - CL), beta / VA * CL, 0.0, -beta / VA * 2e-3]
+    A[1] = [beta / VB * CL, beta / VB * (k["K_Qp_B"] - CL), 0.0, beta / VB * 1e-3]
+    A[2] = [0, 0, 0, 1]
+    A[3] = [2e-3 / 50, -1e-3 / 50, 0, -4e3 / 50]
+    order = [lin.states.index(n) for n in ("cyl.pA", "cyl.pB", "load.x", "load.v")]
+    row = np.abs(A).max(axis=1, keepdims=True)  # the trim leaves N_A at ~1e-17 of the flows, not zero
+    np.testing.assert_allclose(lin.A[np.ix_(order, order)] / row, A / row, rtol=1e-6, atol=1e-12)
+    dQA_dpS = 2e-4 * 3e-4 / (2 * np.sqrt(100e5 - pA))
+    B = np.array([[beta / VA * k["K_Qx_A"], beta / VA * dQA_dpS], [beta / VB * k["K_Qx_B"], 0.0], [0, 0], [0, 0]])
+    np.testing.assert_allclose(lin.B[order], B, rtol=1e-6, atol=1e-12)
+    assert lin.u0 == pytest.approx({"valve.xv": 3e-4, "supply.p": 100e5})
+    np.testing.assert_allclose(lin.C[0], np.eye(4)[lin.states.index("load.v")])
+    np.testing.assert_allclose(lin.D, 0.0)
+
+
+def test_jacobian_against_finite_differences_of_the_simulated_model() -> None:
+    """The robot arm (Lee's bulk modulus, Stribeck friction, K and H tables): A equals central differences of f.
+
+    At a point of the transient (the spool still opening, the arm accelerating), away from the switch of the
+    hysteresis table at a resting spool, where a difference quotient straddles the jump.
+    """
+    s = hs.load_model("robot-arm")
+    run = s.simulate(t_end=0.15, n_points=2)
+    lin = linearize(s, {n: run[n][-1] for n in s.build().state_names}, t=0.15)
+    model = s.build()
+    p = s.parameter_vector()
+    x = np.array([lin.x0[n] for n in model.state_names])
+    J = np.empty((x.size, x.size))
+    for j in range(x.size):
+        h = 1e-6 * model.nominal[j]
+        e = np.zeros(x.size)
+        e[j] = h
+        J[:, j] = (np.asarray(model.f(0.15, x + e, p)).ravel() - np.asarray(model.f(0.15, x - e, p)).ravel()) / (2 * h)
+    scale = np.abs(J).max(axis=1, keepdims=True) + 1e-30
+    np.testing.assert_allclose(lin.A / scale, J / scale, atol=1e-5)
+
+
+def test_valve_coefficients_match_eqs_4_8_to_4_12() -> None:
+    """Exact derivatives of the component against the closed forms, both flow directions, and in the overlap."""
+    for xv in (3e-4, -3e-4):
+        (vc,) = valve_coefficients(drive(xv), t=0.1, free=["load.x"])
+        for key in ("K_Qx_A", "K_Qx_B", "K_Qp_A", "K_Qp_B", "K_px_A", "K_px_B"):
+            assert vc.model[key] == pytest.approx(vc.closed_form[key], rel=1e-6), (xv, key)
+        assert np.sign(vc.model["K_Qx_A"]) == 1 and np.sign(vc.model["K_Qx_B"]) == -1  # eqs. 4.8-4.9
+    # eq. 4.10 for x_v < 0: K_Qp,A = c_v x_v0 / (2 sqrt(p_A0 - p_T))
+    assert vc.closed_form["K_Qp_A"] == pytest.approx(2e-4 * -3e-4 / (2 * np.sqrt(vc.point["pA"])))
+    # inside the overlap the valve is shut: every coefficient vanishes, K_px is undefined
+    k = closed_form(5e-5, 100e5, 0.0, 40e5, 30e5, 2e-4, 1e-4, 1e-4, 1e-4, 1e-4)
+    assert k["K_Qx_A"] == 0 and k["K_Qp_B"] == 0 and np.isnan(float(k["K_px_A"]))
+
+
+def test_operating_points_and_errors() -> None:
+    s = mass_spring()
+    assert operating_point(s, "initial") == {"m.x": 0.0, "m.v": 0.0}
+    assert operating_point(s, {"m.x": "5 mm"})["m.x"] == pytest.approx(5e-3)
+    lin = linearize(s, {"m.x": 0.1})  # not an equilibrium: the drift says so
+    assert lin.drift["m.v"] == pytest.approx((1.0 - 50 * 0.1) / 2.0)
+    with pytest.raises(ParameterError, match="not a state"):
+        operating_point(s, {"m.q": 1.0})
+    with pytest.raises(ParameterError, match="neither a component input nor a parameter"):
+        linearize(s, inputs=["m.nothing"])
+    with pytest.raises(ParameterError, match="output 'm.q'"):
+        linearize(s, outputs=["m.q"])
+    with pytest.raises(TrimError, match="not a state"):
+        linearize(s, free=["m.q"])
+    with pytest.raises(ParameterError, match="name one"):
+        linearize(s).transfer([1.0])
