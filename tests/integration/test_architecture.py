@@ -45,6 +45,7 @@ DELEGATIONS = {
     ("hydroservo.system.result", "plotting"),  # Result.plot, BatchResult.plot
     ("hydroservo.system.result", "analysis"),  # BatchResult.table
     ("hydroservo.analysis.frequency", "plotting"),  # FrequencyResponse.plot
+    ("hydroservo.analysis.sensitivity", "plotting"),  # OneAtATime.plot, GlobalStudy.plot
 }
 
 

@@ -483,6 +483,11 @@ def _overwrite_cases() -> dict[str, tuple[Callable[[Workspace], list[Any]], str]
         ),
         "examples-over-existing-files": (lambda w: ["examples", w.out], "valve_cylinder.toml"),
         "linearize-over-existing-json": (lambda w: ["linearize", "robot-arm", "--out", w.out], "robot-arm-linear.json"),
+        "sensitivity-over-existing-indices": (
+            lambda w: ["sensitivity", "robot-arm", "--method", "morris", "--n", "2", "--vary", "load.m=15kg..35kg",
+                       "--out", w.out],
+            "indices.csv",
+        ),
     }
 
 
@@ -504,6 +509,7 @@ OUT_IS_FILE: dict[str, Callable[[Workspace], list[Any]]] = {
     "identify": identify_argv,
     "examples": lambda w: ["examples", w.out],
     "linearize": lambda w: ["linearize", "robot-arm", "--out", w.out],
+    "sensitivity": lambda w: ["sensitivity", "robot-arm", "--vary", "load.m=15kg..35kg", "--out", w.out],
 }
 
 

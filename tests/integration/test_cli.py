@@ -224,3 +224,55 @@ def test_linearize_refuses_bad_options(tmp_path, cli, argv, patterns) -> None:  
     for pat in patterns:
         assert re.search(pat, err), (pat, err)
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_sensitivity_one_at_a_time_and_sobol(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
+    """oat: a table and a family plot per factor; sobol: indices with intervals, the runs as Parquet, resumable."""
+    import pandas as pd
+
+    code, text, err = cli("sensitivity", "robot-arm", "--vary", "valve.c_v=1e-4..2e-4", "--levels", "3",
+                          "--vary", "cyl.bulk_modulus=lee,constant", "--t-end", "0.8", "--points", "81",
+                          "--out", str(tmp_path / "oat"))
+    assert code == 0, err
+    assert sorted(p.name for p in (tmp_path / "oat").iterdir()) == [
+        "oat-cyl.bulk_modulus.png", "oat-valve.c_v.png", "oat.csv"]
+    table = pd.read_csv(tmp_path / "oat" / "oat.csv")
+    assert list(table["level"])[:3] == ["0.0001", "0.00015", "0.0002"] and len(table) == 5
+    argv = ["sensitivity", "robot-arm", "--method", "sobol", "--n", "8", "--vary", "valve.c_v=1e-4..2e-4",
+            "--vary", "load.m=15kg..35kg", "--t-end", "0.8", "--points", "81", "--out", str(tmp_path / "sobol"), "--json"]
+    code, text, err = cli(*argv)
+    assert code == 0, err
+    report = json.loads(text)
+    assert report["runs"]["runs"] == 8 * 4 and report["method"] == "sobol"
+    row = next(r for r in report["indices"] if r["metric"] == "final(x_mm) [mm]" and r["parameter"] == "valve.c_v")
+    assert row["ST"] > 0.5 and row["ST_conf"] >= 0
+    runs = pd.read_parquet(tmp_path / "sobol" / "runs")
+    assert len(runs) == 32 and set(runs["status"]) == {"ok"}
+    (tmp_path / "sobol" / "indices.csv").unlink()
+    (tmp_path / "sobol" / "indices.png").unlink()
+    code, text, err = cli(*argv)  # the same study again: every run is read back, none run
+    assert code == 0 and json.loads(text)["runs"]["resumed"] == 32
+
+
+@pytest.mark.parametrize(
+    "argv, patterns",
+    [
+        (["--vary", "valve.c_v"], [r"--vary", r"NAME=LOW\.\.HIGH"]),
+        (["--vary", "valve.c_v=1e-4.."], [r"--vary", r"LOW\.\.HIGH"]),
+        (["--method", "sobol", "--vary", "cyl.bulk_modulus=lee,constant"], [r"--method sobol", r"NAME=LOW\.\.HIGH"]),
+        (["--method", "sobol", "--n", "100", "--vary", "load.m=1..2"], [r"n = 100", r"power of two"]),
+        (["--vary", "load.m=1..2", "--metric", "final(q)"], [r"final\(q\)", r"not a state"]),
+        (["--vary", "load.q=1..2"], [r"load", r"q"]),
+        (["--vary", "cyl.bulk_modulus=lee,air"], [r"cyl\.bulk_modulus", r"'air'", r"lee"]),
+        (["--vary", "load.m=2kg..1kg"], [r"load\.m", r"low < high"]),
+        (["--vary", "load.m=1..2", "--vary", "load.m=3..4"], [r"load\.m", r"twice"]),
+    ],
+)
+def test_sensitivity_refuses_bad_options(tmp_path, cli, argv, patterns) -> None:  # type: ignore[no-untyped-def]
+    import re
+
+    code, _, err = cli("sensitivity", "robot-arm", *argv, "--out", str(tmp_path / "out"))
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err, err
+    for pat in patterns:
+        assert re.search(pat, err), (pat, err)
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("*.*"))

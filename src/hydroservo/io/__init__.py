@@ -11,6 +11,7 @@ module                   files
 :mod:`.tables`           time tables (CSV) of recorded signals
 :mod:`.results`          simulation results (CSV, MAT)
 :mod:`.linear`           operating points (TOML) and linear models (JSON)
+:mod:`.runs`             the runs of a study, written as they arrive (Parquet parts)
 :mod:`.toml`             the TOML reader and value writer they share
 =======================  ========================================================
 
@@ -31,6 +32,7 @@ from hydroservo.io.datasheet import read_datasheet
 from hydroservo.io.linear import read_operating_point, write_linear_model
 from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
 from hydroservo.io.results import write_csv, write_mat
+from hydroservo.io.runs import RunStore, read_runs
 from hydroservo.io.servovalve import (
     write_bench_bode,
     write_blocked,
@@ -66,6 +68,8 @@ __all__ = [
     "read_time_table",
     "read_operating_point",
     "write_linear_model",
+    "RunStore",
+    "read_runs",
     "read_toml",
     "write_static_characteristic",
     "write_sensitivity",

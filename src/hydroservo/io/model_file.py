@@ -127,6 +127,8 @@ def model_to_toml(system: System) -> str:
         lines.append(f"plots = {toml_value(system.plots)}  # panels of signals for plots")
     if system.plot_units:
         lines.append(f"plot_units = {toml_value(system.plot_units)}")
+    if system.metrics:
+        lines.append(f"metrics = {toml_value(system.metrics)}  # what a study measures of each run")
     if system.fluid is not None:
         given = dict(system.fluid.given)
         lines += ["", "[fluid]", f"name = {toml_string(system.fluid.name)}"]
@@ -336,6 +338,12 @@ def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | No
             f'{where}: [model] plot_units = {units!r}: expected a table of signal = "unit", e.g. {{ p1 = "psi" }}'
         )
     system.plot_units = {str(k): v for k, v in units.items()}
+    metrics = meta.get("metrics", [])
+    if not (isinstance(metrics, list) and all(isinstance(m, str) for m in metrics)):
+        raise ModelFileError(
+            f'{where}: [model] metrics = {metrics!r}: expected a list of metrics, e.g. ["final(x_mm)", "peak(cyl.pA)"]'
+        )
+    system.metrics = list(metrics)
     _set_fluid(system, data.get("fluid"), where)
     _add_components(system, data.get("components"), where, base)
     for target, source in data.get("connections", {}).items():

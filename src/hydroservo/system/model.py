@@ -635,7 +635,7 @@ class Model:
         failures = {int(k): str(v) for k, v in (failed or {}).items()}
         good = np.array([i not in failures for i in range(n)])
         X0 = np.full((self.nx, n), np.nan)
-        if good.any():
+        if good.any() and self.nx:  # a model without states (pure functions of its parameters) has no x0
             X0[:, good] = np.asarray(self.x0.map(int(good.sum()))(P[:, good]), dtype=float).reshape(self.nx, -1)
         for j in np.flatnonzero(good & ~np.all(np.isfinite(X0), axis=0)).tolist():
             bad = [nm for nm, v in zip(self.state_names, X0[:, j]) if not np.isfinite(v)]

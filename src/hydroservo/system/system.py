@@ -116,6 +116,8 @@ class System:
         #: panels for plots of a run (lists of signal names) and the units to show them in
         self.plots: list[list[str]] = []
         self.plot_units: dict[str, str] = {}
+        #: what a study measures of each run by default (:mod:`hydroservo.analysis.metrics`), e.g. "final(x_mm)"
+        self.metrics: list[str] = []
         #: the circuit's fluid (:meth:`set_fluid`), or None: each component keeps its own values
         self.fluid: CircuitFluid | None = None
         self._model: Model | None = None
@@ -338,6 +340,12 @@ class System:
             cname, pname = key.split(".", 1)
             out[key] = self[cname].parse(pname, val)
         return out
+
+    def __getstate__(self) -> dict[str, Any]:
+        """A system pickles without its compiled model (CasADi graphs do not pickle); it is rebuilt on first use."""
+        state = dict(self.__dict__)
+        state["_model"], state["_model_key"] = None, None
+        return state
 
     def copy(self) -> System:
         """A deep copy (components included), e.g. to vary options."""
