@@ -483,6 +483,9 @@ def _overwrite_cases() -> dict[str, tuple[Callable[[Workspace], list[Any]], str]
         ),
         "examples-over-existing-files": (lambda w: ["examples", w.out], "valve_cylinder.toml"),
         "linearize-over-existing-json": (lambda w: ["linearize", "robot-arm", "--out", w.out], "robot-arm-linear.json"),
+        "ladder-over-existing-csv": (
+            lambda w: ["ladder", "robot-arm", "--steps", "36.8", "--models", "nonlinear", "--out", w.out], "ladder.csv"
+        ),
         "sensitivity-over-existing-indices": (
             lambda w: ["sensitivity", "robot-arm", "--method", "morris", "--n", "2", "--vary", "load.m=15kg..35kg",
                        "--out", w.out],
@@ -510,6 +513,7 @@ OUT_IS_FILE: dict[str, Callable[[Workspace], list[Any]]] = {
     "examples": lambda w: ["examples", w.out],
     "linearize": lambda w: ["linearize", "robot-arm", "--out", w.out],
     "sensitivity": lambda w: ["sensitivity", "robot-arm", "--vary", "load.m=15kg..35kg", "--out", w.out],
+    "ladder": lambda w: ["ladder", "robot-arm", "--steps", "36.8", "--out", w.out],
 }
 
 
@@ -762,6 +766,7 @@ def _good_content(kind: str) -> str:
         "bench-csv": ex["flow_gain.csv"],
         "identify-start-file": ex["guess.toml"],
         "operating-point-file": '"cyl.pA" = "6 bar"\n',
+        "measured-response-csv": "t [s], x [mm]\n0, 0\n1.5, 33\n",
     }[kind]
 
 
@@ -797,6 +802,8 @@ def _reader_argv(ws: Workspace, kind: str, bad: Path) -> list[Any]:
         return ["valve", "identify", ws.inp / "flow_gain.csv", "--start", bad, *out]
     if kind == "operating-point-file":
         return ["linearize", "robot-arm", "--at", bad, *out]
+    if kind == "measured-response-csv":
+        return ["ladder", "robot-arm", "--steps", "36.8", "--measured", f"36.8={bad}", *out]
     raise AssertionError(kind)
 
 
@@ -813,6 +820,7 @@ READER_KINDS = {
     "bench-csv": ".csv",
     "identify-start-file": ".toml",
     "operating-point-file": ".toml",
+    "measured-response-csv": ".csv",
 }
 BAD_FILES = ["binary", "latin-1", "empty", "a-folder", "missing"]
 

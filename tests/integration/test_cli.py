@@ -276,3 +276,43 @@ def test_sensitivity_refuses_bad_options(tmp_path, cli, argv, patterns) -> None:
     for pat in patterns:
         assert re.search(pat, err), (pat, err)
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("*.*"))
+
+
+def test_ladder_prints_the_table_and_writes_its_files(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
+    measured = tmp_path / "run_368.csv"
+    measured.write_text("t [s],x [mm]\n0,0\n1.5,33.0\n")
+    code, text, err = cli("ladder", "robot-arm", "--steps", "25.8,36.8", "--models", "nonlinear,linear,simplified-feedback",
+                          "--measured", f"36.8={measured}", "--measured", f"25.8={measured}", "--points", "101",
+                          "--out", str(tmp_path / "lad"), "--json")
+    assert code == 0, err
+    report = json.loads(text)
+    assert report["reference"] == "measured" and report["parameter"] == "command.amplitude" and report["output"] == "x_mm"
+    names = [m["model"] for m in report["models"]]
+    assert names == ["nonlinear", "linear", "simplified-feedback", "improved nonlinear", "improved linear",
+                     "improved simplified-feedback"]
+    row = report["models"][3]
+    assert row["error 36.8 % [%]"] == pytest.approx(100 * (row["displacement 36.8 %"] - 33.0) / 33.0)
+    assert sorted(p.name for p in (tmp_path / "lad").iterdir()) == ["ladder-classes.png", "ladder-responses.png", "ladder.csv"]
+    code, text, _ = cli("ladder", "robot-arm", "--steps", "36.8", "--models", "nonlinear,linear", "--out", str(tmp_path / "l2"))
+    assert code == 0 and "improved linear" in text and "A accurate" in text
+
+
+@pytest.mark.parametrize(
+    "argv, patterns",
+    [
+        (["--steps", "0,50"], [r"--steps", r"0 to 100"]),
+        (["--models", "linear,cubic"], [r"--models", r"'cubic'"]),
+        (["--output", "x_cm"], [r"--output", r"x_cm"]),
+        (["--parameter", "command.height"], [r"command", r"height"]),
+        (["--measured", "36.8"], [r"--measured", r"STEP=FILE"]),
+        (["--free", "load.q"], [r"load\.q", r"not a state"]),
+    ],
+)
+def test_ladder_refuses_bad_options(tmp_path, cli, argv, patterns) -> None:  # type: ignore[no-untyped-def]
+    import re
+
+    code, _, err = cli("ladder", "robot-arm", *argv, "--out", str(tmp_path / "out"))
+    assert code == 2 and err.count("\n") == 1 and "Traceback" not in err, err
+    for pat in patterns:
+        assert re.search(pat, err), (pat, err)
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())

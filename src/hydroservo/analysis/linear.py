@@ -13,9 +13,11 @@ unknowns included through the implicit-function theorem), never finite
 differences. An *input* is either a component input (``"valve.u"``: a
 perturbation added to whatever feeds it, so a connected input is cut open
 for the linearisation and nothing else changes) or a parameter
-(``"supply.p"``). This is the general form of the linearised model of
-[Efe2014] section 4.3 (eqs. 4.5-4.14): volumes, bulk moduli and valve
-coefficients frozen at the point.
+(``"supply.p"``). At an equilibrium or a steady motion this is the general
+form of the linearised model of [Efe2014] section 4.3 (eqs. 4.5-4.14):
+volumes, bulk moduli and valve coefficients frozen at the point (where the
+flows into a chamber do not balance, the derivative of its volume and bulk
+modulus adds terms the thesis's form does not have).
 
 :func:`valve_coefficients` gives the valve sensitivity coefficients of
 [Efe2014] eqs. 4.8-4.12 (flow gain, flow-pressure coefficient, pressure
@@ -33,14 +35,16 @@ from typing import TYPE_CHECKING, Any
 import casadi as ca
 import numpy as np
 
-from hydroservo.errors import ModelError, ParameterError
+from hydroservo.errors import ModelError, ParameterError, TrimError
 from hydroservo.system.assembly import assemble
 
 if TYPE_CHECKING:
     from hydroservo.analysis.frequency import FrequencyResponse
     from hydroservo.system.system import System
 
-__all__ = ["LinearModel", "Mode", "ValveCoefficients", "linearize", "operating_point", "valve_coefficients"]
+__all__ = [
+    "LinearModel", "Mode", "ValveCoefficients", "linearize", "operating_point", "valve_coefficients", "input_values",
+]
 
 #: Component types whose outputs are signals set by time alone: their outputs are a system's natural inputs.
 SIGNALS = ("Step", "Ramp", "Sine", "Square", "Table", "Pulse")
@@ -170,7 +174,12 @@ class LinearModel:
         eye = np.eye(As.shape[0])
         for k, fk in enumerate(f):
             if As.size:
-                H[k] = Cs[o] @ np.linalg.solve(2j * np.pi * fk * eye - As, Bs[:, i]) + self.D[o, i]
+                try:
+                    H[k] = Cs[o] @ np.linalg.solve(2j * np.pi * fk * eye - As, Bs[:, i]) + self.D[o, i]
+                except np.linalg.LinAlgError:
+                    raise ParameterError(
+                        f"frequency {fk:g} Hz: the model has a pole there (a free integrator at 0 Hz); its response is unbounded"
+                    ) from None
             else:
                 H[k] = self.D[o, i]
         return H
@@ -200,10 +209,14 @@ class LinearModel:
 
         Exact for the linear model (zero-order hold on the output grid).
         Returns the times and every output as deviation plus its operating value.
+        The deviation model leaves out the drift of a steady motion (a moving
+        piston's position advances by its speed besides what is shown).
         """
         from scipy.linalg import expm
 
         i = self._index(self.inputs, input, "input")
+        if int(n_points) < 2 or not float(t_end) > 0:
+            raise ParameterError(f"step: t_end = {t_end!r}, n_points = {n_points!r}: expected a positive duration and at least 2 points")
         t = np.linspace(0.0, float(t_end), int(n_points))
         As, Bs, Cs = self._scaled()
         n = As.shape[0]
@@ -303,7 +316,15 @@ def operating_point(
     if at == "initial":
         return dict(zip(model.state_names, x.tolist()))
     if at == "trim":
-        return model.trim(p, t=t, x_guess=x, free=free)
+        try:
+            return model.trim(p, t=t, x_guess=x, free=free)
+        except TrimError:
+            if not t > 0:
+                raise
+        # far from the initial state (a drive moving fast): start from where a run is at time t
+        run = system.simulate(t, params=params, n_points=2)
+        guess = np.array([run[n][-1] for n in model.state_names])
+        return model.trim(p, t=t, x_guess=guess, free=free)
     raise ParameterError(f"operating point {at!r}: expected 'trim', 'initial' or a mapping of states to values")
 
 
@@ -330,18 +351,24 @@ def linearize(
             "(valve.u) or parameters (supply.p)"
         )
     ports, param_inputs = [], []
-    for name in names:
+    for i, name in enumerate(names):
         cname, _, key = name.partition(".")
         comp = system.components.get(cname)
         if comp is not None and key in comp.INPUTS:
             ports.append(name)
+        elif comp is not None and key in comp.OPTIONS:
+            raise ParameterError(f"input {name!r}: an option (a structural choice), not a number to perturb")
         else:
             try:
-                param_inputs.append(system.parameter_key(name))
+                names[i] = system.parameter_key(name)  # a former name becomes the current one
             except (ParameterError, ModelError, KeyError):
                 raise ParameterError(
                     f"input {name!r}: neither a component input nor a parameter of {system.name!r}"
                 ) from None
+            param_inputs.append(names[i])
+    twice = sorted({n for n in names if names.count(n) > 1})
+    if twice:
+        raise ParameterError(f"inputs: {', '.join(twice)} given twice")
     x0 = operating_point(system, at, params=params, t=t, free=free)
     (name, tsym, x, p, f, y, _x0, state_names, parameter_names, output_names, units, _desc, nominal,
      param_units, *_rest) = assemble(system, tuple(ports))
@@ -387,6 +414,23 @@ def linearize(
     )
 
 
+def input_values(
+    system: System, x: Mapping[str, float], *, params: Mapping[str, Any] | None = None, t: float = 0.0,
+    components: Sequence[str] | None = None,
+) -> dict[str, float]:
+    """The value of every input of ``components`` (default: all) at the state ``x`` and time ``t`` (SI)."""
+    (_, tsym, xs, p, _f, y, *_rest) = assemble(system)
+    model = system.build()
+    signals = {**dict(zip(model.state_names, ca.vertsplit(xs))), **dict(zip(model.output_names, ca.vertsplit(y)))}
+    names = [f"{c}.{k}" for c in (components or list(system.components)) for k in system.components[c].INPUTS]
+    if not names:
+        return {}
+    fun = ca.Function("inputs", [tsym, xs, p], [ca.vertcat(*[_input_value(system, n, signals, p, model.parameter_names) for n in names])])
+    xv = np.array([x[s] for s in model.state_names])
+    values = np.asarray(fun(t, xv, system.parameter_vector(params)), dtype=float).ravel()
+    return dict(zip(names, values.tolist()))
+
+
 def _port_unit(system: System, target: str) -> str:
     cname, _, key = target.partition(".")
     return system.components[cname].INPUTS[key].unit
@@ -410,13 +454,16 @@ def _input_value(system: System, target: str, signals: Mapping[str, Any], p: Any
 
 @dataclass
 class ValveCoefficients:
-    """Valve sensitivity coefficients of one four-way valve at an operating point ([Efe2014] eqs. 4.8-4.12).
+    r"""Valve sensitivity coefficients of one four-way valve at an operating point ([Efe2014] eqs. 4.8-4.12).
 
     ``model`` holds the exact derivatives of the component's own flows (its
-    regularisation, leakage and compensation tables included); ``closed_form``
-    those of eqs. 4.8-4.11 for the valve's parameters (for a
+    regularisation, leakage and compensation tables included, the slope of
+    the tables too); ``closed_form`` those of eqs. 4.8-4.11 for the valve's
+    parameters, with the compensated coefficient :math:`c_{v,com} = K H c_v`
+    at the point (for a
     :class:`~hydroservo.components.valves.four_way.FourWayValve`; empty for
-    other valves). Keys: ``K_Qx_A``, ``K_Qx_B`` [m^2/s], ``K_Qp_A``, ``K_Qp_B``
+    other valves). Where the table's slope :math:`dK/dx_v` is not zero the two
+    flow gains differ by :math:`c_v\,x_v\,H\,dK/dx_v\sqrt{\Delta p}`. Keys: ``K_Qx_A``, ``K_Qx_B`` [m^2/s], ``K_Qp_A``, ``K_Qp_B``
     [m^3/(s Pa)], ``K_px_A``, ``K_px_B`` [Pa/m].
     """
 
@@ -455,9 +502,12 @@ def valve_coefficients(
         model["K_px_B"] = model["K_Qx_B"] / model["K_Qp_B"] if model["K_Qp_B"] else float("nan")
         point = {k: lin.u0[f"{cname}.{k}"] for k in ("xv", "pS", "pT", "pA", "pB")}
         form: dict[str, float] = {}
-        if type(comp).__name__ == "FourWayValve":
+        compensation = getattr(comp, "compensation", None)
+        if type(comp).__name__ == "FourWayValve" and callable(compensation):
             v = system.parameter_values() | system.parse_parameters(params)
             pv = {k: v[f"{cname}.{k}"] for k in ("c_v", "x_PA", "x_AT", "x_PB", "x_BT")}
+            vv = input_values(system, x0, params=params, t=t, components=[cname]).get(f"{cname}.vv", 0.0)
+            pv["c_v"] *= float(compensation(point["xv"], vv, v[f"{cname}.xv_max"]))  # c_v,com of eq. 3.23
             form = {k: float(val) for k, val in closed(point["xv"], point["pS"], point["pT"], point["pA"], point["pB"], **pv).items()}
         found.append(ValveCoefficients(cname, point, {k: float(val) for k, val in model.items()}, form))
     return found

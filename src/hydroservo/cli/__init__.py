@@ -5,6 +5,7 @@ module                 commands
 =====================  ==========================================================
 :mod:`.models`         ``models``, ``simulate``, ``export``
 :mod:`.linear`         ``linearize``
+:mod:`.ladder`         ``ladder``
 :mod:`.sensitivity`    ``sensitivity``
 :mod:`.components`     ``components``, ``describe``
 :mod:`.valve`          ``valve fit``, ``valve bode``, ``valve fit-dynamics``
@@ -29,7 +30,7 @@ import warnings
 from collections.abc import Sequence
 from typing import NoReturn
 
-from hydroservo.cli import components, examples, fluid, linear, models, sensitivity, servovalve, validate, valve
+from hydroservo.cli import components, examples, fluid, ladder, linear, models, sensitivity, servovalve, validate, valve
 from hydroservo.errors import FluidRangeWarning, HydroservoError, ImplausibleResultWarning, RenamedWarning
 from hydroservo.version import __version__
 
@@ -52,6 +53,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
     models.add_parsers(sub)
     linear.add_parsers(sub)
+    ladder.add_parsers(sub)
     sensitivity.add_parsers(sub)
     components.add_parsers(sub)
     valve.add_parsers(sub)

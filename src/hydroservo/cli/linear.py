@@ -102,7 +102,7 @@ def _print(lin: Any, valves: list[Any], files: dict[str, str]) -> None:
     print(f"    {'pole [1/s]':>26}  {'f_n [Hz]':>9}  {'damping':>7}  {'tau [s]':>9}  states taking part")
     for m in lin.modes():
         lam = m.eigenvalue
-        pole = f"{lam.real:.4g}" + (f" ± {abs(lam.imag):.4g}j" if m.oscillatory else "")
+        pole = f"{lam.real + 0.0:.4g}" + (f" ± {abs(lam.imag):.4g}j" if m.oscillatory else "")
         zeta = "   -   " if m.damping != m.damping else f"{m.damping:7.3f}"
         tau = f"{m.time_constant:9.3g}" if abs(m.time_constant) < 1e12 else "      inf"
         parts = ", ".join(f"{s} {100 * m.participation[s]:.0f}%" for s in m.main_states(0.1))

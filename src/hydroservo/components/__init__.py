@@ -17,6 +17,8 @@ module                 components
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Step, Pulse, Ramp, Sine, Square, Table
 :mod:`.control`        Sum, Gain, Lag, Saturation, PID, Amplifier, Transducer
+:mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
+                       cylinder, expanded about an operating point)
 =====================  ==========================================================
 
 What a component is (declarations and equations): :mod:`.base`.
@@ -38,6 +40,7 @@ from hydroservo.components.base import (
 from hydroservo.components.control import PID, Amplifier, Gain, Lag, Saturation, Sum, Transducer
 from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
+from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
 from hydroservo.components.pumps import Motor, Pump, VariablePump
 from hydroservo.components.signals import Pulse, Ramp, Sine, Square, Step, Table
@@ -116,4 +119,6 @@ __all__ = [
     "PID",
     "Amplifier",
     "Transducer",
+    "Linearized",
+    "LoadPressureCylinder",
 ]

@@ -155,14 +155,18 @@ def valve_coefficients(
     The derivatives of the turbulent flows of :func:`four_way_valve_flows`
     (without regularisation or leakage) into ports A and B, [Efe2014] eqs.
     4.8-4.12, in general form: every edge contributes while it is open, with
-    its opening :math:`x_v - x_o` (the thesis writes :math:`x_{v0}` in eqs.
-    4.10-4.11, which is the opening only for a zero-lapped valve):
+    its opening :math:`f(x) = \max(x, 0)` of eq. 3.21 (the thesis writes
+    :math:`x_{v0}` in eqs. 4.10-4.11, which is the opening only for a
+    zero-lapped valve), and with the sign of its pressure drop (a load that
+    overruns the supply reverses an edge's flow, eq. 3.18):
 
     .. math::
-        K_{Qx,A} &= \partial Q_A/\partial x_v = c_v\,[x_v > x_{PA}]\sqrt{|p_S - p_A|}
-                   + c_v\,[-x_v > x_{AT}]\sqrt{|p_A - p_T|}\
-        K_{Qp,A} &= \partial Q_A/\partial p_A = -rac{c_v f(x_v - x_{PA})}{2\sqrt{|p_S - p_A|}}
-                   - rac{c_v f(-x_v - x_{AT})}{2\sqrt{|p_A - p_T|}}\
+        K_{Qx,A} &= \frac{\partial Q_A}{\partial x_v}
+                  = c_v\,[x_v > x_{PA}]\,\mathrm{sgn}(p_S - p_A)\sqrt{|p_S - p_A|}
+                   + c_v\,[-x_v > x_{AT}]\,\mathrm{sgn}(p_A - p_T)\sqrt{|p_A - p_T|}\\
+        K_{Qp,A} &= \frac{\partial Q_A}{\partial p_A}
+                  = -\frac{c_v f(x_v - x_{PA})}{2\sqrt{|p_S - p_A|}}
+                   - \frac{c_v f(-x_v - x_{AT})}{2\sqrt{|p_A - p_T|}}\\
         K_{px} &= K_{Qx}/K_{Qp}
 
     and the same for B with its edges (``K_Qx_B`` is negative: positive spool
@@ -178,8 +182,9 @@ def valve_coefficients(
     p_S, p_T, p_A, p_B : array_like
         Supply, tank and port pressures [Pa].
     c_v : array_like
-        Flow coefficient per edge [m^2/s/Pa^0.5] (with any compensation
-        :math:`K(x_v)H(x_v,d_f)` applied).
+        Flow coefficient per edge [m^2/s/Pa^0.5], with any compensation
+        :math:`K(x_v)H(x_v,d_f)` applied at the point (eqs. 3.22-3.23; the
+        derivative of the tables is not part of eqs. 4.8-4.11).
     x_PA, x_AT, x_PB, x_BT : array_like
         Overlap of each edge [m] (negative: underlap).
 
@@ -203,14 +208,15 @@ def valve_coefficients(
     >>> round(float(k["K_Qx_A"]), 6), round(float(k["K_px_A"]) / 1e9, 9)
     (0.01, -8.0)
     """
-    root_SA, root_AT = bk.sqrt(bk.fabs(p_S - p_A)), bk.sqrt(bk.fabs(p_A - p_T))
-    root_SB, root_BT = bk.sqrt(bk.fabs(p_S - p_B)), bk.sqrt(bk.fabs(p_B - p_T))
+    drops = {"SA": p_S - p_A, "AT": p_A - p_T, "SB": p_S - p_B, "BT": p_B - p_T}
+    root = {k: bk.sqrt(bk.fabs(d)) for k, d in drops.items()}
+    signed = {k: bk.if_else(d >= 0, 1.0, -1.0) * root[k] for k, d in drops.items()}
     o_PA, o_AT, o_PB, o_BT = opening(x_v - x_PA), opening(-x_v - x_AT), opening(-x_v - x_PB), opening(x_v - x_BT)
     on = {k: bk.if_else(o > 0, 1.0, 0.0) for k, o in (("PA", o_PA), ("AT", o_AT), ("PB", o_PB), ("BT", o_BT))}
-    K_Qx_A = c_v * (on["PA"] * root_SA + on["AT"] * root_AT)
-    K_Qx_B = -c_v * (on["PB"] * root_SB + on["BT"] * root_BT)
-    K_Qp_A = -c_v * (o_PA / (2 * bk.fmax(root_SA, 1e-300)) + o_AT / (2 * bk.fmax(root_AT, 1e-300)))
-    K_Qp_B = -c_v * (o_PB / (2 * bk.fmax(root_SB, 1e-300)) + o_BT / (2 * bk.fmax(root_BT, 1e-300)))
+    K_Qx_A = c_v * (on["PA"] * signed["SA"] + on["AT"] * signed["AT"])
+    K_Qx_B = -c_v * (on["PB"] * signed["SB"] + on["BT"] * signed["BT"])
+    K_Qp_A = -c_v * (o_PA / (2 * bk.fmax(root["SA"], 1e-300)) + o_AT / (2 * bk.fmax(root["AT"], 1e-300)))
+    K_Qp_B = -c_v * (o_PB / (2 * bk.fmax(root["SB"], 1e-300)) + o_BT / (2 * bk.fmax(root["BT"], 1e-300)))
     nan = float("nan")
     return {
         "K_Qx_A": K_Qx_A,

@@ -62,7 +62,11 @@ def plot_linear_bode(
         H = lin.transfer(f, inp, out)
         unit_in = si_unit(lin.units.get(inp, "")) or "1"
         unit_out = si_unit(lin.units.get(out, "")) or "1"
-        ax_g.loglog(f, np.abs(H))
+        if np.any(np.abs(H) > 0):
+            ax_g.loglog(f, np.abs(H))
+        else:
+            ax_g.set_xscale("log")
+            ax_g.text(0.5, 0.5, "no effect of this input", transform=ax_g.transAxes, ha="center", va="center")
         ax_g.set_ylabel(f"|{out}| / |{inp}|\n[{unit_out} per {unit_in}]", fontsize=8)
         ax_p.semilogx(f, np.degrees(np.unwrap(np.angle(H))))
         ax_p.set_ylabel("phase [deg]", fontsize=8)

@@ -448,7 +448,11 @@ class Model:
         unknown_free = [n for n in free if n not in self.state_names]
         if unknown_free:
             raise TrimError(f"trim of {self.name!r}: free = {unknown_free[0]!r} is not a state; states: {', '.join(self.state_names)}")
-        solved = np.array([n not in free for n in self.state_names])
+        solved = np.array([n not in free for n in self.state_names], dtype=bool)
+        if self.nx == 0:
+            return {}
+        if not solved.any():
+            raise TrimError(f"trim of {self.name!r}: every state is free; nothing to solve for")
         z0 = x / self.nominal
 
         def full(zs: np.ndarray) -> np.ndarray:
@@ -482,6 +486,18 @@ class Model:
         why = self.unconverged(np.array([t]), z[:, None], p)
         if why is not None:
             raise TrimError(f"no equilibrium found for {self.name!r}: {why}")
+        if free:
+            # a steady motion: the free states' rates must be constant too (d/dt f = J f = 0), or it is no steady state
+            fz = np.asarray(self._fz(t, z, p), dtype=float).ravel()
+            Jz = np.asarray(self._jz(t, z, p), dtype=float)
+            change = Jz @ fz
+            scale = np.abs(Jz).max() * np.abs(fz).max()
+            k = int(np.argmax(np.abs(change)))
+            if scale > 0 and abs(change[k]) > 1e-6 * scale:
+                raise TrimError(
+                    f"trim of {self.name!r} with {', '.join(free)} free: no steady motion; the rate of "
+                    f"{self.state_names[k]} keeps changing ({change[k] * self.nominal[k]:.3g} {si_unit(self.units[self.state_names[k]])}/s²)"
+                )
         return dict(zip(self.state_names, (z * self.nominal).tolist()))
 
     def linearize(self, x: np.ndarray | Mapping[str, float], p: np.ndarray, t: float = 0.0) -> np.ndarray:

@@ -133,6 +133,28 @@ class System:
             self._apply_fluid(component, self.fluid.properties())
         return component
 
+    def replace(self, component: Component) -> Component:
+        """Put ``component`` in place of the component of the same name, keeping every connection and
+        hydraulic link: it must offer the signals and ports they use (a linearised version of it does)."""
+        name = component.name
+        if name not in self.components:
+            raise ModelError(f"replace: no component {name!r} in system {self.name!r}")
+        used = {ref.split(".", 1)[1] for pair in self.connections.items() for ref in pair if ref.split(".", 1)[0] == name}
+        ports = {ref.split(".", 1)[1] for pair in self.links for ref in pair if ref.split(".", 1)[0] == name}
+        offered = set(component.INPUTS) | set(component.OUTPUTS)
+        missing = sorted((used - offered) | (ports - set(component.HYDRAULIC)))
+        if missing:
+            raise ModelError(
+                f"replace {name!r}: {type(component).__name__} has no {', '.join(missing)}, which the system connects"
+            )
+        self.components[name] = component
+        for state in [k for k in self.initial if k.split(".", 1)[0] == name and k.split(".", 1)[1] not in component.STATES]:
+            del self.initial[state]  # the initial value of a state the new component does not have
+            self.initial_given.pop(state, None)
+        if self.fluid is not None:
+            self._apply_fluid(component, self.fluid.properties())
+        return component
+
     def set_fluid(
         self,
         name: str,

@@ -159,3 +159,59 @@ def test_operating_points_and_errors() -> None:
         linearize(s, free=["m.q"])
     with pytest.raises(ParameterError, match="name one"):
         linearize(s).transfer([1.0])
+
+
+def test_closed_forms_follow_the_exact_derivatives_when_a_drop_reverses() -> None:
+    """An overrunning load (p_A above supply, p_B below tank): the edges' flows reverse, and so do the flow gains."""
+    import casadi as ca
+
+    from hydroservo.laws.four_way import four_way_valve_flows
+
+    x, pA, pB = ca.SX.sym("x"), ca.SX.sym("pA"), ca.SX.sym("pB")
+    QA, QB, _, _ = four_way_valve_flows(x, 100e5, 5e5, pA, pB, 2e-4, 1e-5, 2e-5, -1e-5, 0.0)
+    J = ca.Function("J", [x, pA, pB], [ca.jacobian(ca.vertcat(QA, QB), ca.vertcat(x, pA, pB))])
+    for xv, a, b in [(3e-4, 120e5, 2e5), (-3e-4, 120e5, 2e5), (3e-4, 40e5, 30e5), (-3e-4, 2e5, 110e5)]:
+        exact = np.asarray(J(xv, a, b))
+        k = closed_form(xv, 100e5, 5e5, a, b, 2e-4, 1e-5, 2e-5, -1e-5, 0.0)
+        np.testing.assert_allclose([k["K_Qx_A"], k["K_Qx_B"], k["K_Qp_A"], k["K_Qp_B"]],
+                                   [exact[0, 0], exact[1, 0], exact[0, 1], exact[1, 2]], rtol=1e-12, atol=1e-20)
+
+
+def test_the_closed_form_counts_the_compensation_tables() -> None:
+    """With K(x_v) = 0.5 flat, eqs. 4.8-4.11 with c_v,com = K c_v match the component's derivatives."""
+    s = drive(3e-4)
+    s.components["valve"].tables.update(K_x=np.array([-1.0, 1.0]), K=np.array([0.5, 0.5]))
+    (vc,) = valve_coefficients(s, t=0.1, free=["load.x"])
+    assert vc.model["K_Qx_A"] == pytest.approx(vc.closed_form["K_Qx_A"], rel=1e-6)
+
+
+def test_trims_that_are_no_steady_motion_or_have_nothing_to_solve() -> None:
+    s = mass_spring()
+    with pytest.raises(TrimError, match="no steady motion"):
+        linearize(s, free=["m.v"])  # a free speed under a constant force accelerates
+    with pytest.raises(TrimError, match="every state is free"):
+        linearize(s, free=["m.x", "m.v"])
+    gains = hs.System("gains")
+    gains.add(c.Step("u", amplitude=2.0))
+    gains.add(c.Gain("g", K=3.0))
+    gains.connect("u.y", "g.u")
+    lin = linearize(gains, outputs=["g.y"])
+    assert lin.states == [] and lin.D.tolist() == [[3.0]]
+
+
+def test_inputs_named_twice_by_a_former_name_or_an_option() -> None:
+    s = drive()
+    with pytest.raises(ParameterError, match="given twice"):
+        linearize(s, t=0.1, free=["load.x"], inputs=["valve.xv", "valve.xv"])
+    with pytest.warns(hs.components.RenamedWarning):
+        lin = linearize(s, t=0.1, free=["load.x"], inputs=["cyl.beta"])
+    assert lin.inputs == ["cyl.beta_e"] and lin.units["cyl.beta_e"] == "Pa"
+    with pytest.raises(ParameterError, match="an option"):
+        linearize(s, t=0.1, free=["load.x"], inputs=["cyl.bulk_modulus"])
+
+
+def test_a_fast_steady_motion_is_found_from_where_a_run_is() -> None:
+    """60 % valve signal: far from the resting initial state the trim starts from the run's state at t."""
+    s = hs.load_model("robot-arm")
+    lin = linearize(s, t=0.3, free=["load.x"], params={"command.amplitude": 0.6})
+    assert lin.x0["load.v"] == pytest.approx(lin.drift["load.x"]) and lin.x0["load.v"] > 0.1

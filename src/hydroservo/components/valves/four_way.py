@@ -93,16 +93,20 @@ class FourWayValve(Component):
     def has_tables(self) -> bool:
         return any(np.any(self.tables[k] != 1.0) for k in ("K", "H_opening", "H_closing"))
 
+    def compensation(self, xv: Any, vv: Any, xv_max: Any) -> Any:
+        """The factor :math:`K(x_v)H(x_v, d_f)` on the flow coefficient ([Efe2014] eqs. 3.22-3.23); 1 without tables."""
+        if not self.has_tables():
+            return 1.0
+        rel = xv / xv_max
+        h_open = bk.interp(rel, self.tables["H_x"], self.tables["H_opening"])
+        h_close = bk.interp(rel, self.tables["H_x"], self.tables["H_closing"])
+        return bk.interp(rel, self.tables["K_x"], self.tables["K"]) * bk.if_else(xv * vv >= 0, h_open, h_close)
+
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         xv = u["xv"]
-        K: Any = 1.0
-        if self.has_tables():
-            rel = xv / p["xv_max"]
-            h_open = bk.interp(rel, self.tables["H_x"], self.tables["H_opening"])
-            h_close = bk.interp(rel, self.tables["H_x"], self.tables["H_closing"])
-            K = bk.interp(rel, self.tables["K_x"], self.tables["K"]) * bk.if_else(xv * u["vv"] >= 0, h_open, h_close)
+        K = self.compensation(xv, u["vv"], p["xv_max"])
         p_tr = transition_pressure(p["D_h"], p["rho"], p["nu"], p["lambda_crit"])
         QA, QB, QS, QT = four_way_valve_flows(
             xv,
