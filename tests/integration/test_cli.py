@@ -316,3 +316,14 @@ def test_ladder_refuses_bad_options(tmp_path, cli, argv, patterns) -> None:  # t
     for pat in patterns:
         assert re.search(pat, err), (pat, err)
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_linearize_simulates_sines_beside_the_linear_model(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
+    code, text, err = cli("linearize", "robot-arm", "--t", "0.35", "--free", "load.x", "--inputs", "spool.u",
+                          "--outputs", "load.v", "--frequencies", "1,10", "--simulate", "0.05", "--out",
+                          str(tmp_path / "l"), "--json")
+    assert code == 0, err
+    sim = json.loads(text)["simulated_response"]
+    assert sim["gain_dB"][0][0] is None or sim["gain_dB"][0][0] != sim["gain_dB"][0][0]  # 1 Hz: the stop first
+    assert "stop" in sim["note"] and abs(sim["gain_dB"][0][1] - sim["linear_gain_dB"][1]) < 6
+    assert (tmp_path / "l" / "robot-arm-bode-simulated.png").exists()

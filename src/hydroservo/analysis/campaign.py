@@ -109,6 +109,7 @@ def _chunk(
     n_points: int,
     rtol: float,
     threads: int | None,
+    max_steps: int = 100_000,
 ) -> tuple[int, np.ndarray, list[str], list[str]]:
     """Run one chunk; returns (first, metrics (runs x metrics), status, reason)."""
     import warnings
@@ -121,7 +122,7 @@ def _chunk(
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", ImplausibleResultWarning)  # reported per run in the table
-            batch = system.batch(sets, t_end, n_points=n_points, rtol=rtol, threads=threads)
+            batch = system.batch(sets, t_end, n_points=n_points, rtol=rtol, threads=threads, max_steps=max_steps)
     except HydroservoError as exc:  # the whole chunk refused (a parameter out of range): every run says why
         return first, np.full((n, len(metrics)), np.nan), ["failed"] * n, [str(exc)] * n
     names = sorted({s for m in metrics for s in m.signals} | ({*batch.names} if any(m.function for m in metrics) else set()))
@@ -203,6 +204,7 @@ def run_design(
     t_end: float | None = None,
     n_points: int = 301,
     rtol: float = 1e-6,
+    max_steps: int = 100_000,
     chunk: int | None = None,
     threads: int | None = None,
     scheduler: Any = None,
@@ -257,7 +259,7 @@ def run_design(
         if client is None:
             for first, end in todo:
                 sets = {k: v[first:end] for k, v in raw.items()}
-                finish(*_chunk(blob, first, sets, list(metrics), t_end, n_points, rtol, threads)[0:4])
+                finish(*_chunk(blob, first, sets, list(metrics), t_end, n_points, rtol, threads, max_steps))
         else:
             from distributed import as_completed
 
@@ -265,7 +267,7 @@ def run_design(
             futures = [
                 client.submit(
                     _chunk, shared, first, {k: v[first:end] for k, v in raw.items()}, list(metrics),
-                    t_end, n_points, rtol, 1, pure=False,
+                    t_end, n_points, rtol, 1, max_steps, pure=False,
                 )
                 for first, end in todo
             ]

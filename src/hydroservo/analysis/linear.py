@@ -44,6 +44,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "LinearModel", "Mode", "ValveCoefficients", "linearize", "operating_point", "valve_coefficients", "input_values",
+    "simulated_response",
 ]
 
 #: Component types whose outputs are signals set by time alone: their outputs are a system's natural inputs.
@@ -511,3 +512,110 @@ def valve_coefficients(
             form = {k: float(val) for k, val in closed(point["xv"], point["pS"], point["pT"], point["pA"], point["pB"], **pv).items()}
         found.append(ValveCoefficients(cname, point, {k: float(val) for k, val in model.items()}, form))
     return found
+
+
+def simulated_response(
+    system: System,
+    lin: LinearModel,
+    frequencies: Sequence[float] | np.ndarray,
+    amplitudes: Sequence[float],
+    *,
+    input: str | None = None,
+    output: str | None = None,
+    params: Mapping[str, Any] | None = None,
+    settle_periods: int = 10,
+    measure_periods: int = 4,
+    points_per_period: int = 64,
+    rtol: float = 1e-7,
+) -> FrequencyResponse:
+    """The nonlinear system's response to sines about the operating point of ``lin``, beside the linear one.
+
+    The system is run from the operating point with every signal block frozen
+    at its value there and a sine of each amplitude (in the input's unit)
+    added to ``input`` (a component input of ``lin``); the fundamental of
+    ``output`` over the last ``measure_periods`` periods, after the others
+    (at least five of the slowest decaying mode's time constants), divided by
+    the amplitude, is the gain and phase (the drift of a steady motion is
+    taken out: a moving piston's position may be the output). Where the gain
+    departs from :meth:`LinearModel.bode` with the amplitude, linearity ends.
+    """
+    from hydroservo import components as comp_lib
+    from hydroservo.analysis.frequency import FrequencyResponse, gain_phase
+
+    i = lin._index(lin.inputs, input, "input")
+    o = lin._index(lin.outputs, output, "output")
+    target, out_name = lin.inputs[i], lin.outputs[o]
+    cname, _, key = target.partition(".")
+    if cname not in system.components or key not in system.components[cname].INPUTS:
+        raise ParameterError(f"simulated response: input {target!r} must be a component input (not a parameter)")
+    if target in system.hydraulic_inputs():
+        raise ParameterError(f"simulated response: input {target!r} is fed by a hydraulic node; choose a signal input")
+    f = np.asarray(frequencies, dtype=float).ravel()
+    amps = np.asarray(amplitudes, dtype=float).ravel()
+    if f.size == 0 or np.any(f <= 0) or amps.size == 0 or np.any(amps <= 0):
+        raise ParameterError("simulated response: expected positive frequencies and amplitudes")
+    probe = system.copy()
+    probe.name = f"{system.name} (sine on {target})"
+    # every signal block frozen at its value at the operating time: the sine alone moves the system
+    frozen = input_values(system, lin.x0, params=params, t=lin.t)
+    for tgt, src in list(probe.connections.items()):
+        block = probe.components.get(src.split(".")[0])
+        if block is not None and type(block).__name__ in SIGNALS:
+            name = f"frozen_{src.split('.')[0]}"
+            if name not in probe.components:
+                probe.add(comp_lib.Step(name, amplitude=frozen[tgt], t_step=0.0))
+            probe.connections[tgt] = f"{name}.y"
+    source = probe.connections.get(target)
+    probe.add(comp_lib.Sine("probe_sine", amplitude=1.0, frequency=1.0))
+    probe.add(comp_lib.Sum("probe_sum", gain1=1.0, gain2=1.0))
+    if source is not None:
+        probe.connections["probe_sum.u1"] = source
+    else:
+        probe.set("probe_sine.offset", lin.u0[target])
+    probe.connections["probe_sum.u2"] = "probe_sine.y"
+    probe.connections[target] = "probe_sum.y"
+    for state, value in lin.x0.items():
+        probe.set_initial(state, value)
+    slow = [m.time_constant for m in lin.modes() if m.eigenvalue.real < 0 and np.isfinite(m.time_constant)]
+    settle = 5.0 * max(slow, default=0.0)
+    # a steady motion lasts only until a stop: the travel a run may take, from the bounds of the moving states
+    model = system.build()
+    lo, hi = (np.asarray(b, dtype=float).ravel() for b in model._limit_bounds(system.parameter_vector(params)))
+    room = np.inf
+    for k, w in enumerate(model.watched):
+        rate = lin.drift.get(w.signal, 0.0)
+        if w.kind == "travel" and w.signal in lin.x0 and rate != 0:
+            edge = hi[k] if rate > 0 else lo[k]
+            room = min(room, (edge - lin.x0[w.signal]) / rate)
+    H = np.full((amps.size, f.size), np.nan + 0j)
+    short: list[float] = []
+    for a_i, amp in enumerate(amps):
+        for f_i, fk in enumerate(f):
+            period = 1.0 / fk
+            n_settle = max(settle_periods, int(np.ceil(settle / period)))
+            t_end = (n_settle + measure_periods) * period
+            if t_end > room:
+                short.append(float(fk))  # the piston would reach its stop before the sines settle
+                continue
+            n = measure_periods * points_per_period
+            grid = np.concatenate([[0.0], n_settle * period + np.arange(n + 1) * period / points_per_period])
+            res = probe.simulate(t_end, params={**(params or {}), "probe_sine.amplitude": amp, "probe_sine.frequency": fk},
+                                 t_eval=grid, rtol=rtol, max_steps=10_000_000)
+            y = np.asarray(res[out_name])[1:]
+            tt = grid[1:]
+            y = y - (y[-1] - y[0]) * (tt - tt[0]) / (tt[-1] - tt[0])  # a steady motion's drift out
+            w = 2 * np.pi * fk
+            yk, tk = y[:-1], tt[:-1]  # whole periods, the end point left out
+            a1 = 2.0 / yk.size * np.sum(yk * np.sin(w * tk))
+            b1 = 2.0 / yk.size * np.sum(yk * np.cos(w * tk))
+            H[a_i, f_i] = (a1 + 1j * b1) / amp
+    with np.errstate(invalid="ignore"):
+        gain, phase = gain_phase(np.where(np.isnan(H), 1.0, H), f)
+    gain[np.isnan(H)], phase[np.isnan(H)] = np.nan, np.nan
+    info: dict[str, Any] = {"input": target, "output": out_name, "linear": False}
+    if short:
+        info["not_run"] = (
+            f"at {max(short):g} Hz and below the runs ({settle_periods + measure_periods} periods or more) would drive the "
+            f"steady motion into its stop (about {room:.3g} s away); those points are NaN"
+        )
+    return FrequencyResponse(amps, f, gain, phase, label="simulated (nonlinear)", info=info)

@@ -54,6 +54,16 @@ def cmd_linearize(args: argparse.Namespace) -> int:
     lin = linearize(system, at, inputs=_names(args.inputs), outputs=_names(args.outputs), t=t, free=free)
     valves = valve_coefficients(system, lin.x0, t=t)
     f = frequencies(args.frequencies) if args.frequencies else None
+    simulated = None
+    if args.simulate:
+        import numpy as np
+
+        from hydroservo.analysis.linear import simulated_response
+        from hydroservo.cli.common import numbers
+
+        amps = numbers(args.simulate, "--simulate", above=0.0, expected="positive amplitudes in the input's unit")
+        grid_sim = f if f is not None else np.logspace(0, 2, 9)
+        simulated = simulated_response(system, lin, grid_sim, amps, input=lin.inputs[0], output=lin.outputs[0])
     files: dict[str, str] = {}
     if args.out is not None or not args.json:
         import numpy as np
@@ -63,6 +73,8 @@ def cmd_linearize(args: argparse.Namespace) -> int:
         name = safe_name(system.name)
         out = output_folder(args, f"hydroservo-{name}-linear")
         names = [f"{name}-linear.json", f"{name}-poles.png", f"{name}-bode.png"]
+        if simulated is not None:
+            names.append(f"{name}-bode-simulated.png")
         out.expect(names)
         grid = f if f is not None else np.logspace(-1, 3, 400)
         pairs = [(i, o) for i in lin.inputs[:1] for o in lin.outputs[:4]]
@@ -70,7 +82,13 @@ def cmd_linearize(args: argparse.Namespace) -> int:
             write_linear_model(lin, out.file(names[0]), {"valves": [v.to_dict() for v in valves]})
             plot_poles(lin, file=out.file(names[1]))
             plot_linear_bode(lin, grid, pairs, file=out.file(names[2]))
+            if simulated is not None:
+                linear_fr = lin.bode(simulated.frequencies, lin.inputs[0], lin.outputs[0])
+                simulated.plot([linear_fr], file=out.file(names[3]),
+                               title=f"{lin.outputs[0]} / {lin.inputs[0]}: simulated sines (markers) and the linear model")
         files = {"json": out.final(names[0]), "poles": out.final(names[1]), "bode": out.final(names[2])}
+        if simulated is not None:
+            files["bode_simulated"] = out.final(names[3])
     if args.json:
         report = {**lin.to_dict(), "valves": [v.to_dict() for v in valves]}
         if f is not None:
@@ -79,12 +97,32 @@ def cmd_linearize(args: argparse.Namespace) -> int:
                  "real": (H := lin.transfer(f, i, o)).real.tolist(), "imag": H.imag.tolist()}
                 for i in lin.inputs for o in lin.outputs
             ]
+        if simulated is not None:
+            report["simulated_response"] = {
+                "input": lin.inputs[0], "output": lin.outputs[0], "amplitudes": simulated.amplitudes.tolist(),
+                "frequencies_Hz": simulated.frequencies.tolist(), "gain_dB": simulated.gain_db.tolist(),
+                "phase_deg": simulated.phase_deg.tolist(),
+                "linear_gain_dB": lin.bode(simulated.frequencies, lin.inputs[0], lin.outputs[0]).gain_db[0].tolist(),
+                **({"note": simulated.info["not_run"]} if "not_run" in simulated.info else {}),
+            }
         if files:
             report["files"] = files
         print_json(report)
         return 0
     _print(lin, valves, files)
+    if simulated is not None:
+        _print_simulated(lin, simulated)
     return 0
+
+
+def _print_simulated(lin: Any, sim: Any) -> None:
+    linear = lin.bode(sim.frequencies, lin.inputs[0], lin.outputs[0])
+    print(f"  {lin.outputs[0]} / {lin.inputs[0]}, simulated sines against the linear model [dB]:")
+    print("    " + "f [Hz]".rjust(8) + "linear".rjust(10) + "".join(f"{'A=' + format(a, 'g'):>12}" for a in sim.amplitudes))
+    for j, fk in enumerate(sim.frequencies):
+        print("    " + f"{fk:8.3g}" + f"{linear.gain_db[0, j]:10.2f}" + "".join(f"{sim.gain_db[i, j]:12.2f}" for i in range(sim.amplitudes.size)))
+    if "not_run" in sim.info:
+        print(f"    note: {sim.info['not_run']}")
 
 
 def _print(lin: Any, valves: list[Any], files: dict[str, str]) -> None:
@@ -142,6 +180,9 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--outputs", default=None, metavar="NAME,...", help="states, outputs or aliases; default: the states")
     p.add_argument("--frequencies", default=None, metavar="F1,F2,...|START:STOP:STEP",
                    help="frequencies [Hz] of the Bode plot (and of the JSON's frequency response)")
+    p.add_argument("--simulate", default=None, metavar="A1,A2,...",
+                   help="also run the nonlinear system with sines of these amplitudes (the first input's unit) about "
+                   "the operating point: its gain beside the linear one, for the first output, shows where linearity ends")
     add_output_options(p, "hydroservo-NAME-linear")
     p.add_argument("--json", action="store_true",
                    help="print the matrices with their names, the modes and the valve coefficients as JSON "

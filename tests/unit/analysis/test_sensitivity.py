@@ -171,3 +171,14 @@ def test_a_study_on_a_local_dask_cluster_gives_the_local_numbers() -> None:
     assert remote.runs.stats["where"] == "dask" and remote.runs.stats["chunks"] == 4
     np.testing.assert_array_equal(remote.runs.values(), local.runs.values())
     assert remote.indices.equals(local.indices)
+
+
+def test_a_run_the_solver_gives_up_on_is_tried_again_tighter() -> None:
+    """A hundred solver steps are too few for a light, stiff spring ringing for 2 s (3000 cycles); the retry (ten
+    times tighter, a million steps) solves it and says so; a run refused for its parameters stays failed."""
+    s = drive()
+    s.set("m.k_spring", 1e6)
+    runs = run_design(s, {"m.m": [0.01, -1.0]}, [parse_metric("final(m.x)")], max_steps=100, n_points=3)
+    assert list(runs.table["status"]) == ["ok", "failed"]
+    assert runs.table.loc[0, "reason"].startswith("solved at rtol 1e-07 after:")
+    assert np.isfinite(runs.values()[0, 0])
