@@ -222,6 +222,31 @@ class GlobalStudy:
         return plot_indices(self, title=title, file=file)
 
 
+def _analyse(
+    runs: Runs, names: list[str], keys: tuple[str, ...], estimate: Callable[[np.ndarray], dict[str, Any]]
+) -> tuple[pd.DataFrame, list[str]]:
+    """A row per (metric, parameter) of the indices ``keys`` that ``estimate`` gives for each metric's values;
+    a metric with a failed run gets NaN and a note (the estimators need every point)."""
+    import pandas as pd
+
+    Y = runs.values()
+    rows, notes = [], []
+    for j, m in enumerate(runs.metrics):
+        y = Y[:, j]
+        bad = int((~np.isfinite(y)).sum())
+        res: dict[str, Any] = {}
+        if bad:
+            notes.append(f"{m.name}: {bad} of {y.size} runs without a value (failed); its indices are not estimated")
+        else:
+            res = estimate(y)
+            if np.ptp(y) == 0:
+                notes.append(f"{m.name}: the same in every run; no parameter moves it")
+        for i, name in enumerate(names):
+            rows.append({"metric": describe(m), "parameter": name,
+                         **{k: float(res[k][i]) if res else float("nan") for k in keys}})
+    return pd.DataFrame(rows), notes
+
+
 def _seed(seed: int | None) -> int | None:
     """SALib's seed for hydroservo's: SALib takes a seed of 0 for none (``if seed:``), so 0 becomes 1."""
     return None if seed is None else int(seed) + 1
@@ -268,26 +293,15 @@ def sobol(
     problem = _problem(names, pairs)
     X = sample.sample(problem, int(n), calc_second_order=False, seed=_seed(seed))
     runs = _run(system, names, units, X, metrics, t_end, run)
-    Y = runs.values()
-    rows, notes = [], []
-    for j, m in enumerate(runs.metrics):
-        y = Y[:, j]
-        res: dict[str, Any] = {}
-        bad = int((~np.isfinite(y)).sum())
-        if bad:
-            notes.append(f"{m.name}: {bad} of {y.size} runs without a value (failed); its indices are not estimated")
-        elif np.ptp(y) == 0:
-            notes.append(f"{m.name}: the same in every run; no parameter moves it")
-            res = {"S1": np.zeros(len(names)), "S1_conf": np.zeros(len(names)), "ST": np.zeros(len(names)),
-                   "ST_conf": np.zeros(len(names))}
-        else:
-            res = analyze.analyze(problem, y, calc_second_order=False, conf_level=conf_level, seed=_seed(seed))
-        for i, name in enumerate(names):
-            rows.append({"metric": describe(m), "parameter": name,
-                         **{k: float(res[k][i]) if res else float("nan") for k in ("S1", "S1_conf", "ST", "ST_conf")}})
-    import pandas as pd
 
-    return GlobalStudy("sobol", names, units, pairs, runs, pd.DataFrame(rows), conf_level, notes)
+    def estimate(y: np.ndarray) -> dict[str, Any]:
+        if np.ptp(y) == 0:  # the same in every run: SALib would divide by its zero variance
+            return {k: np.zeros(len(names)) for k in ("S1", "S1_conf", "ST", "ST_conf")}
+        result: dict[str, Any] = analyze.analyze(problem, y, calc_second_order=False, conf_level=conf_level, seed=_seed(seed))
+        return result
+
+    table, notes = _analyse(runs, names, ("S1", "S1_conf", "ST", "ST_conf"), estimate)
+    return GlobalStudy("sobol", names, units, pairs, runs, table, conf_level, notes)
 
 
 def morris(
@@ -315,22 +329,13 @@ def morris(
     problem = _problem(names, pairs)
     X = sample.sample(problem, int(trajectories), num_levels=levels, seed=_seed(seed))
     runs = _run(system, names, units, X, metrics, t_end, run)
-    Y = runs.values()
-    rows, notes = [], []
-    for j, m in enumerate(runs.metrics):
-        y = Y[:, j]
-        bad = int((~np.isfinite(y)).sum())
-        res: dict[str, Any] = {}
-        if bad:
-            notes.append(f"{m.name}: {bad} of {y.size} runs without a value (failed); its effects are not estimated")
-        else:
-            res = analyze.analyze(problem, X, y, conf_level=conf_level, num_levels=levels, seed=_seed(seed))
-        for i, name in enumerate(names):
-            rows.append({"metric": describe(m), "parameter": name,
-                         **{k: float(res[k][i]) if res else float("nan") for k in ("mu_star", "mu_star_conf", "sigma", "mu")}})
-    import pandas as pd
 
-    return GlobalStudy("morris", names, units, pairs, runs, pd.DataFrame(rows), conf_level, notes)
+    def estimate(y: np.ndarray) -> dict[str, Any]:
+        result: dict[str, Any] = analyze.analyze(problem, X, y, conf_level=conf_level, num_levels=levels, seed=_seed(seed))
+        return result
+
+    table, notes = _analyse(runs, names, ("mu_star", "mu_star_conf", "sigma", "mu"), estimate)
+    return GlobalStudy("morris", names, units, pairs, runs, table, conf_level, notes)
 
 
 def custom_metric(name: str, function: Callable[[np.ndarray, Mapping[str, np.ndarray]], float], unit: str = "") -> Metric:
