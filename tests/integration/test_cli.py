@@ -327,3 +327,22 @@ def test_linearize_simulates_sines_beside_the_linear_model(tmp_path, cli) -> Non
     assert sim["gain_dB"][0][0] is None or sim["gain_dB"][0][0] != sim["gain_dB"][0][0]  # 1 Hz: the stop first
     assert "stop" in sim["note"] and abs(sim["gain_dB"][0][1] - sim["linear_gain_dB"][1]) < 6
     assert (tmp_path / "l" / "robot-arm-bode-simulated.png").exists()
+
+
+@pytest.mark.slow
+def test_sensitivity_runs_on_a_dask_scheduler_by_its_address(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
+    """--scheduler ADDRESS: the same command, its chunks on a two-worker cluster; the same indices as locally."""
+    distributed = pytest.importorskip("distributed")
+    argv = ["sensitivity", "robot-arm", "--method", "morris", "--n", "4", "--vary", "valve.c_v=1e-4..2e-4",
+            "--vary", "load.m=15kg..35kg", "--t-end", "0.8", "--points", "81", "--chunk", "3", "--json"]
+    code, text, err = cli(*argv, "--out", str(tmp_path / "local"))
+    assert code == 0, err
+    local = json.loads(text)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        code, text, err = cli(*argv, "--scheduler", cluster.scheduler_address, "--out", str(tmp_path / "dask"))
+    assert code == 0, err
+    remote = json.loads(text)
+    assert remote["runs"]["where"] == "dask" and local["runs"]["where"] == "local"
+    assert remote["indices"] == local["indices"]
+    code, _, err = cli(*argv[:-1], "--scheduler", "tcp://127.0.0.1:9", "--out", str(tmp_path / "none"))
+    assert code == 2 and "cannot connect" in err and not (tmp_path / "none").exists()

@@ -90,8 +90,10 @@ def cmd_sensitivity(args: argparse.Namespace) -> int:
     from hydroservo.units import to_si
 
     system = load_with_sets(args.model, args.set)
-    if args.levels < 2:
-        raise ParameterError(f"--levels {args.levels}: expected at least 2")
+    if args.levels is None:
+        args.levels = 4 if args.method == "morris" else 5
+    if args.levels < 2 or (args.method == "morris" and args.levels % 2):
+        raise ParameterError(f"--levels {args.levels}: expected at least 2" + (", even for morris" if args.method == "morris" else ""))
     factors, ranges = _vary(args.vary, args.method, args.levels)
     t_end = to_si(args.t_end, "s", what="--t-end") if args.t_end else system.t_end
     if not t_end > 0:
@@ -221,7 +223,7 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--n", type=int, default=None,
                    help="sobol: base sample, a power of two (runs: n (d + 2)), default 256; morris: trajectories "
                    "(runs: n (d + 1)), default 20")
-    p.add_argument("--levels", type=int, default=5, help="oat: levels per range (default 5); morris: grid levels (use 4)")
+    p.add_argument("--levels", type=int, default=None, help="oat: levels per range (default 5); morris: grid levels, even (default 4)")
     p.add_argument("--metric", action="append", default=[], metavar="KIND(SIGNAL[,T0[,T1]])",
                    help="a metric of each run (repeatable); default: the model's")
     p.add_argument("--signals", default=None, metavar="S1,S2", help="oat: the signals drawn (default: the model's panels)")
