@@ -111,7 +111,7 @@ class Model:
         self._integrators: dict[Any, ca.Function] = {}
         self._maps: dict[int, ca.Function] = {}
         self._limit_maps: dict[int, ca.Function] = {}
-        self._batch_maps: dict[tuple[int, int], ca.Function] = {}
+        self._batch_maps: dict[tuple[int, int, int], ca.Function] = {}
 
     # -- helpers -----------------------------------------------------------
     def _integrator(self, grid: np.ndarray, settings: SolverSettings) -> ca.Function:
@@ -763,9 +763,9 @@ class Model:
     ) -> None:
         """Integrate ``runs`` together; if one fails, halve until it stands alone and record why."""
         size = len(runs)
-        key = (id(integ), size)
+        key = (id(integ), size, min(nthreads, size))
         if key not in self._batch_maps:
-            self._batch_maps[key] = integ.map(size, "thread", min(nthreads, size))
+            self._batch_maps[key] = integ.map(size, "thread", key[2])
         try:
             with captured():
                 xf = self._batch_maps[key](x0=Z0[:, runs], p=P[:, runs])["xf"]

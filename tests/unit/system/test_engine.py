@@ -63,6 +63,16 @@ def test_batch_equals_single_runs(spring_mass) -> None:
     assert b.params["load.k_spring"].tolist() == ks
 
 
+def test_batch_runs_on_the_threads_asked_for_each_call(spring_mass) -> None:
+    # The mapped integrator is cached; a second call with fewer threads must not reuse the first's threads.
+    s = spring_mass(B=10.0)
+    ks = [400.0, 800.0, 1600.0, 3200.0]
+    s.batch({"load.k_spring": ks}, t_end=0.1, n_points=11, threads=2)
+    s.batch({"load.k_spring": ks}, t_end=0.1, n_points=11, threads=1)
+    names = sorted(f.name() for f in s.build()._batch_maps.values())
+    assert len(names) == 2 and names[1].startswith("threadmap2_"), names  # CasADi names a 1-thread map "map4_..."
+
+
 def test_solver_failure_names_time_and_state() -> None:
     s = hs.System("runaway")
     s.add(c.Volume("vol", V=1e-5, beta_e=1e9, p0=1e5))
