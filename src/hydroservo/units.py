@@ -10,6 +10,15 @@ The unit registry (pint) is built on first use, not on import: a bare number
 never needs it, so ``import hydroservo`` and the command line's ``--help``
 stay fast. ``hydroservo.units.ureg`` is that registry.
 
+Nor does a unit the package knows: the conversions of every unit its
+components declare, its own files use, and engineers commonly write
+(:data:`COMMON_UNITS`) ship in ``data/units.json``, computed by pint and
+checked against it by the tests (``scripts/unit_table.py`` writes it). A
+conversion between two such units, a dimension check of an alias and the
+printed form of a unit read the table; anything else (and every error
+message) goes to pint. A command-line run thus never builds the registry
+(about 0.3 s) for the built-in models.
+
 Quantity strings are read by a small grammar before pint sees them, so that no
 input can make the parser evaluate unbounded arithmetic (pint alone would
 evaluate ``"10**10**10 kg"`` and never return): a quantity is one finite
@@ -45,6 +54,10 @@ __all__ = [
     "split_quantity",
     "check_unit",
     "same_dimension",
+    "COMMON_UNITS",
+    "Dimension",
+    "dimension",
+    "pint_entry",
 ]
 
 #: Gauge pressure of a perfect vacuum [Pa]: pressures are gauge inside hydroservo, and none lies below this.
@@ -74,6 +87,135 @@ def __getattr__(name: str) -> Any:
     if name == "ureg":
         return registry()
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+#: Units engineers commonly write, shipped with their conversions beside the units the package itself uses.
+COMMON_UNITS = (
+    # pressure
+    "Pa", "kPa", "MPa", "GPa", "bar", "mbar", "psi", "ksi", "atm", "Pa_abs", "bar_abs", "bara", "psia",
+    # flow and displacement
+    "m^3/s", "L/min", "l/min", "lpm", "L/s", "cm^3/s", "mm^3/s", "in^3/s", "gpm", "m^3/rev", "cm^3/rev", "in^3/rev",
+    # length, area, volume
+    "m", "cm", "mm", "um", "µm", "in", "ft", "m^2", "cm^2", "mm^2", "in^2", "m^3", "L", "l", "mL", "cm^3", "mm^3",
+    "in^3", "gal",
+    # mass, force, torque, stiffness, damping, inertia
+    "kg", "g", "t", "lb", "N", "kN", "lbf", "N*m", "kN*m", "lbf*in", "N/m", "kN/m", "N/mm", "lbf/in", "N*s/m",
+    "kN*s/m", "lbf*s/in", "kg*m^2",
+    # time, frequency, speed, acceleration
+    "s", "ms", "us", "µs", "min", "h", "Hz", "kHz", "rad/s", "rpm", "1/s", "m/s", "mm/s", "in/s", "m/s^2",
+    # angle
+    "rad", "deg", "mrad",
+    # temperature
+    "degC", "degF", "K",
+    # fluid properties
+    "kg/m^3", "g/cm^3", "cSt", "mm^2/s", "m^2/s", "Pa*s", "mPa*s", "cP", "1/Pa", "1/bar", "1/K",
+    # electrics
+    "A", "mA", "V", "mV", "ohm", "W", "kW", "J",
+    # orifice coefficients
+    "m^3/s/Pa^0.5", "L/min/bar^0.5", "m^3/s/Pa", "L/min/bar", "m^2/s/Pa^0.5",
+    # pure numbers
+    "%", "",
+)  # fmt: skip
+
+#: A shipped unit: factor and offset to the SI base unit, dimension, coherent unit, printed form.
+Shipped = tuple[float, float, tuple[tuple[str, float], ...], str, str]
+
+
+@functools.cache
+def _shipped() -> dict[str, Shipped]:
+    """The conversions of ``data/units.json`` (module notes), by unit text."""
+    from hydroservo.data import unit_table
+
+    return {
+        text: (e["factor"], e["offset"], tuple((d, float(x)) for d, x in e["dimension"]), e["coherent"], e["printed"])
+        for text, e in unit_table()["units"].items()
+    }
+
+
+def pint_entry(unit: str) -> dict[str, Any]:
+    """What ``data/units.json`` records of ``unit``, computed by pint (``scripts/unit_table.py``, the tests)."""
+    u = _unit(unit) if unit else registry().Unit("")
+    reg = registry()
+    zero = float(reg.Quantity(0.0, u).to_base_units().magnitude)
+    one = float(reg.Quantity(1.0, u).to_base_units().magnitude)
+    dims = sorted((str(d), float(x)) for d, x in reg.get_dimensionality(u).items())  # type: ignore[arg-type]
+    return {
+        "factor": one - zero,
+        "offset": zero,
+        "dimension": [list(d) for d in dims],
+        "coherent": _coherent_pint(unit),
+        "printed": _printed_pint(unit),
+    }
+
+
+class Dimension:
+    """A quantity of magnitude one reduced to its dimension, for checking expressions without the registry.
+
+    Arithmetic as on pint quantities: numbers are dimensionless, a sum needs
+    like dimensions (a ``ValueError`` otherwise), a power takes a number.
+    """
+
+    __slots__ = ("exponents",)
+
+    def __init__(self, exponents: Any = ()) -> None:
+        self.exponents: tuple[tuple[str, float], ...] = tuple(sorted((d, x) for d, x in dict(exponents).items() if x))
+
+    @staticmethod
+    def of(value: Any) -> Dimension:
+        if isinstance(value, Dimension):
+            return value
+        if isinstance(value, (int, float)):
+            return Dimension()
+        raise TypeError(f"not a number or a dimension: {value!r}")
+
+    def _combine(self, other: Any, sign: float) -> Dimension:
+        exps = dict(self.exponents)
+        for d, x in Dimension.of(other).exponents:
+            exps[d] = exps.get(d, 0.0) + sign * x
+        return Dimension(exps)
+
+    def __add__(self, other: Any) -> Dimension:
+        if Dimension.of(other).exponents != self.exponents:
+            raise ValueError(f"cannot add {self} and {Dimension.of(other)}")
+        return self
+
+    __radd__ = __sub__ = __rsub__ = __add__
+
+    def __mul__(self, other: Any) -> Dimension:
+        return self._combine(other, 1.0)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other: Any) -> Dimension:
+        return self._combine(other, -1.0)
+
+    def __rtruediv__(self, other: Any) -> Dimension:
+        return Dimension.of(other)._combine(self, -1.0)
+
+    def __pow__(self, exponent: Any) -> Dimension:
+        if not isinstance(exponent, (int, float)):
+            raise TypeError("an exponent of a dimension check must be a number")
+        return Dimension({d: x * exponent for d, x in self.exponents})
+
+    def __neg__(self) -> Dimension:
+        return self
+
+    __pos__ = __neg__
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Dimension) and other.exponents == self.exponents
+
+    def __hash__(self) -> int:
+        return hash(self.exponents)
+
+    def __repr__(self) -> str:
+        return " * ".join(f"{d}^{x:g}" for d, x in self.exponents) or "dimensionless"
+
+
+def dimension(unit: str) -> Dimension | None:
+    """The dimension of ``unit`` from the shipped table, or None if the table does not hold it."""
+    known = _shipped().get(unit)
+    return None if known is None else Dimension(known[2])
 
 
 #: The longest quantity or unit text read [characters].
@@ -135,7 +277,7 @@ def _unit(unit: str) -> pint.Unit:
 
 def check_unit(unit: str) -> None:
     """Raise :class:`UnitError` unless ``unit`` is a unit ("" is dimensionless)."""
-    if unit:
+    if unit and unit not in _shipped():
         _unit(unit)
 
 
@@ -143,6 +285,9 @@ def same_dimension(a: str, b: str) -> bool:
     """Whether units ``a`` and ``b`` have the same dimension ("" for dimensionless)."""
     if a == b:
         return True
+    known_a, known_b = _shipped().get(a), _shipped().get(b)
+    if known_a is not None and known_b is not None:
+        return known_a[2] == known_b[2]
     return bool(_unit(a).dimensionality == _unit(b).dimensionality)
 
 
@@ -180,6 +325,19 @@ def split_quantity(text: str, *, what: str = "value") -> tuple[float, str]:
 
 def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
     """Read ``value`` (number, ``"1500 psi"``, pint quantity) as a quantity."""
+    if isinstance(value, str):  # text that is no quantity is refused before the registry is built
+        magnitude, unit = split_quantity(value, what=what)
+        try:
+            parsed = _unit(unit) if unit else ""
+            q: pint.Quantity[Any] = registry().Quantity(magnitude, parsed)
+        except UnitError as exc:
+            raise UnitError(
+                f"{what}: cannot read {shorten(value)!r} as a quantity ({exc}); expected a number followed by a unit, "
+                "e.g. '1500 psi'"
+            ) from None
+        if not isinstance(q, registry().Quantity):  # a bare number in a string
+            q = registry().Quantity(float(q), "")
+        return q
     reg = registry()
     if isinstance(value, reg.Quantity):
         return value
@@ -187,18 +345,6 @@ def parse_quantity(value: Any, *, what: str = "value") -> pint.Quantity:
         raise UnitError(f"{what}: expected a number or a quantity such as '3 bar', got {value!r}")
     if isinstance(value, (int, float)):
         return reg.Quantity(float(value), "")
-    if isinstance(value, str):
-        magnitude, unit = split_quantity(value, what=what)
-        try:
-            q: pint.Quantity[Any] = reg.Quantity(magnitude, _unit(unit) if unit else "")
-        except UnitError as exc:
-            raise UnitError(
-                f"{what}: cannot read {shorten(value)!r} as a quantity ({exc}); expected a number followed by a unit, "
-                "e.g. '1500 psi'"
-            ) from None
-        if not isinstance(q, reg.Quantity):  # a bare number in a string
-            q = reg.Quantity(float(q), "")
-        return q
     raise UnitError(f"{what}: expected a number or a quantity such as '3 bar', got {value!r}")
 
 
@@ -252,6 +398,11 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
         if math.isnan(out):
             raise UnitError(f"{what}: {value!r} is not a number")
         return out
+    if isinstance(value, str):  # two shipped units of one dimension: no registry (module notes)
+        magnitude, text = split_quantity(value, what=what)
+        source, target_known = _shipped().get(text), _shipped().get(unit)
+        if text and source is not None and target_known is not None and source[2] == target_known[2]:
+            return (magnitude * source[0] + source[1] - target_known[1]) / target_known[0]
     q = parse_quantity(value, what=what)
     target = _unit(unit)
     if str(q.units) == "dimensionless":  # no unit at all (a percent is a unit: "5 %" is 0.05)
@@ -274,6 +425,9 @@ def from_si(value: float, unit: str, to: str) -> float:
     """Convert an SI magnitude in ``unit`` to unit ``to``; a UnitError if their dimensions differ."""
     if unit == to:
         return float(value)
+    known_source, known_target = _shipped().get(unit), _shipped().get(to)
+    if known_source is not None and known_target is not None and known_source[2] == known_target[2]:
+        return (float(value) * known_source[0] + known_source[1] - known_target[1]) / known_target[0]
     source, target = _unit(unit), _unit(to)
     try:
         return float(registry().Quantity(value, source).to(target).magnitude)
@@ -298,6 +452,18 @@ def coherent_unit(unit: str) -> str:
     >>> coherent_unit("mm"), coherent_unit("bar"), coherent_unit("V/m"), coherent_unit("")
     ('m', 'Pa', 'V/m', '')
     """
+    known = _shipped().get(unit)
+    return known[3] if known is not None else _coherent_pint(unit)
+
+
+def _power(name: str, exponent: float) -> str:
+    """``name`` raised to ``exponent`` as unit text: ``("m^3/s", 2)`` -> ``"(m^3/s)^2"``."""
+    if exponent == 1:
+        return name
+    return f"({name})^{exponent:g}" if any(c in name for c in "*/^") else f"{name}^{exponent:g}"
+
+
+def _coherent_pint(unit: str) -> str:
     if unit == "" or unit in ("degC", "degF", "K"):
         return unit
     u = _unit(unit)
@@ -306,9 +472,9 @@ def coherent_unit(unit: str) -> str:
         return unit
     factors = list(u._units.items())  # a product of units: make each coherent
     if len(factors) > 1 or (factors and factors[0][1] != 1):
-        parts = [(coherent_unit(name), exp) for name, exp in factors]
+        parts = [(_coherent_pint(name), exp) for name, exp in factors]
         parts = [(name, exp) for name, exp in parts if name]  # a percent is a pure number
-        return "*".join(name + ("" if exp == 1 else f"^{exp:g}") for name, exp in parts)
+        return "*".join(_power(name, float(exp)) for name, exp in parts)  # type: ignore[arg-type]
     dims = registry().get_dimensionality(u)
     for name in _COHERENT:
         if registry().get_dimensionality(_unit(name)) == dims:
@@ -319,6 +485,11 @@ def coherent_unit(unit: str) -> str:
 @functools.lru_cache(maxsize=512)
 def si_unit(unit: str) -> str:
     """Short printable form of a unit string (``"m^3/s"`` -> ``"m³/s"``)."""
+    known = _shipped().get(unit)
+    return known[4] if known is not None else _printed_pint(unit)
+
+
+def _printed_pint(unit: str) -> str:
     if unit == "":
         return "-"
     return f"{_unit(unit):~P}"

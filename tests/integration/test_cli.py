@@ -21,6 +21,33 @@ def test_cli_simulate_json(tmp_path, cli) -> None:
     assert "y [m]" in first and "p2 [Pa]" in first
 
 
+def test_cli_simulate_json_alone_writes_nothing_and_write_picks_the_files(tmp_path, cli, monkeypatch) -> None:
+    # --json is for programs: no folder unless asked (--out or --write); --write chooses the files.
+    monkeypatch.chdir(tmp_path)
+    code, out, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--json")
+    assert code == 0 and json.loads(out)["files"] == {} and list(tmp_path.iterdir()) == []
+    code, out, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--json", "--write", "csv,mat", "--out", "r")
+    assert code == 0 and sorted(json.loads(out)["files"]) == ["csv", "mat"]
+    assert sorted(p.name for p in (tmp_path / "r").iterdir()) == ["flight-simulator.csv", "flight-simulator.mat"]
+    code, _, err = cli("simulate", "flight-simulator", "--write", "csv,xls", "--out", "s")
+    assert code == 2 and "--write 'csv,xls'" in err and "csv, png, mat" in err and not (tmp_path / "s").exists()
+
+
+def test_cli_simulate_csv_reads_back_as_the_result(tmp_path, cli) -> None:
+    import pandas as pd
+
+    import hydroservo as hs
+
+    code, _, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--points", "51", "--write", "csv", "--out", str(tmp_path))
+    assert code == 0
+    table = pd.read_csv(tmp_path / "flight-simulator.csv")
+    result = hs.load_model("flight-simulator").simulate(t_end=0.2, n_points=51)
+    assert list(table.columns) == ["t [s]", *(f"{n} [{hs.units.si_unit(result.units[n])}]" for n in result.data)]
+    for name in ("y", "p2", "spool.xv"):  # ten significant digits
+        column = next(c for c in table.columns if c.startswith(f"{name} ["))
+        assert table[column].to_numpy() == pytest.approx(result[name], rel=1e-9, abs=1e-300)
+
+
 def test_cli_export_then_simulate(tmp_path, cli) -> None:
     code, text, _ = cli("export", "flight-simulator")
     assert code == 0

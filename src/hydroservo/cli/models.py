@@ -100,7 +100,8 @@ def _print_summary(system: Any, result: Any, t_end: float, wall: float, files: d
     print(f"{'signal'.ljust(w)}  {'unit':>8}  {'final':>12}  {'min':>12}  {'max':>12}")
     for n, unit, fin, lo, hi in rows:
         print(f"{n.ljust(w)}  {unit:>8}  {fin:>12.5g}  {lo:>12.5g}  {hi:>12.5g}")
-    print(f"wrote {files['csv']} and {files['plot']}")
+    if files:
+        print(f"wrote {' and '.join(files.values())}")
 
 
 def _check_solver_options(args: argparse.Namespace) -> None:
@@ -141,30 +142,58 @@ def _report_warnings(result: Any, strict: bool) -> list[str]:
     return found
 
 
+#: The files ``simulate`` writes, by the name ``--write`` gives them.
+WRITABLE = ("csv", "png", "mat")
+
+
+def _files_to_write(args: argparse.Namespace) -> list[str]:
+    """``--write``: the files to write. Without it, a CSV and a plot, except that ``--json`` alone writes
+    nothing: a program reading the JSON asks for the files it wants (``--write csv`` or ``--out DIR``)."""
+    if args.write is None:
+        return [] if args.json and args.out is None else ["csv", "png"]
+    kinds = [k.strip().lower() for k in args.write.split(",") if k.strip()]
+    if kinds == ["none"]:
+        return []
+    wrong = [k for k in kinds if k not in WRITABLE]
+    if wrong or not kinds:
+        raise ParameterError(
+            f"--write {shorten(args.write)!r}: expected 'none' or a comma-separated list of {', '.join(WRITABLE)}"
+        )
+    return list(dict.fromkeys(kinds))
+
+
 def cmd_simulate(args: argparse.Namespace) -> int:
     from hydroservo.io.files import safe_name
     from hydroservo.units import to_si
 
     _check_solver_options(args)
+    kinds = _files_to_write(args)
     system = load_with_sets(args.model, args.set)
     t_end = to_si(args.t_end, "s", what="--t-end") if args.t_end is not None else system.t_end
     if not (math.isfinite(t_end) and t_end > 0):
         raise ParameterError(f"--t-end {args.t_end}: expected a positive, finite duration")
     name = safe_name(system.name)
-    out = output_folder(args, f"hydroservo-{name}")
-    out.expect([f"{name}.csv", f"{name}.png"])
-    if system.plots:
+    out = output_folder(args, f"hydroservo-{name}") if kinds else None
+    if out is not None:
+        out.expect([f"{name}.{kind}" for kind in kinds])
+    if system.plots and "png" in kinds:
         _check_plots(system, system.plots)
     start = time.perf_counter()
     result = system.simulate(t_end=t_end, n_points=args.points, initial=args.initial, rtol=args.rtol)
     wall = time.perf_counter() - start
     found = _report_warnings(result, args.strict)
-    with out:
-        result.to_csv(out.file(f"{name}.csv"))
-        changed = ", ".join(s.strip() for s in args.set)
-        title = f"{system.name}: simulated response" + (f" ({changed})" if changed else "")
-        result.plot(units=system.plot_units, file=out.file(f"{name}.png"), title=title)
-    files = {"csv": out.final(f"{name}.csv"), "plot": out.final(f"{name}.png")}
+    files: dict[str, str] = {}
+    if out is not None:
+        with out:
+            if "csv" in kinds:
+                result.to_csv(out.file(f"{name}.csv"))
+            if "mat" in kinds:
+                result.to_mat(out.file(f"{name}.mat"))
+            if "png" in kinds:
+                changed = ", ".join(s.strip() for s in args.set)
+                title = f"{system.name}: simulated response" + (f" ({changed})" if changed else "")
+                result.plot(units=system.plot_units, file=out.file(f"{name}.png"), title=title)
+        files = {kind: out.final(f"{name}.{kind}") for kind in kinds}
     if not args.json:
         _print_summary(system, result, t_end, wall, files)
         return 0
@@ -221,6 +250,13 @@ def add_parsers(sub: Any) -> None:
         help="refuse a physically implausible result (exit 2, nothing written) instead of warning",
     )
     add_output_options(p, "hydroservo-NAME")
+    p.add_argument(
+        "--write",
+        default=None,
+        metavar="LIST",
+        help="files to write: a comma-separated list of csv, png, mat, or none (default: csv,png; "
+        "with --json and no --out: none)",
+    )
     p.add_argument("--json", action="store_true", help="print signals, solver statistics and wall time as JSON")
     p.set_defaults(func=cmd_simulate)
 

@@ -10,6 +10,9 @@
   (:mod:`hydroservo.io.model_file`), in their source's units.
 * ``examples/``: the files the README's commands use (``hydroservo examples DIR``
   copies them).
+* ``units.json``: the conversions of the units the package uses and engineers
+  commonly write, computed by pint (:mod:`hydroservo.units` reads them so that
+  a run need not build the unit registry; ``scripts/unit_table.py`` writes it).
 * ``reference/``: results of other tools that hydroservo compares itself with
   (Hopsan's Position Servo), with a README on how each was made.
 
@@ -36,6 +39,7 @@ __all__ = [
     "model_text",
     "example_files",
     "reference_text",
+    "unit_table",
 ]
 
 _ROOT = resources.files("hydroservo.data")
@@ -113,3 +117,11 @@ def reference_text(name: str) -> str:
     if not path.is_file():
         raise ParameterError(f"no reference result {name!r}")
     return path.read_text(encoding="utf-8")
+
+
+@functools.cache
+def unit_table() -> dict[str, Any]:
+    """``units.json``: ``{"pint": version, "units": {text: {factor, offset, dimension, coherent, printed}}}``."""
+    import json
+
+    return dict(json.loads((_ROOT / "units.json").read_text(encoding="utf-8")))

@@ -17,65 +17,123 @@ module                   files
 
 A new file format gets a module here; nothing outside this package opens a
 user's file. (The package's own data files are found by :mod:`hydroservo.data`.)
+
+Names are imported on first use (PEP 562): reading a model file must not load
+SciPy's optimisers (the datasheet reader's fit) or pandas.
 """
 
-from hydroservo.io.bode import read_bode, write_bode
-from hydroservo.io.component_file import (
-    component_file_text,
-    component_toml,
-    read_component_file,
-    read_staged_slot_valve,
-    staged_slot_valve_toml,
-)
-from hydroservo.io.curves import read_bench_curves, read_csv_table, read_static_curves, write_bench_curves
-from hydroservo.io.datasheet import read_datasheet
-from hydroservo.io.linear import read_operating_point, write_linear_model
-from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
-from hydroservo.io.results import write_csv, write_mat
-from hydroservo.io.runs import RunStore, read_runs
-from hydroservo.io.servovalve import (
-    write_bench_bode,
-    write_blocked,
-    write_figures,
-    write_hysteresis,
-    write_sensitivity,
-    write_static_characteristic,
-    write_steps,
-)
-from hydroservo.io.tables import read_time_table
-from hydroservo.io.toml import read_toml
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+#: Public name -> the module that defines it.
+_LAZY: dict[str, str] = {
+    "read_bode": "hydroservo.io.bode",
+    "write_bode": "hydroservo.io.bode",
+    "component_file_text": "hydroservo.io.component_file",
+    "component_toml": "hydroservo.io.component_file",
+    "read_component_file": "hydroservo.io.component_file",
+    "read_staged_slot_valve": "hydroservo.io.component_file",
+    "staged_slot_valve_toml": "hydroservo.io.component_file",
+    "read_bench_curves": "hydroservo.io.curves",
+    "read_csv_table": "hydroservo.io.curves",
+    "read_static_curves": "hydroservo.io.curves",
+    "write_bench_curves": "hydroservo.io.curves",
+    "read_datasheet": "hydroservo.io.datasheet",
+    "read_operating_point": "hydroservo.io.linear",
+    "write_linear_model": "hydroservo.io.linear",
+    "builtin_models": "hydroservo.io.model_file",
+    "load_model": "hydroservo.io.model_file",
+    "model_to_toml": "hydroservo.io.model_file",
+    "read_model": "hydroservo.io.model_file",
+    "write_model": "hydroservo.io.model_file",
+    "write_csv": "hydroservo.io.results",
+    "write_mat": "hydroservo.io.results",
+    "RunStore": "hydroservo.io.runs",
+    "read_runs": "hydroservo.io.runs",
+    "write_bench_bode": "hydroservo.io.servovalve",
+    "write_blocked": "hydroservo.io.servovalve",
+    "write_figures": "hydroservo.io.servovalve",
+    "write_hysteresis": "hydroservo.io.servovalve",
+    "write_sensitivity": "hydroservo.io.servovalve",
+    "write_static_characteristic": "hydroservo.io.servovalve",
+    "write_steps": "hydroservo.io.servovalve",
+    "read_time_table": "hydroservo.io.tables",
+    "read_toml": "hydroservo.io.toml",
+}
 
 __all__ = [
     "read_bode",
     "write_bode",
-    "read_component_file",
-    "component_toml",
     "component_file_text",
+    "component_toml",
+    "read_component_file",
     "read_staged_slot_valve",
     "staged_slot_valve_toml",
+    "read_bench_curves",
     "read_csv_table",
     "read_static_curves",
-    "read_bench_curves",
     "write_bench_curves",
     "read_datasheet",
-    "read_model",
-    "write_model",
-    "model_to_toml",
-    "load_model",
-    "builtin_models",
-    "write_csv",
-    "write_mat",
-    "read_time_table",
     "read_operating_point",
     "write_linear_model",
+    "builtin_models",
+    "load_model",
+    "model_to_toml",
+    "read_model",
+    "write_model",
+    "write_csv",
+    "write_mat",
     "RunStore",
     "read_runs",
-    "read_toml",
-    "write_static_characteristic",
-    "write_sensitivity",
-    "write_figures",
-    "write_steps",
-    "write_hysteresis",
-    "write_blocked",
     "write_bench_bode",
+    "write_blocked",
+    "write_figures",
+    "write_hysteresis",
+    "write_sensitivity",
+    "write_static_characteristic",
+    "write_steps",
+    "read_time_table",
+    "read_toml",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name not in _LAZY:
+        raise AttributeError(f"module 'hydroservo.io' has no attribute {name!r}")
+    value = getattr(importlib.import_module(_LAZY[name]), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+
+
+if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and editors
+    from hydroservo.io.bode import read_bode, write_bode
+    from hydroservo.io.component_file import (
+        component_file_text,
+        component_toml,
+        read_component_file,
+        read_staged_slot_valve,
+        staged_slot_valve_toml,
+    )
+    from hydroservo.io.curves import read_bench_curves, read_csv_table, read_static_curves, write_bench_curves
+    from hydroservo.io.datasheet import read_datasheet
+    from hydroservo.io.linear import read_operating_point, write_linear_model
+    from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
+    from hydroservo.io.results import write_csv, write_mat
+    from hydroservo.io.runs import RunStore, read_runs
+    from hydroservo.io.servovalve import (
+        write_bench_bode,
+        write_blocked,
+        write_figures,
+        write_hysteresis,
+        write_sensitivity,
+        write_static_characteristic,
+        write_steps,
+    )
+    from hydroservo.io.tables import read_time_table
+    from hydroservo.io.toml import read_toml

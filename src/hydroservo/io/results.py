@@ -9,7 +9,6 @@ from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
     import numpy as np
-    import pandas as pd
 
 __all__ = ["write_csv", "write_mat"]
 
@@ -23,13 +22,23 @@ class Result(Protocol):
     @property
     def data(self) -> dict[str, np.ndarray]: ...
 
-    def to_pandas(self) -> pd.DataFrame: ...
-
 
 def write_csv(result: Result, path: str | Path) -> Path:
-    """Write ``result`` as CSV: a time column ``t [s]``, then one column ``signal [unit]`` per signal (SI)."""
+    """Write ``result`` as CSV: a time column ``t [s]``, then one column ``signal [unit]`` per signal (SI).
+
+    Ten significant digits; written by NumPy, so that a command-line run does
+    not load pandas (``pandas.read_csv`` reads it back, ``nan`` as NaN).
+    """
+    import csv
+
+    import numpy as np
+
     path = Path(path)
-    result.to_pandas().to_csv(path, float_format="%.10g")
+    data = result.data
+    header = ["t [s]", *(f"{n} [{si_unit(result.units.get(n, ''))}]" for n in data)]
+    with path.open("w", encoding="utf-8", newline="") as f:
+        csv.writer(f, lineterminator="\n").writerow(header)
+        np.savetxt(f, np.column_stack([result.t, *data.values()]), fmt="%.10g", delimiter=",")
     return path
 
 
