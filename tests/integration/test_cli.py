@@ -48,6 +48,13 @@ def test_cli_simulate_csv_reads_back_as_the_result(tmp_path, cli) -> None:
         assert table[column].to_numpy() == pytest.approx(result[name], rel=1e-9, abs=1e-300)
 
 
+def test_cli_simulate_accuracy_sets_the_tolerances(cli) -> None:
+    code, out, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--json", "--accuracy", "0.1%")
+    assert code == 0 and json.loads(out)["solver"]["rtol"] == pytest.approx(1e-5)
+    code, _, err = cli("simulate", "flight-simulator", "--json", "--accuracy", "1e-3", "--rtol", "1e-5")
+    assert code == 2 and "give one of them, not both" in err
+
+
 def test_cli_export_then_simulate(tmp_path, cli) -> None:
     code, text, _ = cli("export", "flight-simulator")
     assert code == 0
@@ -105,7 +112,8 @@ def test_cli_warns_of_an_implausible_result_and_strict_refuses_it(tmp_path, cli)
 
 @pytest.mark.parametrize(
     ("option", "value"),
-    [("--rtol", "0"), ("--rtol", "nan"), ("--rtol", "1e10"), ("--rtol", "-1"), ("--points", "1"), ("--points", "2000000")],
+    [("--rtol", "0"), ("--rtol", "nan"), ("--rtol", "1e10"), ("--rtol", "-1"), ("--points", "1"), ("--points", "2000000"),
+     ("--accuracy", "2"), ("--accuracy", "abc"), ("--accuracy", "0%"), ("--accuracy", "nan")],
 )
 def test_cli_solver_options_are_refused_up_front(option, value, cli, tmp_path) -> None:
     code, _, err = cli("simulate", "flight-simulator", option, value, "--out", str(tmp_path))

@@ -104,14 +104,30 @@ def _print_summary(system: Any, result: Any, t_end: float, wall: float, files: d
         print(f"wrote {' and '.join(files.values())}")
 
 
+def _accuracy(text: str | None) -> float | None:
+    """``--accuracy``: a fraction (``1e-3``) or a percentage (``0.1%``) of each signal's range."""
+    if text is None:
+        return None
+    stripped = text.strip()
+    try:
+        return float(stripped[:-1]) / 100 if stripped.endswith("%") else float(stripped)
+    except ValueError:
+        raise ParameterError(
+            f"--accuracy {shorten(text)!r}: expected a fraction of each signal's range, e.g. 1e-3 or 0.1%"
+        ) from None
+
+
 def _check_solver_options(args: argparse.Namespace) -> None:
-    """Refuse --rtol and --points before anything is loaded or built."""
+    """Refuse --rtol, --accuracy and --points before anything is loaded or built."""
     from hydroservo.system.integration import MAX_POINTS, SolverSettings
 
+    if args.rtol is not None and args.accuracy is not None:
+        raise ParameterError(f"--rtol {args.rtol:g} and --accuracy {args.accuracy}: give one of them, not both")
     try:
-        SolverSettings(rtol=args.rtol)
+        SolverSettings.of(rtol=args.rtol, accuracy=_accuracy(args.accuracy))
     except ParameterError as exc:
-        raise ParameterError(f"--rtol {args.rtol:g}: {str(exc).split(': ', 1)[-1]}") from None
+        option = f"--rtol {args.rtol:g}" if args.rtol is not None else f"--accuracy {args.accuracy}"
+        raise ParameterError(f"{option}: {str(exc).split(': ', 1)[-1]}") from None
     if not 2 <= args.points <= MAX_POINTS:
         raise ParameterError(f"--points {args.points}: expected a whole number of output times from 2 to {MAX_POINTS}")
 
@@ -179,7 +195,9 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     if system.plots and "png" in kinds:
         _check_plots(system, system.plots)
     start = time.perf_counter()
-    result = system.simulate(t_end=t_end, n_points=args.points, initial=args.initial, rtol=args.rtol)
+    result = system.simulate(
+        t_end=t_end, n_points=args.points, initial=args.initial, rtol=args.rtol, accuracy=_accuracy(args.accuracy)
+    )
     wall = time.perf_counter() - start
     found = _report_warnings(result, args.strict)
     files: dict[str, str] = {}
@@ -243,7 +261,13 @@ def add_parsers(sub: Any) -> None:
         default="parameters",
         help="initial state from the parameters (default) or from an equilibrium",
     )
-    p.add_argument("--rtol", type=float, default=1e-6, help="relative tolerance (default 1e-6)")
+    p.add_argument(
+        "--accuracy",
+        default=None,
+        metavar="A",
+        help="deviation wanted, relative to each signal's range: 1e-3 or 0.1%% (default 1e-4: rtol 1e-6, atol 1e-8)",
+    )
+    p.add_argument("--rtol", type=float, default=None, help="relative tolerance instead (atol = rtol/100)")
     p.add_argument(
         "--strict",
         action="store_true",

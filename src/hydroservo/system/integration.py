@@ -21,7 +21,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError
 
-__all__ = ["MAX_POINTS", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
+__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
 
 #: Largest output grid [points]: 100 001 points of 20 signals are 16 MB; a million would be gigabytes.
 MAX_POINTS = 100_001
@@ -42,6 +42,28 @@ _REASONS = {
     "CV_LSOLVE_FAIL": "the linear solve failed (a singular or NaN Jacobian)",
     "CV_TOO_MUCH_ACC": "the tolerances ask for more accuracy than floating point gives (loosen rtol or atol)",
 }
+
+
+#: The accuracy a run is integrated to unless asked otherwise: a deviation of at most about 1e-4 of the range of
+#: each signal an engineer looks at (docs/engine.md, "Accuracy", has the deviations measured on the built-in models).
+DEFAULT_ACCURACY = 1e-4
+#: Accuracy per unit of relative tolerance, and relative tolerance per unit of absolute tolerance (on states
+#: scaled by their nominal magnitude): measured on the built-in models, CVODES' deviation on their main signals
+#: is 3 to 50 times rtol (about 400 times on the undamped limit cycle of Hopsan's Position Servo).
+ACCURACY_PER_RTOL = 100.0
+RTOL_PER_ATOL = 100.0
+
+
+def tolerances(accuracy: float) -> tuple[float, float]:
+    """``(rtol, atol)`` for a wanted relative ``accuracy`` of the signals (of their range); ``1e-4`` gives the
+    defaults, ``(1e-6, 1e-8)``."""
+    if not _real(accuracy) or not 1e-10 <= accuracy <= 0.1:
+        raise ParameterError(
+            f"accuracy = {accuracy!r}: expected a relative accuracy between 1e-10 and 0.1 (the default is "
+            f"{DEFAULT_ACCURACY:g}, about 0.01 % of each signal's range)"
+        )
+    rtol = float(accuracy) / ACCURACY_PER_RTOL
+    return rtol, rtol / RTOL_PER_ATOL
 
 
 @dataclass(frozen=True)
@@ -72,6 +94,27 @@ class SolverSettings:
             )
         if isinstance(steps, bool) or not isinstance(steps, (int, np.integer)) or not 100 <= steps <= 10**9:
             raise ParameterError(f"max_steps = {steps!r}: expected a whole number of steps from 100 to 1e9")
+
+    @classmethod
+    def of(
+        cls, rtol: float | None = None, atol: float | None = None, accuracy: float | None = None,
+        max_steps: int = 100_000,
+    ) -> SolverSettings:
+        """The settings a caller asked for: an ``accuracy`` (:func:`tolerances`), or ``rtol`` and ``atol``;
+        ``atol`` follows ``rtol`` (:data:`RTOL_PER_ATOL`) unless given; nothing given: :data:`DEFAULT_ACCURACY`."""
+        if accuracy is not None:
+            if rtol is not None or atol is not None:
+                raise ParameterError(
+                    f"accuracy = {accuracy!r} with rtol = {rtol!r}, atol = {atol!r}: give an accuracy or tolerances, "
+                    "not both"
+                )
+            rtol, atol = tolerances(accuracy)
+        if rtol is None:
+            rtol, default_atol = tolerances(DEFAULT_ACCURACY)
+            atol = default_atol if atol is None else atol
+        if atol is None:
+            atol = rtol / RTOL_PER_ATOL if _real(rtol) else 1e-8
+        return cls(rtol, atol, max_steps)
 
     def steps_per_interval(self, n_intervals: int) -> int:
         """The most steps CVODES may take between two output times."""

@@ -20,30 +20,48 @@ if TYPE_CHECKING:
 __all__ = ["Result", "BatchResult"]
 
 
+#: What computes outputs of a result: names -> values (SI), only those asked for.
+Outputs = Callable[[Sequence[str]], dict[str, np.ndarray]]
+
+
 class _Signals:
-    """Signals by name; outputs other than states are computed on first use."""
+    """Signals by name; outputs other than states are computed when first read, only those read."""
 
     t: np.ndarray
     model: str
     units: dict[str, str]
     _data: dict[str, np.ndarray]
-    _outputs: Callable[[], dict[str, np.ndarray]] | None
+    _outputs: Outputs | None
+    _pending: dict[str, None]  # outputs not computed yet, in the model's order
+
+    def _init_signals(self, data: dict[str, np.ndarray], outputs: Outputs | None, pending: Sequence[str]) -> None:
+        self._data, self._outputs = data, outputs
+        self._pending = dict.fromkeys(n for n in pending if n not in data) if outputs is not None else {}
+        self._order = [*data, *self._pending]
+
+    def _compute(self, names: Sequence[str]) -> None:
+        assert self._outputs is not None
+        self._data.update(self._outputs(list(names)))
+        for name in names:
+            self._pending.pop(name, None)
 
     @property
     def data(self) -> dict[str, np.ndarray]:
-        """All signals (SI)."""
-        if self._outputs is not None:
-            self._data.update(self._outputs())
-            self._outputs = None
+        """All signals (SI): the states, then the outputs, computed now if they were not read yet."""
+        if self._pending:
+            self._compute(list(self._pending))
+            self._data = {n: self._data[n] for n in self._order if n in self._data} | self._data
         return self._data
 
     @property
     def names(self) -> list[str]:
-        return list(self.data)
+        return [*self._data, *(n for n in self._pending if n not in self._data)]
 
     def __getitem__(self, name: str) -> np.ndarray:
         if name in ("t", "time"):
             return self.t
+        if name in self._pending:
+            self._compute([name])
         data = self._data if name in self._data else self.data
         try:
             return data[name]
@@ -85,11 +103,11 @@ class Result(_Signals):
         stats: dict[str, Any],
         params: dict[str, float],
         model: str,
-        outputs: Callable[[], dict[str, np.ndarray]] | None = None,
+        outputs: Outputs | None = None,
+        pending: Sequence[str] = (),
     ) -> None:
         self.t = t
-        self._data = data
-        self._outputs = outputs
+        self._init_signals(data, outputs, pending)
         self.units = units
         self.descriptions = descriptions
         self.stats = stats
@@ -168,13 +186,14 @@ class BatchResult(_Signals):
         params: dict[str, np.ndarray],
         stats: dict[str, Any],
         model: str,
-        outputs: Callable[[], dict[str, np.ndarray]] | None = None,
+        outputs: Outputs | None = None,
         failed: dict[int, str] | None = None,
         varied: Sequence[str] = (),
         param_units: dict[str, str] | None = None,
+        pending: Sequence[str] = (),
     ) -> None:
-        self.t, self._data, self.units, self.params, self.stats, self.model = t, data, units, params, stats, model
-        self._outputs = outputs
+        self.t, self.units, self.params, self.stats, self.model = t, units, params, stats, model
+        self._init_signals(data, outputs, pending)
         self.failed: dict[int, str] = dict(failed or {})
         #: The parameters the batch varied, and the units of all parameters (SI).
         self.varied = list(varied)

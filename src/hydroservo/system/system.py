@@ -12,6 +12,7 @@ structure changes, never when a parameter value does.
 from __future__ import annotations
 
 import copy
+from collections import OrderedDict
 from collections.abc import Collection, Iterable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -30,6 +31,10 @@ if TYPE_CHECKING:
     from hydroservo.system.result import BatchResult, Result
 
 __all__ = ["System", "Alias", "CircuitFluid", "split_name"]
+
+#: How many compiled models are kept across systems (:meth:`System.build`).
+BUILT_KEPT = 32
+_BUILT: OrderedDict[Any, Model] = OrderedDict()
 
 
 @dataclass(frozen=True)
@@ -378,12 +383,28 @@ class System:
 
     # -- building ----------------------------------------------------------
     def _structure_key(self) -> Any:
-        def tables(c: Component) -> Any:
-            return tuple((k, np.asarray(v).tobytes()) for k, v in sorted(vars(c).items()) if isinstance(v, np.ndarray))
+        def tables(c: Component) -> Any:  # arrays, and dicts of arrays (a valve's compensation tables)
+            found: list[Any] = []
+            for k, v in sorted(vars(c).items()):
+                if isinstance(v, np.ndarray):
+                    found.append((k, v.tobytes()))
+                elif isinstance(v, dict) and v and all(isinstance(a, np.ndarray) for a in v.values()):
+                    found.append((k, tuple((name, a.tobytes()) for name, a in sorted(v.items()))))
+            return tuple(found)
+
+        def declared(c: Component) -> Any:  # an instance's own declarations: a signal block's unit, a line's ends
+            return (
+                tuple((k, v.unit) for k, v in c.PARAMETERS.items()),
+                tuple((k, v.unit, v.nominal) for k, v in c.STATES.items()),
+                tuple((k, v.unit, v.nominal) for k, v in c.ALGEBRAIC.items()),
+                tuple((k, v.unit, v.default) for k, v in c.INPUTS.items()),
+                tuple((k, v.unit) for k, v in c.OUTPUTS.items()),
+                tuple(c.LIMITS),
+            )
 
         return (
             tuple(
-                (n, type(c).__name__, tuple(sorted(c.option_values.items())), tables(c), c.structure_key())
+                (n, type(c).__name__, tuple(sorted(c.option_values.items())), tables(c), c.structure_key(), declared(c))
                 for n, c in self.components.items()
             ),
             tuple(sorted(self.connections.items())),
@@ -393,18 +414,29 @@ class System:
         )
 
     def build(self) -> Model:
-        """Assemble (or return the cached) compiled model."""
-        key = self._structure_key()
+        """Assemble the compiled model, or return it if nothing structural changed since.
+
+        Compiled models are also kept across systems (the last :data:`BUILT_KEPT`), by their name and
+        structure: loading the same model file again, or a copy of a system, finds its model built.
+        """
+        key = (self.name, self._structure_key())
         if self._model is not None and self._model_key == key:
             return self._model
         try:
             self.check_components()
-            self._model = Model(*assemble(self))
+            if key in _BUILT:  # another system of this structure built it
+                _BUILT.move_to_end(key)
+                self._model = _BUILT[key]
+            else:
+                self._model = Model(*assemble(self))
         except (ModelError, ParameterError) as exc:
             if self.source and not str(exc).startswith(self.source):
                 raise type(exc)(f"{self.source}: {exc}") from None
             raise
         self._model_key = key
+        _BUILT[key] = self._model
+        while len(_BUILT) > BUILT_KEPT:
+            _BUILT.popitem(last=False)
         return self._model
 
     # -- running (thin wrappers over Model) ---------------------------------
@@ -414,7 +446,7 @@ class System:
         """Simulate; see :meth:`hydroservo.system.model.Model.simulate`."""
         model = self.build()
         t = self.t_end if t_end is None else to_si(t_end, "s", what="t_end")
-        result = model.simulate(t, self.parameter_vector(params), **kwargs)
+        result = model.simulate(t, self._vector(model, params), **kwargs)
         result.panels = self.default_panels()
         return result
 
@@ -446,7 +478,8 @@ class System:
 
     def trim(self, params: Mapping[str, Any] | None = None, **kwargs: Any) -> dict[str, float]:
         """Equilibrium state; see :meth:`hydroservo.system.model.Model.trim`."""
-        return self.build().trim(self.parameter_vector(params), **kwargs)
+        model = self.build()
+        return model.trim(self._vector(model, params), **kwargs)
 
     def batch(
         self, param_sets: Mapping[str, Iterable[Any]], t_end: float | str | None = None, **kwargs: Any
@@ -485,7 +518,7 @@ class System:
                     self.check_components({key: float(col[i]) for key, col in si.items()}, only_changed=True)
                 except HydroservoError as exc:
                     invalid[i] = str(exc)
-        return model.batch(t, self.parameter_vector(None), si, failed=invalid, **kwargs)
+        return model.batch(t, self._vector(model, None), si, failed=invalid, **kwargs)
 
     def parameter_vector(self, params: Mapping[str, Any] | None = None) -> np.ndarray:
         """The parameter vector of the built model (SI, in :attr:`Model.parameter_names` order):
@@ -502,7 +535,10 @@ class System:
         ParameterError
             Naming the parameter, its value and what was expected.
         """
-        model = self.build()
+        return self._vector(self.build(), params)
+
+    def _vector(self, model: Model, params: Mapping[str, Any] | None) -> np.ndarray:
+        """:meth:`parameter_vector` for ``model``, built already."""
         given = self.parse_parameters(params)
         values = self.parameter_values()
         values.update(given)

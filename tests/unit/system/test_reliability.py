@@ -224,3 +224,30 @@ def test_batch_flags_runs_by_index(flight: hs.System) -> None:
         )
     assert list(b.warnings) == [1]
     assert b.run(1).warnings == b.warnings[1]
+
+
+def test_a_batch_reads_the_same_outputs_and_flags_unrolled_or_not(flight: hs.System, monkeypatch) -> None:
+    # Outputs and plausibility of a batch are unrolled over the times (model.UNROLLED_SIZE); past that size the
+    # mapped functions run instead. Both give the same numbers and the same flags as a run on its own.
+    import warnings as python_warnings
+
+    import hydroservo.system.model as engine
+
+    sets = {"source.amplitude": [2.0, 100.0, 3.0], "cyl.k_stop": [0.0] * 3, "cyl.c_stop": [0.0] * 3}
+    found = {}
+    for size in (engine.UNROLLED_SIZE, 0):
+        monkeypatch.setattr(engine, "UNROLLED_SIZE", size)
+        flight.build()._maps.clear()
+        with pytest.warns(hs.ImplausibleResultWarning):
+            b = flight.batch(sets, t_end=1.0, n_points=101)
+        found[size] = (b["y"], b["cyl.pA"], {k: [w.signal for w in v] for k, v in b.warnings.items()})
+    (y1, p1, w1), (y0, p0, w0) = found.values()
+    np.testing.assert_array_equal(y1, y0)
+    np.testing.assert_array_equal(p1, p0)
+    assert w1 == w0 and sorted(w1) == [1, 2]
+    for k in range(3):
+        with python_warnings.catch_warnings():
+            python_warnings.simplefilter("ignore", hs.ImplausibleResultWarning)
+            single = flight.simulate(t_end=1.0, n_points=101, params={name: v[k] for name, v in sets.items()})
+        np.testing.assert_allclose(y1[k], single["y"], rtol=1e-12, atol=1e-15)
+        assert [w.signal for w in single.warnings] == w1.get(k, [])

@@ -21,3 +21,41 @@ def test_result_exports(tmp_path, spring_mass) -> None:
     assert r.get("load.x", "mm")[0] == pytest.approx(10.0)
     s = r.summary()["load.x"]
     assert s["unit"] == "m" and s["max"] == pytest.approx(0.01)
+
+
+def test_signals_are_read_when_asked_and_equal_the_whole_set() -> None:
+    import hydroservo as hs
+
+    system = hs.load_model("flight-simulator")
+    model = system.build()
+    lazy = system.simulate(t_end=0.2, n_points=101)
+    assert set(lazy._pending) == {*model.state_names, *model.output_names}  # nothing read yet
+    y, p2 = lazy["y"], lazy["p2"]
+    assert "y" not in lazy._pending and "cyl.pA" in lazy._pending  # only what was read
+    whole = system.simulate(t_end=0.2, n_points=101).data
+    assert list(lazy.data) == [*model.state_names, *model.output_names] == list(whole)
+    for name, values in whole.items():
+        np.testing.assert_array_equal(lazy[name], values)
+    np.testing.assert_array_equal(y, whole["y"])
+    np.testing.assert_array_equal(p2, whole["p2"])
+
+
+def test_a_compiled_model_is_shared_by_structure_only() -> None:
+    # Loading a model again finds it built; what changes the equations (a valve's compensation tables held in a
+    # dict, a signal block's unit) is structure, and gets a model of its own.
+    import hydroservo as hs
+    from hydroservo.analysis.ladder import _tables_off
+
+    arm = hs.load_model("robot-arm")
+    assert hs.load_model("robot-arm").build() is arm.build()
+    plain = arm.copy()
+    _tables_off(plain)
+    assert plain.build() is not arm.build()
+    moved = arm.copy()
+    moved.set("load.m", "40 kg")  # a parameter: the same equations
+    assert moved.build() is arm.build()
+    a = hs.System("a")
+    a.add(hs.components.Step("s", unit="mm", amplitude=1.0))
+    b = hs.System("a")
+    b.add(hs.components.Step("s", unit="bar", amplitude=1.0))
+    assert a.build() is not b.build() and a.build().units["s.y"] != b.build().units["s.y"]
