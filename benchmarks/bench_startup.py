@@ -4,8 +4,9 @@ Run: ``python benchmarks/bench_startup.py [REPEATS]`` (default 15). Each
 command runs as a fresh process, alternating with the baseline (``python -c
 pass``) in the same loop, so that machine load affects both alike; prints the
 median and the spread of wall times, and each median's excess over the
-baseline's. The budget (issue 9, on an idle machine): ``import hydroservo``
-under 0.4 s, ``--version`` and ``--help`` under 0.3 s.
+baseline's. The budgets (on an idle machine): ``import hydroservo`` under
+0.4 s, ``--version`` and ``--help`` under 0.3 s (issue 9); ``hydroservo simulate
+flight-simulator --json`` end to end under 0.6 s (issue 14).
 """
 
 from __future__ import annotations
@@ -26,6 +27,11 @@ COMMANDS = {
     "hydroservo --version": [CLI, "--version"] if CLI else [PY, "-m", "hydroservo", "--version"],
     "hydroservo --help": [CLI, "--help"] if CLI else [PY, "-m", "hydroservo", "--help"],
     "hydroservo validate --help": [CLI, "validate", "--help"] if CLI else [PY, "-m", "hydroservo", "validate", "--help"],
+    # a whole one-off run: load, build, integrate, print the JSON summary (no files: --json alone writes none)
+    "hydroservo simulate flight-simulator --json": (
+        [CLI, "simulate", "flight-simulator", "--json"] if CLI else [PY, "-m", "hydroservo", "simulate",
+                                                                     "flight-simulator", "--json"]
+    ),
 }
 
 
@@ -35,7 +41,7 @@ def wall(argv: list[str]) -> float:
     return time.perf_counter() - start
 
 
-def main(repeats: int = 15) -> None:
+def main(repeats: int = 15) -> dict[str, float]:
     times: dict[str, list[float]] = {name: [] for name in COMMANDS}
     for argv in COMMANDS.values():  # warm the file cache
         wall(argv)
@@ -47,6 +53,7 @@ def main(repeats: int = 15) -> None:
     for name, ts in times.items():
         med = statistics.median(ts)
         print(f"  {name:44s} {med:6.3f} ({min(ts):.3f} - {max(ts):.3f})   +{med - base:.3f}   x{med / base:.1f}")
+    return {name: statistics.median(ts) for name, ts in times.items()}
 
 
 if __name__ == "__main__":

@@ -1,0 +1,83 @@
+"""The speed suite: every figure of the README's speed table, each beside its baseline, in one run.
+
+Run: ``python benchmarks/suite.py`` (prints the table), ``--readme`` (also writes
+it into README.md between its ``speed-table`` markers). Takes a few minutes.
+
+Each row is a ratio to a baseline measured in the same run on the same machine
+(medians over repeats), never an absolute promise. Figures from other tools
+are quoted, with their source, and marked so.
+"""
+
+from __future__ import annotations
+
+import platform
+import re
+import sys
+from pathlib import Path
+
+import bench_accuracy
+import bench_flight_simulator
+import bench_growth
+import bench_startup
+import bench_warm
+
+README = Path(__file__).resolve().parents[1] / "README.md"
+START, END = "<!-- speed-table:start -->", "<!-- speed-table:end -->"
+#: Hopsan's compiled solver on its Position Servo example, on a 2-core machine (issue 14's measurement).
+HOPSAN_US_PER_STEP = 0.5
+
+
+def rows() -> list[tuple[str, str, str]]:
+    """(what, hydroservo, baseline) rows of the table, measured now."""
+    out: list[tuple[str, str, str]] = []
+    start = bench_startup.main(7)
+    base = start["baseline: python -c pass"]
+    out.append(("`import hydroservo`", f"{start['import hydroservo'] - base:.3f} s", "over a bare interpreter"))
+    run = start["hydroservo simulate flight-simulator --json"]
+    out.append(("`hydroservo simulate flight-simulator --json`, end to end", f"{run:.2f} s", "one process, cold"))
+    fs = bench_flight_simulator.main()
+    out.append((
+        "flight-simulator 2-s step, CVODES vs SciPy LSODA (Python right-hand side), equal accuracy",
+        f"{fs['ratio_equal_accuracy']:.1f}x faster", "`solve_ivp(method='LSODA')`",
+    ))  # fmt: skip
+    warm = bench_warm.main(quick=True)
+    out.append((
+        "warm `System.simulate` + reading `y`", f"{warm['simulate_y_ratio']:.2f}x", "the bare CVODES call",
+    ))  # fmt: skip
+    out.append(("batch of runs with their outputs read", f"{warm['batch_ratio']:.2f}x", "its integration time"))
+    acc = bench_accuracy.main(repeat=3)
+    devs = [v[1e-4] for v in acc.values() if 1e-4 in v]
+    out.append((
+        "default accuracy 1e-4: largest deviation of the plotted signals (4 built-in models)",
+        f"{min(devs):.0e} to {max(devs):.0e}", "of each signal's range, vs rtol 1e-11",
+    ))  # fmt: skip
+    growth = bench_growth.main(repeat=3)
+    (b1, r1, s1), (b24, r24, s24) = growth[1], growth[24]
+    out.append((
+        "24 actuator loops in one model (240 states): build time per loop; run time per step and loop",
+        f"{b24 / 24 / b1:.2f}x; {r24 / s24 / 24 / (r1 / s1):.2f}x", "one loop",
+    ))  # fmt: skip
+    return out
+
+
+def table(found: list[tuple[str, str, str]]) -> str:
+    head = f"Measured by `python benchmarks/suite.py --readme` ({platform.machine()}, {sys.version.split()[0]}):\n\n"
+    lines = ["| what | hydroservo | against |", "|---|---|---|"]
+    lines += [f"| {a} | {b} | {c} |" for a, b, c in found]
+    return head + "\n".join(lines) + "\n"
+
+
+def main(write: bool) -> None:
+    text = table(rows())
+    print(text)
+    if write:
+        readme = README.read_text(encoding="utf-8")
+        if START not in readme or END not in readme:
+            raise SystemExit(f"{README}: no {START} ... {END} block to write the table into")
+        block = f"{START}\n{text}{END}"
+        README.write_text(re.sub(re.escape(START) + ".*?" + re.escape(END), lambda _: block, readme, flags=re.S))
+        print(f"wrote the table into {README}")
+
+
+if __name__ == "__main__":
+    main("--readme" in sys.argv)
