@@ -4,6 +4,7 @@
 module                 commands
 =====================  ==========================================================
 :mod:`.models`         ``models``, ``simulate``, ``export``
+:mod:`.export_c`       ``export-c``
 :mod:`.linear`         ``linearize``
 :mod:`.ladder`         ``ladder``
 :mod:`.sensitivity`    ``sensitivity``
@@ -30,7 +31,19 @@ import warnings
 from collections.abc import Sequence
 from typing import NoReturn
 
-from hydroservo.cli import components, examples, fluid, ladder, linear, models, sensitivity, servovalve, validate, valve
+from hydroservo.cli import (
+    components,
+    examples,
+    export_c,
+    fluid,
+    ladder,
+    linear,
+    models,
+    sensitivity,
+    servovalve,
+    validate,
+    valve,
+)
 from hydroservo.errors import FluidRangeWarning, HydroservoError, ImplausibleResultWarning, RenamedWarning
 from hydroservo.version import __version__
 
@@ -52,6 +65,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument("--debug", action="store_true", help="show tracebacks on errors")
     sub = parser.add_subparsers(dest="command", required=True)
     models.add_parsers(sub)
+    export_c.add_parsers(sub)
     linear.add_parsers(sub)
     ladder.add_parsers(sub)
     sensitivity.add_parsers(sub)

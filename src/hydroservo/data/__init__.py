@@ -15,6 +15,8 @@
   a run need not build the unit registry; ``scripts/unit_table.py`` writes it).
 * ``reference/``: results of other tools that hydroservo compares itself with
   (Hopsan's Position Servo), with a README on how each was made.
+* ``c/``: the C templates of the fixed-step stepper that :mod:`hydroservo.io.c_export`
+  fills in for a model (``@NAME@`` and the like replaced by its identifier and sizes).
 
 This module only finds and parses the package's files (standard-library
 TOML, no unit registry); values are converted to SI by whoever uses them
@@ -39,6 +41,7 @@ __all__ = [
     "model_text",
     "example_files",
     "reference_text",
+    "c_template",
     "unit_table",
 ]
 
@@ -116,6 +119,14 @@ def reference_text(name: str) -> str:
     path = _ROOT / "reference" / name
     if not path.is_file():
         raise ParameterError(f"no reference result {name!r}")
+    return path.read_text(encoding="utf-8")
+
+
+def c_template(name: str) -> str:
+    """A C template of the real-time stepper (``c/NAME``: ``stepper.c``, ``stepper.h``)."""
+    path = _ROOT / "c" / name
+    if not path.is_file():
+        raise ParameterError(f"no C template {name!r}")
     return path.read_text(encoding="utf-8")
 
 

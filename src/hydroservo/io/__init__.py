@@ -11,6 +11,7 @@ module                   files
 :mod:`.tables`           time tables (CSV) of recorded signals
 :mod:`.results`          simulation results (CSV, MAT)
 :mod:`.linear`           operating points (TOML) and linear models (JSON)
+:mod:`.c_export`         a model as C code with a fixed-step stepper (C sources)
 :mod:`.runs`             the runs of a study, written as they arrive (Parquet parts)
 :mod:`.toml`             the TOML reader and value writer they share
 =======================  ========================================================
@@ -31,6 +32,8 @@ from typing import TYPE_CHECKING, Any
 _LAZY: dict[str, str] = {
     "read_bode": "hydroservo.io.bode",
     "write_bode": "hydroservo.io.bode",
+    "CStepper": "hydroservo.io.c_export",
+    "export_c": "hydroservo.io.c_export",
     "component_file_text": "hydroservo.io.component_file",
     "component_toml": "hydroservo.io.component_file",
     "read_component_file": "hydroservo.io.component_file",
@@ -66,6 +69,8 @@ _LAZY: dict[str, str] = {
 __all__ = [
     "read_bode",
     "write_bode",
+    "CStepper",
+    "export_c",
     "component_file_text",
     "component_toml",
     "read_component_file",
@@ -113,6 +118,7 @@ def __dir__() -> list[str]:
 
 if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and editors
     from hydroservo.io.bode import read_bode, write_bode
+    from hydroservo.io.c_export import CStepper, export_c
     from hydroservo.io.component_file import (
         component_file_text,
         component_toml,

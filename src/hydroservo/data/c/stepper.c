@@ -1,0 +1,399 @@
+/* @NAME@: the fixed-step stepper of the hydroservo model '@MODEL@' (API and use: @NAME@.h).
+ *
+ * The model's functions are CasADi's generated code in @NAME@_model.c, written on the scaled states
+ * z = x / x_nom (x_nom: the nominal magnitude each component declares for its states), so that one
+ * tolerance means the same for a pressure of 1e7 Pa and a spool position of 1e-5 m:
+ *     @NAME@_f(t, z, p) = dz/dt,  @NAME@_jac(t, z, p) = d(dz/dt)/dz (dense, column-major),
+ *     @NAME@_y(t, z, p) = outputs,  @NAME@_z0(p) = initial scaled states,
+ *     @NAME@_conv(t, z, p) = last Newton correction of each algebraic unknown (models that have some),
+ * with p the parameters followed by the inputs.
+ *
+ * rk4: the classical fourth-order Runge-Kutta method.
+ * bdf2: the two-step backward differentiation formula at the fixed step h,
+ *     z1 - 4/3 z0 + 1/3 z_prev = 2/3 h f(t1, z1),
+ * started by one implicit-Euler step (z1 - z0 = h f(t1, z1)) after a reset or a changed state. Each step
+ * solves its equation by Newton's method with the exact Jacobian from the linear extrapolation of the last
+ * two states: first with the factorisation (LU, partial pivoting) of I - gamma J (gamma = 2h/3, or h) kept
+ * from an earlier step, as long as every iteration shrinks the correction by @UPPER@_RATE; if it does not,
+ * again from the extrapolation with the Jacobian evaluated and factorised at every iterate. A step that
+ * has not converged in @UPPER@_MAX_ITERATIONS iterations of that second attempt is refused. Converged:
+ * the last correction of every scaled state is at most @UPPER@_TOLERANCE (the error left is no larger,
+ * for iterations that shrink by half or faster).
+ *
+ * Both evaluate the model on [t0, t1) of each step (@NAME@_end): a source that jumps at a step boundary
+ * acts from the next step on, as in CVODES' solution.
+ */
+#include "@NAME@.h"
+#include "@NAME@_model.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define @UPPER@_AT_LEAST_1(n) ((n) > 0 ? (n) : 1)
+#define @UPPER@_NP (@UPPER@_N_PARAMETERS + @UPPER@_N_INPUTS)
+#define @UPPER@_NZ @UPPER@_AT_LEAST_1(@UPPER@_N_STATES)
+
+/* The model's data, the method's settings and the work space of the generated functions (the largest any
+ * of them needs), written by hydroservo: */
+@DATA@
+
+struct @NAME@_instance {
+    long long steps; /* since the reset: t = steps h */
+    long long iterations, jacobians;
+    int outputs_current; /* y holds the outputs of the current time, states and inputs */
+    int history;         /* bdf2: z_prev holds the state one step back */
+    int factorised;      /* bdf2: lu holds I - gamma J for gamma = lu_gamma */
+    double lu_gamma;
+    double p[@UPPER@_AT_LEAST_1(@UPPER@_NP)]; /* the parameters, then the inputs */
+    double z[@UPPER@_NZ], z_prev[@UPPER@_NZ], z_new[@UPPER@_NZ];
+    double y[@UPPER@_AT_LEAST_1(@UPPER@_N_OUTPUTS)];
+    double k[4][@UPPER@_NZ]; /* rk4: the stages; bdf2: the predictor, the constant part, the correction */
+#if @UPPER@_BDF2
+    double lu[@UPPER@_NZ * @UPPER@_NZ];
+    int pivot[@UPPER@_NZ];
+#endif
+    const casadi_real *arg[@UPPER@_SZ_ARG];
+    casadi_real *res[@UPPER@_SZ_RES];
+    casadi_int iw[@UPPER@_AT_LEAST_1(@UPPER@_SZ_IW)];
+    casadi_real w[@UPPER@_AT_LEAST_1(@UPPER@_SZ_W)];
+    char message[512];
+};
+
+/* The generated functions, called with the instance's work space. They are built from scalar expressions
+ * (CasADi SX) and cannot fail: their return value is always 0. */
+typedef int (*@NAME@_function)(const casadi_real **, casadi_real **, casadi_int *, casadi_real *, int);
+
+static void @NAME@_call(@NAME@_instance *m, @NAME@_function fn, const double *t, const double *z, double *out) {
+    if (t != NULL) {
+        m->arg[0] = t;
+        m->arg[1] = z;
+        m->arg[2] = m->p;
+    } else {
+        m->arg[0] = m->p;
+    }
+    m->res[0] = out;
+    fn(m->arg, m->res, m->iw, m->w, 0);
+}
+
+static void @NAME@_rates(@NAME@_instance *m, double t, const double *z, double *dz) {
+    @NAME@_call(m, @NAME@_f, &t, z, dz);
+}
+
+/* The time after `steps` steps [s]: a product, so that no rounding error accumulates. */
+static double @NAME@_now(long long steps) {
+    return (double)steps * @UPPER@_STEP;
+}
+
+/* The end of the step that starts after `steps` steps, as the model sees it: the largest time below
+ * t1 = (steps + 1) h. A step evaluates the model on [t0, t1) only, so that a source that jumps at t1
+ * (a Step at t_step = t1) acts from the next step on, as it does in CVODES' solution, rather than
+ * entering the last stage of this one (for rk4 the jump then costs nothing of its order; bdf2's two-step
+ * formula still spans it, and is first order across it). */
+static double @NAME@_end(long long steps) {
+    return nextafter(@NAME@_now(steps + 1), 0.0);
+}
+
+/* The first state of z that is NaN or infinite, or -1. */
+static int @NAME@_not_finite(const double *z) {
+    for (int i = 0; i < @UPPER@_N_STATES; ++i) {
+        if (!isfinite(z[i])) return i;
+    }
+    return -1;
+}
+
+#if @UPPER@_BDF2
+/* LU factorisation with partial pivoting of the n x n column-major matrix a, in place (P a = L U, unit
+ * lower L); rows are swapped whole, as LAPACK's dgetrf does. Returns 0, or 1 if a pivot is zero or not finite. */
+static int @NAME@_lu(double *a, int *pivot, int n) {
+    for (int k = 0; k < n; ++k) {
+        int p = k;
+        double largest = fabs(a[k + n * k]);
+        for (int i = k + 1; i < n; ++i) {
+            if (fabs(a[i + n * k]) > largest) {
+                largest = fabs(a[i + n * k]);
+                p = i;
+            }
+        }
+        pivot[k] = p;
+        if (!(largest > 0.0) || !isfinite(largest)) return 1;
+        if (p != k) {
+            for (int j = 0; j < n; ++j) {
+                double swap = a[k + n * j];
+                a[k + n * j] = a[p + n * j];
+                a[p + n * j] = swap;
+            }
+        }
+        for (int i = k + 1; i < n; ++i) a[i + n * k] /= a[k + n * k];
+        for (int j = k + 1; j < n; ++j) {
+            double akj = a[k + n * j];
+            if (akj != 0.0) {
+                for (int i = k + 1; i < n; ++i) a[i + n * j] -= a[i + n * k] * akj;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Solve (L U) x = P b with the factors of @NAME@_lu; b is overwritten by x. */
+static void @NAME@_lu_solve(const double *lu, const int *pivot, int n, double *b) {
+    for (int k = 0; k < n; ++k) {
+        if (pivot[k] != k) {
+            double swap = b[k];
+            b[k] = b[pivot[k]];
+            b[pivot[k]] = swap;
+        }
+    }
+    for (int j = 0; j < n; ++j) {
+        for (int i = j + 1; i < n; ++i) b[i] -= lu[i + n * j] * b[j];
+    }
+    for (int j = n - 1; j >= 0; --j) {
+        b[j] /= lu[j + n * j];
+        for (int i = 0; i < j; ++i) b[i] -= lu[i + n * j] * b[j];
+    }
+}
+
+/* Evaluate the Jacobian at (t, z) and factorise I - gamma J. Returns 0 or @UPPER@_SINGULAR. */
+static int @NAME@_factorise(@NAME@_instance *m, double t, const double *z, double gamma) {
+    const int n = @UPPER@_N_STATES;
+    @NAME@_call(m, @NAME@_jac, &t, z, m->lu);
+    for (int i = 0; i < n * n; ++i) m->lu[i] *= -gamma;
+    for (int i = 0; i < n; ++i) m->lu[i + n * i] += 1.0;
+    m->jacobians += 1;
+    m->factorised = @NAME@_lu(m->lu, m->pivot, n) == 0;
+    m->lu_gamma = gamma;
+    if (!m->factorised) {
+        snprintf(m->message, sizeof m->message,
+                 "t = %.9g s: the Newton matrix I - gamma J is singular (gamma = %.6g s); the model has no "
+                 "unique solution at this step",
+                 t, gamma);
+        return @UPPER@_SINGULAR;
+    }
+    return @UPPER@_OK;
+}
+
+/* Newton's iterations on z - known - gamma f(t1, z) = 0 from z = m->z_new: with the factorisation kept (each
+ * iteration must shrink the correction by @UPPER@_RATE), or with the Jacobian evaluated and factorised at
+ * every iterate (full). Returns 0 once the last correction of every state is at most @UPPER@_TOLERANCE,
+ * 1 if the iterations stop first (*size: the last correction, *worst: its state), or a status. */
+static int @NAME@_newton(@NAME@_instance *m, double t1, double gamma, const double *known, int full, double *size,
+                         int *worst, int *iterations) {
+    const int n = @UPPER@_N_STATES;
+    double *z = m->z_new, *d = m->k[2], previous = HUGE_VAL;
+    for (*iterations = 0; *iterations < @UPPER@_MAX_ITERATIONS;) {
+        if (full) {
+            int status = @NAME@_factorise(m, t1, z, gamma);
+            if (status) return status;
+        }
+        @NAME@_rates(m, t1, z, d);
+        for (int i = 0; i < n; ++i) d[i] = z[i] - known[i] - gamma * d[i];
+        @NAME@_lu_solve(m->lu, m->pivot, n, d);
+        *size = 0.0;
+        for (int i = 0; i < n; ++i) {
+            z[i] -= d[i];
+            if (!(fabs(d[i]) <= *size)) { /* NaN counts as largest */
+                *size = fabs(d[i]);
+                *worst = i;
+            }
+        }
+        *iterations += 1;
+        m->iterations += 1;
+        if (*size <= @UPPER@_TOLERANCE) return 0;
+        if (isnan(*size) || (!full && !(*size <= @UPPER@_RATE * previous))) return 1;
+        previous = *size;
+    }
+    return 1;
+}
+
+/* One bdf2 step (implicit Euler when there is no previous state) into m->z_new: from the linear extrapolation
+ * of the last two states, Newton's iterations with the factorisation kept from earlier steps, and, if they
+ * do not converge fast, again with the Jacobian at every iterate. */
+static int @NAME@_advance(@NAME@_instance *m) {
+    const int n = @UPPER@_N_STATES;
+    const double h = @UPPER@_STEP, t1 = @NAME@_end(m->steps);
+    const double gamma = m->history ? 2.0 * h / 3.0 : h;
+    double *predicted = m->k[0], *known = m->k[1], size = 0.0;
+    int worst = 0, iterations = 0, status = 1;
+    for (int i = 0; i < n; ++i) {
+        predicted[i] = m->history ? 2.0 * m->z[i] - m->z_prev[i] : m->z[i];
+        known[i] = m->history ? (4.0 * m->z[i] - m->z_prev[i]) / 3.0 : m->z[i];
+    }
+    for (int full = !m->factorised || m->lu_gamma != gamma; full < 2 && status == 1; ++full) {
+        memcpy(m->z_new, predicted, sizeof(double) * (size_t)n);
+        status = @NAME@_newton(m, t1, gamma, known, full, &size, &worst, &iterations);
+    }
+    if (status == 1) {
+        snprintf(m->message, sizeof m->message,
+                 "t = %.9g s: Newton's iterations did not converge (%d iterations, each with a new Jacobian; "
+                 "last correction of %s: %.3g of its nominal magnitude, accepted: %.3g); the step %.6g s is too "
+                 "long for the model's fastest dynamics here, or the model has no solution",
+                 @NAME@_now(m->steps + 1), iterations, @NAME@_state_names[worst], size, @UPPER@_TOLERANCE, h);
+        m->factorised = 0;
+        return @UPPER@_NOT_CONVERGED;
+    }
+    return status;
+}
+#else
+/* One classical Runge-Kutta step into m->z_new. */
+static int @NAME@_advance(@NAME@_instance *m) {
+    const int n = @UPPER@_N_STATES;
+    const double h = @UPPER@_STEP, t0 = @NAME@_now(m->steps), t1 = @NAME@_end(m->steps);
+    double *s = m->z_new;
+    @NAME@_rates(m, t0, m->z, m->k[0]);
+    for (int i = 0; i < n; ++i) s[i] = m->z[i] + 0.5 * h * m->k[0][i];
+    @NAME@_rates(m, t0 + 0.5 * h, s, m->k[1]);
+    for (int i = 0; i < n; ++i) s[i] = m->z[i] + 0.5 * h * m->k[1][i];
+    @NAME@_rates(m, t0 + 0.5 * h, s, m->k[2]);
+    for (int i = 0; i < n; ++i) s[i] = m->z[i] + h * m->k[2][i];
+    @NAME@_rates(m, t1, s, m->k[3]);
+    for (int i = 0; i < n; ++i) {
+        s[i] = m->z[i] + h / 6.0 * (m->k[0][i] + 2.0 * (m->k[1][i] + m->k[2][i]) + m->k[3][i]);
+    }
+    return @UPPER@_OK;
+}
+#endif
+
+int @NAME@_step(@NAME@_instance *m) {
+    const int n = @UPPER@_N_STATES;
+    const double t1 = @NAME@_now(m->steps + 1);
+    int status = @NAME@_advance(m);
+    if (status) return status;
+    int bad = @NAME@_not_finite(m->z_new);
+    if (bad >= 0) {
+        snprintf(m->message, sizeof m->message,
+                 "t = %.9g s: the state %s became %g; the step %.6g s is too long for the model's fastest "
+                 "dynamics here (@METHOD@), or the model diverges",
+                 t1, @NAME@_state_names[bad], m->z_new[bad] * @NAME@_nominal[bad], @UPPER@_STEP);
+        return @UPPER@_NOT_FINITE;
+    }
+#if @UPPER@_N_ALGEBRAIC > 0
+    double correction[@UPPER@_N_ALGEBRAIC];
+    @NAME@_call(m, @NAME@_conv, &t1, m->z_new, correction);
+    for (int j = 0; j < @UPPER@_N_ALGEBRAIC; ++j) {
+        if (!(correction[j] <= @UPPER@_ALGEBRAIC_TOLERANCE)) {
+            snprintf(m->message, sizeof m->message,
+                     "t = %.9g s: the algebraic unknown %s was not solved: the last of its Newton steps corrected "
+                     "it by %.3g of its nominal magnitude (accepted: %.3g)",
+                     t1, @NAME@_algebraic_names[j], correction[j], @UPPER@_ALGEBRAIC_TOLERANCE);
+            return @UPPER@_ALGEBRAIC;
+        }
+    }
+#endif
+    memcpy(m->z_prev, m->z, sizeof(double) * (size_t)n);
+    memcpy(m->z, m->z_new, sizeof(double) * (size_t)n);
+    m->history = 1;
+    m->steps += 1;
+    m->outputs_current = 0;
+    m->message[0] = '\0';
+    return @UPPER@_OK;
+}
+
+int @NAME@_run(@NAME@_instance *m, long n, const double *inputs, double *states, double *outputs) {
+    for (long k = 0; k < n; ++k) {
+        if (inputs != NULL) {
+            for (int j = 0; j < @UPPER@_N_INPUTS; ++j) @NAME@_set_input(m, j, inputs[k * @UPPER@_N_INPUTS + j]);
+        }
+        int status = @NAME@_step(m);
+        if (status) return status;
+        if (states != NULL) {
+            for (int i = 0; i < @UPPER@_N_STATES; ++i) states[k * @UPPER@_N_STATES + i] = m->z[i] * @NAME@_nominal[i];
+        }
+        if (outputs != NULL) {
+            for (int j = 0; j < @UPPER@_N_OUTPUTS; ++j) outputs[k * @UPPER@_N_OUTPUTS + j] = @NAME@_get_output(m, j);
+        }
+    }
+    return @UPPER@_OK;
+}
+
+size_t @NAME@_instance_size(void) {
+    return sizeof(@NAME@_instance);
+}
+
+@NAME@_instance *@NAME@_init(void *memory) {
+    @NAME@_instance *m = (@NAME@_instance *)memory;
+    if (m == NULL) return NULL;
+    memset(m, 0, sizeof *m);
+    for (int i = 0; i < @UPPER@_N_PARAMETERS; ++i) m->p[i] = @NAME@_parameter_defaults[i];
+    @NAME@_reset(m);
+    return m;
+}
+
+@NAME@_instance *@NAME@_new(void) {
+    return @NAME@_init(malloc(sizeof(@NAME@_instance)));
+}
+
+void @NAME@_free(@NAME@_instance *m) {
+    free(m);
+}
+
+void @NAME@_reset(@NAME@_instance *m) {
+    @NAME@_call(m, @NAME@_z0, NULL, NULL, m->z);
+    m->steps = m->iterations = m->jacobians = 0;
+    m->history = m->factorised = m->outputs_current = 0;
+    m->message[0] = '\0';
+}
+
+int @NAME@_set_parameter(@NAME@_instance *m, int index, double value) {
+    if (index < 0 || index >= @UPPER@_N_PARAMETERS) return -1;
+    m->p[index] = value;
+    m->factorised = m->outputs_current = 0;
+    return 0;
+}
+
+double @NAME@_get_parameter(const @NAME@_instance *m, int index) {
+    return index >= 0 && index < @UPPER@_N_PARAMETERS ? m->p[index] : NAN;
+}
+
+int @NAME@_set_input(@NAME@_instance *m, int index, double value) {
+    if (index < 0 || index >= @UPPER@_N_INPUTS) return -1;
+    m->p[@UPPER@_N_PARAMETERS + index] = value;
+    m->outputs_current = 0;
+    return 0;
+}
+
+double @NAME@_get_input(const @NAME@_instance *m, int index) {
+    return index >= 0 && index < @UPPER@_N_INPUTS ? m->p[@UPPER@_N_PARAMETERS + index] : NAN;
+}
+
+int @NAME@_set_state(@NAME@_instance *m, int index, double value) {
+    if (index < 0 || index >= @UPPER@_N_STATES) return -1;
+    m->z[index] = value / @NAME@_nominal[index];
+    m->history = m->outputs_current = 0;
+    return 0;
+}
+
+double @NAME@_get_state(const @NAME@_instance *m, int index) {
+    return index >= 0 && index < @UPPER@_N_STATES ? m->z[index] * @NAME@_nominal[index] : NAN;
+}
+
+double @NAME@_get_output(@NAME@_instance *m, int index) {
+    if (index < 0 || index >= @UPPER@_N_OUTPUTS) return NAN;
+    if (!m->outputs_current) {
+        double t = @NAME@_now(m->steps);
+        @NAME@_call(m, @NAME@_y, &t, m->z, m->y);
+        m->outputs_current = 1;
+    }
+    return m->y[index];
+}
+
+double @NAME@_time(const @NAME@_instance *m) {
+    return @NAME@_now(m->steps);
+}
+
+const char *@NAME@_message(const @NAME@_instance *m) {
+    return m->message;
+}
+
+void @NAME@_statistics(const @NAME@_instance *m, long long *steps, long long *iterations, long long *jacobians) {
+    if (steps != NULL) *steps = m->steps;
+    if (iterations != NULL) *iterations = m->iterations;
+    if (jacobians != NULL) *jacobians = m->jacobians;
+}
+
+int @NAME@_find(const char *const *names, const char *name) {
+    for (int i = 0; names != NULL && name != NULL && names[i] != NULL; ++i) {
+        if (strcmp(names[i], name) == 0) return i;
+    }
+    return -1;
+}
