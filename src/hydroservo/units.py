@@ -47,6 +47,8 @@ __all__ = [
     "to_si",
     "from_si",
     "si_unit",
+    "si_definition",
+    "SI_BASE",
     "format_quantity",
     "parse_quantity",
     "is_bare_number",
@@ -480,6 +482,41 @@ def _coherent_pint(unit: str) -> str:
         if registry().get_dimensionality(_unit(name)) == dims:
             return name
     return f"{base.units:~C}".replace("**", "^")
+
+
+#: pint's base dimensions -> the SI base unit each is measured in.
+SI_BASE = {
+    "[mass]": "kg",
+    "[length]": "m",
+    "[time]": "s",
+    "[current]": "A",
+    "[temperature]": "K",
+    "[substance]": "mol",
+    "[luminosity]": "cd",
+}
+
+
+@functools.lru_cache(maxsize=512)
+def si_definition(unit: str) -> tuple[float, float, dict[str, float]]:
+    """``unit`` against the SI base units: ``factor``, ``offset`` and the exponent of each base unit, with
+    value in base units = factor * value + offset (as an FMU's unit definitions declare it).
+
+    Examples
+    --------
+    >>> si_definition("bar")
+    (100000.0, 0.0, {'m': -1.0, 'kg': 1.0, 's': -2.0})
+    >>> si_definition("degC")
+    (1.0, 273.15, {'K': 1.0})
+    >>> si_definition("%")
+    (0.01, 0.0, {})
+    """
+    known = _shipped().get(unit)
+    if known is not None:
+        factor, offset, dims = known[0], known[1], known[2]
+    else:
+        entry = pint_entry(unit)
+        factor, offset, dims = entry["factor"], entry["offset"], tuple((d, x) for d, x in entry["dimension"])
+    return float(factor), float(offset), {SI_BASE.get(d, d): float(x) for d, x in dims}
 
 
 @functools.lru_cache(maxsize=512)

@@ -5,6 +5,7 @@ module                 commands
 =====================  ==========================================================
 :mod:`.models`         ``models``, ``simulate``, ``export``
 :mod:`.export_c`       ``export-c``
+:mod:`.export_fmu`     ``export-fmu``
 :mod:`.linear`         ``linearize``
 :mod:`.ladder`         ``ladder``
 :mod:`.sensitivity`    ``sensitivity``
@@ -35,6 +36,7 @@ from hydroservo.cli import (
     components,
     examples,
     export_c,
+    export_fmu,
     fluid,
     ladder,
     linear,
@@ -66,6 +68,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
     models.add_parsers(sub)
     export_c.add_parsers(sub)
+    export_fmu.add_parsers(sub)
     linear.add_parsers(sub)
     ladder.add_parsers(sub)
     sensitivity.add_parsers(sub)

@@ -9,14 +9,14 @@ import json
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, shorten
 
 if TYPE_CHECKING:
     import numpy as np
 
     from hydroservo.io.files import OutputFolder
 
-__all__ = ["numbers", "frequencies", "add_output_options", "output_folder", "print_json"]
+__all__ = ["numbers", "frequencies", "component_inputs", "add_output_options", "output_folder", "print_json"]
 
 
 #: Most frequencies one command computes (each is a periodic orbit per amplitude).
@@ -72,6 +72,16 @@ def frequencies(text: str) -> np.ndarray:
     if vals.size > MAX_FREQUENCIES:
         raise ParameterError(f"--frequencies: {vals.size} frequencies; expected at most {MAX_FREQUENCIES}")
     return vals
+
+
+def component_inputs(text: str | None, what: str = "--inputs") -> list[str]:
+    """The component inputs of an option such as ``--inputs valve.u,load.F_ext`` (none if not given)."""
+    if text is None:
+        return []
+    names = [n.strip() for n in text.split(",") if n.strip()]
+    if not names:
+        raise ParameterError(f"{what} {shorten(text)!r}: expected comma-separated component inputs, e.g. valve.u")
+    return names
 
 
 def add_output_options(p: Any, default: str) -> None:

@@ -5,20 +5,10 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, output_folder, print_json
+from hydroservo.cli.common import add_output_options, component_inputs, output_folder, print_json
 from hydroservo.cli.models import load_with_sets
-from hydroservo.errors import ParameterError, shorten
 
 __all__ = ["add_parsers"]
-
-
-def _inputs(text: str | None) -> list[str]:
-    if text is None:
-        return []
-    names = [n.strip() for n in text.split(",") if n.strip()]
-    if not names:
-        raise ParameterError(f"--inputs {shorten(text)!r}: expected comma-separated component inputs, e.g. valve.u")
-    return names
 
 
 def cmd_export_c(args: argparse.Namespace) -> int:
@@ -28,7 +18,7 @@ def cmd_export_c(args: argparse.Namespace) -> int:
     step = check_step(args.step, what="--step")
     name = check_name(args.name, what="--name") if args.name is not None else None
     system = load_with_sets(args.model, args.set)
-    inputs = check_inputs(system, _inputs(args.inputs), what="--inputs")
+    inputs = check_inputs(system, component_inputs(args.inputs), what="--inputs")
     target = output_folder(args, f"hydroservo-{safe_name(system.name)}-c").target
     export = export_c(
         system, target, step=step, method=args.method, inputs=inputs, name=name, force=args.force, build=args.build

@@ -12,6 +12,7 @@ module                   files
 :mod:`.results`          simulation results (CSV, MAT)
 :mod:`.linear`           operating points (TOML) and linear models (JSON)
 :mod:`.c_export`         a model as C code with a fixed-step stepper (C sources)
+:mod:`.fmu`              a model as an FMI 2.0 FMU (Model Exchange and Co-Simulation)
 :mod:`.runs`             the runs of a study, written as they arrive (Parquet parts)
 :mod:`.toml`             the TOML reader and value writer they share
 =======================  ========================================================
@@ -34,6 +35,7 @@ _LAZY: dict[str, str] = {
     "write_bode": "hydroservo.io.bode",
     "CStepper": "hydroservo.io.c_export",
     "export_c": "hydroservo.io.c_export",
+    "export_fmu": "hydroservo.io.fmu",
     "component_file_text": "hydroservo.io.component_file",
     "component_toml": "hydroservo.io.component_file",
     "read_component_file": "hydroservo.io.component_file",
@@ -71,6 +73,7 @@ __all__ = [
     "write_bode",
     "CStepper",
     "export_c",
+    "export_fmu",
     "component_file_text",
     "component_toml",
     "read_component_file",
@@ -128,6 +131,7 @@ if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and edit
     )
     from hydroservo.io.curves import read_bench_curves, read_csv_table, read_static_curves, write_bench_curves
     from hydroservo.io.datasheet import read_datasheet
+    from hydroservo.io.fmu import export_fmu
     from hydroservo.io.linear import read_operating_point, write_linear_model
     from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
     from hydroservo.io.results import write_csv, write_mat

@@ -71,6 +71,7 @@ __all__ = [
     "check_inputs",
     "check_name",
     "check_step",
+    "compile_library",
     "compiler",
     "export_c",
 ]
@@ -423,7 +424,8 @@ The API: `{cid}_new` or `{cid}_init(memory)` (memory of your own, `{cid}_instanc
 `_free`, `_reset` (t = 0, the states from the current parameters), `_set_parameter`/`_get_parameter`,
 `_set_input`/`_get_input`, `_step` (0, or a status: the step is refused, the instance keeps its state, and
 `_message` says why), `_run` (many steps, inputs and results in arrays), `_get_output`,
-`_get_state`/`_set_state`, `_time`, `_statistics`, `_find` (an index by name). Counts: `{upper}_N_PARAMETERS`
+`_get_state`/`_set_state`, `_time`, `_statistics`, `_find` (an index by name); for an integrator of your own,
+`_initial_states`, `_rates`, `_outputs` and `_check` at any time and states, and `_state_nominal`. Counts: `{upper}_N_PARAMETERS`
 ({len(export.parameters)}), `{upper}_N_INPUTS` ({len(export.inputs)}), `{upper}_N_STATES` ({len(export.states)}),
 `{upper}_N_OUTPUTS` ({len(export.outputs)}), also as the constants `{cid}_n_parameters`, ... for programs that
 load the library at run time. Names, units and descriptions are NULL-terminated arrays: `{cid}_parameter_names`,
@@ -594,7 +596,7 @@ def export_c(
         out.file("README.md").write_text(_readme(export, system, model), encoding="utf-8")
         out.file("Makefile").write_text(_makefile(cid, files), encoding="utf-8")
         if build:
-            _compile(out.folder, [f for f in files if f.endswith(".c")], _library_name(cid))
+            compile_library(out.folder, [f for f in files if f.endswith(".c")], _library_name(cid))
     return export
 
 
@@ -617,8 +619,14 @@ def compiler() -> list[str]:
     )
 
 
-def _compile(folder: Path, sources: Sequence[str], library: str, flags: Sequence[str] = ("-O2",)) -> Path:
-    """Compile ``sources`` (in ``folder``) into the shared library ``library`` there."""
+def compile_library(folder: Path, sources: Sequence[str], library: str, flags: Sequence[str] = ("-O2",)) -> Path:
+    """Compile ``sources`` (in ``folder``) into the shared library ``library`` there, with :func:`compiler`.
+
+    Raises
+    ------
+    ParameterError
+        If there is no compiler, it cannot run, or it fails (with the end of its messages).
+    """
     command = [*compiler(), *flags, "-fPIC", "-shared", "-o", library, *sources, "-lm"]
     try:
         done = subprocess.run(command, cwd=folder, capture_output=True, text=True, timeout=600)

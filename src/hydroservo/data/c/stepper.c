@@ -50,6 +50,7 @@ struct @NAME@_instance {
     double z[@UPPER@_NZ], z_prev[@UPPER@_NZ], z_new[@UPPER@_NZ];
     double y[@UPPER@_AT_LEAST_1(@UPPER@_N_OUTPUTS)];
     double k[4][@UPPER@_NZ]; /* rk4: the stages; bdf2: the predictor, the constant part, the correction */
+    double z_host[@UPPER@_NZ]; /* the continuous-time functions: the host's states, scaled */
 #if @UPPER@_BDF2
     double lu[@UPPER@_NZ * @UPPER@_NZ];
     int pivot[@UPPER@_NZ];
@@ -77,7 +78,7 @@ static void @NAME@_call(@NAME@_instance *m, @NAME@_function fn, const double *t,
     fn(m->arg, m->res, m->iw, m->w, 0);
 }
 
-static void @NAME@_rates(@NAME@_instance *m, double t, const double *z, double *dz) {
+static void @NAME@_rates_scaled(@NAME@_instance *m, double t, const double *z, double *dz) {
     @NAME@_call(m, @NAME@_f, &t, z, dz);
 }
 
@@ -101,6 +102,27 @@ static int @NAME@_not_finite(const double *z) {
         if (!isfinite(z[i])) return i;
     }
     return -1;
+}
+
+/* @UPPER@_OK if the algebraic unknowns are solved at (t, z) (always, for a model without any), else
+ * @UPPER@_ALGEBRAIC with the message. */
+static int @NAME@_algebraic(@NAME@_instance *m, double t, const double *z) {
+#if @UPPER@_N_ALGEBRAIC > 0
+    double correction[@UPPER@_N_ALGEBRAIC];
+    @NAME@_call(m, @NAME@_conv, &t, z, correction);
+    for (int j = 0; j < @UPPER@_N_ALGEBRAIC; ++j) {
+        if (!(correction[j] <= @UPPER@_ALGEBRAIC_TOLERANCE)) {
+            snprintf(m->message, sizeof m->message,
+                     "t = %.9g s: the algebraic unknown %s was not solved: the last of its Newton steps corrected "
+                     "it by %.3g of its nominal magnitude (accepted: %.3g)",
+                     t, @NAME@_algebraic_names[j], correction[j], @UPPER@_ALGEBRAIC_TOLERANCE);
+            return @UPPER@_ALGEBRAIC;
+        }
+    }
+#else
+    (void)m, (void)t, (void)z;
+#endif
+    return @UPPER@_OK;
 }
 
 #if @UPPER@_BDF2
@@ -186,7 +208,7 @@ static int @NAME@_newton(@NAME@_instance *m, double t1, double gamma, const doub
             int status = @NAME@_factorise(m, t1, z, gamma);
             if (status) return status;
         }
-        @NAME@_rates(m, t1, z, d);
+        @NAME@_rates_scaled(m, t1, z, d);
         for (int i = 0; i < n; ++i) d[i] = z[i] - known[i] - gamma * d[i];
         @NAME@_lu_solve(m->lu, m->pivot, n, d);
         *size = 0.0;
@@ -240,13 +262,13 @@ static int @NAME@_advance(@NAME@_instance *m) {
     const int n = @UPPER@_N_STATES;
     const double h = @UPPER@_STEP, t0 = @NAME@_now(m->steps), t1 = @NAME@_end(m->steps);
     double *s = m->z_new;
-    @NAME@_rates(m, t0, m->z, m->k[0]);
+    @NAME@_rates_scaled(m, t0, m->z, m->k[0]);
     for (int i = 0; i < n; ++i) s[i] = m->z[i] + 0.5 * h * m->k[0][i];
-    @NAME@_rates(m, t0 + 0.5 * h, s, m->k[1]);
+    @NAME@_rates_scaled(m, t0 + 0.5 * h, s, m->k[1]);
     for (int i = 0; i < n; ++i) s[i] = m->z[i] + 0.5 * h * m->k[1][i];
-    @NAME@_rates(m, t0 + 0.5 * h, s, m->k[2]);
+    @NAME@_rates_scaled(m, t0 + 0.5 * h, s, m->k[2]);
     for (int i = 0; i < n; ++i) s[i] = m->z[i] + h * m->k[2][i];
-    @NAME@_rates(m, t1, s, m->k[3]);
+    @NAME@_rates_scaled(m, t1, s, m->k[3]);
     for (int i = 0; i < n; ++i) {
         s[i] = m->z[i] + h / 6.0 * (m->k[0][i] + 2.0 * (m->k[1][i] + m->k[2][i]) + m->k[3][i]);
     }
@@ -267,19 +289,8 @@ int @NAME@_step(@NAME@_instance *m) {
                  t1, @NAME@_state_names[bad], m->z_new[bad] * @NAME@_nominal[bad], @UPPER@_STEP);
         return @UPPER@_NOT_FINITE;
     }
-#if @UPPER@_N_ALGEBRAIC > 0
-    double correction[@UPPER@_N_ALGEBRAIC];
-    @NAME@_call(m, @NAME@_conv, &t1, m->z_new, correction);
-    for (int j = 0; j < @UPPER@_N_ALGEBRAIC; ++j) {
-        if (!(correction[j] <= @UPPER@_ALGEBRAIC_TOLERANCE)) {
-            snprintf(m->message, sizeof m->message,
-                     "t = %.9g s: the algebraic unknown %s was not solved: the last of its Newton steps corrected "
-                     "it by %.3g of its nominal magnitude (accepted: %.3g)",
-                     t1, @NAME@_algebraic_names[j], correction[j], @UPPER@_ALGEBRAIC_TOLERANCE);
-            return @UPPER@_ALGEBRAIC;
-        }
-    }
-#endif
+    status = @NAME@_algebraic(m, t1, m->z_new);
+    if (status) return status;
     memcpy(m->z_prev, m->z, sizeof(double) * (size_t)n);
     memcpy(m->z, m->z_new, sizeof(double) * (size_t)n);
     m->history = 1;
@@ -375,6 +386,48 @@ double @NAME@_get_output(@NAME@_instance *m, int index) {
         m->outputs_current = 1;
     }
     return m->y[index];
+}
+
+/* The host's states x in m->z_host, scaled. */
+static const double *@NAME@_scaled(@NAME@_instance *m, const double *x) {
+    for (int i = 0; i < @UPPER@_N_STATES; ++i) m->z_host[i] = x[i] / @NAME@_nominal[i];
+    return m->z_host;
+}
+
+void @NAME@_initial_states(@NAME@_instance *m, double *x) {
+    @NAME@_call(m, @NAME@_z0, NULL, NULL, m->z_host);
+    for (int i = 0; i < @UPPER@_N_STATES; ++i) x[i] = m->z_host[i] * @NAME@_nominal[i];
+}
+
+int @NAME@_rates(@NAME@_instance *m, double t, const double *x, double *dxdt) {
+    @NAME@_rates_scaled(m, t, @NAME@_scaled(m, x), dxdt);
+    for (int i = 0; i < @UPPER@_N_STATES; ++i) {
+        dxdt[i] *= @NAME@_nominal[i];
+        if (!isfinite(dxdt[i])) {
+            snprintf(m->message, sizeof m->message, "t = %.9g s: the rate of the state %s is %g", t,
+                     @NAME@_state_names[i], dxdt[i]);
+            return @UPPER@_NOT_FINITE;
+        }
+    }
+    return @UPPER@_OK;
+}
+
+void @NAME@_outputs(@NAME@_instance *m, double t, const double *x, double *y) {
+    @NAME@_call(m, @NAME@_y, &t, @NAME@_scaled(m, x), y);
+}
+
+int @NAME@_check(@NAME@_instance *m, double t, const double *x) {
+    const double *z = @NAME@_scaled(m, x);
+    int bad = @NAME@_not_finite(z);
+    if (bad >= 0) {
+        snprintf(m->message, sizeof m->message, "t = %.9g s: the state %s is %g", t, @NAME@_state_names[bad], x[bad]);
+        return @UPPER@_NOT_FINITE;
+    }
+    return @NAME@_algebraic(m, t, z);
+}
+
+double @NAME@_state_nominal(int index) {
+    return index >= 0 && index < @UPPER@_N_STATES ? @NAME@_nominal[index] : NAN;
 }
 
 double @NAME@_time(const @NAME@_instance *m) {

@@ -77,6 +77,21 @@ int @NAME@_step(@NAME@_instance *m);
  * written; @NAME@_time says where it stopped). */
 int @NAME@_run(@NAME@_instance *m, long n, const double *inputs, double *states, double *outputs);
 
+/* The model in continuous time, for an integrator of the host's own (an FMU's Model Exchange uses these): at
+ * any time t [s] and states x (in their units, @UPPER@_N_STATES values), with the instance's parameters and
+ * inputs. The instance's own time, states and outputs are untouched. */
+/* The initial states x0 from the current parameters and inputs, as @NAME@_reset sets them. */
+void @NAME@_initial_states(@NAME@_instance *m, double *x);
+/* The rates dx/dt. Returns @UPPER@_OK, or @UPPER@_NOT_FINITE if one is NaN or infinite (@NAME@_message says which). */
+int @NAME@_rates(@NAME@_instance *m, double t, const double *x, double *dxdt);
+/* The outputs (@UPPER@_N_OUTPUTS values), as @NAME@_get_output gives them. */
+void @NAME@_outputs(@NAME@_instance *m, double t, const double *x, double *y);
+/* @UPPER@_OK if every state is finite and the model's algebraic unknowns are solved at (t, x) (always, for a
+ * model without any); else @UPPER@_NOT_FINITE or @UPPER@_ALGEBRAIC, and @NAME@_message says which. */
+int @NAME@_check(@NAME@_instance *m, double t, const double *x);
+/* The nominal magnitude of a state, in its unit (a host integrator's scale for it); NaN for an index out of range. */
+double @NAME@_state_nominal(int index);
+
 /* Time since the last reset [s]: the number of steps times @UPPER@_STEP. */
 double @NAME@_time(const @NAME@_instance *m);
 /* Why the last step was refused ("" after a successful one). */
