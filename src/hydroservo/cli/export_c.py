@@ -3,22 +3,33 @@
 from __future__ import annotations
 
 import argparse
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from hydroservo.cli.common import add_output_options, component_inputs, output_folder, print_json
 from hydroservo.cli.models import load_with_sets
 
-__all__ = ["add_parsers"]
+if TYPE_CHECKING:
+    from hydroservo.system.system import System
+
+__all__ = ["add_parsers", "export_arguments"]
 
 
-def cmd_export_c(args: argparse.Namespace) -> int:
-    from hydroservo.io.c_export import check_inputs, check_name, check_step, export_c
-    from hydroservo.io.files import safe_name
+def export_arguments(args: argparse.Namespace) -> tuple[System, float, str | None, tuple[str, ...]]:
+    """What ``export-c`` and ``export-fmu`` share: the model with its ``--set`` values, ``--step``, ``--name`` and
+    ``--inputs``, each checked and named in errors by its option."""
+    from hydroservo.io.c_export import check_inputs, check_name, check_step
 
     step = check_step(args.step, what="--step")
     name = check_name(args.name, what="--name") if args.name is not None else None
     system = load_with_sets(args.model, args.set)
-    inputs = check_inputs(system, component_inputs(args.inputs), what="--inputs")
+    return system, step, name, check_inputs(system, component_inputs(args.inputs), what="--inputs")
+
+
+def cmd_export_c(args: argparse.Namespace) -> int:
+    from hydroservo.io.c_export import export_c
+    from hydroservo.io.files import safe_name
+
+    system, step, name, inputs = export_arguments(args)
     target = output_folder(args, f"hydroservo-{safe_name(system.name)}-c").target
     export = export_c(
         system, target, step=step, method=args.method, inputs=inputs, name=name, force=args.force, build=args.build

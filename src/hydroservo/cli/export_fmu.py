@@ -6,21 +6,18 @@ import argparse
 from pathlib import Path
 from typing import Any
 
-from hydroservo.cli.common import component_inputs, print_json
-from hydroservo.cli.models import load_with_sets
+from hydroservo.cli.common import print_json
+from hydroservo.cli.export_c import export_arguments
 
 __all__ = ["add_parsers"]
 
 
 def cmd_export_fmu(args: argparse.Namespace) -> int:
-    from hydroservo.io.c_export import c_identifier, check_inputs, check_name, check_step
+    from hydroservo.io.c_export import c_identifier
     from hydroservo.io.files import OutputFolder
     from hydroservo.io.fmu import export_fmu
 
-    step = check_step(args.step, what="--step")
-    name = check_name(args.name, what="--name") if args.name is not None else None
-    system = load_with_sets(args.model, args.set)
-    inputs = check_inputs(system, component_inputs(args.inputs), what="--inputs")
+    system, step, name, inputs = export_arguments(args)
     filename = f"{name or c_identifier(system.name)}.fmu"
     OutputFolder(Path(args.out), force=args.force, what="--out").expect([filename])  # refused before the build
     export = export_fmu(
