@@ -40,6 +40,16 @@ __all__ = ["Model"]
 #: [instructions]: beyond it (many times, many outputs), the mapped function is kept as it is.
 UNROLLED_SIZE = 3_000_000
 
+#: A single run's output or plausibility function is unrolled over its output times (one expression graph,
+#: 2-5x faster per call than the mapped function, but 5-20 ms to build) at the call that uses it this many
+#: times: a loop of warm calls gains, a one-off run does not pay for it.
+UNROLL_AFTER = 3
+
+#: ... and only if the unrolled graph holds at most this many instructions (a larger one takes longer to build
+#: than the calls it would save): the flight-simulator's y over 1001 times holds 4 000, its plausibility
+#: checks 24 000, all its outputs 153 000.
+UNROLLED_WARM = 60_000
+
 class Model:
     """Compiled ODE of a :class:`~hydroservo.system.system.System`.
 
@@ -121,6 +131,7 @@ class Model:
         self._maps: dict[Any, ca.Function] = {}
         self._sizes: dict[tuple[str, ...], int] = {}
         self._limit_maps: dict[Any, ca.Function] = {}
+        self._uses: dict[Any, int] = {}
         self._batch_maps: dict[tuple[int, int, int], ca.Function] = {}
 
     # -- helpers -----------------------------------------------------------
@@ -452,7 +463,7 @@ class Model:
             lows = ca.vertcat(*[ca.mmin(r) for r in rows])
             highs = ca.vertcat(*[ca.mmax(r) for r in rows])
             self._limit_maps[key] = ca.Function("limit_extremes", [T, Z, P], [ca.horzcat(lows, highs)])
-        return self._limit_maps[key]
+        return self._warmed(self._limit_maps, key, self._limit_values.n_instructions() * nt)
 
     def _check_limits(self, grid: np.ndarray, X: np.ndarray, computed: np.ndarray, p: np.ndarray) -> list[Implausible]:
         V = np.array([X[i] if kind == "state" else computed[i] for kind, i in self._watch_rows])
@@ -473,11 +484,23 @@ class Model:
         if key not in self._maps:
             if len(self._maps) > 64:
                 self._maps.clear()
+                self._uses.clear()
             t, z, p, yz = self._yz
             rows = [self._output_index[n] for n in names]
             one = ca.Function("y", [t, z, p], [yz[rows] if rows else ca.SX(0, 1)])
             self._maps[key] = one.map("outputs", "serial", nt, [2], [])  # p shared over the times
-        return self._maps[key]
+        return self._warmed(self._maps, key, self._output_size(names) * nt)
+
+    def _warmed(self, store: dict[Any, ca.Function], key: Any, size: int) -> ca.Function:
+        """``store[key]``, a function ``(t, z, p)`` of one run's output times; at its :data:`UNROLL_AFTER`-th use,
+        replaced by the same unrolled into one expression graph if that holds at most :data:`UNROLLED_WARM`
+        instructions (``size``)."""
+        uses = self._uses[key] = self._uses.get(key, 0) + 1
+        if uses == UNROLL_AFTER and size <= UNROLLED_WARM:
+            mapped = store[key]
+            args = [ca.SX.sym(mapped.name_in(i), mapped.sparsity_in(i)) for i in range(3)]
+            store[key] = ca.Function(mapped.name(), args, [mapped(*args)])
+        return store[key]
 
     def _output_size(self, names: Sequence[str]) -> int:
         """Instructions to evaluate the outputs ``names`` at one time."""

@@ -251,3 +251,23 @@ def test_a_batch_reads_the_same_outputs_and_flags_unrolled_or_not(flight: hs.Sys
             single = flight.simulate(t_end=1.0, n_points=101, params={name: v[k] for name, v in sets.items()})
         np.testing.assert_allclose(y1[k], single["y"], rtol=1e-12, atol=1e-15)
         assert [w.signal for w in single.warnings] == w1.get(k, [])
+
+
+def test_a_run_read_again_and_again_is_read_unrolled_and_the_same(flight: hs.System) -> None:
+    # A single run's output and plausibility functions are unrolled over the times at their UNROLL_AFTER-th use
+    # (warm calls in a loop): the same numbers and the same flags, bit for bit, before and after.
+    import hydroservo.system.model as engine
+
+    params = {"source.amplitude": 100.0, "cyl.k_stop": 0.0, "cyl.c_stop": 0.0}  # crosses a stop: flagged
+    model = flight.build()
+    found = []
+    for _ in range(engine.UNROLL_AFTER + 1):
+        with pytest.warns(hs.ImplausibleResultWarning):
+            r = flight.simulate(t_end=1.0, n_points=77, params=params)
+        found.append((r["y"], r["cyl.pA"], [(w.signal, w.time, w.value) for w in r.warnings]))
+    kinds = {key: fn.class_name() for key, fn in {**model._maps, **model._limit_maps}.items() if 77 in key}
+    assert kinds[(("y",), 77)] == kinds[("extremes", 77)] == "SXFunction"  # unrolled
+    for y, p, w in found[1:]:
+        np.testing.assert_array_equal(y, found[0][0])
+        np.testing.assert_array_equal(p, found[0][1])
+        assert w == found[0][2] and w
