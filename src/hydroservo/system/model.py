@@ -50,6 +50,38 @@ UNROLL_AFTER = 3
 #: checks 24 000, all its outputs 153 000.
 UNROLLED_WARM = 60_000
 
+
+def _buffered(fn: ca.Function, args: Mapping[int, np.ndarray]) -> tuple[np.ndarray, int]:
+    """``fn``'s first output (a dense matrix) for the inputs ``args`` (input index -> a dense matrix of that
+    input's shape; the other inputs empty), and its return code (0: success).
+
+    Evaluated on NumPy's memory through CasADi's function buffer, in CasADi's column-major order: no
+    conversion to and from CasADi matrices, which costs more than the evaluation for a batch's states
+    (about 60 ns a number each way). An output that is not dense is read through CasADi's matrices.
+    """
+    rows, columns = fn.size_out(0)
+    if not fn.sparsity_out(0).is_dense():
+        try:
+            found = fn.call({fn.name_in(i): ca.DM(a) for i, a in args.items()})[fn.name_out(0)]
+        except RuntimeError:
+            return np.zeros((rows, columns)), 1
+        return np.asarray(ca.densify(found), dtype=float), 0
+    buffer, evaluate = fn.buffer()
+    kept = []  # the inputs' memory, alive until the evaluation is done
+    for i, a in args.items():
+        flat = np.ascontiguousarray(np.asarray(a, dtype=float).ravel(order="F"))
+        if flat.size:
+            kept.append(flat)
+            buffer.set_arg(i, flat.data)  # type: ignore[call-arg]
+    out = np.zeros(rows * columns)
+    if out.size:
+        buffer.set_res(0, out.data)  # type: ignore[call-arg]
+    try:
+        evaluate()
+    except RuntimeError:  # a function that raises rather than returns its failure (a map of one, serial)
+        return out.reshape((rows, columns), order="F"), 1
+    return out.reshape((rows, columns), order="F"), int(buffer.ret())
+
 class Model:
     """Compiled ODE of a :class:`~hydroservo.system.system.System`.
 
@@ -783,8 +815,8 @@ class Model:
                     failures[j] = f"cannot start: {why}"
         todo = [i for i in range(n) if i not in failures]
         nthreads = threads or os.cpu_count() or 1
-        X = np.full((self.nx, n, nt), np.nan)
-        chunks: list[tuple[list[int], Any]] = []  # the runs integrated together, and the integrator's matrix
+        X = np.empty((self.nx, n, nt))  # every run is written by its chunk, or set to NaN as failed below
+        chunks: list[tuple[list[int], np.ndarray]] = []  # the runs integrated together, and their scaled states
         start = time.perf_counter()
         if self.nx == 0:
             X = np.zeros((0, n, nt))
@@ -813,15 +845,18 @@ class Model:
             X[:, i] = np.nan
         data = {name: X[j] for j, name in enumerate(self.state_names)}
         if self.nx == 0:  # nothing integrated: the outputs of each run from its parameters
-            chunks = [(todo, ca.DM(0, len(todo) * nt))] if todo else []
+            chunks = [(todo, np.zeros((0, len(todo) * nt)))] if todo else []
 
         def outputs(names: Sequence[str]) -> dict[str, np.ndarray]:
             """``names`` of every run, each chunk of runs in one threaded call on the integrator's matrix."""
-            Y = np.full((len(names), n, nt), np.nan)
+            Y = np.empty((len(names), n, nt))  # every run is written by its chunk, or set to NaN as failed
             for runs, Z in chunks:
                 fy = self._over_runs(tuple(names), self._output_function(names, nt), self._output_size(names), grid,
                                      len(runs), nthreads)  # fmt: skip
-                Y[:, runs, :] = np.asarray(fy(Z, P[:, runs]), dtype=float).reshape(-1, len(runs), nt)
+                values, code = _buffered(fy, {0: Z, 1: P[:, runs]})
+                if code != 0:
+                    raise RuntimeError(f"batch of {self.name!r}: the outputs {', '.join(names)} could not be evaluated")
+                Y[:, runs, :] = values.reshape(-1, len(runs), nt)
             Y[:, sorted(failures), :] = np.nan
             return {name: Y[j] for j, name in enumerate(names)}
 
@@ -877,7 +912,9 @@ class Model:
         for runs, Z in chunks:
             per_time = self._limit_values.n_instructions() + 2 * len(self.watched)
             fe = self._over_runs("extremes", self._limit_extremes(nt), per_time, grid, len(runs), threads)
-            E = np.asarray(fe(Z, P[:, runs]), dtype=float)  # [min, max] of each run, side by side
+            E, code = _buffered(fe, {0: Z, 1: P[:, runs]})  # [min, max] of each run, side by side
+            if code != 0:
+                raise RuntimeError(f"batch of {self.name!r}: the plausibility checks could not be evaluated")
             lows, highs = (np.asarray(b, dtype=float) for b in self._limit_bounds.map(len(runs))(P[:, runs]))
             for j, k in enumerate(runs):
                 extremes = E[:, 2 * j : 2 * j + 2]
@@ -917,18 +954,23 @@ class Model:
         key = (id(integ), size, min(nthreads, size))
         if key not in self._batch_maps:
             self._batch_maps[key] = integ.map(size, "thread", key[2])
-        try:
-            with captured():
-                xf = self._batch_maps[key](x0=Z0[:, runs], p=P[:, runs])["xf"]
-        except RuntimeError as exc:
-            if size == 1:
-                failures[runs[0]] = translate(str(exc))
+        mapped = self._batch_maps[key]
+        with captured():
+            xf, code = _buffered(mapped, {mapped.index_in("x0"): Z0[:, runs], mapped.index_in("p"): P[:, runs]})
+        if code != 0:
+            if size == 1:  # the reason, from the integrator's own error
+                try:
+                    with captured():
+                        integ(x0=Z0[:, runs], p=P[:, runs])
+                    failures[runs[0]] = "the integrator stopped (no reason given)"
+                except RuntimeError as exc:
+                    failures[runs[0]] = translate(str(exc))
                 return
             half = math.ceil(size / 2)
             self._solve_runs(integ, runs[:half], Z0, P, X, failures, nthreads, chunks)
             self._solve_runs(integ, runs[half:], Z0, P, X, failures, nthreads, chunks)
             return
-        X[:, runs, :] = np.asarray(xf, dtype=float).reshape(self.nx, size, -1)
+        X[:, runs, :] = xf.reshape(self.nx, size, -1)
         chunks.append((list(runs), xf))
 
     # -- code generation ---------------------------------------------------
