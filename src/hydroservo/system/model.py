@@ -51,9 +51,13 @@ UNROLL_AFTER = 3
 UNROLLED_WARM = 60_000
 
 
-def _buffered(fn: ca.Function, args: Mapping[int, np.ndarray]) -> tuple[np.ndarray, int]:
+def _buffered(
+    fn: ca.Function, args: Mapping[int, np.ndarray], *, raises: bool = False, stats: dict[str, Any] | None = None
+) -> tuple[np.ndarray, int]:
     """``fn``'s first output (a dense matrix) for the inputs ``args`` (input index -> a dense matrix of that
-    input's shape; the other inputs empty), and its return code (0: success).
+    input's shape; the other inputs empty), and its return code (0: success). With ``raises``, a failure
+    raises CasADi's ``RuntimeError`` (with the integrator's message, where it gives one) instead; ``stats``,
+    if given, receives the evaluation's statistics (an integrator's steps).
 
     Evaluated on NumPy's memory through CasADi's function buffer, in CasADi's column-major order: no
     conversion to and from CasADi matrices, which costs more than the evaluation for a batch's states
@@ -64,7 +68,11 @@ def _buffered(fn: ca.Function, args: Mapping[int, np.ndarray]) -> tuple[np.ndarr
         try:
             found = fn.call({fn.name_in(i): ca.DM(a) for i, a in args.items()})[fn.name_out(0)]
         except RuntimeError:
+            if raises:
+                raise
             return np.zeros((rows, columns)), 1
+        if stats is not None:
+            stats.update(fn.stats())
         return np.asarray(ca.densify(found), dtype=float), 0
     buffer, evaluate = fn.buffer()
     kept = []  # the inputs' memory, alive until the evaluation is done
@@ -79,8 +87,15 @@ def _buffered(fn: ca.Function, args: Mapping[int, np.ndarray]) -> tuple[np.ndarr
     try:
         evaluate()
     except RuntimeError:  # a function that raises rather than returns its failure (a map of one, serial)
+        if raises:
+            raise
         return out.reshape((rows, columns), order="F"), 1
-    return out.reshape((rows, columns), order="F"), int(buffer.ret())
+    code = int(buffer.ret())
+    if stats is not None:
+        stats.update(buffer.stats())
+    if code and raises:
+        raise RuntimeError(f"{fn.name()} returned {code}")
+    return out.reshape((rows, columns), order="F"), code
 
 class Model:
     """Compiled ODE of a :class:`~hydroservo.system.system.System`.
@@ -306,14 +321,16 @@ class Model:
             raise SolverError(f"integration of {self.name!r} cannot start: {why}")
         integ = self._integrator(grid, settings)
         start = time.perf_counter()
+        found: dict[str, Any] = {}  # the integrator's statistics
         try:
             with captured() as printed:
-                xf = integ(x0=x0 / self.nominal, p=p)["xf"]
+                args = {integ.index_in("x0"): x0 / self.nominal, integ.index_in("p"): p}
+                xf, _ = _buffered(integ, args, raises=True, stats=found)
         except RuntimeError as exc:
             raise self._diagnose(str(exc), printed.getvalue(), grid, x0, p, settings) from None
         wall = time.perf_counter() - start
-        if not xf.is_regular():
-            X = np.asarray(xf, dtype=float) * self.nominal[:, None]
+        if not np.isfinite(xf).all():
+            X = xf * self.nominal[:, None]
             k = int(np.argmax(~np.all(np.isfinite(X), axis=0)))
             bad = [n for n, v in zip(self.state_names, X[:, k]) if not np.isfinite(v)]
             raise SolverError(
@@ -323,7 +340,7 @@ class Model:
         why = self.unconverged(grid, xf, p)
         if why is not None:
             raise SolverError(f"integration of {self.name!r}: {why}")
-        stats = {k: v for k, v in integ.stats().items() if not k.endswith("B") and isinstance(v, (int, float))}
+        stats = {k: v for k, v in found.items() if not k.endswith("B") and isinstance(v, (int, float))}
         stats = {
             k: stats[k] for k in ("nsteps", "nfevals", "nlinsetups", "netfails", "nniters", "nncfails") if k in stats
         }
@@ -445,7 +462,7 @@ class Model:
                 S = np.asarray(z[rows, :], dtype=float) * self.nominal[rows, None]
                 out.update((n, S[i]) for i, n in enumerate(states))
             if outputs:
-                Y = np.asarray(self._output_function(outputs, nt)(grid[None, :], z, p), dtype=float)
+                Y, _ = _buffered(self._output_function(outputs, nt), {0: grid[None, :], 1: z, 2: p}, raises=True)
                 out.update((n, Y[i]) for i, n in enumerate(outputs))
             return out
 
@@ -475,7 +492,7 @@ class Model:
             return []
         z = Z if Z is not None else np.asarray(X) / self.nominal[:, None]
         lo, hi = (np.asarray(b, dtype=float).ravel() for b in self._limit_bounds(p))
-        extremes = np.asarray(self._limit_extremes(grid.size)(grid[None, :], z, p), dtype=float)
+        extremes, _ = _buffered(self._limit_extremes(grid.size), {0: grid[None, :], 1: z, 2: p}, raises=True)
         if not check(grid[[0, -1]], self.watched, extremes, lo, hi):  # check reads only the extremes' verdicts
             return []
         if X is None:
@@ -494,7 +511,7 @@ class Model:
             rows = [Z[i, :] * float(self.nominal[i]) if kind == "state" else C[i, :] for kind, i in self._watch_rows]
             lows = ca.vertcat(*[ca.mmin(r) for r in rows])
             highs = ca.vertcat(*[ca.mmax(r) for r in rows])
-            self._limit_maps[key] = ca.Function("limit_extremes", [T, Z, P], [ca.horzcat(lows, highs)])
+            self._limit_maps[key] = ca.Function("limit_extremes", [T, Z, P], [ca.densify(ca.horzcat(lows, highs))])
         return self._warmed(self._limit_maps, key, self._limit_values.n_instructions() * nt)
 
     def _check_limits(self, grid: np.ndarray, X: np.ndarray, computed: np.ndarray, p: np.ndarray) -> list[Implausible]:
@@ -519,7 +536,7 @@ class Model:
                 self._uses.clear()
             t, z, p, yz = self._yz
             rows = [self._output_index[n] for n in names]
-            one = ca.Function("y", [t, z, p], [yz[rows] if rows else ca.SX(0, 1)])
+            one = ca.Function("y", [t, z, p], [ca.densify(yz[rows]) if rows else ca.SX(0, 1)])
             self._maps[key] = one.map("outputs", "serial", nt, [2], [])  # p shared over the times
         return self._warmed(self._maps, key, self._output_size(names) * nt)
 
