@@ -284,8 +284,8 @@ def model_description(
             "numberOfEventIndicators": "0",
         },
     )
-    common = {"modelIdentifier": name, "canNotUseMemoryManagementFunctions": "false", "canGetAndSetFMUstate": "false",
-              "canSerializeFMUstate": "false", "providesDirectionalDerivative": "false"}  # fmt: skip
+    common = {"modelIdentifier": name, "canNotUseMemoryManagementFunctions": "false", "canGetAndSetFMUstate": "true",
+              "canSerializeFMUstate": "true", "providesDirectionalDerivative": "false"}  # fmt: skip
     me = ET.SubElement(
         root, "ModelExchange", {**common, "completedIntegratorStepNotNeeded": "false", "needsExecutionTool": "false"}
     )

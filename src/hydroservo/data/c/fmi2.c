@@ -390,35 +390,124 @@ static fmi2Status fmu_unsupported(fmi2Component c, const char *function, const c
     return fmu_error((Fmu *)c, function, "not supported (%s is false in modelDescription.xml)", capability);
 }
 
+/* ---- FMU states: a copy of the instance (its phase, time, states, inputs, parameters and the stepper's
+ * memory), to go back to or to store. A serialised state is a header (the GUID and the size) and that copy;
+ * it is read back only by an FMU of the same GUID, built for the same platform. ------------------------- */
+
+typedef struct {
+    char guid[64];
+    size_t size; /* bytes of the copy that follows */
+} StateHeader;
+
+static size_t fmu_state_size(void) {
+    return sizeof(Fmu) + @NAME@_instance_size();
+}
+
+/* Copy `from` into `to` (both instances of this FMU): all but what belongs to the instance itself (its
+ * model's memory, callbacks, name and logging flag). */
+static void fmu_copy(Fmu *to, const Fmu *from) {
+    @NAME@_instance *model = to->model;
+    fmi2CallbackFunctions functions;
+    char name[sizeof to->name];
+    int logging = to->logging;
+    memcpy(&functions, &to->functions, sizeof functions);
+    memcpy(name, to->name, sizeof name);
+    memcpy(to, from, sizeof *to);
+    to->model = model;
+    memcpy((void *)&to->functions, &functions, sizeof functions);
+    memcpy(to->name, name, sizeof name);
+    to->logging = logging;
+    memcpy(model, from->model, @NAME@_instance_size());
+}
+
+/* A new state: an Fmu followed by the stepper's memory, its model pointing there. */
+static Fmu *fmu_new_state(Fmu *fmu) {
+    Fmu *state = (Fmu *)fmu->functions.allocateMemory(1, fmu_state_size());
+    if (state == NULL) return NULL;
+    state->model = (@NAME@_instance *)(void *)((unsigned char *)state + sizeof(Fmu));
+    memcpy((void *)&state->functions, &fmu->functions, sizeof fmu->functions);
+    return state;
+}
+
 FMI2_EXPORT fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    (void)state;
-    return fmu_unsupported(c, "fmi2GetFMUstate", "canGetAndSetFMUstate");
+    Fmu *fmu = (Fmu *)c;
+    if (fmu_refused(fmu, "fmi2GetFMUstate", ANY_PHASE)) return fmi2Error;
+    Fmu *copy = *state != NULL ? (Fmu *)*state : fmu_new_state(fmu);
+    if (copy == NULL) return fmu_error(fmu, "fmi2GetFMUstate", "out of memory");
+    fmu_copy(copy, fmu);
+    *state = copy;
+    return fmi2OK;
 }
 
 FMI2_EXPORT fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state) {
-    (void)state;
-    return fmu_unsupported(c, "fmi2SetFMUstate", "canGetAndSetFMUstate");
+    Fmu *fmu = (Fmu *)c;
+    if (fmu_refused(fmu, "fmi2SetFMUstate", ANY_PHASE)) return fmi2Error;
+    if (state == NULL) return fmu_error(fmu, "fmi2SetFMUstate", "no state given (NULL)");
+    if (((Fmu *)state)->type != fmu->type) {
+        return fmu_error(fmu, "fmi2SetFMUstate", "a state of the other interface (Model Exchange / Co-Simulation)");
+    }
+    fmu_copy(fmu, (Fmu *)state);
+    return fmi2OK;
 }
 
 FMI2_EXPORT fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    (void)state;
-    return fmu_unsupported(c, "fmi2FreeFMUstate", "canGetAndSetFMUstate");
+    Fmu *fmu = (Fmu *)c;
+    if (fmu_refused(fmu, "fmi2FreeFMUstate", ANY_PHASE)) return fmi2Error;
+    if (state != NULL && *state != NULL) {
+        fmu->functions.freeMemory(*state);
+        *state = NULL;
+    }
+    return fmi2OK;
 }
 
 FMI2_EXPORT fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate state, size_t *size) {
-    (void)state, (void)size;
-    return fmu_unsupported(c, "fmi2SerializedFMUstateSize", "canSerializeFMUstate");
+    Fmu *fmu = (Fmu *)c;
+    (void)state;
+    if (fmu_refused(fmu, "fmi2SerializedFMUstateSize", ANY_PHASE)) return fmi2Error;
+    *size = sizeof(StateHeader) + fmu_state_size();
+    return fmi2OK;
 }
 
 FMI2_EXPORT fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte bytes[], size_t size) {
-    (void)state, (void)bytes, (void)size;
-    return fmu_unsupported(c, "fmi2SerializeFMUstate", "canSerializeFMUstate");
+    Fmu *fmu = (Fmu *)c;
+    if (fmu_refused(fmu, "fmi2SerializeFMUstate", ANY_PHASE)) return fmi2Error;
+    if (state == NULL || size < sizeof(StateHeader) + fmu_state_size()) {
+        return fmu_error(fmu, "fmi2SerializeFMUstate", "size = %zu: expected a state and %zu bytes", size,
+                         sizeof(StateHeader) + fmu_state_size());
+    }
+    StateHeader header;
+    memset(&header, 0, sizeof header);
+    snprintf(header.guid, sizeof header.guid, "%s", @NAME@_fmu_guid);
+    header.size = fmu_state_size();
+    memcpy(bytes, &header, sizeof header);
+    memcpy(bytes + sizeof header, state, sizeof(Fmu));
+    memcpy(bytes + sizeof header + sizeof(Fmu), ((Fmu *)state)->model, @NAME@_instance_size());
+    return fmi2OK;
 }
 
 FMI2_EXPORT fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size_t size,
                                                fmi2FMUstate *state) {
-    (void)bytes, (void)size, (void)state;
-    return fmu_unsupported(c, "fmi2DeSerializeFMUstate", "canSerializeFMUstate");
+    Fmu *fmu = (Fmu *)c;
+    if (fmu_refused(fmu, "fmi2DeSerializeFMUstate", ANY_PHASE)) return fmi2Error;
+    StateHeader header;
+    if (size != sizeof header + fmu_state_size()) {
+        return fmu_error(fmu, "fmi2DeSerializeFMUstate", "size = %zu: expected %zu bytes, a state of this FMU", size,
+                         sizeof header + fmu_state_size());
+    }
+    memcpy(&header, bytes, sizeof header);
+    if (strncmp(header.guid, @NAME@_fmu_guid, sizeof header.guid) != 0 || header.size != fmu_state_size()) {
+        return fmu_error(fmu, "fmi2DeSerializeFMUstate", "the bytes are not a state of this FMU (GUID %s)",
+                         @NAME@_fmu_guid);
+    }
+    Fmu *copy = *state != NULL ? (Fmu *)*state : fmu_new_state(fmu);
+    if (copy == NULL) return fmu_error(fmu, "fmi2DeSerializeFMUstate", "out of memory");
+    @NAME@_instance *model = copy->model;
+    memcpy(copy, bytes + sizeof header, sizeof(Fmu));
+    copy->model = model;
+    memcpy((void *)&copy->functions, &fmu->functions, sizeof fmu->functions);
+    memcpy(model, bytes + sizeof header + sizeof(Fmu), @NAME@_instance_size());
+    *state = copy;
+    return fmi2OK;
 }
 
 FMI2_EXPORT fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown[], size_t nUnknown,
