@@ -36,7 +36,12 @@ from hydroservo.io.c_export import CStepper, compiler
 #: model, duration [s], main signals, (method, step [s]) to time.
 CASES = [
     ("flight-simulator", 2.0, ("y", "p1", "p2", "xv"), [("rk4", 1e-4), ("bdf2", 1e-4), ("bdf2", 1e-3)]),
-    ("servo-solenoid-cylinder", 0.4, ("x_mm", "cyl.pA", "cyl.pB", "xs"), [("rk4", 1e-4), ("bdf2", 1e-4), ("bdf2", 5e-4)]),
+    (
+        "servo-solenoid-cylinder",
+        0.4,
+        ("x_mm", "cyl.pA", "cyl.pB", "xs"),
+        [("rk4", 1e-4), ("bdf2", 1e-4), ("bdf2", 5e-4)],
+    ),
 ]
 
 #: Hopsan's compiled fixed-step solver: quoted, not measured here.
@@ -111,7 +116,9 @@ def cvodes_with_output_every_step(system: hs.System, t_end: float, h: float) -> 
     return median_time(lambda: system.simulate(t_end, t_eval=grid), 5) / (grid.size - 1) * 1e6
 
 
-def rk4_stability_limit(system: hs.System, t_end: float, ref: hs.Result, names, lo: float, hi: float) -> tuple[float, float]:
+def rk4_stability_limit(
+    system: hs.System, t_end: float, ref: hs.Result, names, lo: float, hi: float
+) -> tuple[float, float]:
     """The longest stable rk4 step between lo (stable) and hi (not), to 2 %: stable means the run is not
     refused and stays within 5 % of range of CVODES on the main signals. (An unstable mode grows without
     bound, or into a limit cycle the saturations bound; a step that no longer divides a source's jump time
@@ -131,36 +138,59 @@ def rk4_stability_limit(system: hs.System, t_end: float, ref: hs.Result, names, 
     return lo, hi
 
 
+def compiler_version() -> str:
+    """The first line of the C compiler's ``--version`` (raises ParameterError if there is no compiler)."""
+    done = subprocess.run([*compiler(), "--version"], capture_output=True, text=True)
+    return (done.stdout.splitlines() or ["unknown C compiler"])[0]
+
+
+def measure(name: str, t_end: float, names, runs, *, with_output: bool = True, stability: bool = False) -> dict:
+    """The figures of one model, as data: ``runs`` ((method, step) pairs) of the C stepper, each a dict with
+    ``method``, ``h``, ``us_per_step``, ``real_time`` (multiple of real time), ``us_per_step_recorded``,
+    ``deviation`` (per signal of ``names``) and the stepper's statistics; ``cvodes_h``, ``cvodes_per_step_us``
+    (CVODES one integrator call per step from Python); ``cvodes_output_us`` (one run with an output at every
+    step) if ``with_output``; ``rk4_stable`` ((stable, not stable) steps) if ``stability``."""
+    system = hs.load_model(name)
+    ref = reference(system, t_end)
+    out: dict = {"model": name, "t_end": t_end, "signals": tuple(names), "runs": []}
+    for method, h in runs:
+        row = c_stepper(system, t_end, method, h, ref, names)
+        out["runs"].append({"method": method, "h": h, "real_time": h / row["us_per_step"] * 1e6, **row})
+    h = 1e-4
+    out["cvodes_h"] = h
+    out["cvodes_per_step_us"] = cvodes_per_step(system, h)
+    if with_output:
+        out["cvodes_output_us"] = cvodes_with_output_every_step(system, t_end, h)
+    if stability:
+        out["rk4_stable"] = rk4_stability_limit(system, t_end, ref, names, 1e-4, 2e-3)
+    return out
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--stability", action="store_true", help="also search the longest stable rk4 step")
     args = parser.parse_args()
-    cc = compiler()
-    version = subprocess.run([*cc, "--version"], capture_output=True, text=True).stdout.splitlines()[0]
-    print(f"{platform.processor() or platform.machine()}, {version}, -O2")
+    print(f"{platform.processor() or platform.machine()}, {compiler_version()}, -O2")
     print(f"Hopsan's compiled solver: {HOPSAN_US_PER_STEP} us per step (quoted, not measured here)\n")
     header = (f"{'model':<24} {'method':<6} {'h [s]':>7} {'us/step':>8} {'x real time':>11} {'us/step rec.':>12} "
               f"{'Newton it./step':>15} {'Jacobians':>9}  deviation from CVODES (of range)")  # fmt: skip
     for name, t_end, names, runs in CASES:
-        system = hs.load_model(name)
-        ref = reference(system, t_end)
+        fig = measure(name, t_end, names, runs, stability=args.stability)
         print(header)
-        for method, h in runs:
-            row = c_stepper(system, t_end, method, h, ref, names)
+        for row in fig["runs"]:
+            method, h = row["method"], row["h"]
             iterations = f"{row['iterations'] / row['steps']:.2f}" if method == "bdf2" else "-"
             jacobians = str(row["jacobians"]) if method == "bdf2" else "-"
             deviation = ", ".join(f"{k} {v:.1e}" for k, v in row["deviation"].items())
-            print(f"{name:<24} {method:<6} {h:>7.0e} {row['us_per_step']:>8.3f} {h / row['us_per_step'] * 1e6:>11.0f} "
+            print(f"{name:<24} {method:<6} {h:>7.0e} {row['us_per_step']:>8.3f} {row['real_time']:>11.0f} "
                   f"{row['us_per_step_recorded']:>12.3f} {iterations:>15} {jacobians:>9}  {deviation}")  # fmt: skip
-        h = 1e-4
-        per_call = cvodes_per_step(system, h)
-        per_output = cvodes_with_output_every_step(system, t_end, h)
+        h, per_call, per_output = fig["cvodes_h"], fig["cvodes_per_step_us"], fig["cvodes_output_us"]
         print(f"{name:<24} CVODES from Python, one integrator call per step of {h:g} s: {per_call:.1f} us "
               f"({h / per_call * 1e6:.1f} x real time)")  # fmt: skip
         print(f"{name:<24} CVODES, one run with an output every {h:g} s: {per_output:.2f} us per step "
               f"({h / per_output * 1e6:.0f} x real time)")  # fmt: skip
         if args.stability:
-            lo, hi = rk4_stability_limit(system, t_end, ref, names, 1e-4, 2e-3)
+            lo, hi = fig["rk4_stable"]
             print(f"{name:<24} rk4: stable at {lo:.3g} s, not at {hi:.3g} s")
         print()
 

@@ -18,13 +18,16 @@ from pathlib import Path
 import bench_accuracy
 import bench_flight_simulator
 import bench_growth
+import bench_realtime
 import bench_startup
 import bench_warm
 
+from hydroservo.errors import ParameterError
+
 README = Path(__file__).resolve().parents[1] / "README.md"
 START, END = "<!-- speed-table:start -->", "<!-- speed-table:end -->"
-#: Hopsan's compiled solver on its Position Servo example, on a 2-core machine (issue 14's measurement).
-HOPSAN_US_PER_STEP = 0.5
+#: The step of the real-time rows [s]: the C stepper's runs of bench_realtime.CASES at it, and CVODES's.
+REALTIME_STEP = 1e-4
 
 
 def rows() -> list[tuple[str, str, str]]:
@@ -40,11 +43,14 @@ def rows() -> list[tuple[str, str, str]]:
         "flight-simulator 2-s step, CVODES vs SciPy LSODA (Python right-hand side), equal accuracy",
         f"{fs['ratio_equal_accuracy']:.1f}x faster", "`solve_ivp(method='LSODA')`",
     ))  # fmt: skip
-    warm = bench_warm.main(quick=True)
+    warm = bench_warm.main()
     out.append((
         "warm `System.simulate` + reading `y`", f"{warm['simulate_y_ratio']:.2f}x", "the bare CVODES call",
     ))  # fmt: skip
-    out.append(("batch of runs with their outputs read", f"{warm['batch_ratio']:.2f}x", "its integration time"))
+    out.append((
+        f"batch of {warm['batch_runs']:.0f} runs (load varied, 2 threads) with their outputs read",
+        f"{warm['batch_ratio']:.2f}x", "its integration time",
+    ))  # fmt: skip
     acc = bench_accuracy.main(repeat=3)
     devs = [v[1e-4] for v in acc.values() if 1e-4 in v]
     out.append((
@@ -67,8 +73,56 @@ def table(found: list[tuple[str, str, str]]) -> str:
     return head + "\n".join(lines) + "\n"
 
 
+def realtime() -> str:
+    """The real-time section: the exported C stepper (rk4, bdf2) on each model of bench_realtime.CASES, CVODES
+    one step at a time from Python beside it, Hopsan's quoted figure; or why it was skipped (no C compiler, or
+    the stepper failed to build)."""
+    try:
+        version = bench_realtime.compiler_version()
+        figures = [
+            bench_realtime.measure(
+                name, t_end, names, [(m, h) for m, h in runs if h == REALTIME_STEP], with_output=False
+            )
+            for name, t_end, names, runs in bench_realtime.CASES
+        ]
+    except (ParameterError, OSError) as exc:  # no compiler, or the stepper did not build or load
+        reason = str(exc).splitlines()[0].rstrip(".")
+        print(f"real-time rows skipped: {reason}\n")
+        return f"Real-time rows skipped in this run: {reason}.\n"
+    lines = [
+        f"| model | solver, step h = {REALTIME_STEP * 1e3:g} ms | µs per step | × real time | deviation from CVODES (of signal range) | measured or quoted |",
+        "|---|---|---:|---:|---:|---|",
+    ]
+    signals = []
+    for fig in figures:
+        model = f"`{fig['model']}`"
+        signals.append(f"{model}: {', '.join(f'`{s}`' for s in fig['signals'])}")
+        for run in fig["runs"]:
+            lines.append(
+                f"| {model} | exported C stepper, {run['method']} | {run['us_per_step']:.2f} | {run['real_time']:.0f} "
+                f"| {max(run['deviation'].values()):.0e} | measured here |"
+            )
+        per_step = fig["cvodes_per_step_us"]
+        lines.append(
+            f"| {model} | baseline: CVODES one step at a time from Python | {per_step:.0f} "
+            f"| {fig['cvodes_h'] / per_step * 1e6:.1f} | – | measured here |"
+        )
+    lines.append(
+        f"| Position Servo example (Hopsan) | Hopsan compiled solver, 2-core machine | {bench_realtime.HOPSAN_US_PER_STEP} "
+        "| – | – | quoted, not measured here |"
+    )
+    head = (
+        f"Real time, `python benchmarks/bench_realtime.py`'s measurements ({version}, -O2): the C code of "
+        "`hydroservo export-c` compiled and run in this process (`hydroservo.io.c_export.CStepper`, the whole run in "
+        "one call into C, nothing recorded; medians over repeats), beside CVODES called from Python once per step "
+        "as a real-time loop in Python would. Deviation: the largest |C − CVODES| over the run on the main signals "
+        f"({'; '.join(signals)}), relative to each signal's range, against CVODES at rtol 1e-10.\n\n"
+    )
+    return head + "\n".join(lines) + "\n"
+
+
 def main(write: bool) -> None:
-    text = table(rows())
+    text = table(rows()) + "\n" + realtime()
     print(text)
     if write:
         readme = README.read_text(encoding="utf-8")
