@@ -145,11 +145,16 @@ class _Log:
         self.messages.append(message.decode().replace("%%", "%"))
 
 
-def _instance(export: FmuExport, kind: type, log: _Log) -> Any:
+def _instance(export: FmuExport, kind: type, log: _Log, *, initialised: bool = False) -> Any:
+    """An instance of the FMU (FMU2Model or FMU2Slave) logging into ``log``; initialised at t = 0 if asked."""
     unzipped = extract(str(export.path))
     description = read_model_description(unzipped)
     fmu = kind(guid=description.guid, unzipDirectory=unzipped, modelIdentifier=export.name, instanceName="test")
     fmu.instantiate(callbacks=log.callbacks)
+    if initialised:
+        fmu.setupExperiment(startTime=0.0)
+        fmu.enterInitializationMode()
+        fmu.exitInitializationMode()
     return fmu
 
 
@@ -193,10 +198,7 @@ def test_model_exchange_gives_the_models_own_functions(flight) -> None:
     """The initial states, the rates and the nominal magnitudes are the engine's own, to rounding."""
     system, export = flight
     log = _Log()
-    fmu = _instance(export, FMU2Model, log)
-    fmu.setupExperiment(startTime=0.0)
-    fmu.enterInitializationMode()
-    fmu.exitInitializationMode()
+    fmu = _instance(export, FMU2Model, log, initialised=True)
     n = len(export.states)
     x, rates, nominal = np.zeros(n), np.zeros(n), np.zeros(n)
     fmu.getContinuousStates(_pointer(x), n)
@@ -264,10 +266,7 @@ def test_an_fmu_state_goes_back_and_is_serialised(flight) -> None:
     so does the same state serialised to bytes and read back; bytes of another size are refused."""
     _, export = flight
     log = _Log()
-    fmu = _instance(export, FMU2Slave, log)
-    fmu.setupExperiment(startTime=0.0)
-    fmu.enterInitializationMode()
-    fmu.exitInitializationMode()
+    fmu = _instance(export, FMU2Slave, log, initialised=True)
     y, h = [export.value_reference("y"), export.value_reference("p1")], 1e-3
 
     def run(t0: float, steps: int) -> list[list[float]]:
