@@ -33,6 +33,8 @@ import hydroservo as hs
 from hydroservo.errors import ImplausibleResultWarning, ParameterError
 from hydroservo.io.c_export import CStepper, compiler
 from hydroservo.io.fmu import FmuExport, export_fmu
+from hydroservo.system.assembly import assemble
+from hydroservo.system.model import Model
 
 fmpy = pytest.importorskip("fmpy")
 from fmpy import extract, read_model_description, simulate_fmu  # noqa: E402
@@ -214,6 +216,44 @@ def test_model_exchange_gives_the_models_own_functions(flight) -> None:
     assert np.allclose(rates, expected, rtol=1e-10, atol=1e-12 * np.max(np.abs(expected)))
     fmu.getNominalsOfContinuousStates(_pointer(nominal), n)
     assert np.array_equal(nominal, model.nominal)
+    fmu.terminate()
+    fmu.freeInstance()
+
+
+def test_directional_derivatives_are_the_models_jacobian(flight) -> None:
+    """fmi2GetDirectionalDerivative along every state and the input, for every state derivative and output:
+    the engine model's exact Jacobian (its full matrix, built here) times the direction, to rounding."""
+    import casadi as ca
+
+    system, export = flight
+    log = _Log()
+    fmu = _instance(export, FMU2Model, log, initialised=True)
+    n = len(export.states)
+    x = np.zeros(n)
+    fmu.getContinuousStates(_pointer(x), n)
+    model = system.build()
+    x = x * 1.01 + 1e-3 * np.asarray(model.nominal)  # away from rest, where every term acts
+    fmu.enterContinuousTimeMode()
+    fmu.setTime(0.25)
+    fmu.setContinuousStates(_pointer(x), n)
+    fmu.setReal([export.value_reference("summer.u1")], [0.3])
+    direction = np.linspace(1.0, 2.0, n + 1) * np.append(model.nominal, 1.0)  # each in its state's scale
+    knowns = [export.value_reference(s) for s in export.states] + [export.value_reference("summer.u1")]
+    derivatives = [export.value_reference(f"der({s})") for s in export.states]
+    outputs = [export.value_reference(o) for o in export.outputs]
+    got = np.array(fmu.getDirectionalDerivative(derivatives + outputs, knowns, list(direction)))
+    perturbed = Model(*assemble(system, perturbed=("summer.u1",)))  # the engine's model with the input
+    t, xs, u = ca.SX.sym("t"), ca.SX.sym("x", n), ca.SX.sym("u")
+    ps = ca.vertcat(system.parameter_vector(), u)
+    rhs = ca.vertcat(perturbed.f(t, xs, ps), perturbed.outputs(t, xs, ps))
+    jac = ca.Function("J", [t, xs, u], [ca.jacobian(rhs, ca.vertcat(xs, u))])  # reverse/forward: CasADi's choice
+    expected = np.asarray(jac(0.25, x, 0.3)) @ direction
+    names = [*export.outputs]
+    assert len(got) == n + len(names)
+    scale = np.maximum(np.abs(expected), 1e-12 * np.max(np.abs(expected)))
+    assert np.max(np.abs(got - expected) / scale) < 1e-9
+    state = fmu.getDirectionalDerivative([knowns[0]], knowns, list(direction))
+    assert state == [direction[0]]  # a state, as an output, is its own direction
     fmu.terminate()
     fmu.freeInstance()
 

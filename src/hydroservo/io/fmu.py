@@ -16,8 +16,12 @@ imports:
   exported.
 * ``sources/``: the same C code, for a host that builds FMUs itself: the
   model's functions (CasADi), the fixed-step stepper of
-  :mod:`hydroservo.io.c_export` and ``NAME_fmi2.c``, the FMI interface, which
-  calls only the stepper's C API.
+  :mod:`hydroservo.io.c_export`, the forward derivatives of the rates and
+  outputs (``NAME_fmu_model.c``, for ``fmi2GetDirectionalDerivative``) and
+  ``NAME_fmi2.c``, the FMI interface, which calls the stepper's C API.
+
+FMU states can be taken, restored and serialised; directional derivatives are
+exact.
 
 **Model Exchange** gives the host the model in continuous time (the host's
 integrator steps it, as CVODES does inside hydroservo). **Co-Simulation**
@@ -35,6 +39,7 @@ from __future__ import annotations
 import hashlib
 import html
 import math
+import os
 import re
 import sys
 import tempfile
@@ -285,7 +290,7 @@ def model_description(
         },
     )
     common = {"modelIdentifier": name, "canNotUseMemoryManagementFunctions": "false", "canGetAndSetFMUstate": "true",
-              "canSerializeFMUstate": "true", "providesDirectionalDerivative": "false"}  # fmt: skip
+              "canSerializeFMUstate": "true", "providesDirectionalDerivative": "true"}  # fmt: skip
     me = ET.SubElement(
         root, "ModelExchange", {**common, "completedIntegratorStepNotNeeded": "false", "needsExecutionTool": "false"}
     )
@@ -428,7 +433,7 @@ communication step must be a whole number of those steps, and a co-simulation st
 only the initial states and are set before the initialisation ends.</li>
 <li>An input is added to whatever drives it inside the model (zero: the model as exported).</li>
 <li>Units are SI, except temperatures in &deg;C and any the model declares otherwise.</li>
-<li><code>sources/</code> builds the binary for another platform: compile the three <code>.c</code> files into a
+<li><code>sources/</code> builds the binary for another platform: compile the four <code>.c</code> files into a
 shared library named <code>{name}</code> with only the C standard library and libm (for instance
 <code>cc -O2 -shared -fPIC -o {name}.so *.c -lm</code>).</li>
 </ul>
@@ -437,8 +442,24 @@ shared library named <code>{name}</code> with only the C standard library and li
 """
 
 
-def _fmu_data(cid: str, guid: str, system: System, parameters: Sequence[str], tunable: Sequence[bool]) -> str:
-    """The ``@FMU_DATA@`` block of the FMI interface: GUID, and each parameter's tunability and range."""
+def _directional(model: Model, n_parameters: int, cid: str) -> ca.Function:
+    """``{cid}_fmu_fwd(t, x, p, v) -> (df, dy)``: the rates' and the outputs' derivatives along ``v`` (a change
+    of the states, in their units, then of the inputs), exact (CasADi's forward mode), for the FMU's
+    ``fmi2GetDirectionalDerivative``; ``p`` is the parameters followed by the inputs."""
+    t, x, p = ca.SX.sym("t"), ca.SX.sym("x", model.nx), ca.SX.sym("p", model.np)
+    known = ca.vertcat(x, p[n_parameters:])
+    v = ca.SX.sym("v", known.numel())
+    rates, outputs = model.f(t, x, p), model.outputs(t, x, p)
+    return ca.Function(
+        f"{cid}_fmu_fwd", [t, x, p, v], [ca.densify(ca.jtimes(rates, known, v)), ca.densify(ca.jtimes(outputs, known, v))]
+    )
+
+
+def _fmu_data(
+    cid: str, guid: str, system: System, parameters: Sequence[str], tunable: Sequence[bool], fwd: ca.Function
+) -> str:
+    """The ``@FMU_DATA@`` block of the FMI interface: GUID, each parameter's tunability and range, and the work
+    space of the forward-derivative function ``fwd``."""
     spec = {f"{c}.{k}": s for c, comp in system.components.items() for k, s in comp.PARAMETERS.items()}
 
     def bound(value: float | None) -> str:
@@ -449,8 +470,10 @@ def _fmu_data(cid: str, guid: str, system: System, parameters: Sequence[str], tu
         return f"static const {ctype} {cid}_fmu_{what}[] = {{\n{body}}};\n"
 
     params = [spec[n] for n in parameters]
+    sizes = [f"#define FWD_SZ_{what.upper()} {getattr(fwd, f'sz_{what}')()}" for what in ("arg", "res", "iw", "w")]
     return "\n".join(
         [
+            *sizes,
             f'static const char {cid}_fmu_guid[] = "{guid}";',
             array("int", "tunable", [str(int(t)) for t in tunable]),
             array("double", "min", [bound(p.min) for p in params]),
@@ -525,19 +548,23 @@ def export_fmu(
             newton_tolerance=newton_tolerance,
         )  # fmt: skip
         model = Model(*assemble(system, perturbed=targets))
-        sources = [f"{cid}.c", f"{cid}_model.c", f"{cid}_fmi2.c"]
-        headers = [f"{cid}.h", f"{cid}_model.h"]
+        fwd = _directional(model, len(export.parameters), cid)
+        generator = ca.CodeGenerator(f"{cid}_fmu_model.c", {"with_header": True, "prefix": f"{cid}_fmu_"})
+        generator.add(fwd)
+        generator.generate(str(build / "sources") + os.sep)
+        sources = [f"{cid}.c", f"{cid}_model.c", f"{cid}_fmu_model.c", f"{cid}_fmi2.c"]
+        headers = [f"{cid}.h", f"{cid}_model.h", f"{cid}_fmu_model.h"]
         placeholder = "{00000000-0000-0000-0000-000000000000}"
         description, every, structure = model_description(
             system, model, name=cid, guid=placeholder, step=h, inputs=targets, sources=sources
         )
         digest = hashlib.sha256(description.encode())
-        for source in [f"{cid}.c", f"{cid}_model.c", *headers]:
+        for source in [f"{cid}.c", f"{cid}_model.c", f"{cid}_fmu_model.c", *headers]:
             digest.update((build / "sources" / source).read_bytes())
         digest.update(c_template("fmi2.c").encode())
         guid = "{" + str(uuid.UUID(bytes=digest.digest()[:16], version=5)) + "}"
         description = description.replace(placeholder, guid)
-        data = _fmu_data(cid, guid, system, export.parameters, structure.tunable)
+        data = _fmu_data(cid, guid, system, export.parameters, structure.tunable, fwd)
         interface = c_template("fmi2.c")
         values = {"NAME": cid, "UPPER": cid.upper(), "MODEL": system.name.replace("*/", "* /"),
                   "VERSION": __version__, "METHOD": method, "STEP": repr(h), "FMU_DATA": data}  # fmt: skip

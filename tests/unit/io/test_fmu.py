@@ -122,7 +122,7 @@ def test_a_sources_only_fmu_has_no_binaries(spring_fmu) -> None:
     for kind in ("ModelExchange", "CoSimulation"):
         element = root.find(kind)
         assert element is not None and element.get("modelIdentifier") == "spring"
-        assert [f.get("name") for f in element.find("SourceFiles") or []] == ["spring.c", "spring_model.c", "spring_fmi2.c"]
+        assert [f.get("name") for f in element.find("SourceFiles") or []] == ["spring.c", "spring_model.c", "spring_fmu_model.c", "spring_fmi2.c"]
 
 
 def test_bad_arguments_are_refused_before_anything_is_written(tmp_path: Path) -> None:

@@ -7,6 +7,9 @@
  *     communication step must be a whole number of those steps.
  * The model has no events: no event indicators, no time events, no discrete states.
  *
+ * Directional derivatives (of the state derivatives and outputs along the states and inputs) come exact from
+ * the forward mode of the model's expression graph, generated in @NAME@_fmu_model.c.
+ *
  * Value references (all Real), in the order of modelDescription.xml: the parameters, the inputs, the
  * states, their derivatives, the outputs.
  *
@@ -14,6 +17,7 @@
  * here so that the folder builds without the standard's headers.
  */
 #include "@NAME@.h"
+#include "@NAME@_fmu_model.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -97,6 +101,12 @@ typedef struct {
     double x[AT_LEAST_1(NX)]; /* Model Exchange: the host's states */
     double dx[AT_LEAST_1(NX)], y[AT_LEAST_1(NY)];
     int derivatives_current, outputs_current;
+    /* fmi2GetDirectionalDerivative: the parameters and inputs, the direction, the results, the work space */
+    double p[AT_LEAST_1(NP + NI)], v[AT_LEAST_1(NX + NI)], dfdv[AT_LEAST_1(NX)], dydv[AT_LEAST_1(NY)];
+    const casadi_real *fwd_arg[FWD_SZ_ARG];
+    casadi_real *fwd_res[FWD_SZ_RES];
+    casadi_int fwd_iw[AT_LEAST_1(FWD_SZ_IW)];
+    casadi_real fwd_w[AT_LEAST_1(FWD_SZ_W)];
     char message[640];
 } Fmu;
 
@@ -510,11 +520,51 @@ FMI2_EXPORT fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte b
     return fmi2OK;
 }
 
+/* Derivatives of the state derivatives and outputs (and of the states, as outputs) along a change of the
+ * states and inputs: exact, from the forward mode of the model's expression graph (@NAME@_fmu_fwd). */
 FMI2_EXPORT fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown[], size_t nUnknown,
                                                     const fmi2ValueReference vKnown[], size_t nKnown,
                                                     const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
-    (void)vUnknown, (void)nUnknown, (void)vKnown, (void)nKnown, (void)dvKnown, (void)dvUnknown;
-    return fmu_unsupported(c, "fmi2GetDirectionalDerivative", "providesDirectionalDerivative");
+    Fmu *fmu = (Fmu *)c;
+    if (fmu_refused(fmu, "fmi2GetDirectionalDerivative", READABLE)) return fmi2Error;
+    memset(fmu->v, 0, sizeof fmu->v);
+    for (size_t k = 0; k < nKnown; ++k) {
+        const unsigned int r = vKnown[k];
+        if (r >= VR_STATES && r < VR_DERIVATIVES) {
+            fmu->v[r - VR_STATES] += dvKnown[k];
+        } else if (r >= VR_INPUTS && r < VR_STATES) {
+            fmu->v[NX + (r - VR_INPUTS)] += dvKnown[k];
+        } else {
+            return fmu_error(fmu, "fmi2GetDirectionalDerivative",
+                             "known value reference %u: expected a state (%d to %d) or an input (%d to %d)", r, VR_STATES,
+                             VR_DERIVATIVES - 1, VR_INPUTS, VR_STATES - 1);
+        }
+    }
+    for (int i = 0; i < NP; ++i) fmu->p[i] = @NAME@_get_parameter(fmu->model, i);
+    for (int j = 0; j < NI; ++j) fmu->p[NP + j] = @NAME@_get_input(fmu->model, j);
+    const double t = fmu_time(fmu);
+    fmu->fwd_arg[0] = &t;
+    fmu->fwd_arg[1] = fmu_states(fmu);
+    fmu->fwd_arg[2] = fmu->p;
+    fmu->fwd_arg[3] = fmu->v;
+    fmu->fwd_res[0] = fmu->dfdv;
+    fmu->fwd_res[1] = fmu->dydv;
+    @NAME@_fmu_fwd(fmu->fwd_arg, fmu->fwd_res, fmu->fwd_iw, fmu->fwd_w, 0);
+    for (size_t k = 0; k < nUnknown; ++k) {
+        const unsigned int r = vUnknown[k];
+        if (r >= VR_STATES && r < VR_DERIVATIVES) {
+            dvUnknown[k] = fmu->v[r - VR_STATES];
+        } else if (r >= VR_DERIVATIVES && r < VR_OUTPUTS) {
+            dvUnknown[k] = fmu->dfdv[r - VR_DERIVATIVES];
+        } else if (r >= VR_OUTPUTS && r < VR_END) {
+            dvUnknown[k] = fmu->dydv[r - VR_OUTPUTS];
+        } else {
+            return fmu_error(fmu, "fmi2GetDirectionalDerivative",
+                             "unknown value reference %u: expected a state, a state derivative or an output (%d to %d)",
+                             r, VR_STATES, VR_END - 1);
+        }
+    }
+    return fmi2OK;
 }
 
 /* ---- Model Exchange ------------------------------------------------------------------------------------- */
