@@ -188,6 +188,14 @@ def test_co_simulation_refuses_what_it_cannot_do(flight) -> None:
     with pytest.raises(FMICallException):
         fmu.doStep(currentCommunicationPoint=0.5, communicationStepSize=1e-3)
     assert "expected the FMU's time, 0.001 s" in log.messages[-1]
+    # A host's time that drifted by rounding (t += H over a long run) is taken as the FMU's within half a step,
+    # the step to a thousandth of a step:
+    fmu.doStep(currentCommunicationPoint=1e-3 + 4e-5, communicationStepSize=1e-3 - 5e-8)
+    assert fmu.getRealStatus(2) == pytest.approx(2e-3, abs=1e-15)  # fmi2LastSuccessfulTime: whole steps
+    with pytest.raises(FMICallException):
+        fmu.doStep(currentCommunicationPoint=2e-3 + 6e-5, communicationStepSize=1e-3)
+    with pytest.raises(FMICallException):
+        fmu.doStep(currentCommunicationPoint=float("nan"), communicationStepSize=1e-3)
     fmu.terminate()
     fmu.freeInstance()
 

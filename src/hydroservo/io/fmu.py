@@ -25,10 +25,10 @@ exact.
 
 **Model Exchange** gives the host the model in continuous time (the host's
 integrator steps it, as CVODES does inside hydroservo). **Co-Simulation**
-steps it with the stepper's fixed-step method (``bdf2`` by default: a host
-does not know how stiff the circuit is) at the step chosen at export; a
-communication step must be a whole number of those steps, and co-simulation
-starts at t = 0. The model has no events, no integer or boolean variables.
+steps it with the stepper's fixed-step method (``rk4`` by default; ``bdf2``
+for stiff circuits, but not across a right-hand side that jumps, docs/fmu.md)
+at the step chosen at export; a communication step must be a whole number of
+those steps, and co-simulation starts at t = 0. The model has no events, no integer or boolean variables.
 
 An input (``valve.u``) is added to whatever drives it inside the system, as
 in :func:`~hydroservo.io.c_export.export_c`.
@@ -330,10 +330,10 @@ def model_description(
             tunable = structure.tunable[vr]
             attributes.update(causality="parameter", variability="tunable" if tunable else "fixed", initial="exact")
             real["start"] = _number(defaults[vr])
-            for bound in ("min", "max"):
+            for bound, inclusive, inward in (("min", param.min_inclusive, math.inf), ("max", param.max_inclusive, -math.inf)):
                 value = getattr(param, bound)
-                if value is not None and math.isfinite(value):
-                    real[bound] = _number(value)
+                if value is not None and math.isfinite(value):  # FMI's bounds are inclusive: an excluded one moves in
+                    real[bound] = _number(value if inclusive else math.nextafter(value, inward))
         elif v.kind == "input":
             attributes.update(causality="input", variability="continuous")
             real["start"] = "0.0"
@@ -507,8 +507,7 @@ def export_fmu(
     step : float or str
         Co-Simulation: the fixed step [s] of the stepper inside (default 0.1 ms).
     method : "rk4" or "bdf2"
-        Co-Simulation: the stepper's method (default ``bdf2``, implicit: a host does not know how stiff the
-        circuit is).
+        Co-Simulation: the stepper's method (default ``rk4``; ``bdf2``, implicit, for stiff circuits).
     inputs : sequence of str
         Component inputs (``"valve.u"``) the host sets; each is added to what drives it in the system.
     name : str, optional

@@ -832,7 +832,7 @@ class Model:
                     failures[j] = f"cannot start: {why}"
         todo = [i for i in range(n) if i not in failures]
         nthreads = threads or os.cpu_count() or 1
-        X = np.empty((self.nx, n, nt))  # every run is written by its chunk, or set to NaN as failed below
+        X = np.empty((self.nx, n, nt))  # every run is written by its chunk (SI), or set to NaN as failed below
         chunks: list[tuple[list[int], np.ndarray]] = []  # the runs integrated together, and their scaled states
         start = time.perf_counter()
         if self.nx == 0:
@@ -847,7 +847,6 @@ class Model:
                 done += len(part)
                 if progress is not None:
                     progress(done, n)
-            X *= self.nominal[:, None, None]
         wall = time.perf_counter() - start
         for i in todo:
             if i not in failures and not np.all(np.isfinite(X[:, i])):
@@ -987,7 +986,7 @@ class Model:
             self._solve_runs(integ, runs[:half], Z0, P, X, failures, nthreads, chunks)
             self._solve_runs(integ, runs[half:], Z0, P, X, failures, nthreads, chunks)
             return
-        X[:, runs, :] = xf.reshape(self.nx, size, -1)
+        X[:, runs, :] = xf.reshape(self.nx, size, -1) * self.nominal[:, None, None]  # unscaled as they arrive
         chunks.append((list(runs), xf))
 
     # -- code generation ---------------------------------------------------

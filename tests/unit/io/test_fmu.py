@@ -6,6 +6,7 @@ integration tests (tests/integration/test_fmu_fmpy.py) build binaries and run th
 
 from __future__ import annotations
 
+import math
 import xml.etree.ElementTree as ET
 import zipfile
 from pathlib import Path
@@ -68,7 +69,9 @@ def test_each_variable_has_its_unit_start_and_range(spring_fmu) -> None:
     export, root = spring_fmu
     real = {v.get("name"): v.find("Real").attrib for v in _variables(root)}  # type: ignore[union-attr]
     assert real["load.m"]["unit"] == "kg" and float(real["load.m"]["start"]) == 2.0
-    assert float(real["load.m"]["min"]) == 0.0  # the component's range: a mass above 0
+    # The component's range: a mass above 0 (excluded); FMI's bounds are inclusive, so the least double above 0.
+    assert float(real["load.m"]["min"]) == math.nextafter(0.0, 1.0) and "max" not in real["load.m"]
+    assert float(real["load.k_spring"]["min"]) == 0.0  # included: a spring of 0 N/m is no spring
     assert real["load.F"] == {"unit": "N", "start": "0.0"}
     assert real["der(load.x)"]["unit"] == "m/s" and real["der(load.v)"]["unit"] == "m/s^2"
     assert int(real["der(load.v)"]["derivative"]) == [v.get("name") for v in _variables(root)].index("load.v") + 1

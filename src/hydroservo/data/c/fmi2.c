@@ -317,6 +317,7 @@ FMI2_EXPORT fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[
 FMI2_EXPORT fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
     Fmu *fmu = (Fmu *)c;
     if (nvr > 0 && fmu_refused(fmu, "fmi2SetReal", SETUP | PHASE_BIT(RUNNING))) return fmi2Error;
+    if (nvr > 0) fmu_changed(fmu); /* before any value is set: a call refused halfway leaves no stale result */
     for (size_t k = 0; k < nvr; ++k) {
         const unsigned int r = vr[k];
         const double v = value[k];
@@ -351,7 +352,6 @@ FMI2_EXPORT fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[
                              r, VR_INPUTS, VR_INPUTS, VR_STATES - 1);
         }
     }
-    if (nvr > 0) fmu_changed(fmu);
     return fmi2OK;
 }
 
@@ -509,7 +509,7 @@ FMI2_EXPORT fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte b
         return fmu_error(fmu, "fmi2DeSerializeFMUstate", "the bytes are not a state of this FMU (GUID %s)",
                          @NAME@_fmu_guid);
     }
-    Fmu *copy = *state != NULL ? (Fmu *)*state : fmu_new_state(fmu);
+    Fmu *copy = fmu_new_state(fmu); /* always a new state: the standard does not say *state holds one on entry */
     if (copy == NULL) return fmu_error(fmu, "fmi2DeSerializeFMUstate", "out of memory");
     @NAME@_instance *model = copy->model;
     memcpy(copy, bytes + sizeof header, sizeof(Fmu));
@@ -687,13 +687,15 @@ FMI2_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunication
     (void)noSetFMUStatePriorToCurrentPoint;
     if (fmu_refused_cs(fmu, "fmi2DoStep", PHASE_BIT(RUNNING))) return fmi2Error;
     const double h = @UPPER@_STEP, now = @NAME@_time(fmu->model);
-    /* A whole number of steps, to a millionth of a step: a host's sum of communication steps carries rounding. */
-    if (fabs(currentCommunicationPoint - now) > 1e-6 * h) {
+    /* The FMU's time is a whole number of steps, without rounding. A host that sums its communication steps
+     * (t += H) drifts from it by rounding that grows as t squared (1e-10 s after 100 s at 1 ms): its time is
+     * taken as the FMU's within half a step, and the step to a thousandth of a step. */
+    if (!(fabs(currentCommunicationPoint - now) < 0.5 * h)) {
         return fmu_error(fmu, "fmi2DoStep", "currentCommunicationPoint = %.12g s: expected the FMU's time, %.12g s",
                          currentCommunicationPoint, now);
     }
     const double steps = floor(communicationStepSize / h + 0.5);
-    if (!(steps >= 1.0) || fabs(steps * h - communicationStepSize) > 1e-6 * h || steps > 1e15) {
+    if (!(steps >= 1.0) || !(fabs(steps * h - communicationStepSize) <= 1e-3 * h) || steps > 1e15) {
         return fmu_error(fmu, "fmi2DoStep",
                          "communicationStepSize = %.9g s: expected a whole number of the FMU's fixed steps of %.9g s "
                          "(%s, chosen at export with --step)",
