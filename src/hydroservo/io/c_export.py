@@ -74,6 +74,8 @@ __all__ = [
     "compile_library",
     "compiler",
     "export_c",
+    "fill_template",
+    "library_suffix",
 ]
 
 #: The fixed-step methods: ``rk4`` (explicit, classical Runge-Kutta) and ``bdf2`` (implicit, for stiff circuits).
@@ -147,9 +149,13 @@ class CExport:
         return self.directory / _library_name(self.name)
 
 
+def library_suffix() -> str:
+    """The file suffix of a shared library on this platform: ``.so``, ``.dylib`` or ``.dll``."""
+    return {"darwin": ".dylib", "win32": ".dll"}.get(sys.platform, ".so")
+
+
 def _library_name(cid: str) -> str:
-    suffix = {"darwin": ".dylib", "win32": ".dll"}.get(sys.platform, ".so")
-    return f"lib{cid}{suffix}"
+    return f"lib{cid}{library_suffix()}"
 
 
 def check_step(step: float | str, what: str = "step") -> float:
@@ -286,7 +292,7 @@ def _tables(
 ) -> str:
     """The public constants: counts, step, method, and the arrays of names, units, descriptions and defaults."""
     params = model.parameter_names[: len(defaults)]
-    spec = {f"{c}.{k}": s for c, comp in system.components.items() for k, s in comp.PARAMETERS.items()}
+    spec = system.declared("PARAMETERS")
     strings = {
         "parameter_names": params,
         "parameter_units": [model.parameter_units[n] for n in params],
@@ -312,7 +318,7 @@ def _tables(
     return "\n".join([constants, *arrays, defaults_array])
 
 
-def _template(name: str, values: Mapping[str, str]) -> str:
+def fill_template(name: str, values: Mapping[str, str]) -> str:
     """The C template ``name`` of ``hydroservo.data`` with every ``@KEY@`` replaced."""
     text = c_template(name)
     for key, value in values.items():
@@ -332,8 +338,8 @@ def _markdown_table(header: Sequence[str], rows: Sequence[Sequence[str]]) -> str
 def _readme(export: CExport, system: System, model: Model) -> str:
     """README.md of the exported folder: the method, building, the API in short, inputs, and every named vector."""
     cid, upper = export.name, export.name.upper()
-    params = {f"{c}.{k}": s for c, comp in system.components.items() for k, s in comp.PARAMETERS.items()}
-    ports = {f"{c}.{k}": s for c, comp in system.components.items() for k, s in comp.INPUTS.items()}
+    params = system.declared("PARAMETERS")
+    ports = system.declared("INPUTS")
 
     def unit(name: str) -> str:
         return f"`{export.units[name]}`" if export.units[name] else "-"
@@ -588,10 +594,10 @@ def export_c(
         for function in functions.functions:
             generator.add(function)
         generator.generate(str(out.folder) + os.sep)
-        out.file(f"{cid}.h").write_text(_template("stepper.h", values), encoding="utf-8")
+        out.file(f"{cid}.h").write_text(fill_template("stepper.h", values), encoding="utf-8")
         data = _data_block(cid, upper, model, method, newton_tolerance, functions)
         tables = _tables(cid, system, model, targets, defaults, h, method)
-        source = _template("stepper.c", {**values, "DATA": data}) + "\n" + tables
+        source = fill_template("stepper.c", {**values, "DATA": data}) + "\n" + tables
         out.file(f"{cid}.c").write_text(source, encoding="utf-8")
         out.file("README.md").write_text(_readme(export, system, model), encoding="utf-8")
         out.file("Makefile").write_text(_makefile(cid, files), encoding="utf-8")

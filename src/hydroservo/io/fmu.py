@@ -66,6 +66,8 @@ from hydroservo.io.c_export import (
     compile_library,
     compiler,
     export_c,
+    fill_template,
+    library_suffix,
 )
 from hydroservo.io.files import OutputFolder
 from hydroservo.system.assembly import assemble
@@ -158,18 +160,13 @@ def fmu_platform() -> str:
     return system + bits
 
 
-def _binary_suffix() -> str:
-    return {"darwin": ".dylib", "win32": ".dll"}.get(sys.platform, ".so")
-
-
 @dataclass(frozen=True)
 class _Structure:
-    """What the model description needs from the model: tunable parameters, dependencies, nominal values."""
+    """What the model description needs from the model: tunable parameters, dependencies."""
 
     tunable: tuple[bool, ...]
     derivative_dependencies: list[list[int]]  # per state: states (0..nx-1) and inputs (nx..nx+ni-1)
     output_dependencies: list[list[int]]  # per output, as above
-    nominal: tuple[float, ...]
 
 
 def _structure(model: Model, n_parameters: int) -> _Structure:
@@ -189,7 +186,7 @@ def _structure(model: Model, n_parameters: int) -> _Structure:
         dense = np.array(ca.DM(pattern, 1).full(), dtype=bool)
         return [list(np.flatnonzero(row)) for row in dense]
 
-    return _Structure(tunable, rows(rates), rows(outputs), tuple(float(v) for v in model.nominal))
+    return _Structure(tunable, rows(rates), rows(outputs))
 
 
 def _number(value: float) -> str:
@@ -226,11 +223,8 @@ def variables(system: System, model: Model, inputs: Sequence[str]) -> list[Varia
     ``supply.p``) takes a suffix (``supply.p_out``), and its description says what it stands for.
     """
     n_par = len(model.parameter_names) - len(inputs)
-    comps = system.components.items()
-    params = {f"{c}.{k}": s.description for c, comp in comps for k, s in comp.PARAMETERS.items()}
-    ports = {f"{c}.{k}": s.description for c, comp in comps for k, s in comp.INPUTS.items()}
-    signals = {f"{c}.{k}": s.description for c, comp in comps for k, s in comp.STATES.items()}
-    signals.update({f"{c}.{k}": s.description for c, comp in comps for k, s in comp.OUTPUTS.items()})
+    params, ports = system.declared("PARAMETERS"), system.declared("INPUTS")
+    signals = {n: d.description for n, d in {**system.declared("STATES"), **system.declared("OUTPUTS")}.items()}
     signals.update({k: a.description or f"= {a.expr}" for k, a in system.aliases.items()})
     found: list[Variable] = []
     taken: set[str] = set()
@@ -245,9 +239,9 @@ def variables(system: System, model: Model, inputs: Sequence[str]) -> list[Varia
         found.append(Variable(name, signal, kind, unit, description))
 
     for pname in model.parameter_names[:n_par]:
-        add(pname, "parameter", model.parameter_units[pname], params[pname])
+        add(pname, "parameter", model.parameter_units[pname], params[pname].description)
     for target, pname in zip(inputs, model.parameter_names[n_par:]):
-        add(target, "input", model.parameter_units[pname], f"{ports[target]}; added to what drives it in the system")
+        add(target, "input", model.parameter_units[pname], f"{ports[target].description}; added to what drives it in the system")
     for sname in model.state_names:
         add(sname, "state", model.units[sname], signals.get(sname, "a state"))
     states = [v for v in found if v.kind == "state"]
@@ -272,7 +266,7 @@ def model_description(
     its variables in value-reference order, and the model's structure."""
     defaults = system.parameter_vector()
     n_par = len(defaults)
-    spec = {f"{c}.{k}": s for c, comp in system.components.items() for k, s in comp.PARAMETERS.items()}
+    spec = system.declared("PARAMETERS")
     structure = _structure(model, n_par)
     every = variables(system, model, inputs)
     structured = all(_STRUCTURED.fullmatch(v.name) for v in every)
@@ -339,7 +333,7 @@ def model_description(
             real["start"] = "0.0"
         elif v.kind == "state":
             attributes.update(causality="output", variability="continuous", initial="calculated")
-            real["nominal"] = _number(structure.nominal[n_state])
+            real["nominal"] = _number(model.nominal[n_state])
             n_state += 1
         elif v.kind == "derivative":
             attributes.update(causality="local", variability="continuous")
@@ -460,7 +454,7 @@ def _fmu_data(
 ) -> str:
     """The ``@FMU_DATA@`` block of the FMI interface: GUID, each parameter's tunability and range, and the work
     space of the forward-derivative function ``fwd``."""
-    spec = {f"{c}.{k}": s for c, comp in system.components.items() for k, s in comp.PARAMETERS.items()}
+    spec = system.declared("PARAMETERS")
 
     def bound(value: float | None) -> str:
         return "NAN" if value is None or not math.isfinite(value) else repr(float(value))
@@ -564,13 +558,9 @@ def export_fmu(
         guid = "{" + str(uuid.UUID(bytes=digest.digest()[:16], version=5)) + "}"
         description = description.replace(placeholder, guid)
         data = _fmu_data(cid, guid, system, export.parameters, structure.tunable, fwd)
-        interface = c_template("fmi2.c")
         values = {"NAME": cid, "UPPER": cid.upper(), "MODEL": system.name.replace("*/", "* /"),
                   "VERSION": __version__, "METHOD": method, "STEP": repr(h), "FMU_DATA": data}  # fmt: skip
-        for key, value in values.items():
-            interface = interface.replace(f"@{key}@", value)
-        if re.search(r"@[A-Z_]+@", interface):
-            raise RuntimeError("fmi2.c: a template place was left unfilled")
+        interface = fill_template("fmi2.c", values)
         (build / "sources" / f"{cid}_fmi2.c").write_text(interface, encoding="utf-8")
         members: dict[str, Path] = {"modelDescription.xml": build / "modelDescription.xml"}
         (build / "modelDescription.xml").write_text(description, encoding="utf-8")
@@ -581,7 +571,7 @@ def export_fmu(
         )
         members["documentation/index.html"] = build / "index.html"
         if platform is not None:
-            library = cid + _binary_suffix()
+            library = cid + library_suffix()
             compile_library(build / "sources", sources, library, flags=("-O2", "-fvisibility=hidden"))
             members[f"binaries/{platform}/{library}"] = build / "sources" / library
         with out:

@@ -342,6 +342,11 @@ class System:
     def parameter_names(self) -> list[str]:
         return [f"{c}.{p}" for c, comp in self.components.items() for p in comp.PARAMETERS]
 
+    def declared(self, kind: str) -> dict[str, Any]:
+        """What the components declare of one ``kind`` (``"PARAMETERS"``, ``"INPUTS"``, ``"STATES"``,
+        ``"OUTPUTS"``), by full name: ``{"load.m": Param(...), ...}``."""
+        return {f"{c}.{k}": spec for c, comp in self.components.items() for k, spec in getattr(comp, kind).items()}
+
     def parameter_values(self) -> dict[str, float]:
         return {f"{c}.{p}": comp.values[p] for c, comp in self.components.items() for p in comp.PARAMETERS}
 
