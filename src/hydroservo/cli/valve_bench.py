@@ -116,7 +116,7 @@ def cmd_characteristics(args: argparse.Namespace) -> int:
     qn_note = "" if bench.Q_n is not None else f" (computed: no-load flow at X_n, {bench.T_rated:g} °C)"
     print(f"{title}, Q_n = {table['Q_n'] * 6e4:.4g} L/min{qn_note}")
     print("\n".join(_metrics_table(table)))
-    print(f"wrote {len(files)} files to {out}")
+    print(f"wrote {len(files)} files to {out.target}")
     return 0
 
 

@@ -81,6 +81,9 @@ class OutputFolder:
             raise ParameterError(f"{what} {str(self.target)!r}: {str(anchor)!r} is a file, not a folder; expected a folder")
         self.anchor = anchor
 
+    def __repr__(self) -> str:
+        return f"OutputFolder({str(self.target)!r}, force={self.force})"
+
     def expect(self, names: list[str]) -> None:
         """Refuse now if any of ``names`` exists in the target folder and ``force`` is not set."""
         existing = [n for n in names if (self.target / n).exists()]
