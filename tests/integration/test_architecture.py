@@ -33,10 +33,12 @@ LAYERS = {
     "identification": 6,
     "io": 7,
     "plotting": 7,
+    "codegen": 7,
     "validation": 8,
-    "cli": 9,
-    "__init__": 10,
-    "__main__": 10,
+    "workflows": 9,
+    "cli": 10,
+    "__init__": 11,
+    "__main__": 11,
 }
 
 #: Upward imports allowed inside functions: (importing module, imported top-level package).
