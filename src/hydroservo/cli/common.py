@@ -1,6 +1,9 @@
-"""What every command group shares: reading lists of numbers, output folders, JSON output.
+"""What every command group shares: reading lists of numbers, output folders, running a workflow, JSON output.
 
-NumPy is imported by the functions that need it, so that building the parser stays fast.
+A command parses its options into a workflow (:mod:`hydroservo.workflows`) and hands it to
+:func:`execute`, which makes the output folder (refusing names already there before any work), runs
+it, prints its warnings, writes its files and prints its report. NumPy and the workflows are imported
+by the functions that need them, so that building the parser stays fast.
 """
 
 from __future__ import annotations
@@ -15,8 +18,12 @@ if TYPE_CHECKING:
     import numpy as np
 
     from hydroservo.io.files import OutputFolder
+    from hydroservo.workflows.base import Workflow
 
-__all__ = ["numbers", "frequencies", "component_inputs", "add_output_options", "output_folder", "print_json"]
+__all__ = [
+    "numbers", "frequencies", "component_inputs", "add_output_options", "output_folder", "print_json", "execute",
+    "stage_printer",
+]
 
 
 #: Most frequencies one command computes (each is a periodic orbit per amplitude).
@@ -93,22 +100,44 @@ def add_output_options(p: Any, default: str) -> None:
 
 
 def output_folder(args: Any, default: str) -> OutputFolder:
-    """The command's output folder, written all or nothing, nothing replaced unasked.
+    """The command's output folder (``--out``, ``--force``; :func:`hydroservo.workflows.base.output_folder`)."""
+    from hydroservo.workflows.base import output_folder as folder
 
-    ``--out DIR`` is used as given (files already in it are replaced only with
-    ``--force``); without it, a fresh folder: ``default``, or ``default-2``,
-    ``default-3``, ... if it exists, so repeated runs never collide.
-    """
-    from hydroservo.io.files import OutputFolder, safe_name
+    return folder(args.out, default, force=args.force)
 
-    if args.out:
-        return OutputFolder(Path(args.out), force=args.force)
-    base = safe_name(default)
-    target, n = Path(base), 1
-    while target.exists() and not args.force:
-        n += 1
-        target = Path(f"{base}-{n}")
-    return OutputFolder(target, force=args.force, what="output folder")
+
+def stage_printer(args: Any) -> Any:
+    """A progress callback printing each stage on stderr (``  running ... ...``), or None with ``--json``."""
+    import sys
+
+    if getattr(args, "json", False):
+        return None
+
+    def progress(text: str) -> None:
+        print(f"  {text} ...", file=sys.stderr, flush=True)
+
+    return progress
+
+
+def execute(job: Workflow, args: Any, progress: Any = None) -> int:
+    """Run a command's workflow: the folder first (nothing there replaced unasked, refused before the work),
+    then the run, its warnings on stderr, its files, and its report on stdout (JSON with ``--json``)."""
+    import sys
+
+    names = job.planned()
+    out = output_folder(args, job.folder()) if names else None
+    if out is not None:
+        out.expect(names)
+    report = job.run(progress=progress, folder=None if out is None else out.target)
+    for text in report.warnings:
+        print(f"hydroservo: warning: {text}", file=sys.stderr)
+    if out is not None:
+        report.write(out)
+    if getattr(args, "json", False):
+        print(report.to_json())
+    else:
+        print("\n".join(report.lines()))
+    return report.exit_code()
 
 
 def print_json(data: Any) -> None:

@@ -94,6 +94,11 @@ class Report:
         """The files the report writes: names and writers (none by default)."""
         return []
 
+    def exit_code(self) -> int:
+        """The command's exit code: 0, or 1 where the report found what its command exists to catch
+        (a validation verdict that changed)."""
+        return 0
+
     def document(self) -> Page:
         """The report as a page (:mod:`hydroservo.io.html`): by default its title, its lines and its warnings."""
         from hydroservo.io.html import Notice, Page, Section, Text
@@ -173,7 +178,9 @@ class Workflow:
         one refuses before the work, not after."""
         return []
 
-    def run(self, progress: Progress | None = None) -> Report:
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> Report:
+        """Do the task. ``progress(text)`` hears of each stage of a long one; ``folder`` is where the report's
+        files will go, for a workflow that writes as it runs (a study's runs, resumable; an export)."""
         raise NotImplementedError
 
 

@@ -1,0 +1,247 @@
+"""The linear model of a system at an operating point, its modes and valve coefficients (``hydroservo linearize``).
+
+>>> from hydroservo.workflows import linear
+>>> report = linear.run("robot-arm", t="0.35 s", free=["load.x"], write=False)
+>>> len(report.model.states), report.model.inputs
+(5, ['spool.u', 'load.F_ext'])
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, ClassVar
+
+from hydroservo.errors import ParameterError, shorten
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from hydroservo.analysis.frequency import FrequencyResponse
+    from hydroservo.analysis.linear import LinearModel, ValveCoefficients
+    from hydroservo.system.system import System
+
+__all__ = ["Linearize", "LinearReport", "run", "operating_point"]
+
+
+def operating_point(at: str | Mapping[str, Any] | Path, what: str = "--at") -> Any:
+    """``"trim"``, ``"initial"``, ``"STATE=VALUE,..."``, a mapping of states, or an operating-point file (TOML)."""
+    from hydroservo.io import read_operating_point
+
+    if isinstance(at, Mapping):
+        return dict(at)
+    text = str(at)
+    if text in ("trim", "initial"):
+        return text
+    if "=" in text and not Path(text).exists():
+        point = {}
+        for item in text.split(","):
+            if "=" not in item:
+                raise ParameterError(
+                    f"{what} {shorten(text)!r}: {shorten(item)!r}: expected STATE=VALUE, e.g. cyl.pA=6.5bar"
+                )
+            key, val = item.split("=", 1)
+            point[key.strip()] = val.strip()
+        return point
+    return read_operating_point(text)
+
+
+@dataclass
+class LinearReport(Report):
+    """A linear model with its modes, the valves' coefficients, and optionally the simulated sines beside it."""
+
+    command: ClassVar[str] = "linearize"
+
+    system: System
+    model: LinearModel
+    valves: list[ValveCoefficients]
+    frequencies: np.ndarray | None = None  #: [Hz], of the Bode plot and the JSON's frequency response
+    simulated: FrequencyResponse | None = None
+    write_files: bool = True
+
+    def title(self) -> str:
+        return f"{self.model.name}: linear model at {self.model.info.get('at', '')} (t = {self.model.t:g} s)"
+
+    def _stem(self) -> str:
+        return safe_name(self.system.name)
+
+    def artifacts(self) -> list[Artifact]:
+        if not self.write_files:
+            return []
+        import numpy as np
+
+        from hydroservo.io import write_linear_model
+        from hydroservo.plotting.linear import plot_linear_bode, plot_poles
+
+        lin, name = self.model, self._stem()
+        grid = self.frequencies if self.frequencies is not None else np.logspace(-1, 3, 400)
+        pairs = [(i, o) for i in lin.inputs[:1] for o in lin.outputs[:4]]
+        out = [
+            Artifact("json", f"{name}-linear.json",
+                     lambda p: write_linear_model(lin, p, {"valves": [v.to_dict() for v in self.valves]})),
+            Artifact("poles", f"{name}-poles.png", lambda p: plot_poles(lin, file=p)),
+            Artifact("bode", f"{name}-bode.png", lambda p: plot_linear_bode(lin, grid, pairs, file=p)),
+        ]
+        sim = self.simulated
+        if sim is not None:
+            def bode_simulated(path: Path) -> None:
+                linear_fr = lin.bode(sim.frequencies, lin.inputs[0], lin.outputs[0])
+                sim.plot([linear_fr], file=path,
+                         title=f"{lin.outputs[0]} / {lin.inputs[0]}: simulated sines (markers) and the linear model")
+
+            out.append(Artifact("bode_simulated", f"{name}-bode-simulated.png", bode_simulated))
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        lin, f, sim = self.model, self.frequencies, self.simulated
+        report = {**lin.to_dict(), "valves": [v.to_dict() for v in self.valves]}
+        if f is not None:
+            report["frequency_response"] = [
+                {"input": i, "output": o, "frequencies_Hz": f.tolist(),
+                 "real": (H := lin.transfer(f, i, o)).real.tolist(), "imag": H.imag.tolist()}
+                for i in lin.inputs for o in lin.outputs
+            ]
+        if sim is not None:
+            report["simulated_response"] = {
+                "input": lin.inputs[0], "output": lin.outputs[0], "amplitudes": sim.amplitudes.tolist(),
+                "frequencies_Hz": sim.frequencies.tolist(), "gain_dB": sim.gain_db.tolist(),
+                "phase_deg": sim.phase_deg.tolist(),
+                "linear_gain_dB": lin.bode(sim.frequencies, lin.inputs[0], lin.outputs[0]).gain_db[0].tolist(),
+                **({"note": sim.info["not_run"]} if "not_run" in sim.info else {}),
+            }
+        if self.files:
+            report["files"] = self.files
+        return report
+
+    def lines(self) -> list[str]:
+        from hydroservo.units import si_unit
+
+        lin = self.model
+        out = [self.title() + (f", steady motion of {', '.join(lin.info['free'])}" if lin.info.get("free") else "")]
+        out.append(f"  {len(lin.states)} states, {len(lin.inputs)} inputs ({', '.join(lin.inputs)}), "
+                   f"{len(lin.outputs)} outputs")
+        out.append("  operating point:")
+        for s, v in lin.x0.items():
+            drift = lin.drift[s]
+            moving = f"   (rate {drift:.4g} {si_unit(lin.units[s])}/s)" if abs(drift) > 1e-9 * max(1.0, abs(v)) else ""
+            out.append(f"    {s:<24} {v:>12.5g} {si_unit(lin.units[s])}{moving}")
+        out.append("  modes (slowest first):")
+        out.append(f"    {'pole [1/s]':>26}  {'f_n [Hz]':>9}  {'damping':>7}  {'tau [s]':>9}  states taking part")
+        for m in lin.modes():
+            lam = m.eigenvalue
+            pole = f"{lam.real + 0.0:.4g}" + (f" ± {abs(lam.imag):.4g}j" if m.oscillatory else "")
+            zeta = "   -   " if m.damping != m.damping else f"{m.damping:7.3f}"
+            tau = f"{m.time_constant:9.3g}" if abs(m.time_constant) < 1e12 else "      inf"
+            parts = ", ".join(f"{s} {100 * m.participation[s]:.0f}%" for s in m.main_states(0.1))
+            out.append(f"    {pole:>26}  {m.frequency:9.4g}  {zeta}  {tau}  {parts}")
+        for vc in self.valves:
+            out.append(
+                f"  valve {vc.valve} at x_v = {vc.point['xv'] * 1e3:.4g} mm, p_A = {vc.point['pA'] / 1e5:.4g} bar, "
+                f"p_B = {vc.point['pB'] / 1e5:.4g} bar ([Efe2014] eqs. 4.8-4.12; closed form in parentheses):"
+            )
+            for key, unit in (("K_Qx", "m^2/s"), ("K_Qp", "m^3/(s Pa)"), ("K_px", "Pa/m")):
+                for side in ("A", "B"):
+                    k = f"{key}_{side}"
+                    closed = f"  ({vc.closed_form[k]:.4g})" if vc.closed_form else ""
+                    out.append(f"    {k:<7} {vc.model[k]:>11.4g}{closed} {unit}")
+        for what, path in self.files.items():
+            out.append(f"  {what}: {path}")
+        sim = self.simulated
+        if sim is not None:
+            linear = lin.bode(sim.frequencies, lin.inputs[0], lin.outputs[0])
+            out.append(f"  {lin.outputs[0]} / {lin.inputs[0]}, simulated sines against the linear model [dB]:")
+            out.append("    " + "f [Hz]".rjust(8) + "linear".rjust(10)
+                       + "".join(f"{'A=' + format(a, 'g'):>12}" for a in sim.amplitudes))
+            for j, fk in enumerate(sim.frequencies):
+                out.append("    " + f"{fk:8.3g}" + f"{linear.gain_db[0, j]:10.2f}"
+                           + "".join(f"{sim.gain_db[i, j]:12.2f}" for i in range(sim.amplitudes.size)))
+            if "not_run" in sim.info:
+                out.append(f"    note: {sim.info['not_run']}")
+        return out
+
+
+@dataclass
+class Linearize(Workflow):
+    """The linear model of ``model`` at an operating point.
+
+    Parameters
+    ----------
+    model : str, Path or System
+        A built-in model's name, a model file or a system.
+    sets : list of "COMPONENT.PARAMETER=VALUE" or dict, optional
+        Changes to its parameters first.
+    at : str, mapping or Path
+        ``"trim"`` (an equilibrium, default), ``"initial"``, ``"STATE=VALUE,..."``, a mapping of states, or an
+        operating-point file.
+    t : float or str
+        Time of the operating point [s] (the signals' values then).
+    free : list of str
+        States the trim leaves free: a steady motion.
+    inputs, outputs : list of str, optional
+        Component inputs or parameters; states, outputs or aliases (default: the signal-block inputs; the states).
+    frequencies : array, optional
+        [Hz] of the Bode plot and of the JSON's frequency response.
+    simulate : list of float, optional
+        Amplitudes (the first input's unit) of sines run through the nonlinear system beside the linear model.
+    write : bool
+        Whether the report writes its files (the model as JSON, the poles and the Bode plots).
+    """
+
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
+
+    model: str | Path | System
+    sets: Sequence[str] | Mapping[str, Any] | None = None
+    at: str | Mapping[str, Any] | Path = "trim"
+    t: float | str = 0.0
+    free: Sequence[str] = ()
+    inputs: Sequence[str] | None = None
+    outputs: Sequence[str] | None = None
+    frequencies: Sequence[float] | np.ndarray | None = None
+    simulate: Sequence[float] | None = None
+    write: bool = True
+    point: Any = field(init=False, repr=False)
+
+    def __post_init__(self) -> None:
+        import numpy as np
+
+        from hydroservo.units import to_si
+
+        self.system = load_with_sets(self.model, self.sets, self.name("sets"))
+        self.point = operating_point(self.at, self.name("at"))
+        self.time = to_si(self.t, "s", what=self.name("t"))
+        self.grid = None if self.frequencies is None else np.asarray(self.frequencies, dtype=float)
+
+    def folder(self) -> str:
+        return f"hydroservo-{safe_name(self.system.name)}-linear"
+
+    def planned(self) -> list[str]:
+        if not self.write:
+            return []
+        name = safe_name(self.system.name)
+        names = [f"{name}-linear.json", f"{name}-poles.png", f"{name}-bode.png"]
+        return names + ([f"{name}-bode-simulated.png"] if self.simulate else [])
+
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> LinearReport:
+        import numpy as np
+
+        from hydroservo.analysis.linear import linearize, simulated_response, valve_coefficients
+
+        lin = linearize(
+            self.system, self.point, inputs=None if self.inputs is None else list(self.inputs),
+            outputs=None if self.outputs is None else list(self.outputs), t=self.time, free=list(self.free),
+        )
+        valves = valve_coefficients(self.system, lin.x0, t=self.time)
+        simulated = None
+        if self.simulate:
+            grid_sim = self.grid if self.grid is not None else np.logspace(0, 2, 9)
+            simulated = simulated_response(
+                self.system, lin, grid_sim, list(self.simulate), input=lin.inputs[0], output=lin.outputs[0]
+            )
+        return LinearReport(self.system, lin, valves, self.grid, simulated, self.write)
+
+
+def run(model: str | Path | System, **inputs: Any) -> LinearReport:
+    """The linear model of ``model`` (:class:`Linearize`'s inputs as keywords)."""
+    return Linearize(model, **inputs).run()

@@ -1,0 +1,265 @@
+"""Simulate a built-in model or a model file, as ``hydroservo simulate`` does.
+
+>>> from hydroservo.workflows import simulate
+>>> report = simulate.run("flight-simulator", t_end="0.2 s", points=51, write="none")
+>>> report.lines()[0].startswith("simulated 'flight-simulator' for 0.2 s")
+True
+>>> sorted(report.to_dict())
+['files', 'model', 'signals', 'solver', 't_end_s', 'wall_time_s', 'warnings']
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, ClassVar
+
+from hydroservo.errors import HydroservoError, ImplausibleResultError, ParameterError, shorten
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
+
+if TYPE_CHECKING:
+    from hydroservo.system.result import Result
+    from hydroservo.system.system import System
+
+__all__ = ["Simulate", "SimulationReport", "run", "WRITABLE", "accuracy_of"]
+
+#: The files a simulation writes, by the name ``write`` gives them.
+WRITABLE = ("csv", "png", "mat")
+
+
+def accuracy_of(text: float | str | None, what: str = "--accuracy") -> float | None:
+    """An accuracy: a fraction (``1e-3``) or a percentage (``"0.1%"``) of each signal's range."""
+    if text is None or isinstance(text, float | int):
+        return None if text is None else float(text)
+    stripped = text.strip()
+    try:
+        return float(stripped[:-1]) / 100 if stripped.endswith("%") else float(stripped)
+    except ValueError:
+        raise ParameterError(
+            f"{what} {shorten(text)!r}: expected a fraction of each signal's range, e.g. 1e-3 or 0.1%"
+        ) from None
+
+
+@dataclass
+class SimulationReport(Report):
+    """One run of a system: its result, how long it took, and the files it writes (csv, png, mat)."""
+
+    command: ClassVar[str] = "simulate"
+
+    system: System
+    result: Result
+    t_end: float  #: [s]
+    wall_time: float  #: the whole run, model build included [s]
+    kinds: list[str] = field(default_factory=lambda: ["csv", "png"])
+    #: the changes made to the model (``COMPONENT.PARAMETER=VALUE``), for the plot's title
+    changes: list[str] = field(default_factory=list)
+
+    def title(self) -> str:
+        return f"{self.system.name}: simulated response" + (f" ({', '.join(self.changes)})" if self.changes else "")
+
+    def lines(self) -> list[str]:
+        result = self.result
+        out = [
+            f"simulated {self.system.name!r} for {self.t_end:g} s in {self.wall_time * 1e3:.1f} ms "
+            f"(integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps)"
+        ]
+        rows = [(n, s["unit"], s["final"], s["min"], s["max"]) for n, s in result.summary().items()]
+        w = max(len(r[0]) for r in rows)
+        out.append(f"{'signal'.ljust(w)}  {'unit':>8}  {'final':>12}  {'min':>12}  {'max':>12}")
+        for n, unit, fin, lo, hi in rows:
+            out.append(f"{n.ljust(w)}  {unit:>8}  {fin:>12.5g}  {lo:>12.5g}  {hi:>12.5g}")
+        if self.files:
+            out.append(f"wrote {' and '.join(self.files.values())}")
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        result = self.result
+        solver = {k: v for k, v in result.stats.items() if k != "wall_time_s"}
+        solver["integration_wall_time_s"] = result.stats["wall_time_s"]
+        own = [str(w) for w in result.warnings]
+        return {
+            "model": self.system.name,
+            "t_end_s": self.t_end,
+            "signals": result.summary(),
+            "solver": solver,
+            "wall_time_s": self.wall_time,
+            "warnings": [w.to_dict() for w in result.warnings]
+            + [{"message": text} for text in self.warnings if text not in own],
+            "files": self.files,
+        }
+
+    def artifacts(self) -> list[Artifact]:
+        name = safe_name(self.system.name)
+        writers = {
+            "csv": self.result.to_csv,
+            "mat": self.result.to_mat,
+            "png": lambda path: self.result.plot(units=self.system.plot_units, file=path, title=self.title()),
+        }
+        return [Artifact(kind, f"{name}.{kind}", writers[kind]) for kind in self.kinds]
+
+
+def _warnings(result: Result) -> list[str]:
+    """The physical bounds the run crossed, and signals (such as aliases) that are not finite."""
+    import numpy as np
+
+    found = [str(w) for w in result.warnings]
+    for name, values in result.data.items():
+        bad = ~np.isfinite(values)
+        if bad.any():
+            found.append(f"{name} is NaN or infinite from t = {result.t[int(np.argmax(bad))]:.6g} s")
+    return found
+
+
+@dataclass
+class Simulate(Workflow):
+    """A run of ``model`` (a built-in model's name, a model file, or a :class:`~hydroservo.system.System`).
+
+    Parameters
+    ----------
+    model : str, Path or System
+        What to simulate.
+    sets : list of "COMPONENT.PARAMETER=VALUE" or dict, optional
+        Changes to its parameters and options, with units (``{"load.W": "3000 lbf"}``).
+    t_end : float or str, optional
+        Duration [s] (``"500 ms"``); default the model's.
+    points : int
+        Number of output times.
+    initial : {"parameters", "trim"}
+        Initial state from the parameters, or from an equilibrium.
+    accuracy : float or str, optional
+        Deviation wanted, relative to each signal's range (``1e-3`` or ``"0.1%"``); or ``rtol``.
+    rtol : float, optional
+        Relative tolerance (absolute: rtol/100).
+    strict : bool
+        Refuse a physically implausible result (:class:`~hydroservo.errors.ImplausibleResultError`).
+    write : str or list of str, optional
+        Files the report writes: some of ``csv``, ``png``, ``mat``, or ``"none"`` (default csv and png).
+    """
+
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
+
+    model: str | Path | System
+    sets: Sequence[str] | Mapping[str, Any] | None = None
+    t_end: float | str | None = None
+    points: int = 1001
+    initial: str = "parameters"
+    accuracy: float | str | None = None
+    rtol: float | None = None
+    strict: bool = False
+    write: str | Sequence[str] | None = None
+
+    def __post_init__(self) -> None:
+        from hydroservo.units import to_si
+
+        self._check_solver_options()
+        self.kinds = self._kinds()
+        self.system = load_with_sets(self.model, self.sets, self.name("sets"))
+        if self.t_end is None:
+            self.duration = self.system.t_end
+        else:
+            self.duration = to_si(self.t_end, "s", what=self.name("t_end"))
+            if not (math.isfinite(self.duration) and self.duration > 0):
+                raise ParameterError(f"{self.name('t_end')} {self.t_end}: expected a positive, finite duration")
+        if self.initial not in ("parameters", "trim"):
+            raise ParameterError(f"{self.name('initial')} {self.initial!r}: expected 'parameters' or 'trim'")
+
+    def _check_solver_options(self) -> None:
+        """Refuse rtol, accuracy and points before anything is loaded or built."""
+        from hydroservo.system.integration import MAX_POINTS, SolverSettings
+
+        if self.rtol is not None and self.accuracy is not None:
+            raise ParameterError(
+                f"{self.name('rtol')} {self.rtol:g} and {self.name('accuracy')} {self.accuracy}: "
+                "give one of them, not both"
+            )
+        self.accuracy_value = accuracy_of(self.accuracy, self.name("accuracy"))
+        try:
+            SolverSettings.of(rtol=self.rtol, accuracy=self.accuracy_value)
+        except ParameterError as exc:
+            option = (
+                f"{self.name('rtol')} {self.rtol:g}" if self.rtol is not None
+                else f"{self.name('accuracy')} {self.accuracy}"
+            )
+            raise ParameterError(f"{option}: {str(exc).split(': ', 1)[-1]}") from None
+        if not 2 <= self.points <= MAX_POINTS:
+            raise ParameterError(
+                f"{self.name('points')} {self.points}: expected a whole number of output times from 2 to {MAX_POINTS}"
+            )
+
+    def _kinds(self) -> list[str]:
+        if self.write is None:
+            return ["csv", "png"]
+        text = self.write if isinstance(self.write, str) else ",".join(self.write)
+        kinds = [k.strip().lower() for k in text.split(",") if k.strip()]
+        if kinds == ["none"]:
+            return []
+        wrong = [k for k in kinds if k not in WRITABLE]
+        if wrong or not kinds:
+            raise ParameterError(
+                f"{self.name('write')} {shorten(text)!r}: expected 'none' or a comma-separated list of "
+                f"{', '.join(WRITABLE)}"
+            )
+        return list(dict.fromkeys(kinds))
+
+    def folder(self) -> str:
+        return f"hydroservo-{safe_name(self.system.name)}"
+
+    def planned(self) -> list[str]:
+        return [f"{safe_name(self.system.name)}.{kind}" for kind in self.kinds]
+
+    def _check_plots(self) -> None:
+        """Refuse, before the run, plot panels naming unknown signals and plot units of the wrong dimension."""
+        from hydroservo.units import from_si
+
+        system = self.system
+        model = system.build()
+        signals = set(model.state_names) | set(model.output_names)
+        where = system.source or system.name
+        for name in (n for panel in system.plots for n in panel):
+            if name not in signals:
+                raise ParameterError(f"{where}: [model] plots: no signal {name!r}; signals: {', '.join(sorted(signals))}")
+        for name, unit in system.plot_units.items():
+            if name not in signals:
+                raise ParameterError(f"{where}: [model] plot_units: no signal {name!r}")
+            try:
+                from_si(1.0, model.units.get(name, ""), unit)
+            except HydroservoError as exc:
+                raise ParameterError(f"{where}: [model] plot_units {name} = {unit!r}: {exc}") from None
+
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> SimulationReport:
+        if self.system.plots and "png" in self.kinds:
+            self._check_plots()
+        start = time.perf_counter()
+        result = self.system.simulate(
+            t_end=self.duration, n_points=self.points, initial=self.initial, rtol=self.rtol,
+            accuracy=self.accuracy_value,
+        )
+        wall = time.perf_counter() - start
+        found = _warnings(result)
+        if self.strict and found:
+            lines = "\n  ".join(found)
+            raise ImplausibleResultError(
+                f"{self.name('strict')}: the result of {result.model!r} is physically implausible "
+                f"({len(found)} warning(s); margins: docs/reliability.md):\n  {lines}"
+            )
+        changes = _shown_sets(self.sets)
+        return SimulationReport(
+            self.system, result, self.duration, wall, list(self.kinds), changes, warnings=found
+        )
+
+
+def _shown_sets(sets: Sequence[str] | Mapping[str, Any] | None) -> list[str]:
+    """The changes as ``COMPONENT.PARAMETER=VALUE`` texts, for titles."""
+    if not sets:
+        return []
+    if isinstance(sets, Mapping):
+        return [f"{k}={v}" for k, v in sets.items()]
+    return [s.strip() for s in sets]
+
+
+def run(model: str | Path | System, **inputs: Any) -> SimulationReport:
+    """Simulate ``model`` (:class:`Simulate`'s inputs as keywords) and return the report."""
+    return Simulate(model, **inputs).run()
