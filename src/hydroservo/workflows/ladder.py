@@ -1,0 +1,187 @@
+"""The model-fidelity ladder of a system and its error table ([Efe2014] Table 5.3), as ``hydroservo ladder`` runs it.
+
+>>> from hydroservo.workflows import ladder
+>>> report = ladder.run("robot-arm", steps=[0.368], models=["nonlinear", "linear"], points=101)
+>>> list(report.ladder.table.index)
+['nonlinear', 'linear', 'improved nonlinear', 'improved linear']
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, ClassVar
+
+from hydroservo.errors import ParameterError
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
+
+if TYPE_CHECKING:
+    from hydroservo.analysis.ladder import LadderTable
+    from hydroservo.system.system import System
+
+__all__ = ["Ladder", "LadderReport", "run"]
+
+#: A measured response: a file (time [s] in column 0, the output in column 1), a file and its column, or (t, y).
+Measured = str | Path | tuple[Any, Any]
+
+
+@dataclass
+class LadderReport(Report):
+    """Every rung's response at each step, its error against the reference, its class and its cost."""
+
+    command: ClassVar[str] = "ladder"
+
+    system: System
+    ladder: LadderTable
+    t: float  #: time of the operating point [s]
+    free: list[str]
+    unit: str  #: the output's unit (SI)
+
+    def title(self) -> str:
+        lad = self.ladder
+        return (f"{self.system.name}: model-fidelity ladder, linearised at the steady motion at t = {self.t:g} s "
+                f"(free: {', '.join(self.free) or 'none'}); steps of {lad.parameter}; {lad.output} against "
+                f"{lad.reference}")
+
+    def artifacts(self) -> list[Artifact]:
+        from hydroservo.plotting.ladder import plot_ladder_classes, plot_ladder_responses
+
+        lad = self.ladder
+        return [
+            Artifact("ladder.csv", "ladder.csv", lambda p: lad.table.to_csv(p)),
+            Artifact("ladder-responses.png", "ladder-responses.png", lambda p: plot_ladder_responses(
+                lad, unit=self.unit, file=p,
+                title=f"{self.system.name}: {lad.output} of every model at each step of {lad.parameter}")),
+            Artifact("ladder-classes.png", "ladder-classes.png", lambda p: plot_ladder_classes(lad, file=p)),
+        ]
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"model": self.system.name, "operating_point": {"t": self.t, "free": self.free},
+                **self.ladder.to_dict(), "files": self.files}
+
+    def lines(self) -> list[str]:
+        lad = self.ladder
+        out = [self.title()]
+        short = {"accurate": "A", "moderate": "M", "inaccurate": "I", "failed": "F"}
+        out.append("  error against the reference [%] and class (A accurate < 7.5 %, M moderate to 20 %, "
+                   "I inaccurate; * implausible run)")
+        out.append("    " + "model".ljust(30) + "".join(f"{100 * s:>10g} %" for s in lad.steps) + "   cost")
+        for model, row in lad.table.iterrows():
+            cells = ""
+            for s in lad.steps:
+                cls = str(row[f"class {100 * s:g} %"])
+                mark = short.get(cls.split(" ")[0], "?") + ("*" if "implausible" in cls else " ")
+                cells += f"{row[f'error {100 * s:g} % [%]']:+9.1f} {mark}"
+            out.append(f"    {model:<30}{cells}   {int(row['states'])} states, {row['solver steps']:.0f} steps, "
+                       f"{row['wall time [ms]']:.1f} ms")
+        for f, path in self.files.items():
+            out.append(f"  {f}: {path}")
+        return out
+
+
+@dataclass
+class Ladder(Workflow):
+    """Derive the ladder of ``model``, run every rung at each step and classify the errors.
+
+    Parameters
+    ----------
+    model : str, Path or System
+        A built-in model's name, a model file or a system.
+    sets : list of "COMPONENT.PARAMETER=VALUE" or dict, optional
+        Changes to its parameters first.
+    steps : list of float, optional
+        Valve-signal steps as fractions (0 to 1]; default :data:`hydroservo.analysis.ladder.STEPS`.
+    parameter : str, optional
+        What a step sets (default: the amplitude of the first Step or Pulse block).
+    output : str, optional
+        The displacement compared (default: the first alias or position).
+    t : float or str, optional
+        Time of the operating point [s] (default: while the signal is on).
+    free : list of str, optional
+        States free in the operating point (default: the masses' positions, a steady motion).
+    models : list of str, optional
+        Some of :data:`hydroservo.analysis.ladder.RUNGS` (default all).
+    measured : mapping, optional
+        Measured responses, the reference: step (a fraction) -> a CSV file (time [s] in column 0, the output in
+        its unit in column 1), ``(file, column)``, or ``(t, y)`` arrays.
+    points : int
+        Output times per run.
+    """
+
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
+
+    model: str | Path | System
+    sets: Sequence[str] | Mapping[str, Any] | None = None
+    steps: Sequence[float] | None = None
+    parameter: str | None = None
+    output: str | None = None
+    t: float | str | None = None
+    free: Sequence[str] | None = None
+    models: Sequence[str] | None = None
+    measured: Mapping[float, Measured] | None = None
+    points: int = 301
+
+    def __post_init__(self) -> None:
+        from hydroservo.analysis.ladder import RUNGS, STEPS, ladder_defaults
+        from hydroservo.units import to_si
+
+        system = self.system = load_with_sets(self.model, self.sets, self.name("sets"))
+        defaults = ladder_defaults(system)
+        self.stepped = self.parameter or defaults["parameter"]
+        if self.stepped is None:
+            raise ParameterError(
+                f"{system.name}: no Step or Pulse signal block to step; name the parameter with {self.name('parameter')}"
+            )
+        system.parameter_key(self.stepped)
+        self.compared = self.output or defaults["output"]
+        if self.compared is None or self.compared not in system.build().units:
+            raise ParameterError(
+                f"{self.name('output')} {self.compared!r}: expected a signal of {system.name!r} (a state, output or alias)"
+            )
+        self.step_values = list(self.steps) if self.steps else list(STEPS)
+        self.time = to_si(self.t, "s", what=self.name("t")) if self.t is not None else defaults["t"]
+        self.free_states = list(self.free) if self.free is not None else defaults["free"]
+        self.kinds = list(self.models) if self.models else list(RUNGS)
+        for k in self.kinds:
+            if k not in RUNGS:
+                raise ParameterError(
+                    f"{self.name('models')} {','.join(self.kinds)!r}: {k!r} is not a model of the ladder; "
+                    f"expected some of {', '.join(RUNGS)}"
+                )
+        self.reference = self._read_measured()
+
+    def _read_measured(self) -> dict[float, tuple[Any, Any]] | None:
+        from hydroservo.io import read_time_table
+
+        if not self.measured:
+            return None
+        out: dict[float, tuple[Any, Any]] = {}
+        for step, source in self.measured.items():
+            what = f"{self.name('measured')} {100 * step:g}"
+            if isinstance(source, tuple) and len(source) == 2 and not isinstance(source[0], str | Path):
+                out[float(step)] = source
+                continue
+            file, column = (source if isinstance(source, tuple) else (source, 1))
+            out[float(step)] = read_time_table(str(file), column, what=what)
+        return out
+
+    def folder(self) -> str:
+        return f"hydroservo-{safe_name(self.system.name)}-ladder"
+
+    def planned(self) -> list[str]:
+        return ["ladder.csv", "ladder-responses.png", "ladder-classes.png"]
+
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> LadderReport:
+        from hydroservo.analysis.ladder import build_ladder, ladder_table
+
+        rungs = build_ladder(self.system, "trim", t=self.time, free=self.free_states, kinds=self.kinds)
+        table = ladder_table(rungs, self.step_values, parameter=self.stepped, output=self.compared,
+                             n_points=self.points, reference=self.reference)
+        unit = self.system.build().units.get(self.compared, "")
+        return LadderReport(self.system, table, self.time, self.free_states, unit)
+
+
+def run(model: str | Path | System, **inputs: Any) -> LadderReport:
+    """The ladder of ``model`` (:class:`Ladder`'s inputs as keywords)."""
+    return Ladder(model, **inputs).run()
