@@ -9,7 +9,6 @@ by the functions that need them, so that building the parser stays fast.
 from __future__ import annotations
 
 import json
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from hydroservo.errors import ParameterError, shorten

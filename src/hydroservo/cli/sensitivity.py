@@ -1,70 +1,15 @@
-"""``hydroservo sensitivity``: which parameter matters, one at a time or globally (Sobol, Morris)."""
+"""``hydroservo sensitivity``: which parameter matters, one at a time or globally (Sobol, Morris;
+:mod:`hydroservo.workflows.sensitivity`)."""
 
 from __future__ import annotations
 
 import argparse
 import sys
-import time
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, output_folder, print_json
-from hydroservo.cli.models import load_with_sets
-from hydroservo.errors import ParameterError, shorten
+from hydroservo.cli.common import add_output_options, execute
 
 __all__ = ["add_parsers"]
-
-
-def _vary(items: list[str], method: str, levels: int) -> tuple[dict[str, Any], dict[str, tuple[str, str]]]:
-    """``NAME=LOW..HIGH`` (a range) or ``NAME=V1,V2,...`` (levels, one at a time only)."""
-    listed: dict[str, Any] = {}
-    ranges: dict[str, tuple[str, str]] = {}
-    order: list[str] = []
-    if not items:
-        raise ParameterError("--vary: no parameter to vary; expected e.g. --vary 'valve.c_v=1e-4..2e-4'")
-    for item in items:
-        if "=" not in item:
-            raise ParameterError(f"--vary {shorten(item)!r}: expected NAME=LOW..HIGH or NAME=V1,V2,...")
-        name, text = (s.strip() for s in item.split("=", 1))
-        if name in listed or name in ranges:
-            raise ParameterError(f"--vary {name}: given twice")
-        order.append(name)
-        if ".." in text:
-            lo, _, hi = text.partition("..")
-            if not lo.strip() or not hi.strip():
-                raise ParameterError(f"--vary {shorten(item)!r}: expected LOW..HIGH, e.g. 25bar..35bar")
-            ranges[name] = (lo.strip(), hi.strip())
-        else:
-            values = [v.strip() for v in text.split(",") if v.strip()]
-            if len(values) < 2:
-                raise ParameterError(f"--vary {shorten(item)!r}: expected LOW..HIGH or at least two levels V1,V2")
-            if method != "oat":
-                raise ParameterError(
-                    f"--vary {shorten(item)!r}: --method {method} samples ranges; give NAME=LOW..HIGH "
-                    "(levels and options are for --method oat)"
-                )
-            listed[name] = values
-    if method == "oat":
-        for name, (lo, hi) in ranges.items():
-            listed[name] = _spaced(name, lo, hi, levels)
-        return {name: listed[name] for name in order}, {}
-    return {}, ranges
-
-
-def _spaced(name: str, lo: str, hi: str, levels: int) -> list[str]:
-    """``levels`` values evenly spaced from ``lo`` to ``hi``, in their unit."""
-    import numpy as np
-
-    from hydroservo.analysis.sensitivity import bounds
-
-    _, ((a, b),), (unit,) = bounds({name: (_quantity(lo), _quantity(hi))})
-    return [f"{v:.6g} {unit}".strip() for v in np.linspace(a, b, levels)]
-
-
-def _quantity(text: str) -> Any:
-    try:
-        return float(text)
-    except ValueError:
-        return text
 
 
 class _Progress:
@@ -85,123 +30,15 @@ class _Progress:
 
 
 def cmd_sensitivity(args: argparse.Namespace) -> int:
-    from hydroservo.analysis.sensitivity import morris, one_at_a_time, sobol
-    from hydroservo.io.files import safe_name
-    from hydroservo.units import to_si
+    from hydroservo.workflows.sensitivity import Sensitivity
 
-    system = load_with_sets(args.model, args.set)
-    if args.levels is None:
-        args.levels = 4 if args.method == "morris" else 5
-    if args.levels < 2 or (args.method == "morris" and args.levels % 2):
-        raise ParameterError(f"--levels {args.levels}: expected at least 2" + (", even for morris" if args.method == "morris" else ""))
-    factors, ranges = _vary(args.vary, args.method, args.levels)
-    t_end = to_si(args.t_end, "s", what="--t-end") if args.t_end else system.t_end
-    if not t_end > 0:
-        raise ParameterError(f"--t-end {args.t_end}: expected a positive duration")
-    if args.points < 11:
-        raise ParameterError(f"--points {args.points}: expected at least 11")
-    metrics = args.metric or None
-    name = safe_name(system.name)
-    out = output_folder(args, f"hydroservo-{name}-sensitivity")
-    if args.method == "oat":
-        files = ["oat.csv", *(f"oat-{safe_name(f)}.png" for f in factors)]
-        out.expect(files)
-        signals = args.signals.split(",") if args.signals else None
-        study = one_at_a_time(system, factors, metrics=metrics, signals=signals, t_end=t_end, n_points=args.points)
-        with out:
-            study.table.to_csv(out.file("oat.csv"), index=False)
-            for f in study.levels:
-                study.plot(f, signals, units=system.plot_units, file=out.file(f"oat-{safe_name(f)}.png"))
-        written = {f: out.final(f) for f in files}
-        if args.json:
-            print_json({"method": "oat", "table": study.table.to_dict(orient="records"), "files": written})
-        else:
-            _print_oat(study, written)
-        return 0
-    from hydroservo.analysis.metrics import parse_metric
-    from hydroservo.analysis.sensitivity import bounds
-    from hydroservo.io import RunStore
-
-    files = ["indices.csv", "indices.png"]
-    out.expect(files)
-    n = args.n or (256 if args.method == "sobol" else 20)
-    # everything checked before the runs folder is made: a refused study leaves nothing behind
-    bounds({k: (_quantity(lo), _quantity(hi)) for k, (lo, hi) in ranges.items()})
-    for k in ranges:
-        system.parameter_key(k)
-    units = system.build().units
-    for m in metrics or []:
-        parse_metric(m, units, t_end)
-    if args.method == "sobol" and (n < 2 or n & (n - 1)):
-        raise ParameterError(f"--n {n}: sobol: n = {n}: expected a power of two (the base sample), e.g. 256")
-    if args.method == "morris" and n < 2:
-        raise ParameterError(f"--n {n}: morris: expected at least 2 trajectories")
-    fingerprint = {
-        "model": system.name,
-        "parameters": {k: repr(v) for k, v in sorted(system.parameter_values().items())},
-        "method": args.method, "ranges": ranges, "n": n, "levels": args.levels, "seed": args.seed,
-        "metrics": metrics or system.metrics, "t_end": t_end, "points": args.points,
-    }
-    made = not out.target.exists()
-    store = RunStore(out.target / "runs", fingerprint, force=args.force)
-    kwargs: dict[str, Any] = {
-        "metrics": metrics, "t_end": t_end, "n_points": args.points, "seed": args.seed, "store": store,
-        "progress": _Progress(), "chunk": args.chunk, "threads": args.threads, "scheduler": args.scheduler,
-    }
-    start = time.perf_counter()
-    try:
-        if args.method == "sobol":
-            result = sobol(system, ranges, n, **kwargs)
-        else:
-            result = morris(system, ranges, n, levels=args.levels, **kwargs)
-    except BaseException:
-        if not store.parts():  # nothing run yet: leave nothing behind (runs written are kept, to resume)
-            store.remove()
-            if made and out.target.is_dir() and not any(out.target.iterdir()):
-                out.target.rmdir()
-        raise
-    wall = time.perf_counter() - start
-    with out:
-        result.indices.to_csv(out.file("indices.csv"), index=False)
-        result.plot(file=out.file("indices.png"), title=f"{system.name}: {args.method} ({result.runs.stats['runs']} runs)")
-    written = {f: out.final(f) for f in files} | {"runs": str(out.target / "runs")}
-    if args.json:
-        print_json({**result.to_dict(), "wall_time_s": wall, "files": written})
-    else:
-        _print_global(result, written, wall)
-    return 0
-
-
-def _print_oat(study: Any, files: dict[str, str]) -> None:
-    cols = [c for c in study.table.columns if c not in ("factor", "level", "status", "reason")]
-    print(f"{study.model}: one factor at a time")
-    for factor, levels in study.levels.items():
-        rows = study.table[study.table["factor"] == factor]
-        print(f"  {factor}:")
-        for (_, row), level in zip(rows.iterrows(), levels):
-            vals = "  ".join(f"{c.split(' [')[0]} {row[c]:.4g}" for c in cols)
-            flag = "" if row["status"] == "ok" else f"  FAILED: {row['reason']}"
-            print(f"    {level:<24} {vals}{flag}")
-    for f, path in files.items():
-        print(f"  {f}: {path}")
-
-
-def _print_global(result: Any, files: dict[str, str], wall: float) -> None:
-    s = result.runs.stats
-    print(f"{result.method}: {s['runs']} runs ({s['run_now']} now, {s['resumed']} resumed), {s['failed']} failed, "
-          f"{s['implausible']} implausible; {wall:.1f} s, {s['runs_per_s']:.0f} runs/s ({s['where']})")
-    keys = ("S1", "S1_conf", "ST", "ST_conf") if result.method == "sobol" else ("mu_star", "mu_star_conf", "sigma")
-    for metric, rows in result.indices.groupby("metric", sort=False):
-        print(f"  {metric}")
-        for _, r in rows.sort_values(keys[2] if result.method == "sobol" else keys[0], ascending=False).iterrows():
-            if result.method == "sobol":
-                print(f"    {r['parameter']:<24} S1 {r['S1']:6.3f} ± {r['S1_conf']:.3f}   ST {r['ST']:6.3f} ± {r['ST_conf']:.3f}")
-            else:
-                print(f"    {r['parameter']:<24} mu* {r['mu_star']:10.4g} ± {r['mu_star_conf']:.3g}   sigma {r['sigma']:.4g}")
-    for note in result.notes:
-        print(f"  note: {note}")
-    for f, path in files.items():
-        print(f"  {f}: {path}")
+    job = Sensitivity(
+        args.model, args.vary, method=args.method, sets=args.set, n=args.n, levels=args.levels,
+        metrics=args.metric or None, signals=args.signals.split(",") if args.signals else None, t_end=args.t_end,
+        points=args.points, seed=args.seed, threads=args.threads, chunk=args.chunk, scheduler=args.scheduler,
+        force=args.force, runs_progress=_Progress(), cli=True,
+    )
+    return execute(job, args)
 
 
 def add_parsers(sub: Any) -> None:

@@ -25,7 +25,7 @@ import importlib
 from typing import Any
 
 #: The workflow modules, imported on first use.
-MODULES: tuple[str, ...] = ("base", "export", "ladder", "linear", "models", "simulate")
+MODULES: tuple[str, ...] = ("base", "export", "ladder", "linear", "models", "sensitivity", "simulate")
 
 
 def __getattr__(name: str) -> Any:

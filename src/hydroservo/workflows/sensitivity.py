@@ -1,0 +1,351 @@
+"""Which parameter matters: one at a time, Sobol indices or Morris screening (``hydroservo sensitivity``).
+
+What to vary is written as the command takes it: ``"NAME": "LOW..HIGH"`` (a range, with units) or
+``"NAME": "V1,V2,..."`` (levels or option choices, one at a time only); a tuple ``(low, high)`` or a
+list of levels does the same from Python.
+
+>>> from hydroservo.workflows import sensitivity
+>>> report = sensitivity.run("robot-arm", vary={"valve.c_v": "1e-4..2e-4"}, levels=3, points=101)
+>>> list(report.study.levels["valve.c_v"])
+['0.0001', '0.00015', '0.0002']
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, ClassVar
+
+from hydroservo.errors import ParameterError, shorten
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
+
+if TYPE_CHECKING:
+    from hydroservo.analysis.sensitivity import GlobalStudy, OneAtATime
+    from hydroservo.system.system import System
+
+__all__ = ["Sensitivity", "OneAtATimeReport", "GlobalReport", "run", "METHODS"]
+
+#: The methods of a study.
+METHODS = ("oat", "sobol", "morris")
+
+#: ``progress(done, failed, total, elapsed)`` of a global study's runs.
+RunsProgress = Callable[[int, int, int, float], None]
+
+
+def _quantity(text: Any) -> Any:
+    if not isinstance(text, str):
+        return text
+    try:
+        return float(text)
+    except ValueError:
+        return text
+
+
+@dataclass
+class OneAtATimeReport(Report):
+    """The response family and the metrics of each level of each factor ([Efe2014] Figs. 5.14-5.19)."""
+
+    command: ClassVar[str] = "sensitivity"
+
+    system: System
+    study: OneAtATime
+    signals: list[str] | None = None
+
+    def title(self) -> str:
+        return f"{self.study.model}: one factor at a time"
+
+    def artifacts(self) -> list[Artifact]:
+        study = self.study
+        out = [Artifact("oat.csv", "oat.csv", lambda p: study.table.to_csv(p, index=False))]
+        for f in study.levels:
+            name = f"oat-{safe_name(f)}.png"
+            out.append(Artifact(name, name, lambda p, f=f: study.plot(f, self.signals, units=self.system.plot_units,
+                                                                     file=p)))
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"method": "oat", "table": self.study.table.to_dict(orient="records"), "files": self.files}
+
+    def lines(self) -> list[str]:
+        study = self.study
+        cols = [c for c in study.table.columns if c not in ("factor", "level", "status", "reason")]
+        out = [self.title()]
+        for factor, levels in study.levels.items():
+            rows = study.table[study.table["factor"] == factor]
+            out.append(f"  {factor}:")
+            for (_, row), level in zip(rows.iterrows(), levels):
+                vals = "  ".join(f"{c.split(' [')[0]} {row[c]:.4g}" for c in cols)
+                flag = "" if row["status"] == "ok" else f"  FAILED: {row['reason']}"
+                out.append(f"    {level:<24} {vals}{flag}")
+        for f, path in self.files.items():
+            out.append(f"  {f}: {path}")
+        return out
+
+
+@dataclass
+class GlobalReport(Report):
+    """Sobol indices or Morris screening of every metric, with the runs behind them."""
+
+    command: ClassVar[str] = "sensitivity"
+
+    system: System
+    study: GlobalStudy
+    wall_time: float  #: [s]
+    #: where the runs were written as they finished (Parquet parts), if anywhere
+    runs_folder: Path | None = None
+
+    def title(self) -> str:
+        return f"{self.system.name}: {self.study.method} ({self.study.runs.stats['runs']} runs)"
+
+    def artifacts(self) -> list[Artifact]:
+        study = self.study
+        return [
+            Artifact("indices.csv", "indices.csv", lambda p: study.indices.to_csv(p, index=False)),
+            Artifact("indices.png", "indices.png", lambda p: study.plot(file=p, title=self.title())),
+        ]
+
+    def _files(self) -> dict[str, str]:
+        return self.files | ({"runs": str(self.runs_folder)} if self.runs_folder is not None else {})
+
+    def to_dict(self) -> dict[str, Any]:
+        return {**self.study.to_dict(), "wall_time_s": self.wall_time, "files": self._files()}
+
+    def lines(self) -> list[str]:
+        result = self.study
+        s = result.runs.stats
+        out = [f"{result.method}: {s['runs']} runs ({s['run_now']} now, {s['resumed']} resumed), {s['failed']} failed, "
+               f"{s['implausible']} implausible; {self.wall_time:.1f} s, {s['runs_per_s']:.0f} runs/s ({s['where']})"]
+        keys = ("S1", "S1_conf", "ST", "ST_conf") if result.method == "sobol" else ("mu_star", "mu_star_conf", "sigma")
+        for metric, rows in result.indices.groupby("metric", sort=False):
+            out.append(f"  {metric}")
+            for _, r in rows.sort_values(keys[2] if result.method == "sobol" else keys[0], ascending=False).iterrows():
+                if result.method == "sobol":
+                    out.append(f"    {r['parameter']:<24} S1 {r['S1']:6.3f} ± {r['S1_conf']:.3f}   "
+                               f"ST {r['ST']:6.3f} ± {r['ST_conf']:.3f}")
+                else:
+                    out.append(f"    {r['parameter']:<24} mu* {r['mu_star']:10.4g} ± {r['mu_star_conf']:.3g}   "
+                               f"sigma {r['sigma']:.4g}")
+        for note in result.notes:
+            out.append(f"  note: {note}")
+        for f, path in self._files().items():
+            out.append(f"  {f}: {path}")
+        return out
+
+
+@dataclass
+class Sensitivity(Workflow):
+    """Vary parameters of ``model`` and measure each run.
+
+    Parameters
+    ----------
+    model : str, Path or System
+        A built-in model's name, a model file or a system.
+    vary : mapping or list of "NAME=..." texts
+        What to vary (module notes): ranges for every method; levels and option choices for ``oat``.
+    method : {"oat", "sobol", "morris"}
+        One factor at a time (default), Sobol indices or Morris screening.
+    sets : list of "COMPONENT.PARAMETER=VALUE" or dict, optional
+        Changes to its parameters first.
+    n : int, optional
+        Sobol: the base sample, a power of two (runs: n (d + 2); default 256); Morris: trajectories (runs:
+        n (d + 1); default 20).
+    levels : int, optional
+        oat: levels per range (default 5); Morris: grid levels, even (default 4).
+    metrics : list of str, optional
+        Metrics of each run (``"final(x_mm)"``, ``"mean(cyl.pA, 0.4 s, 0.6 s)"``); default the model's.
+    signals : list of str, optional
+        oat: the signals drawn (default the model's panels).
+    t_end : float or str, optional
+        Duration of each run (default the model's).
+    points : int
+        Output times per run.
+    seed : int
+        Seed of the sample (repeatable).
+    threads, chunk : int, optional
+        Local threads (default all cores); runs per chunk (default 128).
+    scheduler : str, optional
+        A Dask scheduler's address to run the chunks on.
+    force : bool
+        Replace the runs of another study found in the folder (otherwise refused).
+    runs_progress : callable, optional
+        ``runs_progress(done, failed, total, elapsed)`` as a global study's runs finish.
+    """
+
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "metrics": "--metric", "levels": "--levels"}
+
+    model: str | Path | System
+    vary: Mapping[str, Any] | Sequence[str] = field(default_factory=dict)
+    method: str = "oat"
+    sets: Sequence[str] | Mapping[str, Any] | None = None
+    n: int | None = None
+    levels: int | None = None
+    metrics: Sequence[str] | None = None
+    signals: Sequence[str] | None = None
+    t_end: float | str | None = None
+    points: int = 301
+    seed: int = 0
+    threads: int | None = None
+    chunk: int | None = None
+    scheduler: str | None = None
+    force: bool = False
+    runs_progress: RunsProgress | None = field(default=None, repr=False)
+
+    def __post_init__(self) -> None:
+        from hydroservo.units import to_si
+
+        if self.method not in METHODS:
+            raise ParameterError(f"{self.name('method')} {self.method!r}: expected one of {', '.join(METHODS)}")
+        self.system = load_with_sets(self.model, self.sets, self.name("sets"))
+        self.grid_levels = self.levels if self.levels is not None else (4 if self.method == "morris" else 5)
+        if self.grid_levels < 2 or (self.method == "morris" and self.grid_levels % 2):
+            raise ParameterError(
+                f"{self.name('levels')} {self.grid_levels}: expected at least 2"
+                + (", even for morris" if self.method == "morris" else "")
+            )
+        self.factors, self.ranges = self._vary()
+        self.duration = to_si(self.t_end, "s", what=self.name("t_end")) if self.t_end else self.system.t_end
+        if not self.duration > 0:
+            raise ParameterError(f"{self.name('t_end')} {self.t_end}: expected a positive duration")
+        if self.points < 11:
+            raise ParameterError(f"{self.name('points')} {self.points}: expected at least 11")
+        if self.method != "oat":
+            self._check_global()
+
+    def _items(self) -> list[tuple[str, Any]]:
+        what = self.name("vary")
+        if isinstance(self.vary, Mapping):
+            return [(str(k).strip(), v) for k, v in self.vary.items()]
+        items, seen = [], set()
+        for item in self.vary:
+            if "=" not in item:
+                raise ParameterError(f"{what} {shorten(item)!r}: expected NAME=LOW..HIGH or NAME=V1,V2,...")
+            name, text = (s.strip() for s in item.split("=", 1))
+            if name in seen:
+                raise ParameterError(f"{what} {name}: given twice")
+            seen.add(name)
+            items.append((name, text))
+        return items
+
+    def _vary(self) -> tuple[dict[str, Any], dict[str, tuple[Any, Any]]]:
+        """(levels of each factor for oat, ranges for sobol and morris), checked."""
+        what = self.name("vary")
+        items = self._items()
+        if not items:
+            raise ParameterError(f"{what}: no parameter to vary; expected e.g. {what} 'valve.c_v=1e-4..2e-4'")
+        listed: dict[str, Any] = {}
+        ranges: dict[str, tuple[Any, Any]] = {}
+        for name, value in items:
+            shown = f"{name}={value if isinstance(value, str) else value!r}"
+            if isinstance(value, str) and ".." in value:
+                lo, _, hi = value.partition("..")
+                if not lo.strip() or not hi.strip():
+                    raise ParameterError(f"{what} {shorten(shown)!r}: expected LOW..HIGH, e.g. 25bar..35bar")
+                ranges[name] = (_quantity(lo.strip()), _quantity(hi.strip()))
+            elif isinstance(value, tuple) and len(value) == 2:
+                ranges[name] = (_quantity(value[0]), _quantity(value[1]))
+            else:
+                values = [v.strip() for v in value.split(",") if v.strip()] if isinstance(value, str) else list(value)
+                if len(values) < 2:
+                    raise ParameterError(
+                        f"{what} {shorten(shown)!r}: expected LOW..HIGH or at least two levels V1,V2"
+                    )
+                if self.method != "oat":
+                    raise ParameterError(
+                        f"{what} {shorten(shown)!r}: {self.name('method')} {self.method} samples ranges; give "
+                        "NAME=LOW..HIGH (levels and options are for --method oat)"
+                    )
+                listed[name] = values
+        if self.method == "oat":
+            for name, (lo, hi) in ranges.items():
+                listed[name] = self._spaced(name, lo, hi)
+            return {name: listed[name] for name, _ in items}, {}
+        return {}, ranges
+
+    def _spaced(self, name: str, lo: Any, hi: Any) -> list[str]:
+        """``levels`` values evenly spaced from ``lo`` to ``hi``, in their unit."""
+        import numpy as np
+
+        from hydroservo.analysis.sensitivity import bounds
+
+        _, ((a, b),), (unit,) = bounds({name: (lo, hi)})
+        return [f"{v:.6g} {unit}".strip() for v in np.linspace(a, b, self.grid_levels)]
+
+    def _check_global(self) -> None:
+        """Everything a global study needs, checked before its runs folder is made (a refusal leaves nothing)."""
+        from hydroservo.analysis.metrics import parse_metric
+        from hydroservo.analysis.sensitivity import bounds
+
+        self.size = self.n or (256 if self.method == "sobol" else 20)
+        bounds(self.ranges)
+        for k in self.ranges:
+            self.system.parameter_key(k)
+        units = self.system.build().units
+        for m in self.metrics or []:
+            parse_metric(m, units, self.duration)
+        n = self.size
+        if self.method == "sobol" and (n < 2 or n & (n - 1)):
+            raise ParameterError(f"{self.name('n')} {n}: sobol: n = {n}: expected a power of two (the base sample), e.g. 256")
+        if self.method == "morris" and n < 2:
+            raise ParameterError(f"{self.name('n')} {n}: morris: expected at least 2 trajectories")
+
+    def folder(self) -> str:
+        return f"hydroservo-{safe_name(self.system.name)}-sensitivity"
+
+    def planned(self) -> list[str]:
+        if self.method == "oat":
+            return ["oat.csv", *(f"oat-{safe_name(f)}.png" for f in self.factors)]
+        return ["indices.csv", "indices.png"]
+
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> OneAtATimeReport | GlobalReport:
+        """Run the study; a global study writes its runs to ``folder``/runs as they finish (the same study run
+        again into the same folder resumes), or keeps them in memory without a folder."""
+        from hydroservo.analysis.sensitivity import one_at_a_time
+
+        metrics = list(self.metrics) if self.metrics else None
+        if self.method == "oat":
+            signals = list(self.signals) if self.signals else None
+            study = one_at_a_time(self.system, self.factors, metrics=metrics, signals=signals, t_end=self.duration,
+                                  n_points=self.points)
+            return OneAtATimeReport(self.system, study, signals)
+        return self._run_global(metrics, folder)
+
+    def _run_global(self, metrics: list[str] | None, folder: Path | None) -> GlobalReport:
+        from hydroservo.analysis.sensitivity import morris, sobol
+        from hydroservo.io import RunStore
+
+        system = self.system
+        store = None
+        made = folder is not None and not folder.exists()
+        if folder is not None:
+            fingerprint = {
+                "model": system.name,
+                "parameters": {k: repr(v) for k, v in sorted(system.parameter_values().items())},
+                "method": self.method, "ranges": self.ranges, "n": self.size, "levels": self.grid_levels,
+                "seed": self.seed, "metrics": metrics or system.metrics, "t_end": self.duration, "points": self.points,
+            }
+            store = RunStore(folder / "runs", fingerprint, force=self.force)
+        kwargs: dict[str, Any] = {
+            "metrics": metrics, "t_end": self.duration, "n_points": self.points, "seed": self.seed, "store": store,
+            "progress": self.runs_progress, "chunk": self.chunk, "threads": self.threads, "scheduler": self.scheduler,
+        }
+        start = time.perf_counter()
+        try:
+            if self.method == "sobol":
+                result = sobol(system, self.ranges, self.size, **kwargs)
+            else:
+                result = morris(system, self.ranges, self.size, levels=self.grid_levels, **kwargs)
+        except BaseException:
+            if store is not None and not store.parts():  # nothing run yet: leave nothing behind (runs are kept)
+                store.remove()
+                if made and folder is not None and folder.is_dir() and not any(folder.iterdir()):
+                    folder.rmdir()
+            raise
+        wall = time.perf_counter() - start
+        return GlobalReport(system, result, wall, None if folder is None else folder / "runs")
+
+
+def run(model: str | Path | System, **inputs: Any) -> OneAtATimeReport | GlobalReport:
+    """The study of ``model`` (:class:`Sensitivity`'s inputs as keywords), its runs kept in memory."""
+    return Sensitivity(model, **inputs).run()
