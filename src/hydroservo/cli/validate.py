@@ -1,31 +1,23 @@
-"""``hydroservo validate``: published figures beside computed ones, one table per source."""
+"""``hydroservo validate``: published figures beside computed ones, one table per source
+(:mod:`hydroservo.workflows.validate`)."""
 
 from __future__ import annotations
 
 import argparse
-import json
 from typing import Any
 
 __all__ = ["add_parsers"]
 
 
 def cmd_validate(args: argparse.Namespace) -> int:
-    from hydroservo.validation import VALIDATIONS, format_checks, markdown, regressions, validate
+    from hydroservo.workflows.validate import Validate
 
-    names = [args.model] if args.model else list(VALIDATIONS)
-    report = {}
-    failed = []
-    for name in names:
-        checks = validate(name)
-        report[name] = [c.as_dict() for c in checks]
-        failed += [f"{name}: {c.row.quantity}" for c in regressions(checks)]
-        if args.markdown:
-            print(f"<!-- validation: {name} -->\n{markdown(checks)}\n<!-- end validation: {name} -->\n")
-        elif not args.json:
-            print(format_checks(name, checks))
-    if args.json:
-        print(json.dumps(report, indent=2))
-    return 1 if failed else 0
+    report = Validate(args.model, cli=True).run()
+    if args.markdown:
+        print(report.markdown())
+    else:
+        print(report.to_json() if args.json else str(report))
+    return report.exit_code()
 
 
 def add_parsers(sub: Any) -> None:
