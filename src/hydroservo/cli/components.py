@@ -1,43 +1,29 @@
-"""``hydroservo components`` and ``describe``: the component reference (thin shell over
-:mod:`hydroservo.components.reference`)."""
+"""``hydroservo components`` and ``describe``: the component reference (:mod:`hydroservo.workflows.components`)."""
 
 from __future__ import annotations
 
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import print_json
+from hydroservo.cli.common import execute
 
 __all__ = ["add_parsers"]
 
 
 def cmd_components(args: argparse.Namespace) -> int:
-    from hydroservo.components.reference import catalogue
+    from hydroservo.workflows.components import Catalogue
 
-    refs = catalogue()
-    if args.json:
-        print_json([{"name": r.name, "kind": r.kind, "summary": r.summary} for r in refs])
-        return 0
-    width = max(len(r.name) for r in refs)
-    kind = None
-    for r in refs:
-        group = r.kind.split(".")[0]
-        if group != kind:
-            print(f"{'' if kind is None else chr(10)}{group}:")
-            kind = group
-        print(f"  {r.name.ljust(width)}  {r.summary}")
-    print("\nhydroservo describe TYPE: equations, parameters, ports and options of one")
-    return 0
+    return execute(Catalogue(cli=True), args)
 
 
 def cmd_describe(args: argparse.Namespace) -> int:
-    from hydroservo.components.reference import reference, text
+    from hydroservo.workflows.components import Describe
 
-    ref = reference(args.type)
+    report = Describe(args.type, cli=True).run()
     if args.json:
-        print_json(ref.to_dict())
-        return 0
-    print(text(ref), end="")
+        print(report.to_json())
+    else:
+        print(report.text(), end="")
     return 0
 
 

@@ -1,25 +1,20 @@
-"""``hydroservo examples DIR``: write the example files the README's commands use."""
+"""``hydroservo examples DIR``: write the example files the README's commands use (:mod:`hydroservo.workflows.examples`)."""
 
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 from typing import Any
 
 __all__ = ["add_parsers"]
 
 
 def cmd_examples(args: argparse.Namespace) -> int:
-    from hydroservo.data import example_files
-    from hydroservo.io.files import OutputFolder
+    from hydroservo.workflows.base import output_folder
+    from hydroservo.workflows.examples import Examples
 
-    files = example_files()
-    out = OutputFolder(Path(args.dir), force=args.force, what="examples")
-    out.expect(list(files))
-    with out:
-        for name, text in files.items():
-            out.file(name).write_text(text, encoding="utf-8")
-    print(f"wrote {len(files)} example files to {args.dir}: {', '.join(files)}")
+    report = Examples(cli=True).run()
+    report.write(output_folder(args.dir, args.dir, force=args.force, what="examples"))
+    print(report)
     return 0
 
 

@@ -1,0 +1,59 @@
+"""The example files the README's commands use (``hydroservo examples DIR``).
+
+>>> from hydroservo.workflows import examples
+>>> "pump_circuit.toml" in examples.run().texts
+True
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, ClassVar
+
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow
+
+__all__ = ["Examples", "ExamplesReport", "run"]
+
+
+@dataclass
+class ExamplesReport(Report):
+    """The example files: model files, a datasheet, synthetic curves and Bode data."""
+
+    command: ClassVar[str] = "examples"
+
+    texts: dict[str, str]
+
+    def title(self) -> str:
+        return "hydroservo's example files"
+
+    def artifacts(self) -> list[Artifact]:
+        return [Artifact(name, name, lambda p, text=text: p.write_text(text, encoding="utf-8"))
+                for name, text in self.texts.items()]
+
+    def lines(self) -> list[str]:
+        folder = str(Path(next(iter(self.files.values()))).parent) if self.files else ""
+        return [f"wrote {len(self.texts)} example files to {folder}: {', '.join(self.texts)}"]
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"files": self.files}
+
+
+@dataclass
+class Examples(Workflow):
+    """The example files (:func:`hydroservo.data.example_files`)."""
+
+    def planned(self) -> list[str]:
+        from hydroservo.data import example_files
+
+        return list(example_files())
+
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> ExamplesReport:
+        from hydroservo.data import example_files
+
+        return ExamplesReport(example_files())
+
+
+def run() -> ExamplesReport:
+    """The example files, ready to :meth:`~hydroservo.workflows.base.Report.write` into a folder."""
+    return Examples().run()
