@@ -32,7 +32,10 @@ from hydroservo.errors import ParameterError
 from hydroservo.io.files import read_text
 from hydroservo.units import from_si, to_si
 
-__all__ = ["read_csv_table", "read_static_curves", "read_bench_curves", "write_bench_curves"]
+__all__ = [
+    "read_csv_table", "read_static_curves", "read_bench_curves", "write_bench_curves", "write_bench_table", "bench_tables",
+    "BENCH_TABLES",
+]
 
 _CURVE_COLUMNS = {"x_s": "", "P_L": "", "q_lk": "m^3/s", "Q_L": "m^3/s"}
 
@@ -185,10 +188,24 @@ def read_bench_curves(paths: Sequence[str | Path]) -> BenchCurves:
     )
 
 
-def write_bench_curves(curves: BenchCurves, folder: str | Path, stem: str = "") -> list[Path]:
-    """Write ``curves`` as ``{stem}flow_gain.csv`` and ``{stem}blocked_ports.csv`` (um, L/min, bar); the paths."""
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
+#: The tables of test-bench curves a folder holds: name -> (openings' attribute, columns and their attributes).
+BENCH_TABLES: dict[str, tuple[str, dict[str, str]]] = {
+    "flow_gain": ("X_flow", {"Q_L [L/min]": "Q_L"}),
+    "blocked_ports": ("X_blocked", {"P_1 [bar]": "P_1", "P_2 [bar]": "P_2", "Q_lk [L/min]": "Q_lk"}),
+}
+
+
+def bench_tables(curves: BenchCurves) -> list[str]:
+    """The names of the tables of :data:`BENCH_TABLES` that ``curves`` holds (a test may be absent)."""
+    return [
+        name for name, (x, cols) in BENCH_TABLES.items()
+        if getattr(curves, x) is not None and any(getattr(curves, c) is not None for c in cols.values())
+    ]
+
+
+def write_bench_table(curves: BenchCurves, name: str, path: str | Path) -> Path:
+    """Write table ``name`` of :data:`BENCH_TABLES` of ``curves`` as CSV (um, L/min, bar) to ``path``."""
+    path = Path(path)
     b = curves.bench
     head = [
         f"# temperature = {curves.temperature!r} degC",
@@ -198,24 +215,19 @@ def write_bench_curves(curves: BenchCurves, folder: str | Path, stem: str = "") 
     ]
     if b.Q_n is not None:
         head.append(f"# Q_n = {from_si(b.Q_n, 'm^3/s', 'L/min')!r} L/min")
-    out = []
-    tables = [
-        ("flow_gain", curves.X_flow, {"Q_L [L/min]": curves.Q_L}),
-        (
-            "blocked_ports",
-            curves.X_blocked,
-            {"P_1 [bar]": curves.P_1, "P_2 [bar]": curves.P_2, "Q_lk [L/min]": curves.Q_lk},
-        ),
-    ]
+    x_name, columns = BENCH_TABLES[name]
+    X = getattr(curves, x_name)
+    cols = {k: getattr(curves, attr) for k, attr in columns.items() if getattr(curves, attr) is not None}
     scale = {"L/min": from_si(1.0, "m^3/s", "L/min"), "bar": 1e-5}
-    for name, X, cols in tables:
-        cols = {k: v for k, v in cols.items() if v is not None}
-        if X is None or not cols:
-            continue
-        path = folder / f"{stem}{name}.csv"
-        lines = head + ["X [um], " + ", ".join(cols)]
-        data = [np.asarray(X) * 1e6] + [np.asarray(v) * scale[k.split("[")[1][:-1]] for k, v in cols.items()]
-        lines += [", ".join(repr(float(x)) for x in row) for row in zip(*data, strict=True)]
-        path.write_text("\n".join(lines) + "\n")
-        out.append(path)
-    return out
+    lines = head + ["X [um], " + ", ".join(cols)]
+    data = [np.asarray(X) * 1e6] + [np.asarray(v) * scale[k.split("[")[1][:-1]] for k, v in cols.items()]
+    lines += [", ".join(repr(float(x)) for x in row) for row in zip(*data, strict=True)]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def write_bench_curves(curves: BenchCurves, folder: str | Path, stem: str = "") -> list[Path]:
+    """Write ``curves`` as ``{stem}flow_gain.csv`` and ``{stem}blocked_ports.csv`` (um, L/min, bar); the paths."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    return [write_bench_table(curves, name, folder / f"{stem}{name}.csv") for name in bench_tables(curves)]

@@ -25,7 +25,7 @@ import importlib
 from typing import Any
 
 #: The workflow modules, imported on first use.
-MODULES: tuple[str, ...] = ("base", "components", "examples", "export", "fluid", "ladder", "linear", "models", "sensitivity", "simulate", "validate")
+MODULES: tuple[str, ...] = ("base", "components", "examples", "export", "fluid", "ladder", "linear", "models", "sensitivity", "simulate", "staged_slot", "validate")
 
 
 def __getattr__(name: str) -> Any:
