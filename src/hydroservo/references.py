@@ -15,7 +15,7 @@ import functools
 import re
 from importlib import resources
 
-__all__ = ["entries", "entry", "keys", "cite"]
+__all__ = ["entries", "entry", "keys", "cite", "cited_in"]
 
 
 @functools.cache
@@ -56,3 +56,19 @@ def cite(key: str) -> str:
     where = e.get("journal") or e.get("booktitle") or e.get("school") or e.get("publisher") or e.get("type")
     parts = [f"{authors} ({e.get('year', 'n.d.')})", e.get("title"), where]
     return ". ".join(p.rstrip(".") for p in parts if p) + "."
+
+
+def cited_in(text: str) -> list[str]:
+    """The keys of the bibliography a text cites in brackets (``[Efe2014] eq. (3.47)``, ``[GordicND, Table 1]``),
+    in the order they first appear.
+
+    >>> cited_in("the flow of [Efe2014] eq. 3.5, after [Merritt1967] and [Efe2014]; not [Nobody2020]")
+    ['Efe2014', 'Merritt1967']
+    """
+    known = entries()
+    found: list[str] = []
+    for match in re.finditer(r"\[([A-Za-z][A-Za-z0-9]*)[\],;]", text):
+        key = match.group(1)
+        if key in known and key not in found:
+            found.append(key)
+    return found

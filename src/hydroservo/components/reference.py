@@ -14,9 +14,10 @@ from typing import Any
 
 from hydroservo.components.base import REGISTRY, SIGNAL, Component, FromSet
 from hydroservo.errors import ParameterError
+from hydroservo.references import cited_in, keys
 from hydroservo.units import si_unit
 
-__all__ = ["Reference", "reference", "catalogue", "text", "markdown"]
+__all__ = ["Reference", "reference", "catalogue", "text", "markdown", "citations"]
 
 #: Constructor arguments that are not parameters, and what they are.
 _ARGUMENTS = {
@@ -152,6 +153,27 @@ def reference(type_name: str | type[Component]) -> Reference:
         ],
         renamed=dict(cls.RENAMED),
     )
+
+
+def citations(component: type[Component] | Component) -> list[str]:
+    """The bibliography entries a component stands on by itself, in the bibliography's order: those the first
+    paragraph of its docstring (what it is and where it comes from) cites, and, for a component, the sources
+    of the parameter sets its defaults come from where it keeps them. The laws its equations call cite their
+    own (:meth:`hydroservo.system.System.references` collects those a system's assembly calls).
+
+    >>> citations(REGISTRY.resolve("TwoStageServovalve"))
+    ['GordicND']
+    """
+    cls = component if isinstance(component, type) else type(component)
+    found = cited_in((inspect.getdoc(cls) or "").split("\n\n")[0])
+    if not isinstance(component, type):
+        from hydroservo.data import parameter_set
+
+        for key, spec in cls.PARAMETERS.items():
+            if isinstance(spec.default, FromSet) and key not in component.explicit:
+                found.append(parameter_set(spec.default.set_name).citation)
+    order = {k: i for i, k in enumerate(keys())}
+    return sorted(set(found) & set(order), key=order.__getitem__)
 
 
 def catalogue() -> list[Reference]:

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import copy
 from collections import OrderedDict
-from collections.abc import Collection, Iterable, Mapping
+from collections.abc import Callable, Collection, Iterable, Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -79,6 +79,27 @@ class CircuitFluid:
         if self.pressure:
             out += f", {text.get('pressure', f'{self.pressure:g} Pa')}"
         return out
+
+
+def _laws_called(build: Callable[[], object]) -> list[Callable[..., object]]:
+    """The functions of :mod:`hydroservo.laws` that ``build()`` calls (directly or through others), in call order."""
+    import sys
+
+    called: dict[Callable[..., object], None] = {}
+
+    def profile(frame: Any, event: str, arg: object) -> None:
+        if event == "call" and frame.f_globals.get("__name__", "").startswith("hydroservo.laws."):
+            function = frame.f_globals.get(frame.f_code.co_name)
+            if callable(function) and getattr(function, "__code__", None) is frame.f_code:
+                called[function] = None
+
+    previous = sys.getprofile()
+    sys.setprofile(profile)
+    try:
+        build()
+    finally:
+        sys.setprofile(previous)
+    return list(called)
 
 
 def split_name(ref: str, what: str) -> tuple[str, str]:
@@ -294,6 +315,41 @@ class System:
     def nodes(self) -> list[Node]:
         """The hydraulic nodes: sets of connected ports."""
         return nodes(self.links)
+
+    def references(self) -> list[str]:
+        """The bibliography entries this system draws on (keys of :mod:`hydroservo.references`), in its order.
+
+        Its source's; every published law its equations call, as the model is assembled (so a cylinder's
+        bulk-modulus law is cited only when it is the one chosen), with the keys its docstring cites; each
+        component's own (:func:`hydroservo.components.reference.citations`: what the component is, the
+        parameter sets its defaults come from); and its fluid's. PyBaMM's citations registry does the same for
+        its models. ``hydroservo.references.cite(key)`` gives each in full.
+
+        Examples
+        --------
+        >>> from hydroservo import System, components as c
+        >>> s = System()
+        >>> _ = s.add(c.Mass("load", m=2.0))
+        >>> s.references()  # the Stribeck friction law
+        ['Efe2014']
+        """
+        import inspect
+
+        from hydroservo.components.reference import citations
+        from hydroservo.references import cited_in, keys
+
+        found = [self.meta["citation"]] if self.meta.get("citation") else []
+        for law in _laws_called(lambda: assemble(self)):
+            found += cited_in(inspect.getdoc(law) or "")
+        for comp in self.components.values():
+            found += citations(comp)
+        if self.fluid is not None:
+            from hydroservo.fluids import get_fluid
+
+            fluid = get_fluid(self.fluid.name)
+            found += cited_in(inspect.getdoc(type(fluid)) or "") + cited_in(getattr(fluid, "description", "") or "")
+        order = {k: i for i, k in enumerate(keys())}
+        return sorted(set(found) & set(order), key=order.__getitem__)
 
     def hydraulic_inputs(self) -> dict[str, list[tuple[float, str]]]:
         """The inputs the hydraulic nodes feed: "comp.input" -> terms (coefficient, "comp.output")

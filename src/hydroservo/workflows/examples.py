@@ -28,8 +28,10 @@ class ExamplesReport(Report):
         return "hydroservo's example files"
 
     def artifacts(self) -> list[Artifact]:
-        return [Artifact(name, name, lambda p, text=text: p.write_text(text, encoding="utf-8"))
-                for name, text in self.texts.items()]
+        def writer(text: str) -> Any:
+            return lambda path: path.write_text(text, encoding="utf-8")
+
+        return [Artifact(name, name, writer(text)) for name, text in self.texts.items()]
 
     def lines(self) -> list[str]:
         folder = str(Path(next(iter(self.files.values()))).parent) if self.files else ""

@@ -59,10 +59,12 @@ class OneAtATimeReport(Report):
     def artifacts(self) -> list[Artifact]:
         study = self.study
         out = [Artifact("oat.csv", "oat.csv", lambda p: study.table.to_csv(p, index=False))]
+        def family(factor: str) -> Any:
+            return lambda path: study.plot(factor, self.signals, units=self.system.plot_units, file=path)
+
         for f in study.levels:
             name = f"oat-{safe_name(f)}.png"
-            out.append(Artifact(name, name, lambda p, f=f: study.plot(f, self.signals, units=self.system.plot_units,
-                                                                     file=p)))
+            out.append(Artifact(name, name, family(f)))
         return out
 
     def to_dict(self) -> dict[str, Any]:

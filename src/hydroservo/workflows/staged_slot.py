@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
@@ -102,8 +103,7 @@ class CharacteristicsReport(Report):
         from hydroservo.plotting import staged_slot as plots
 
         out = [
-            Artifact(f"T{c.temperature:g}_{name}", f"T{c.temperature:g}_{name}.csv",
-                     lambda p, c=c, name=name: write_bench_table(c, name, p))
+            Artifact(f"T{c.temperature:g}_{name}", f"T{c.temperature:g}_{name}.csv", partial(write_bench_table, c, name))
             for c in self.curves for name in bench_tables(c)
         ]
         stem, bench, reference = Path(self.source).stem, self.bench, self.table["reference"]
