@@ -15,6 +15,7 @@ module                 commands
 :mod:`.servovalve`     ``servovalve bench``
 :mod:`.fluid`          ``fluid``
 :mod:`.validate`       ``validate``
+:mod:`.report`         ``report``, ``draw``
 :mod:`.examples`       ``examples``
 =====================  ==========================================================
 
@@ -41,6 +42,7 @@ from hydroservo.cli import (
     ladder,
     linear,
     models,
+    report,
     sensitivity,
     servovalve,
     validate,
@@ -77,6 +79,7 @@ def build_parser() -> argparse.ArgumentParser:
     servovalve.add_parsers(sub)
     fluid.add_parsers(sub)
     validate.add_parsers(sub)
+    report.add_parsers(sub)
     examples.add_parsers(sub)
     return parser
 

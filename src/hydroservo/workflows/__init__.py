@@ -3,8 +3,23 @@
 =========================  ===============================================================
 module                     task (command)
 =========================  ===============================================================
+:mod:`.simulate`           a run of a model (``simulate``)
+:mod:`.report`             one page of a model's run or a result file (``report``)
+:mod:`.draw`               a circuit diagram (``draw``)
+:mod:`.export`             a model written out: a model file (``export``)
+:mod:`.linear`             linear model, modes, valve coefficients (``linearize``)
+:mod:`.ladder`             the model-fidelity ladder (``ladder``)
+:mod:`.sensitivity`        one at a time, Sobol, Morris (``sensitivity``)
+:mod:`.staged_slot`        staged-slot valve characteristics and identification
+                           (``valve characteristics``, ``valve identify``)
+:mod:`.validate`           published figures beside computed ones (``validate``)
+:mod:`.fluid`              fluid properties (``fluid``)
+:mod:`.components`         the component reference (``components``, ``describe``)
+:mod:`.models`             the built-in models (``models``)
+:mod:`.examples`           the example files (``examples``)
 :mod:`.base`               what they share: :class:`~.base.Report`, :class:`~.base.Workflow`,
                            loading a model with changes, output folders
+:mod:`.pages`              the parts of report pages several reports show
 =========================  ===============================================================
 
 A workflow checks its inputs when it is made and does its work in ``run()``,
@@ -25,7 +40,10 @@ import importlib
 from typing import Any
 
 #: The workflow modules, imported on first use.
-MODULES: tuple[str, ...] = ("base", "components", "examples", "export", "fluid", "ladder", "linear", "models", "sensitivity", "simulate", "staged_slot", "validate")
+MODULES: tuple[str, ...] = (
+    "base", "components", "draw", "examples", "export", "fluid", "ladder", "linear", "models", "pages", "report",
+    "sensitivity", "simulate", "staged_slot", "validate",
+)
 
 
 def __getattr__(name: str) -> Any:
