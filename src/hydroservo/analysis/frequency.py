@@ -92,6 +92,44 @@ class FrequencyResponse:
         self.gain_db = np.asarray(self.gain_db, dtype=float).reshape(shape)
         self.phase_deg = np.asarray(self.phase_deg, dtype=float).reshape(shape)
 
+    def crossing(self, level: float, of: str = "gain") -> np.ndarray:
+        """Per amplitude, the first frequency [Hz] at which the gain [dB] (``of="gain"``) or the phase [deg]
+        (``of="phase"``) falls through ``level``.
+
+        Between the last sample above the level and the first at or below it, the frequency is interpolated
+        linearly in log-frequency (as a Bode plot draws it). NaN where the curve never reaches the level, and
+        NaN where its first sample is already at or below it (the crossing lies below the lowest frequency).
+
+        >>> import numpy as np
+        >>> f = np.geomspace(1.0, 1000.0, 61)
+        >>> H = 1 / (1 + 1j * f / 100.0)  # a first-order lag: -3.01 dB and -45 deg at 100 Hz
+        >>> r = FrequencyResponse([1.0], f, 20 * np.log10(abs(H)), np.degrees(np.angle(H)))
+        >>> round(float(r.bandwidth()[0]), 1), round(float(r.crossing(-45.0, of="phase")[0]), 1)
+        (99.7, 100.0)
+        """
+        if of not in ("gain", "phase"):
+            raise ParameterError(f"crossing of {of!r}: expected 'gain' or 'phase'")
+        values = self.gain_db if of == "gain" else self.phase_deg
+        f = self.frequencies
+        out = np.full(self.amplitudes.size, np.nan)
+        for i, row in enumerate(values):
+            below = np.flatnonzero(row <= level)
+            if below.size == 0 or below[0] == 0:
+                continue
+            k = int(below[0])
+            v0, v1 = row[k - 1], row[k]
+            w = (level - v0) / (v1 - v0)
+            out[i] = np.exp(np.log(f[k - 1]) + w * (np.log(f[k]) - np.log(f[k - 1])))
+        return out
+
+    def bandwidth(self, level_db: float = -3.0) -> np.ndarray:
+        """Per amplitude, the frequency [Hz] where the gain falls through ``level_db`` (:meth:`crossing`)."""
+        return self.crossing(level_db, of="gain")
+
+    def phase_crossing(self, deg: float = -90.0) -> np.ndarray:
+        """Per amplitude, the frequency [Hz] where the phase falls through ``deg`` (:meth:`crossing`)."""
+        return self.crossing(deg, of="phase")
+
     def rows(self) -> list[tuple[float, float, float, float]]:
         """(frequency [Hz], amplitude [%], gain [dB], phase [deg]) per point."""
         return [

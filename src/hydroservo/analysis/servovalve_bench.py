@@ -40,6 +40,7 @@ from typing import Any
 
 import numpy as np
 
+from hydroservo.analysis.frequency import FrequencyResponse
 from hydroservo.analysis.step import step_metrics
 from hydroservo.components.base import Component
 from hydroservo.components.signals import Sine, Square, Step, Table
@@ -50,6 +51,8 @@ from hydroservo.errors import ModelError, ParameterError, SolverError, TrimError
 from hydroservo.system.system import System
 
 __all__ = [
+    "BenchConditions",
+    "bench_valve",
     "bench_system",
     "StaticTests",
     "static_tests",
@@ -73,7 +76,9 @@ VALVE = "sv"
 DRIVE = "cur"
 
 
-def _valve(valve: Component | None) -> Component:
+def bench_valve(valve: Component | None) -> Component:
+    """A copy of ``valve`` named as the bench names it (None: Table 1); refused if it is not a servovalve (a current
+    input ``i``, hydraulic ports P, T, A, B)."""
     if valve is None:
         valve = TwoStageServovalve(VALVE)
     needed = {"i"} <= set(valve.INPUTS) and {"P", "T", "A", "B"} <= set(valve.HYDRAULIC)
@@ -87,19 +92,73 @@ def _valve(valve: Component | None) -> Component:
     return new
 
 
-def bench_system(
-    valve: Component | None,
-    drive: Component,
-    p_s: float = 210e5,
-    p_0: float = 1e5,
-    load: str = "none",
-) -> System:
+@dataclass(frozen=True)
+class BenchConditions:
+    """A servovalve on the test bench: the valve, its supply and return pressures and its rated current.
+
+    The one place these are checked; every test of this module takes one (None: :class:`TwoStageServovalve`
+    with Table 1 of [GordicND] at 210 bar and 10 mA, returning to 1 bar absolute).
+
+    Attributes
+    ----------
+    valve : Component
+        The servovalve: a current input ``i`` and hydraulic ports P, T, A, B.
+    p_s : float
+        Supply pressure, absolute [Pa].
+    i_rated : float
+        Rated current [A].
+    p_0 : float
+        Return pressure, absolute [Pa].
+    """
+
+    valve: Component = field(default_factory=lambda: TwoStageServovalve(VALVE))
+    p_s: float = 210e5
+    i_rated: float = 0.01
+    p_0: float = 1e5
+
+    def __post_init__(self) -> None:
+        bench_valve(self.valve)  # refuses a component that is not a servovalve
+        p_s, p_0 = self.p_s, self.p_0
+        if not (np.isfinite(p_s) and np.isfinite(p_0) and p_s > p_0 >= 0):
+            raise ParameterError(f"supply p_s = {p_s:g} Pa over return p_0 = {p_0:g} Pa: expected p_s > p_0 >= 0")
+        _check_current(self.i_rated)
+
+    @classmethod
+    def of(
+        cls,
+        valve: Component | None,
+        supply: float | str = "210 bar",
+        current: float | str = "10 mA",
+        p_0: float = 1e5,
+        *,
+        supply_what: str = "--supply",
+        current_what: str = "--current",
+    ) -> BenchConditions:
+        """The conditions from quantities with units (``"210 bar"``, ``"10 mA"``) or SI numbers; an error names
+        the input (``supply_what``, ``current_what``) and what was expected."""
+        from hydroservo.units import to_si
+
+        p_s = to_si(supply, "Pa", what=supply_what)
+        if not p_s > p_0 + 1e5:
+            raise ParameterError(
+                f"{supply_what} {supply!r}: expected above the return (1 bar absolute, Table 1's p_0), e.g. '210 bar'"
+            )
+        i_rated = to_si(current, "A", what=current_what)
+        if not i_rated > 0:
+            raise ParameterError(f"{current_what} {current!r}: expected a positive rated current, e.g. '10 mA'")
+        return cls(TwoStageServovalve(VALVE) if valve is None else valve, p_s, i_rated, p_0)
+
+
+def _conditions(bench: BenchConditions | None) -> BenchConditions:
+    return BenchConditions() if bench is None else bench
+
+
+def bench_system(bench: BenchConditions | None, drive: Component, load: str = "none") -> System:
     """The valve on the bench: ``drive`` (a signal in A) feeds its current; supply at ``p_s - p_0`` (gauge);
     ``load`` "none" (both use ports at half supply, eq. 57) or "blocked" (each use port into a closed 1 cm^3)."""
-    if not (np.isfinite(p_s) and np.isfinite(p_0) and p_s > p_0 >= 0):
-        raise ParameterError(f"supply p_s = {p_s:g} Pa over return p_0 = {p_0:g} Pa: expected p_s > p_0 >= 0")
-    sv = _valve(valve)
-    gauge = p_s - p_0
+    bench = _conditions(bench)
+    sv = bench_valve(bench.valve)
+    gauge = bench.p_s - bench.p_0
     s = System(f"{type(sv).__name__} on the bench")
     s.add(sv)
     drive.name = DRIVE
@@ -125,8 +184,8 @@ def bench_system(
 class _Rest:
     """The valve at rest at any current: the bench's trim, continued from the last solution."""
 
-    def __init__(self, valve: Component | None, p_s: float, p_0: float, load: str) -> None:
-        self.system = bench_system(valve, Step(DRIVE, unit="A", amplitude=0.0), p_s, p_0, load)
+    def __init__(self, bench: BenchConditions | None, load: str) -> None:
+        self.system = bench_system(bench, Step(DRIVE, unit="A", amplitude=0.0), load)
         self.model = self.system.build()
         self.p = self.system.parameter_vector()
         self.k_i = self.model.parameter_names.index(f"{DRIVE}.amplitude")
@@ -189,13 +248,15 @@ class StaticTests:
 
 
 def static_tests(
-    valve: Component | None = None, p_s: float = 210e5, i_rated: float = 0.01, p_0: float = 1e5, points: int = 41
+    bench: BenchConditions | None = None,
+    points: int = 41
 ) -> StaticTests:
     """The no-load flow-current characteristic at rest, ``points`` currents from -rated to +rated."""
-    _check_current(i_rated)
+    bench = _conditions(bench)
+    p_s, i_rated = bench.p_s, bench.i_rated
     if not 5 <= points <= 401:
         raise ParameterError(f"points = {points}: expected 5 to 401 currents")
-    rest = _Rest(valve, p_s, p_0, "none")
+    rest = _Rest(bench, "none")
     half = np.linspace(i_rated / (points // 2), i_rated, points // 2)
     small = 0.05 * i_rated
     currents = np.concatenate([-half[::-1], [0.0], half])
@@ -260,10 +321,7 @@ class BlockedTests:
 
 
 def blocked_tests(
-    valve: Component | None = None,
-    p_s: float = 210e5,
-    i_rated: float = 0.01,
-    p_0: float = 1e5,
+    bench: BenchConditions | None = None,
     span: float = 0.01,
     frequency: float = 0.5,
 ) -> BlockedTests:
@@ -275,12 +333,13 @@ def blocked_tests(
     clearance, whose dead band gives each direction its own equilibrium; a trim would have to pick one.
     Each cycle starts at null; from its first peak, one falling and one rising branch are measured.
     """
-    _check_current(i_rated)
+    bench = _conditions(bench)
+    p_s, i_rated, p_0 = bench.p_s, bench.i_rated, bench.p_0
     if not (np.isfinite(span) and 0 < span <= 1):
         raise ParameterError(f"span = {span!r}: expected a fraction of rated current in (0, 1]")
     if not (np.isfinite(frequency) and 1e-3 <= frequency <= 100):
         raise ParameterError(f"blocked-port sweep frequency = {frequency!r} Hz: expected 0.001 to 100 Hz")
-    system = bench_system(valve, Sine(DRIVE, unit="A", amplitude=span * i_rated, frequency=1.0), p_s, p_0, "blocked")
+    system = bench_system(bench, Sine(DRIVE, unit="A", amplitude=span * i_rated, frequency=1.0), "blocked")
     level = 0.4 * (p_s - p_0)
     cycles = []
     for f in (frequency, frequency / 5):
@@ -345,10 +404,7 @@ def _check_current(i_rated: float) -> None:
 
 
 def step_tests(
-    valve: Component | None = None,
-    p_s: float = 210e5,
-    i_rated: float = 0.01,
-    p_0: float = 1e5,
+    bench: BenchConditions | None = None,
     fractions: Sequence[float] = (0.05, 0.10, 0.25),
     frequency: float = 10.0,
 ) -> list[StepTest]:
@@ -356,7 +412,8 @@ def step_tests(
 
     One period settles; the rising step of the second is measured on the no-load flow.
     """
-    _check_current(i_rated)
+    bench = _conditions(bench)
+    i_rated = bench.i_rated
     if not (np.isfinite(frequency) and 0.1 <= frequency <= 1000):
         raise ParameterError(f"square-wave frequency = {frequency!r} Hz: expected 0.1 to 1000 Hz")
     out = []
@@ -365,7 +422,7 @@ def step_tests(
         if not (np.isfinite(frac) and 0 < frac <= 2):
             raise ParameterError(f"step fraction = {frac!r}: expected a fraction of rated current in (0, 2]")
         drive = Square(DRIVE, unit="A", amplitude=frac * i_rated, frequency=frequency)
-        system = bench_system(valve, drive, p_s, p_0, "none")
+        system = bench_system(bench, drive, "none")
         grid = np.linspace(0.0, 2 * period, 4001)
         r = system.simulate(t_eval=grid, max_steps=2_000_000)
         flow = (r[f"{VALVE}.QA"] - r[f"{VALVE}.QB"]) / 2
@@ -407,12 +464,14 @@ class Hysteresis:
 
 
 def hysteresis_test(
-    valve: Component | None = None, p_s: float = 210e5, i_rated: float = 0.01, p_0: float = 1e5, frequency: float = 1 / 16
+    bench: BenchConditions | None = None,
+    frequency: float = 1 / 16
 ) -> Hysteresis:
     """[GordicND] Fig. 10: a sine of rated amplitude at ``frequency`` (1/16 Hz); the second period is measured."""
-    _check_current(i_rated)
+    bench = _conditions(bench)
+    i_rated = bench.i_rated
     drive = Sine(DRIVE, unit="A", amplitude=i_rated, frequency=frequency)
-    system = bench_system(valve, drive, p_s, p_0, "none")
+    system = bench_system(bench, drive, "none")
     period = 1.0 / frequency
     grid = np.linspace(0.0, 1.25 * period, 5001)
     r = system.simulate(t_eval=grid, max_steps=5_000_000)
@@ -450,10 +509,7 @@ class Threshold:
 
 
 def threshold_test(
-    valve: Component | None = None,
-    p_s: float = 210e5,
-    i_rated: float = 0.01,
-    p_0: float = 1e5,
+    bench: BenchConditions | None = None,
     bias: float = 0.5,
     amplitude: float = 0.02,
     period: float = 8.0,
@@ -465,14 +521,15 @@ def threshold_test(
     is subtracted); the mean over four reversals. The current first ramps to the triangle's low end in a
     quarter period.
     """
-    _check_current(i_rated)
+    bench = _conditions(bench)
+    i_rated = bench.i_rated
     if not (0 <= bias < 1 and 0 < amplitude <= 0.25 and bias + amplitude <= 1):
         raise ParameterError(f"threshold bias {bias!r}, amplitude {amplitude!r}: expected fractions of rated current, "
                              "bias + amplitude at most 1")
     lo, hi, half = (bias - amplitude) * i_rated, (bias + amplitude) * i_rated, period / 2
     times = [0.0, period / 4] + [period / 4 + k * half for k in range(1, 6)]
     values = [0.0, lo] + [hi if k % 2 else lo for k in range(1, 6)]
-    system = bench_system(valve, Table(DRIVE, unit="A", times=times, values=values), p_s, p_0, "none")
+    system = bench_system(bench, Table(DRIVE, unit="A", times=times, values=values), "none")
     grid = np.linspace(0.0, times[-1], 20001)
     r = system.simulate(t_eval=grid, max_steps=5_000_000)
     i = r[f"{DRIVE}.y"]
@@ -500,17 +557,20 @@ def _inverse(q: np.ndarray, i: np.ndarray, levels: np.ndarray) -> np.ndarray:
     return np.interp(levels, q[order], i[order])
 
 
-@dataclass
-class Bode:
-    """No-load flow against current at several amplitudes (rows) and frequencies (columns)."""
+class Bode(FrequencyResponse):
+    """No-load flow against current at several amplitudes (rows, fractions of rated current) and frequencies
+    (columns, [Hz]): the gain relative to the lowest frequency [dB], the phase [deg]; ``info`` holds the
+    low-frequency gains, the worst orbit mismatch and the points with no periodic response."""
 
-    amplitudes: np.ndarray  #: fractions of rated current [-]
-    frequencies: np.ndarray  #: [Hz]
-    gain_db: np.ndarray  #: relative to the lowest frequency [dB]
-    phase_deg: np.ndarray  #: [deg]
-    f_3db: np.ndarray  #: per amplitude [Hz] (NaN: not reached)
-    f_90: np.ndarray  #: per amplitude [Hz] (NaN: not reached)
-    info: dict[str, Any] = field(default_factory=dict)
+    @property
+    def f_3db(self) -> np.ndarray:
+        """Per amplitude, the -3 dB frequency [Hz] (NaN: not reached): :meth:`FrequencyResponse.bandwidth`."""
+        return self.bandwidth()
+
+    @property
+    def f_90(self) -> np.ndarray:
+        """Per amplitude, the -90 deg frequency [Hz] (NaN: not reached): :meth:`FrequencyResponse.phase_crossing`."""
+        return self.phase_crossing()
 
     def table(self) -> list[tuple[str, float, str]]:
         rows = []
@@ -520,27 +580,13 @@ class Bode:
         return rows
 
 
-def _crossing(f: np.ndarray, values: np.ndarray, level: float) -> float:
-    """The first frequency where ``values`` falls through ``level`` (log-interpolated), NaN if it does not."""
-    below = np.flatnonzero(values <= level)
-    if below.size == 0 or below[0] == 0:
-        return float("nan")
-    k = int(below[0])
-    v0, v1 = values[k - 1], values[k]
-    w = (level - v0) / (v1 - v0)
-    return float(np.exp(np.log(f[k - 1]) + w * (np.log(f[k]) - np.log(f[k - 1]))))
-
-
 #: Largest accepted mismatch of a periodic orbit of the frequency test (nominal magnitudes of the states): the
 #: fundamental is then within about as much of its converged value, 0.02 dB.
 ACCEPT = 2e-3
 
 
 def frequency_test(
-    valve: Component | None = None,
-    p_s: float = 210e5,
-    i_rated: float = 0.01,
-    p_0: float = 1e5,
+    bench: BenchConditions | None = None,
     amplitudes: Sequence[float] = (0.05, 0.25, 1.0),
     frequencies: Sequence[float] | np.ndarray | None = None,
     progress: Callable[[int, int], None] | None = None,
@@ -557,14 +603,15 @@ def frequency_test(
     does not apply; and at large amplitudes the first stage saturates and the spool drifts to its mean over many
     periods, so "simulate until it repeats" is slow and uncertain.
     """
-    _check_current(i_rated)
+    bench = _conditions(bench)
+    i_rated = bench.i_rated
     freqs = np.geomspace(5.0, 500.0, 19) if frequencies is None else np.asarray(frequencies, dtype=float)
     amps = np.asarray(amplitudes, dtype=float)
     if freqs.size < 2 or not np.all(np.isfinite(freqs)) or np.any(freqs <= 0) or np.any(np.diff(freqs) <= 0):
         raise ParameterError("frequencies: expected at least two increasing, positive frequencies [Hz]")
     if amps.size < 1 or not np.all((amps > 0) & (amps <= 2)):
         raise ParameterError("amplitudes: expected fractions of rated current in (0, 2]")
-    system = bench_system(valve, Sine(DRIVE, unit="A", amplitude=i_rated, frequency=1.0), p_s, p_0, "none")
+    system = bench_system(bench, Sine(DRIVE, unit="A", amplitude=i_rated, frequency=1.0), "none")
     model = system.build()
     base = system.parameter_vector()
     k_amp, k_freq = (model.parameter_names.index(f"{DRIVE}.{k}") for k in ("amplitude", "frequency"))
@@ -601,9 +648,7 @@ def frequency_test(
     gain = 20 * np.log10(np.abs(H) / np.abs(H[:, :1]))
     phase = np.degrees(np.unwrap(np.angle(H), axis=1))
     phase -= 360.0 * np.round(phase[:, :1] / 360.0)  # start within (-180, 180]
-    f3 = np.array([_crossing(freqs, g, -3.0) for g in gain])
-    f90 = np.array([_crossing(freqs, ph, -90.0) for ph in phase])
-    return Bode(amps, freqs, gain, phase, f3, f90, {"low_frequency_gain": np.abs(H[:, 0]).tolist(), "mismatch": worst, "unsettled": unsettled})
+    return Bode(amps, freqs, gain, phase, "", {"low_frequency_gain": np.abs(H[:, 0]).tolist(), "mismatch": worst, "unsettled": unsettled})
 
 
 def _fundamental(grid: np.ndarray, y: np.ndarray, f: float, k: int) -> np.ndarray:
@@ -662,10 +707,7 @@ TESTS = ("static", "blocked", "steps", "hysteresis", "threshold", "bode")
 
 
 def bench_report(
-    valve: Component | None = None,
-    p_s: float = 210e5,
-    i_rated: float = 0.01,
-    p_0: float = 1e5,
+    bench: BenchConditions | None = None,
     tests: Sequence[str] = TESTS,
     label: str = "",
     progress: Callable[[str], None] | None = None,
@@ -673,17 +715,19 @@ def bench_report(
 ) -> Report:
     """The chosen ``tests`` of :data:`TESTS` on one valve (``points`` currents in the static characteristic);
     ``progress(name)`` is called as each starts."""
+    bench = _conditions(bench)
+    valve, p_s, i_rated = bench.valve, bench.p_s, bench.i_rated
     unknown = [t for t in tests if t not in TESTS]
     if unknown:
         raise ParameterError(f"tests {', '.join(unknown)}: unknown; expected some of {', '.join(TESTS)}")
-    report = Report(label or type(_valve(valve)).__name__, p_s, i_rated)
+    report = Report(label or type(bench_valve(valve)).__name__, p_s, i_rated)
     runs: dict[str, Callable[[], Any]] = {
-        "static": lambda: static_tests(valve, p_s, i_rated, p_0, points),
-        "blocked": lambda: blocked_tests(valve, p_s, i_rated, p_0),
-        "steps": lambda: step_tests(valve, p_s, i_rated, p_0),
-        "hysteresis": lambda: hysteresis_test(valve, p_s, i_rated, p_0),
-        "threshold": lambda: threshold_test(valve, p_s, i_rated, p_0),
-        "bode": lambda: frequency_test(valve, p_s, i_rated, p_0),
+        "static": lambda: static_tests(bench, points),
+        "blocked": lambda: blocked_tests(bench),
+        "steps": lambda: step_tests(bench),
+        "hysteresis": lambda: hysteresis_test(bench),
+        "threshold": lambda: threshold_test(bench),
+        "bode": lambda: frequency_test(bench),
     }
     for name in TESTS:
         if name in tests:

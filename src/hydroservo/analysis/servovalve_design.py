@@ -36,9 +36,16 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from hydroservo.analysis.servovalve_bench import DRIVE, VALVE, _valve, bench_system, hysteresis_loop
+from hydroservo.analysis.frequency import FrequencyResponse
+from hydroservo.analysis.servovalve_bench import (
+    DRIVE,
+    VALVE,
+    BenchConditions,
+    bench_system,
+    bench_valve,
+    hysteresis_loop,
+)
 from hydroservo.analysis.step import step_metrics
-from hydroservo.components.base import Component
 from hydroservo.components.signals import Sine, Square, Step
 from hydroservo.errors import ParameterError, SolverError, TrimError
 
@@ -78,8 +85,8 @@ class DesignStudy:
 class _Rest:
     """The bench at rest with exact parameter sensitivities of its trim."""
 
-    def __init__(self, valve: Component, p_s: float, p_0: float, names: Sequence[str]) -> None:
-        self.system = bench_system(valve, Step(DRIVE, unit="A", amplitude=0.0), p_s, p_0, "none")
+    def __init__(self, bench: BenchConditions, names: Sequence[str]) -> None:
+        self.system = bench_system(bench, Step(DRIVE, unit="A", amplitude=0.0), "none")
         m = self.model = self.system.build()
         self.p = self.system.parameter_vector()
         self.k_i = m.parameter_names.index(f"{DRIVE}.amplitude")
@@ -125,29 +132,19 @@ class _Rest:
         H = np.array([(C @ np.linalg.solve(2j * np.pi * fk * eye - A, B) + D).item() for fk in f])
         phase = np.degrees(np.unwrap(np.angle(H)))
         gain = 20 * np.log10(np.abs(H) / np.abs(H[0]))
-        return _falls(f, phase, -90.0), _falls(f, gain, -3.0), x
-
-
-def _falls(f: np.ndarray, values: np.ndarray, level: float) -> float:
-    below = np.flatnonzero(values <= level)
-    if below.size == 0 or below[0] == 0:
-        return float("nan")
-    k = int(below[0])
-    w = (level - values[k - 1]) / (values[k] - values[k - 1])
-    return float(np.exp(np.log(f[k - 1]) + w * np.log(f[k] / f[k - 1])))
+        response = FrequencyResponse(np.array([i]), f, gain, phase)
+        return float(response.phase_crossing()[0]), float(response.bandwidth()[0]), x
 
 
 def design_study(
-    valve: Component | None = None,
-    p_s: float = 210e5,
-    i_rated: float = 0.01,
-    p_0: float = 1e5,
+    bench: BenchConditions | None = None,
     parameters: Sequence[str] | None = None,
     step: float = 0.01,
     progress: Callable[[str], None] | None = None,
     figures: Sequence[str] | None = None,
 ) -> DesignStudy:
-    """Elasticities of the ``figures`` of :data:`FIGURES` (default all) to every physical parameter of ``valve``
+    """Elasticities of the ``figures`` of :data:`FIGURES` (default all) to every physical parameter of the valve on
+    ``bench`` (:class:`~hydroservo.analysis.servovalve_bench.BenchConditions`; None: Table 1 at 210 bar, 10 mA)
     (module notes). Figures are computed in groups: at rest, small signal, linearity, transient, hysteresis;
     a group none of whose figures is asked for is skipped.
 
@@ -159,13 +156,15 @@ def design_study(
         raise ParameterError(f"design study: figures {sorted(wanted - set(FIGURES))}: expected some of {', '.join(FIGURES)}")
     if not (np.isfinite(step) and 1e-4 <= step <= 0.1):
         raise ParameterError(f"step = {step!r}: expected a relative step between 1e-4 and 0.1")
-    sv = _valve(valve)
+    bench = BenchConditions() if bench is None else bench
+    i_rated = bench.i_rated
+    sv = bench_valve(bench.valve)
     names = [k for k in sv.PARAMETERS if k not in NOT_DESIGN and sv.values[k] != 0.0] if parameters is None else list(parameters)
     unknown = [n for n in names if n not in sv.PARAMETERS]
     if unknown:
         raise ParameterError(f"design study: {', '.join(unknown)}: not parameters of {type(sv).__name__}")
     values = np.array([sv.values[n] for n in names])
-    rest = _Rest(sv, p_s, p_0, names)
+    rest = _Rest(bench, names)
     found: dict[str, float] = {}
     elasticity: dict[str, dict[str, float]] = {}
 
@@ -194,7 +193,7 @@ def design_study(
     if asked("linearity"):
         _linearity(rest, names, values, step, i_rated, record, progress)
     if asked("rise_time", "overshoot", "hysteresis"):
-        _batches(sv, names, values, step, p_s, i_rated, p_0, record, progress, asked("hysteresis"))
+        _batches(bench, names, values, step, record, progress, asked("hysteresis"))
     return DesignStudy({k: found[k] for k in FIGURES if k in found}, {k: elasticity[k] for k in FIGURES if k in found})
 
 
@@ -247,14 +246,15 @@ def _linearity(rest: _Rest, names: list[str], values: np.ndarray, step: float, i
     record("linearity", linearity(rest.p), d_lin)
 
 
-def _batches(sv: Component, names: list[str], values: np.ndarray, step: float, p_s: float, i_rated: float,
-             p_0: float, record: Callable[[str, float, np.ndarray], None], progress: Callable[[str], None] | None,
+def _batches(bench: BenchConditions, names: list[str], values: np.ndarray, step: float,
+             record: Callable[[str, float, np.ndarray], None], progress: Callable[[str], None] | None,
              hysteresis: bool) -> None:
     """The transient and the hysteresis: the design point and each parameter +-step, simulated in batches."""
+    i_rated = bench.i_rated
     if progress:
         progress(f"transient (+-10 % square wave, {2 * len(names) + 1} runs at once)")
     frequency = 10.0
-    system = bench_system(sv, Square(DRIVE, unit="A", amplitude=0.1 * i_rated, frequency=frequency), p_s, p_0, "none")
+    system = bench_system(bench, Square(DRIVE, unit="A", amplitude=0.1 * i_rated, frequency=frequency), "none")
     grid = np.linspace(0.0, 2.0 / frequency, 2001)
     runs: dict[str, list[float]] = {f"{VALVE}.{n}": [] for n in names}  # the design point, then +- each parameter
     for j in range(-1, len(names)):
@@ -274,7 +274,7 @@ def _batches(sv: Component, names: list[str], values: np.ndarray, step: float, p
         return
     if progress:
         progress(f"hysteresis (1/16 Hz sine, {2 * len(names) + 1} runs at once)")
-    slow = bench_system(sv, Sine(DRIVE, unit="A", amplitude=i_rated, frequency=1 / 16), p_s, p_0, "none")
+    slow = bench_system(bench, Sine(DRIVE, unit="A", amplitude=i_rated, frequency=1 / 16), "none")
     grid = np.linspace(0.0, 20.0, 5001)  # as the bench's hysteresis test
     batch = slow.batch(runs, t_eval=grid, max_steps=5_000_000)
     if batch.failed:

@@ -10,6 +10,8 @@
   (:mod:`hydroservo.io.model_file`), in their source's units.
 * ``examples/``: the files the README's commands use (``hydroservo examples DIR``
   copies them).
+* ``servovalves.toml``: the built-in servovalves of ``hydroservo servovalve``: what each is, its parameter
+  set and its rated design point.
 * ``units.json``: the conversions of the units the package uses and engineers
   commonly write, computed by pint (:mod:`hydroservo.units` reads them so that
   a run need not build the unit registry; ``scripts/unit_table.py`` writes it).
@@ -42,6 +44,7 @@ __all__ = [
     "example_files",
     "reference_text",
     "c_template",
+    "servovalves",
     "unit_table",
 ]
 
@@ -136,3 +139,11 @@ def unit_table() -> dict[str, Any]:
     import json
 
     return dict(json.loads((_ROOT / "units.json").read_text(encoding="utf-8")))
+
+
+@functools.cache
+def servovalves() -> dict[str, dict[str, str]]:
+    """The built-in servovalves (``servovalves.toml``): name -> description, component type, parameter set, and
+    the rated supply and current as printed."""
+    with _ROOT.joinpath("servovalves.toml").open("rb") as f:
+        return {name: dict(entry) for name, entry in tomllib.load(f).items()}

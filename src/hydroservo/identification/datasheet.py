@@ -190,6 +190,16 @@ class PseudoSectionFit:
             raise ParameterError("characteristics: give P_n and P_s (no datasheet attached)")
         return self.valve.characteristics(P_n, P_s)
 
+    def measured_sections(self, curves: Mapping[str, Any], P_s: float | None = None) -> dict[str, np.ndarray]:
+        """The "real" pseudo-sections of measured blocked-port curves (``x_s``, ``P_L``, ``q_lk``), [FerreiraND]
+        eqs. (16)-(17) (:func:`~hydroservo.laws.pseudo_section.sections_from_measurements`), at the datasheet's
+        supply pressure unless ``P_s`` is given: ``{"x_s": ..., "A_p": ..., "A_n": ...}`` [m^3/s/Pa^0.5]."""
+        P_s = P_s if P_s is not None else (self.datasheet.P_s if self.datasheet else None)
+        if P_s is None:
+            raise ParameterError("measured_sections: give P_s (no datasheet attached)")
+        A_p, A_n = ps.sections_from_measurements(curves["P_L"], curves["q_lk"], P_s)
+        return {"x_s": np.asarray(curves["x_s"], dtype=float), "A_p": A_p, "A_n": A_n}
+
 
 def _parse_match(match: str | Iterable[str] | None, ds: Datasheet) -> tuple[str, str]:
     given = ds.given()

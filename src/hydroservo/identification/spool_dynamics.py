@@ -240,9 +240,11 @@ class SpoolFit:
 def default_start(data: FrequencyResponse, model: str) -> dict[str, float]:
     """A start read off the data: bandwidths (-3 dB) of the smallest, middle and largest amplitude."""
 
-    def bandwidth(i: int) -> float:
-        below = np.flatnonzero(data.gain_db[i] < -3.0)
-        return float(data.frequencies[below[0]] if below.size else data.frequencies[-1])
+    crossings = data.bandwidth()
+
+    def bandwidth(i: int) -> float:  # not reached within the data: its highest frequency
+        f = crossings[i]
+        return float(f if np.isfinite(f) else data.frequencies[-1])
 
     a = data.amplitudes
     w_small = 2 * np.pi * bandwidth(0)

@@ -9,7 +9,6 @@ from typing import Any
 import numpy as np
 
 from hydroservo.components.valves.pseudo_section import PseudoSectionValve
-from hydroservo.laws import pseudo_section as ps
 from hydroservo.plotting import finish, lpm, pyplot
 from hydroservo.units import from_si
 
@@ -31,7 +30,7 @@ def plot_pseudo_sections(
     """A_p and A_n over the full stroke (Fig. 2) and near null (Fig. 3) [L/min/bar^0.5].
 
     ``measured`` may hold ``x_s``, ``A_p``, ``A_n`` (SI) computed from measured
-    curves with :func:`hydroservo.laws.pseudo_section.sections_from_measurements`.
+    curves (:meth:`hydroservo.identification.datasheet.PseudoSectionFit.measured_sections`).
     """
     plt = pyplot(file)
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
@@ -73,9 +72,9 @@ def plot_null_characteristics(
     plt = pyplot(file)
     fig, ax = plt.subplots(figsize=(7, 4.5))
     x = np.linspace(-zoom, zoom, 801)
-    A_p, A_n = valve.sections(x)
-    ax.plot(x, ps.relative_load_pressure(A_p, A_n), label="P_L [-] (model)")
-    ax.plot(x, lpm(ps.leakage_blocked(A_p, A_n, P_s)), label="q_lk [L/min] (model)")
+    P_L, q_lk = valve.blocked_ports(x, P_s)
+    ax.plot(x, P_L, label="P_L [-] (model)")
+    ax.plot(x, lpm(q_lk), label="q_lk [L/min] (model)")
     if measured is not None:
         ax.plot(measured["x_s"], measured["P_L"], "o", ms=3, label="P_L measured")
         ax.plot(measured["x_s"], lpm(measured["q_lk"]), "s", ms=3, label="q_lk measured")
@@ -104,8 +103,7 @@ def plot_load_flow(
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, lim in zip(axes, (zoom, 1.0)):
         x = np.linspace(-lim, lim, 801)
-        A_p, A_n = valve.sections(x)
-        ax.plot(x, lpm(ps.load_flow_no_load(A_p, A_n, 2 * P_n)), label="Q_L (model)")
+        ax.plot(x, lpm(valve.no_load_flow(x, P_n)), label="Q_L (model)")
         if measured is not None and "Q_L" in measured:
             xm = np.asarray(measured["x_s"])
             sel = np.abs(xm) <= lim
@@ -133,8 +131,7 @@ def plot_pressure_flow(
     fig, ax = plt.subplots(figsize=(7, 4.5))
     PL = np.linspace(-1.0, 1.0, 401)
     for xs in openings:
-        A_p, A_n = valve.sections(np.array([xs]))
-        ax.plot(PL, lpm(ps.load_flow(A_p[0], A_n[0], P_s, PL)), label=f"x_s = {100 * xs:g} %")
+        ax.plot(PL, lpm(valve.pressure_flow(xs, PL, P_s)), label=f"x_s = {100 * xs:g} %")
     ax.axhline(0, color="0.5", lw=0.8)
     ax.set_xlabel("P_L = (P_1 - P_2)/P_s [-]")
     ax.set_ylabel("Q_L [L/min]")

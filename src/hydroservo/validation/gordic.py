@@ -234,10 +234,12 @@ def compute() -> dict[str, float]:
 
 def _bench(i_rated: float, p_s: float) -> dict[str, float]:
     """The rated flow and the qualitative findings of section 4 on the bench."""
-    static = bench.static_tests(None, p_s, i_rated, points=5)
+    rated = bench.BenchConditions(p_s=p_s, i_rated=i_rated)
+    static = bench.static_tests(rated, points=5)
 
     def steps(fractions: tuple[float, ...] = (0.05,), **change: float) -> list[bench.StepTest]:
-        return bench.step_tests(TwoStageServovalve("sv", **change), p_s, i_rated, fractions=fractions)
+        conditions = bench.BenchConditions(TwoStageServovalve("sv", **change), p_s, i_rated)
+        return bench.step_tests(conditions, fractions=fractions)
 
     five, ten, quarter = steps((0.05, 0.10, 0.25))
     k_v, k_n = TwoStageServovalve.PARAMETERS["k_v"].si_default(), TwoStageServovalve.PARAMETERS["k_n"].si_default()
@@ -248,7 +250,7 @@ def _bench(i_rated: float, p_s: float) -> dict[str, float]:
         "reach_25": float(quarter.reaches_nozzle),
         "reach_10": float(ten.reaches_nozzle or five.reaches_nozzle),
         "slower_25": five.rise_time / quarter.rise_time,
-        "hysteresis": bench.hysteresis_test(None, p_s, i_rated).hysteresis * 100,
+        "hysteresis": bench.hysteresis_test(rated).hysteresis * 100,
         "kv_slows": five.rise_time / kv_up.rise_time,
         "kn_settles": five.settling_time / kn_down.settling_time,
         "kn_rises": five.rise_time / kn_down.rise_time,

@@ -18,7 +18,8 @@ from hydroservo.errors import ParameterError
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow
 
 if TYPE_CHECKING:
-    from hydroservo.analysis.servovalve_bench import Bode, Report as BenchReport, StaticTests
+    from hydroservo.analysis.servovalve_bench import Bode, StaticTests
+    from hydroservo.analysis.servovalve_bench import Report as BenchReport
     from hydroservo.analysis.servovalve_design import DesignStudy
     from hydroservo.components.base import Component
     from hydroservo.identification.servovalve_catalogue import CatalogueFit
@@ -35,10 +36,10 @@ class DesignPoint(Workflow):
     ----------
     valve : str
         A built-in servovalve (:func:`hydroservo.data.servovalves`).
-    supply : float or str
-        Supply pressure (``"210 bar"``).
-    current : float or str
-        Rated current (``"10 mA"``).
+    supply : float or str, optional
+        Supply pressure (``"210 bar"``; default the valve's rating).
+    current : float or str, optional
+        Rated current (``"10 mA"``; default the valve's rating).
     sets : list of "NAME=VALUE" or dict, optional
         Changes to parameters of :class:`~hydroservo.components.TwoStageServovalve`, with units.
     first_stage : {"quasi-static", "compressible"}
@@ -50,8 +51,8 @@ class DesignPoint(Workflow):
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "valve": "servovalve"}
 
     valve: str = "gordic-table1"
-    supply: float | str = "210 bar"
-    current: float | str = "10 mA"
+    supply: float | str | None = None
+    current: float | str | None = None
     sets: Sequence[str] | Mapping[str, Any] | None = None
     first_stage: str = "quasi-static"
     flapper: str = "bent"
@@ -65,7 +66,8 @@ class DesignPoint(Workflow):
         known = servovalves()
         if self.valve not in known:
             raise ParameterError(f"servovalve {self.valve!r}: unknown; built-in: {', '.join(known)}")
-        self.description = known[self.valve]["description"]
+        entry = known[self.valve]
+        self.description = entry["description"]
         component = TwoStageServovalve("sv", first_stage=self.first_stage, flapper=self.flapper)
         what = self.name("sets")
         for key, value in parse_sets(self.sets, what) if not isinstance(self.sets, Mapping) else self.sets.items():
@@ -76,7 +78,9 @@ class DesignPoint(Workflow):
                 )
             component.set(**{key: value})
         component.check()
-        self.conditions = BenchConditions.of(component, self.supply, self.current,
+        supply = entry["supply"] if self.supply is None else self.supply
+        current = entry["current"] if self.current is None else self.current
+        self.conditions = BenchConditions.of(component, supply, current,
                                              supply_what=self.name("supply"), current_what=self.name("current"))
 
     @property
@@ -324,21 +328,14 @@ class CatalogueReport(Report):
     def artifacts(self) -> list[Artifact]:
         from hydroservo.identification.servovalve_catalogue import ORDERS
         from hydroservo.io.component_file import component_file_text
+        from hydroservo.io.servovalve import write_catalogue
         from hydroservo.plotting.servovalve import plot_catalogue_fits
 
         label = self.point.label()
 
         def table(path: Path) -> None:
-            lines = [
-                f"# catalogue models of {label}, fitted at +-{self.amplitude * 100:g} % of rated current, 5 Hz to "
-                f"{self.f_max:g} Hz",
-                "order, tau [ms], omega_n [rad/s], zeta [-], gain error [dB], phase error [deg]",
-            ]
-            for fit in self.fits:
-                tau = fit.params.get("tau", float("nan")) * 1e3
-                lines.append(f"{fit.order}, {tau!r}, {fit.params.get('omega_n', float('nan'))!r}, "
-                             f"{fit.params.get('zeta', float('nan'))!r}, {fit.gain_error_db!r}, {fit.phase_error_deg!r}")
-            path.write_text("\n".join(lines) + "\n")
+            write_catalogue(self.fits, path, f"catalogue models of {label}, fitted at +-{self.amplitude * 100:g} % of "
+                            f"rated current, 5 Hz to {self.f_max:g} Hz")
 
         def model_file(fit: CatalogueFit) -> Any:
             header = (f"CatalogueServovalve of order {fit.order} fitted to {label}\nat +-{self.amplitude * 100:g} % of "
@@ -381,7 +378,7 @@ class FitCatalogue(DesignPoint):
     """Catalogue models of ``orders`` (some of 1, 2, 3) fitted to the valve's response at ``amplitude`` (a fraction
     of rated current, ``"5 %"``) from 5 Hz to ``f_max``."""
 
-    orders: str | Sequence[int] = "1,2,3"
+    orders: str | Sequence[int | str] = "1,2,3"
     amplitude: float | str = "5 %"
     f_max: float | str = "150 Hz"
 
@@ -391,10 +388,7 @@ class FitCatalogue(DesignPoint):
 
         super().__post_init__()
         text = self.orders if isinstance(self.orders, str) else ",".join(str(o) for o in self.orders)
-        try:
-            self.chosen = [int(o.strip()) for o in text.split(",") if o.strip()]
-        except ValueError:
-            self.chosen = []
+        self.chosen = [o.strip() for o in text.split(",") if o.strip()]
         if not self.chosen or any(o not in ORDERS for o in self.chosen):
             raise ParameterError(f"{self.name('orders')} {text!r}: expected a comma-separated choice of 1, 2, 3")
         self.fraction = to_si(self.amplitude, "", what=self.name("amplitude"))

@@ -388,6 +388,8 @@ class FitDynamics(Workflow):
     """Fit spool ``models`` (some of :data:`hydroservo.identification.spool_dynamics.SPOOL_MODELS`, or ``"all"``)
     to the Bode data of ``bode`` (CSV); ``start``: starting values of one model (``{"omega_n": "700 rad/s"}``)."""
 
+    OPTIONS: ClassVar[dict[str, str]] = {"models": "--model"}
+
     bode: str | Path
     models: str | Sequence[str] = "rate-limited"
     start: Mapping[str, Any] | None = None

@@ -37,7 +37,7 @@ def test_hysteresis_comes_from_the_feedback_ball_clearance_and_friction() -> Non
     """Hysteresis 'can be spotted in the numerically obtained curve' ([GordicND] Fig. 10): with Table 1's ball
     clearance and dry friction a slow sine leaves a loop; without them it nearly closes."""
     with_play = sb.hysteresis_test()
-    without = sb.hysteresis_test(TwoStageServovalve("v", z=0.0, F_c0=0.0, F_cn=0.0))
+    without = sb.hysteresis_test(sb.BenchConditions(TwoStageServovalve("v", z=0.0, F_c0=0.0, F_cn=0.0)))
     assert 0.001 < with_play.hysteresis < 0.02
     assert without.hysteresis < 0.5 * with_play.hysteresis
     assert abs(with_play.null_shift) < 1e-3 * RATED  # symmetric: the loop is centred
@@ -50,7 +50,7 @@ def test_the_threshold_away_from_null_is_below_a_hundredth_of_a_per_cent() -> No
     assert th.reversals.size == 4
     assert 0 <= th.threshold < 1e-4
     # a hundred times the spool's dry friction (0.3 N) holds it after each reversal: the threshold shows it
-    sticky = sb.threshold_test(TwoStageServovalve("v", F_c0=0.3, F_cn=0.3))
+    sticky = sb.threshold_test(sb.BenchConditions(TwoStageServovalve("v", F_c0=0.3, F_cn=0.3)))
     assert sticky.threshold > 5 * th.threshold and sticky.threshold > 2e-4
 
 
@@ -81,12 +81,12 @@ def test_frequency_response_starts_at_the_static_gain() -> None:
 
 def test_a_bench_refuses_what_is_not_a_servovalve_or_a_test() -> None:
     with pytest.raises(ModelError, match="is not a servovalve"):
-        sb.static_tests(Orifice("o"))
+        sb.BenchConditions(Orifice("o"))
     with pytest.raises(ParameterError, match="rated current"):
-        sb.static_tests(i_rated=-1.0)
+        sb.BenchConditions(i_rated=-1.0)
     with pytest.raises(ParameterError, match="step fraction"):
         sb.step_tests(fractions=(3.0,))
     with pytest.raises(ParameterError, match="tests noise: unknown"):
         sb.bench_report(tests=("noise",))
     with pytest.raises(ParameterError, match="supply p_s"):
-        sb.static_tests(p_s=0.5e5)
+        sb.BenchConditions(p_s=0.5e5)

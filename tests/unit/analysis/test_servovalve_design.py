@@ -36,8 +36,8 @@ def test_exact_derivatives_agree_with_differences(study) -> None:  # type: ignor
     """The implicit function theorem at the trim against central differences of the bench's static test."""
     for name in ("K_f", "d_o"):
         v = TwoStageServovalve.PARAMETERS[name].si_default()
-        up = sb.static_tests(TwoStageServovalve("v", **{name: v * 1.001}), points=5).rated_flow
-        down = sb.static_tests(TwoStageServovalve("v", **{name: v * 0.999}), points=5).rated_flow
+        up = sb.static_tests(sb.BenchConditions(TwoStageServovalve("v", **{name: v * 1.001})), points=5).rated_flow
+        down = sb.static_tests(sb.BenchConditions(TwoStageServovalve("v", **{name: v * 0.999})), points=5).rated_flow
         base = study.figures["rated_flow"]
         assert study.elasticity["rated_flow"][name] == pytest.approx((up - down) / (0.002 * base), abs=2e-3)
 

@@ -46,10 +46,10 @@ def test_the_ladder_follows_the_physical_model_closer_with_each_order(physical) 
     assert fits["1"].phase_error_deg > 30.0 and fits["1"].gain_error_db > fits["2"].gain_error_db
     # the fitted component on the same bench gives the response it was fitted to, and the rated flow
     third = fits["3"]
-    again = sb.frequency_test(third.valve, amplitudes=(0.05,), frequencies=bode.frequencies)
+    again = sb.frequency_test(sb.BenchConditions(third.valve), amplitudes=(0.05,), frequencies=bode.frequencies)
     assert np.max(np.abs(again.gain_db[0] - third.gain_db)) < 0.02
     assert np.max(np.abs(again.phase_deg[0] - third.phase_deg)) < 0.2
-    assert sb.static_tests(third.valve, points=5).rated_flow == pytest.approx(static.rated_flow, rel=1e-3)
+    assert sb.static_tests(sb.BenchConditions(third.valve), points=5).rated_flow == pytest.approx(static.rated_flow, rel=1e-3)
 
 
 def test_a_fit_needs_enough_frequencies_and_a_known_order() -> None:

@@ -112,6 +112,24 @@ class _Sections(Component):
             "q_lk0": float(ps.leakage_blocked(A_p[1], A_n[1], P_s)),
         }
 
+    def blocked_ports(self, x: Any, P_s: float) -> tuple[np.ndarray, np.ndarray]:
+        """With blocked ports at supply ``P_s`` [Pa]: the relative load pressure [-] (eq. 13) and the leakage
+        [m^3/s] (eq. 27) at normalised positions ``x`` (the curves of [FerreiraND] Figs. 4 and 7)."""
+        A_p, A_n = self.sections(x)
+        return np.asarray(ps.relative_load_pressure(A_p, A_n)), np.asarray(ps.leakage_blocked(A_p, A_n, P_s))
+
+    def no_load_flow(self, x: Any, P_n: float) -> np.ndarray:
+        """With connected ports (no load) and ``P_n`` [Pa] per edge: the load flow [m^3/s] at normalised positions
+        ``x`` (eq. 9; [FerreiraND] Figs. 5-6, 8-9)."""
+        A_p, A_n = self.sections(x)
+        return np.asarray(ps.load_flow_no_load(A_p, A_n, 2.0 * P_n))
+
+    def pressure_flow(self, x: float, P_L: Any, P_s: float) -> np.ndarray:
+        """At normalised position ``x``: the load flow [m^3/s] against relative load pressures ``P_L`` [-] at
+        supply ``P_s`` [Pa] (eq. 21), the datasheet's family."""
+        A_p, A_n = self.sections(np.array([x]))
+        return np.asarray(ps.load_flow(A_p[0], A_n[0], P_s, np.asarray(P_L, dtype=float)))
+
     def check_sections(self) -> None:
         """Raise ParameterError if a pseudo-section (or the fixed radicand) is negative on [-1, 1]."""
         try:
