@@ -1,4 +1,4 @@
-"""Real time from the exported C stepper (hydroservo.io.c_export): microseconds per step, the multiple of real
+"""Real time from the exported C stepper (hydroservo.codegen.c): microseconds per step, the multiple of real
 time, and the deviation from CVODES, for the flight-simulator and the servo-solenoid circuit.
 
 Run: ``python benchmarks/bench_realtime.py`` (``--stability`` also searches the longest stable rk4 step
@@ -30,8 +30,8 @@ import casadi as ca
 import numpy as np
 
 import hydroservo as hs
+from hydroservo.codegen.c import CStepper, compiler
 from hydroservo.errors import SolverError
-from hydroservo.io.c_export import CStepper, compiler
 
 #: model, duration [s], main signals, (method, step [s]) to time.
 CASES = [

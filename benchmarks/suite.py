@@ -113,7 +113,7 @@ def realtime() -> str:
     )
     head = (
         f"Real time, `python benchmarks/bench_realtime.py`'s measurements ({version}, -O2): the C code of "
-        "`hydroservo export-c` compiled and run in this process (`hydroservo.io.c_export.CStepper`, the whole run in "
+        "`hydroservo export-c` compiled and run in this process (`hydroservo.codegen.c.CStepper`, the whole run in "
         "one call into C, nothing recorded; medians over repeats), beside CVODES called from Python once per step "
         "as a real-time loop in Python would. Deviation: the largest |C − CVODES| over the run on the main signals "
         f"({'; '.join(signals)}), relative to each signal's range, against CVODES at rtol 1e-10.\n\n"

@@ -135,3 +135,24 @@ def test_no_import_cycles() -> None:
     for m in sorted(graph):
         if m not in state:
             visit(m)
+
+
+#: What the command line may import: it parses options into a workflow, runs it, writes and prints.
+CLI_MAY_IMPORT = ("workflows", "cli", "errors", "units", "version")
+
+
+@pytest.mark.parametrize("module", sorted(m for m in MODULES if _top(m) == "cli"))
+def test_the_command_line_imports_only_workflows(module: str) -> None:
+    for target, _ in _imports(MODULES[module]):
+        top = _top(target)
+        assert top in CLI_MAY_IMPORT, (
+            f"{module} imports {target}: a command parses, runs a workflow (hydroservo.workflows), writes and prints; "
+            f"it may import only {', '.join(CLI_MAY_IMPORT)}"
+        )
+
+
+def test_the_rule_for_the_command_line_catches_an_import_below_the_workflows(tmp_path: Path) -> None:
+    path = tmp_path / "cmd.py"
+    path.write_text("def cmd(args):\n    from hydroservo.analysis.linear import linearize\n")
+    tops = {_top(t) for t, _ in _imports(path)}
+    assert tops == {"analysis"} and not tops <= set(CLI_MAY_IMPORT)

@@ -7,8 +7,8 @@ import zipfile
 
 import pytest
 
+from hydroservo.codegen.c import compiler
 from hydroservo.errors import ParameterError
-from hydroservo.io.c_export import compiler
 
 
 def _has_compiler() -> bool:

@@ -30,9 +30,9 @@ import numpy as np
 import pytest
 
 import hydroservo as hs
+from hydroservo.codegen.c import CStepper, compiler
+from hydroservo.codegen.fmu import FmuExport, export_fmu
 from hydroservo.errors import ImplausibleResultWarning, ParameterError
-from hydroservo.io.c_export import CStepper, compiler
-from hydroservo.io.fmu import FmuExport, export_fmu
 from hydroservo.system.assembly import assemble
 from hydroservo.system.model import Model
 
@@ -250,7 +250,7 @@ def test_directional_derivatives_are_the_models_jacobian(flight) -> None:
     derivatives = [export.value_reference(f"der({s})") for s in export.states]
     outputs = [export.value_reference(o) for o in export.outputs]
     got = np.array(fmu.getDirectionalDerivative(derivatives + outputs, knowns, list(direction)))
-    perturbed = Model(*assemble(system, perturbed=("summer.u1",)))  # the engine's model with the input
+    perturbed = Model(assemble(system, perturbed=("summer.u1",)))  # the engine's model with the input
     t, xs, u = ca.SX.sym("t"), ca.SX.sym("x", n), ca.SX.sym("u")
     ps = ca.vertcat(system.parameter_vector(), u)
     rhs = ca.vertcat(perturbed.f(t, xs, ps), perturbed.outputs(t, xs, ps))

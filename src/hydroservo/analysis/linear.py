@@ -371,8 +371,10 @@ def linearize(
     if twice:
         raise ParameterError(f"inputs: {', '.join(twice)} given twice")
     x0 = operating_point(system, at, params=params, t=t, free=free)
-    (name, tsym, x, p, f, y, _x0, state_names, parameter_names, output_names, units, _desc, nominal,
-     param_units, *_rest) = assemble(system, tuple(ports))
+    a = assemble(system, tuple(ports))
+    tsym, x, p, f, y = a.t, a.x, a.p, a.f, a.y
+    state_names, parameter_names, output_names, units = a.state_names, a.parameter_names, a.output_names, a.units
+    nominal, param_units = a.nominal, a.parameter_units
     out_names = list(state_names if outputs is None else outputs)
     signals = {**dict(zip(state_names, ca.vertsplit(x))), **dict(zip(output_names, ca.vertsplit(y)))}
     for o in out_names:
@@ -420,7 +422,8 @@ def input_values(
     components: Sequence[str] | None = None,
 ) -> dict[str, float]:
     """The value of every input of ``components`` (default: all) at the state ``x`` and time ``t`` (SI)."""
-    (_, tsym, xs, p, _f, y, *_rest) = assemble(system)
+    a = assemble(system)
+    tsym, xs, p, y = a.t, a.x, a.p, a.y
     model = system.build()
     signals = {**dict(zip(model.state_names, ca.vertsplit(xs))), **dict(zip(model.output_names, ca.vertsplit(y)))}
     names = [f"{c}.{k}" for c in (components or list(system.components)) for k in system.components[c].INPUTS]
@@ -580,7 +583,7 @@ def simulated_response(
     settle = 5.0 * max(slow, default=0.0)
     # a steady motion lasts only until a stop: the travel a run may take, from the bounds of the moving states
     model = system.build()
-    lo, hi = (np.asarray(b, dtype=float).ravel() for b in model._limit_bounds(system.parameter_vector(params)))
+    lo, hi = (np.asarray(b, dtype=float).ravel() for b in model.limit_bounds(system.parameter_vector(params)))
     room = np.inf
     for k, w in enumerate(model.watched):
         rate = lin.drift.get(w.signal, 0.0)

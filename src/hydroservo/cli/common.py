@@ -124,13 +124,13 @@ def execute(job: Workflow, args: Any, progress: Any = None) -> int:
     import sys
 
     names = job.planned()
-    out = output_folder(args, job.folder()) if names else None
+    out = output_folder(args, job.folder()) if names or job.WRITES_ITSELF else None
     if out is not None:
         out.expect(names)
     report = job.run(progress=progress, folder=None if out is None else out.target)
     for text in report.warnings:
         print(f"hydroservo: warning: {text}", file=sys.stderr)
-    if out is not None:
+    if out is not None and report.artifacts():
         report.write(out)
     if getattr(args, "json", False):
         print(report.to_json())

@@ -1,81 +1,27 @@
-"""``hydroservo export-c``: a model as C code with a fixed-step stepper for real time (docs/realtime.md)."""
+"""``hydroservo export-c``: a model as C code with a fixed-step stepper for real time (docs/realtime.md;
+:mod:`hydroservo.workflows.export`)."""
 
 from __future__ import annotations
 
 import argparse
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-from hydroservo.cli.common import add_output_options, component_inputs, output_folder, print_json
-from hydroservo.cli.models import load_with_sets
-
-if TYPE_CHECKING:
-    from hydroservo.system.system import System
+from hydroservo.cli.common import add_output_options, component_inputs, execute
 
 __all__ = ["add_parsers", "export_arguments"]
 
 
-def export_arguments(args: argparse.Namespace) -> tuple[System, float, str | None, tuple[str, ...]]:
-    """What ``export-c`` and ``export-fmu`` share: the model with its ``--set`` values, ``--step``, ``--name`` and
-    ``--inputs``, each checked and named in errors by its option."""
-    from hydroservo.io.c_export import check_inputs, check_name, check_step
-
-    step = check_step(args.step, what="--step")
-    name = check_name(args.name, what="--name") if args.name is not None else None
-    system = load_with_sets(args.model, args.set)
-    return system, step, name, check_inputs(system, component_inputs(args.inputs), what="--inputs")
+def export_arguments(args: argparse.Namespace) -> dict[str, Any]:
+    """What ``export-c`` and ``export-fmu`` share: the model with its ``--set`` values, ``--step``, ``--method``,
+    ``--name``, ``--inputs`` and ``--force``, as the workflow's inputs."""
+    return {"model": args.model, "sets": args.set, "step": args.step, "method": args.method,
+            "inputs": component_inputs(args.inputs), "c_name": args.name, "force": args.force, "cli": True}
 
 
 def cmd_export_c(args: argparse.Namespace) -> int:
-    from hydroservo.io.c_export import export_c
-    from hydroservo.io.files import safe_name
+    from hydroservo.workflows.export import ExportC
 
-    system, step, name, inputs = export_arguments(args)
-    target = output_folder(args, f"hydroservo-{safe_name(system.name)}-c").target
-    export = export_c(
-        system, target, step=step, method=args.method, inputs=inputs, name=name, force=args.force, build=args.build
-    )
-    if args.json:
-        print_json(_report(export))
-        return 0
-    print(
-        f"exported {system.name!r} as C ({export.method}, step {export.step:g} s) to {export.directory}: "
-        f"parameters {len(export.parameters)}, inputs {len(export.inputs)}, states {len(export.states)}, "
-        f"outputs {len(export.outputs)}"
-    )
-    print(f"  API: {export.directory / f'{export.name}.h'}; build: cd {export.directory} && cc -O2 -c *.c (or make)")
-    if export.inputs:
-        print(f"  inputs (each added to what drives it in the system): {', '.join(export.inputs)}")
-    if args.build:
-        print(f"  built: {export.library}")
-    return 0
-
-
-def _report(export: Any) -> dict[str, Any]:
-    """What ``--json`` prints: the folder, the method, the files and every named vector with its unit."""
-
-    def named(names: tuple[str, ...]) -> list[dict[str, Any]]:
-        return [{"index": i, "name": n, "unit": export.units[n]} for i, n in enumerate(names)]
-
-    report: dict[str, Any] = {
-        "model": export.model,
-        "name": export.name,
-        "directory": str(export.directory),
-        "method": export.method,
-        "step_s": export.step,
-        "files": list(export.files),
-        "parameters": [
-            {"index": i, "name": n, "unit": export.units[n], "default": v}
-            for i, (n, v) in enumerate(zip(export.parameters, export.defaults))
-        ],
-        "inputs": named(export.inputs),
-        "states": named(export.states),
-        "outputs": named(export.outputs),
-    }
-    if export.method == "bdf2":
-        report["newton_tolerance"] = export.newton_tolerance
-    if export.library.name in export.files:
-        report["library"] = str(export.library)
-    return report
+    return execute(ExportC(**export_arguments(args), build=args.build), args)
 
 
 def add_parsers(sub: Any) -> None:

@@ -1,74 +1,21 @@
-"""``hydroservo export-fmu``: a model as an FMI 2.0 FMU, Model Exchange and Co-Simulation (docs/fmu.md)."""
+"""``hydroservo export-fmu``: a model as an FMI 2.0 FMU, Model Exchange and Co-Simulation (docs/fmu.md;
+:mod:`hydroservo.workflows.export`)."""
 
 from __future__ import annotations
 
 import argparse
-from pathlib import Path
 from typing import Any
 
-from hydroservo.cli.common import print_json
+from hydroservo.cli.common import execute
 from hydroservo.cli.export_c import export_arguments
 
 __all__ = ["add_parsers"]
 
 
 def cmd_export_fmu(args: argparse.Namespace) -> int:
-    from hydroservo.io.c_export import c_identifier
-    from hydroservo.io.files import OutputFolder
-    from hydroservo.io.fmu import export_fmu
+    from hydroservo.workflows.export import ExportFmu
 
-    system, step, name, inputs = export_arguments(args)
-    filename = f"{name or c_identifier(system.name)}.fmu"
-    OutputFolder(Path(args.out), force=args.force, what="--out").expect([filename])  # refused before the build
-    export = export_fmu(
-        system,
-        Path(args.out),
-        step=step,
-        method=args.method,
-        inputs=inputs,
-        name=name,
-        binary=not args.sources_only,
-        force=args.force,
-    )
-    if args.json:
-        print_json(_report(export))
-        return 0
-    built = f"binary for {export.platform} and sources" if export.platform else "sources only (no binary)"
-    print(
-        f"exported {system.name!r} as an FMI 2.0 FMU (Model Exchange and Co-Simulation) to {export.path}: "
-        f"{built}; parameters {len(export.parameters)} ({sum(export.tunable)} tunable), inputs "
-        f"{len(export.inputs)}, states {len(export.states)}, outputs {len(export.outputs)}"
-    )
-    print(f"  co-simulation: {export.method}, fixed step {export.step:g} s (communication steps a whole number of it)")
-    renamed = [v for v in export.variables if v.name != v.signal and v.kind != "derivative"]
-    if renamed:
-        print("  renamed (FMI needs unique names): " + ", ".join(f"{v.signal} ({v.kind}) -> {v.name}" for v in renamed))
-    return 0
-
-
-def _report(export: Any) -> dict[str, Any]:
-    """What ``--json`` prints: the file, GUID, co-simulation stepper and every variable with its value reference."""
-    variables = []
-    for vr, v in enumerate(export.variables):
-        item: dict[str, Any] = {"value_reference": vr, "name": v.name, "kind": v.kind, "unit": v.unit}
-        if v.name != v.signal:
-            item["signal"] = v.signal
-        if v.kind == "parameter":
-            item["start"] = export.defaults[vr]
-            item["variability"] = "tunable" if export.tunable[vr] else "fixed"
-        variables.append(item)
-    return {
-        "model": export.model,
-        "fmu": str(export.path),
-        "model_identifier": export.name,
-        "guid": export.guid,
-        "fmi_version": "2.0",
-        "interfaces": ["ModelExchange", "CoSimulation"],
-        "platform": export.platform,
-        "co_simulation": {"method": export.method, "step_s": export.step},
-        "files": list(export.files),
-        "variables": variables,
-    }
+    return execute(ExportFmu(**export_arguments(args), binary=not args.sources_only), args)
 
 
 def add_parsers(sub: Any) -> None:

@@ -9,14 +9,7 @@ from typing import Any
 
 from hydroservo.cli.common import add_output_options, execute
 
-__all__ = ["add_parsers", "load_with_sets"]
-
-
-def load_with_sets(name: str, sets: list[str]) -> Any:
-    """A built-in model or model file with ``--set`` values applied (:func:`hydroservo.workflows.base.load_with_sets`)."""
-    from hydroservo.workflows.base import load_with_sets as load
-
-    return load(name, sets)
+__all__ = ["add_parsers"]
 
 
 def cmd_models(args: argparse.Namespace) -> int:

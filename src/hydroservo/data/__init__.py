@@ -17,7 +17,7 @@
   a run need not build the unit registry; ``scripts/unit_table.py`` writes it).
 * ``reference/``: results of other tools that hydroservo compares itself with
   (Hopsan's Position Servo), with a README on how each was made.
-* ``c/``: the C templates of the fixed-step stepper that :mod:`hydroservo.io.c_export`
+* ``c/``: the C templates of the fixed-step stepper that :mod:`hydroservo.codegen.c`
   fills in for a model (``@NAME@`` and the like replaced by its identifier and sizes).
 
 This module only finds and parses the package's files (standard-library

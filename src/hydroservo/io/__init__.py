@@ -11,13 +11,11 @@ module                   files
 :mod:`.tables`           time tables (CSV) of recorded signals
 :mod:`.results`          simulation results (CSV, MAT)
 :mod:`.linear`           operating points (TOML) and linear models (JSON)
-:mod:`.c_export`         a model as C code with a fixed-step stepper (C sources)
-:mod:`.fmu`              a model as an FMI 2.0 FMU (Model Exchange and Co-Simulation)
 :mod:`.runs`             the runs of a study, written as they arrive (Parquet parts)
 :mod:`.toml`             the TOML reader and value writer they share
 =======================  ========================================================
 
-A new file format gets a module here; nothing outside this package opens a
+A model written as code (C, an FMU) is :mod:`hydroservo.codegen`'s. A new file format gets a module here; nothing outside this package opens a
 user's file. (The package's own data files are found by :mod:`hydroservo.data`.)
 
 Names are imported on first use (PEP 562): reading a model file must not load
@@ -33,9 +31,6 @@ from typing import TYPE_CHECKING, Any
 _LAZY: dict[str, str] = {
     "read_bode": "hydroservo.io.bode",
     "write_bode": "hydroservo.io.bode",
-    "CStepper": "hydroservo.io.c_export",
-    "export_c": "hydroservo.io.c_export",
-    "export_fmu": "hydroservo.io.fmu",
     "component_file_text": "hydroservo.io.component_file",
     "component_toml": "hydroservo.io.component_file",
     "read_component_file": "hydroservo.io.component_file",
@@ -71,9 +66,6 @@ _LAZY: dict[str, str] = {
 __all__ = [
     "read_bode",
     "write_bode",
-    "CStepper",
-    "export_c",
-    "export_fmu",
     "component_file_text",
     "component_toml",
     "read_component_file",
@@ -121,7 +113,6 @@ def __dir__() -> list[str]:
 
 if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and editors
     from hydroservo.io.bode import read_bode, write_bode
-    from hydroservo.io.c_export import CStepper, export_c
     from hydroservo.io.component_file import (
         component_file_text,
         component_toml,
@@ -131,7 +122,6 @@ if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and edit
     )
     from hydroservo.io.curves import read_bench_curves, read_csv_table, read_static_curves, write_bench_curves
     from hydroservo.io.datasheet import read_datasheet
-    from hydroservo.io.fmu import export_fmu
     from hydroservo.io.linear import read_operating_point, write_linear_model
     from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
     from hydroservo.io.results import write_csv, write_mat

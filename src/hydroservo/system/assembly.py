@@ -23,7 +23,7 @@ from hydroservo.system.expressions import check_dimension, evaluate
 from hydroservo.system.implicit import newton
 from hydroservo.system.plausibility import Watched
 
-__all__ = ["Structure", "assemble"]
+__all__ = ["Structure", "Assembly", "assemble"]
 
 
 class Structure(Protocol):
@@ -287,8 +287,33 @@ def _algebraic(asm: _Assembler, units: dict[str, str], descriptions: dict[str, s
     return found
 
 
-def assemble(system: Structure, perturbed: tuple[str, ...] = ()) -> tuple[Any, ...]:
-    """The arguments of :class:`~hydroservo.system.model.Model` for ``system``.
+@dataclass(frozen=True)
+class Assembly:
+    """A system as one CasADi graph: what :func:`assemble` returns and :class:`~hydroservo.system.model.Model`
+    compiles. Every expression is in the symbols ``t``, ``x`` (the states, SI) and ``p`` (the parameters)."""
+
+    name: str  #: the system's name
+    t: Any  #: time [s], an SX symbol
+    x: Any  #: the states, an SX column
+    p: Any  #: the parameters (then the perturbed inputs' symbols, if any), an SX column
+    f: Any  #: the states' rates dx/dt
+    y: Any  #: the outputs (components' outputs, then aliases)
+    x0: Any  #: the initial state, in ``p`` only
+    state_names: list[str]
+    parameter_names: list[str]
+    output_names: list[str]
+    units: dict[str, str]  #: unit of every state, output and algebraic unknown
+    descriptions: dict[str, str]
+    nominal: np.ndarray  #: the states' nominal magnitudes
+    parameter_units: dict[str, str]
+    #: the physical bounds of :mod:`hydroservo.system.plausibility`: (what, expression, low, high)
+    limits: list[tuple[Watched, Any, Any, Any]] = field(default_factory=list)
+    #: the algebraic unknowns solved inside the graph, and the size of their last Newton correction
+    convergence: tuple[list[str], Any] | None = None
+
+
+def assemble(system: Structure, perturbed: tuple[str, ...] = ()) -> Assembly:
+    """``system`` as one CasADi graph (:class:`Assembly`), what :class:`~hydroservo.system.model.Model` compiles.
 
     ``perturbed`` names component inputs (``"valve.xv"``) to which a symbol
     is added, whatever feeds them: the inputs of a linearisation. Their symbols
@@ -336,21 +361,21 @@ def assemble(system: Structure, perturbed: tuple[str, ...] = ()) -> tuple[Any, .
         cname, _, key = target.partition(".")
         params[sym.name()] = sym
         param_units[sym.name()] = system.components[cname].INPUTS[key].unit
-    return (
-        system.name,
-        asm.t,
-        states.vector(),
-        ca.vertcat(*params.values()) if params else ca.SX(0, 1),
-        rates.vector(),
-        outputs.vector(),
-        x0.vector(),
-        states.names,
-        list(params),
-        outputs.names,
-        units,
-        descriptions,
-        np.array(nominal, dtype=float),
-        param_units,
-        limits,
-        convergence,
+    return Assembly(
+        name=system.name,
+        t=asm.t,
+        x=states.vector(),
+        p=ca.vertcat(*params.values()) if params else ca.SX(0, 1),
+        f=rates.vector(),
+        y=outputs.vector(),
+        x0=x0.vector(),
+        state_names=states.names,
+        parameter_names=list(params),
+        output_names=outputs.names,
+        units=units,
+        descriptions=descriptions,
+        nominal=np.array(nominal, dtype=float),
+        parameter_units=param_units,
+        limits=limits,
+        convergence=convergence,
     )

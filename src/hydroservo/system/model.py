@@ -15,7 +15,7 @@ import time
 import warnings
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import casadi as ca
 import numpy as np
@@ -30,9 +30,12 @@ from hydroservo.system.integration import (
     output_grid,
     translate,
 )
-from hydroservo.system.plausibility import Implausible, Watched, check
+from hydroservo.system.plausibility import Implausible, check
 from hydroservo.system.result import BatchResult, Result
 from hydroservo.units import si_unit
+
+if TYPE_CHECKING:
+    from hydroservo.system.assembly import Assembly
 
 __all__ = ["Model"]
 
@@ -102,25 +105,15 @@ class Model:
         ``f(t, x, p) -> dx/dt`` (SI).
     """
 
-    def __init__(
-        self,
-        name: str,
-        t: ca.SX,
-        x: ca.SX,
-        p: ca.SX,
-        f: ca.SX,
-        y: ca.SX,
-        x0: ca.SX,
-        state_names: list[str],
-        parameter_names: list[str],
-        output_names: list[str],
-        units: dict[str, str],
-        descriptions: dict[str, str],
-        nominal: np.ndarray,
-        parameter_units: dict[str, str],
-        limits: Sequence[tuple[Watched, Any, Any, Any]] = (),
-        convergence: tuple[list[str], Any] | None = None,
-    ) -> None:
+    def __init__(self, assembly: Assembly) -> None:
+        """Compile ``assembly`` (:func:`hydroservo.system.assembly.assemble`)."""
+        a = assembly
+        name, t, x, p, f, y, x0 = a.name, a.t, a.x, a.p, a.f, a.y, a.x0
+        state_names, parameter_names, output_names = a.state_names, a.parameter_names, a.output_names
+        units, descriptions, nominal, parameter_units = a.units, a.descriptions, a.nominal, a.parameter_units
+        limits, convergence = a.limits, a.convergence
+        #: what the model was compiled from (its graph, for code generation and linearisation)
+        self.assembly = assembly
         self.name = name
         self.state_names = state_names
         self.parameter_names = parameter_names
@@ -161,7 +154,8 @@ class Model:
         lowers = [ca.SX(lower) for _, _, lower, _ in limits]
         uppers = [ca.SX(upper) for _, _, _, upper in limits]
         bounds = [ca.vertcat(*col) if col else ca.SX(0, 1) for col in (lowers, uppers)]
-        self._limit_bounds = ca.Function("limit_bounds", [p], bounds)
+        #: ``limit_bounds(p) -> (lower, upper)``: the bounds of :attr:`watched`, evaluated at the parameters ``p``
+        self.limit_bounds = ca.Function("limit_bounds", [p], bounds)
         #: Algebraic unknowns solved inside the model (:mod:`hydroservo.system.implicit`), recorded as outputs.
         self.algebraic_names: list[str] = list(convergence[0]) if convergence else []
         correction = ca.substitute(convergence[1], x, z * nom) if convergence else ca.SX(0, 1)
@@ -483,7 +477,7 @@ class Model:
         if not self.watched:
             return []
         z = Z if Z is not None else np.asarray(X) / self.nominal[:, None]
-        lo, hi = (np.asarray(b, dtype=float).ravel() for b in self._limit_bounds(p))
+        lo, hi = (np.asarray(b, dtype=float).ravel() for b in self.limit_bounds(p))
         extremes, _ = _buffered(self._limit_extremes(grid.size), {0: grid[None, :], 1: z, 2: p}, raises=True)
         if not check(grid[[0, -1]], self.watched, extremes, lo, hi):  # check reads only the extremes' verdicts
             return []
@@ -508,7 +502,7 @@ class Model:
 
     def _check_limits(self, grid: np.ndarray, X: np.ndarray, computed: np.ndarray, p: np.ndarray) -> list[Implausible]:
         V = np.array([X[i] if kind == "state" else computed[i] for kind, i in self._watch_rows])
-        lo, hi = (np.asarray(b, dtype=float).ravel() for b in self._limit_bounds(p))
+        lo, hi = (np.asarray(b, dtype=float).ravel() for b in self.limit_bounds(p))
         return check(grid, self.watched, V, lo, hi)
 
     def _limit_function(self, nt: int) -> ca.Function:
@@ -923,7 +917,7 @@ class Model:
             E, code = _buffered(fe, {0: Z, 1: P[:, runs]})  # [min, max] of each run, side by side
             if code != 0:
                 raise RuntimeError(f"batch of {self.name!r}: the plausibility checks could not be evaluated")
-            lows, highs = (np.asarray(b, dtype=float) for b in self._limit_bounds.map(len(runs))(P[:, runs]))
+            lows, highs = (np.asarray(b, dtype=float) for b in self.limit_bounds.map(len(runs))(P[:, runs]))
             for j, k in enumerate(runs):
                 extremes = E[:, 2 * j : 2 * j + 2]
                 if k not in failures and check(grid[[0, -1]], self.watched, extremes, lows[:, j], highs[:, j]):

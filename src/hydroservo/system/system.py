@@ -489,7 +489,7 @@ class System:
                 _BUILT.move_to_end(key)
                 self._model = _BUILT[key]
             else:
-                self._model = Model(*assemble(self))
+                self._model = Model(assemble(self))
         except (ModelError, ParameterError) as exc:
             if self.source and not str(exc).startswith(self.source):
                 raise type(exc)(f"{self.source}: {exc}") from None

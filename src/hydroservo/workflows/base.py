@@ -160,6 +160,9 @@ class Workflow:
 
     #: Fields whose option is not ``--field-name`` (e.g. ``{"sets": "--set"}``).
     OPTIONS: ClassVar[dict[str, str]] = {}
+    #: True for a workflow that writes its own files while it runs (into ``run``'s ``folder``, all or nothing):
+    #: its report has no artifacts to write afterwards.
+    WRITES_ITSELF: ClassVar[bool] = False
 
     cli: bool = field(default=False, kw_only=True, repr=False)
 

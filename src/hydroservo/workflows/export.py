@@ -1,4 +1,5 @@
-"""A system written out: as an editable model file (``hydroservo export``).
+"""A system written out: as an editable model file (``hydroservo export``), as C code with a real-time stepper
+(``export-c``), as an FMI 2.0 FMU (``export-fmu``).
 
 >>> from hydroservo.workflows import export
 >>> text = export.model_file("flight-simulator").text
@@ -13,12 +14,12 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from hydroservo.workflows.base import Progress, Report, Workflow, load_with_sets
+from hydroservo.workflows.base import Progress, Report, Workflow, load_with_sets, safe_name
 
 if TYPE_CHECKING:
     from hydroservo.system.system import System
 
-__all__ = ["ExportModel", "ModelFileReport", "model_file"]
+__all__ = ["ExportModel", "ModelFileReport", "model_file", "ExportC", "CReport", "ExportFmu", "FmuReport"]
 
 
 @dataclass
@@ -61,3 +62,180 @@ class ExportModel(Workflow):
 def model_file(model: str | Path | System, sets: Sequence[str] | Mapping[str, Any] | None = None) -> ModelFileReport:
     """``model`` as a model file's text (:class:`ModelFileReport`)."""
     return ExportModel(model, sets).run()
+
+
+# -- C code with a real-time stepper ------------------------------------------------------------
+@dataclass
+class _CodeExport(Workflow):
+    """What the C and FMU exports share: the model with its changes, the step, the C identifier, the inputs."""
+
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
+    #: The export writes its own files (all or nothing) while it runs, into the folder it is given.
+    WRITES_ITSELF: ClassVar[bool] = True
+
+    model: str | Path | System
+    sets: Sequence[str] | Mapping[str, Any] | None = None
+    step: float | str = 1e-4
+    method: str = "rk4"
+    inputs: Sequence[str] = ()
+    c_name: str | None = None
+    force: bool = False
+
+    def __post_init__(self) -> None:
+        from hydroservo.codegen.c import check_inputs, check_name, check_step
+
+        self.h = check_step(self.step, what=self.name("step"))
+        self.identifier = check_name(self.c_name, what=self.name("c_name")) if self.c_name is not None else None
+        self.system = load_with_sets(self.model, self.sets, self.name("sets"))
+        self.targets = check_inputs(self.system, list(self.inputs), what=self.name("inputs"))
+
+
+@dataclass
+class CReport(Report):
+    """The C code written: its folder, files, method, and every parameter, input, state and output by index."""
+
+    command: ClassVar[str] = "export-c"
+
+    export: Any  #: :class:`hydroservo.codegen.c.CExport`
+    built: bool = False
+
+    def title(self) -> str:
+        return f"{self.export.model}: C code ({self.export.method}, step {self.export.step:g} s)"
+
+    def lines(self) -> list[str]:
+        e = self.export
+        out = [
+            f"exported {e.model!r} as C ({e.method}, step {e.step:g} s) to {e.directory}: parameters "
+            f"{len(e.parameters)}, inputs {len(e.inputs)}, states {len(e.states)}, outputs {len(e.outputs)}",
+            f"  API: {e.directory / f'{e.name}.h'}; build: cd {e.directory} && cc -O2 -c *.c (or make)",
+        ]
+        if e.inputs:
+            out.append(f"  inputs (each added to what drives it in the system): {', '.join(e.inputs)}")
+        if self.built:
+            out.append(f"  built: {e.library}")
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        e = self.export
+
+        def named(names: tuple[str, ...]) -> list[dict[str, Any]]:
+            return [{"index": i, "name": n, "unit": e.units[n]} for i, n in enumerate(names)]
+
+        report: dict[str, Any] = {
+            "model": e.model,
+            "name": e.name,
+            "directory": str(e.directory),
+            "method": e.method,
+            "step_s": e.step,
+            "files": list(e.files),
+            "parameters": [
+                {"index": i, "name": n, "unit": e.units[n], "default": v}
+                for i, (n, v) in enumerate(zip(e.parameters, e.defaults, strict=True))
+            ],
+            "inputs": named(e.inputs),
+            "states": named(e.states),
+            "outputs": named(e.outputs),
+        }
+        if e.method == "bdf2":
+            report["newton_tolerance"] = e.newton_tolerance
+        if e.library.name in e.files:
+            report["library"] = str(e.library)
+        return report
+
+
+@dataclass
+class ExportC(_CodeExport):
+    """``model`` as C code with a fixed-step stepper (``method`` rk4 or bdf2, step ``step``) and a C API; the host
+    sets ``inputs`` (component inputs); ``build`` also compiles a shared library (docs/realtime.md)."""
+
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "c_name": "--name"}
+
+    build: bool = False
+
+    def folder(self) -> str:
+        return f"hydroservo-{safe_name(self.system.name)}-c"
+
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> CReport:
+        from hydroservo.codegen.c import c_identifier, export_c
+
+        directory = folder if folder is not None else Path(self.identifier or c_identifier(self.system.name))
+        export = export_c(self.system, directory, step=self.h, method=self.method, inputs=self.targets,
+                          name=self.identifier, force=self.force, build=self.build)
+        return CReport(export, self.build)
+
+
+# -- FMI 2.0 FMUs ---------------------------------------------------------------------------------
+@dataclass
+class FmuReport(Report):
+    """The FMU written: its file, GUID, co-simulation stepper and every variable with its value reference."""
+
+    command: ClassVar[str] = "export-fmu"
+
+    export: Any  #: :class:`hydroservo.codegen.fmu.FmuExport`
+
+    def title(self) -> str:
+        return f"{self.export.model}: FMI 2.0 FMU"
+
+    def lines(self) -> list[str]:
+        e = self.export
+        built = f"binary for {e.platform} and sources" if e.platform else "sources only (no binary)"
+        out = [
+            f"exported {e.model!r} as an FMI 2.0 FMU (Model Exchange and Co-Simulation) to {e.path}: {built}; "
+            f"parameters {len(e.parameters)} ({sum(e.tunable)} tunable), inputs {len(e.inputs)}, states "
+            f"{len(e.states)}, outputs {len(e.outputs)}",
+            f"  co-simulation: {e.method}, fixed step {e.step:g} s (communication steps a whole number of it)",
+        ]
+        renamed = [v for v in e.variables if v.name != v.signal and v.kind != "derivative"]
+        if renamed:
+            out.append("  renamed (FMI needs unique names): "
+                       + ", ".join(f"{v.signal} ({v.kind}) -> {v.name}" for v in renamed))
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        e = self.export
+        variables = []
+        for vr, v in enumerate(e.variables):
+            item: dict[str, Any] = {"value_reference": vr, "name": v.name, "kind": v.kind, "unit": v.unit}
+            if v.name != v.signal:
+                item["signal"] = v.signal
+            if v.kind == "parameter":
+                item["start"] = e.defaults[vr]
+                item["variability"] = "tunable" if e.tunable[vr] else "fixed"
+            variables.append(item)
+        return {
+            "model": e.model,
+            "fmu": str(e.path),
+            "model_identifier": e.name,
+            "guid": e.guid,
+            "fmi_version": "2.0",
+            "interfaces": ["ModelExchange", "CoSimulation"],
+            "platform": e.platform,
+            "co_simulation": {"method": e.method, "step_s": e.step},
+            "files": list(e.files),
+            "variables": variables,
+        }
+
+
+@dataclass
+class ExportFmu(_CodeExport):
+    """``model`` as the FMI 2.0 FMU ``NAME.fmu`` (Model Exchange and Co-Simulation, ``method`` and ``step`` of the
+    co-simulation stepper); ``binary`` builds it for this machine beside the sources (docs/fmu.md)."""
+
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "c_name": "--name", "folder": "--out"}
+
+    binary: bool = True
+
+    def folder(self) -> str:
+        return "."
+
+    def planned(self) -> list[str]:
+        from hydroservo.codegen.c import c_identifier
+
+        return [f"{self.identifier or c_identifier(self.system.name)}.fmu"]
+
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> FmuReport:
+        from hydroservo.codegen.fmu import export_fmu
+
+        export = export_fmu(self.system, folder if folder is not None else Path("."), step=self.h, method=self.method,
+                            inputs=self.targets, name=self.identifier, binary=self.binary, force=self.force)
+        return FmuReport(export)

@@ -16,7 +16,7 @@ imports:
   exported.
 * ``sources/``: the same C code, for a host that builds FMUs itself: the
   model's functions (CasADi), the fixed-step stepper of
-  :mod:`hydroservo.io.c_export`, the forward derivatives of the rates and
+  :mod:`hydroservo.codegen.c`, the forward derivatives of the rates and
   outputs (``NAME_fmu_model.c``, for ``fmi2GetDirectionalDerivative``) and
   ``NAME_fmi2.c``, the FMI interface, which calls the stepper's C API.
 
@@ -31,7 +31,7 @@ at the step chosen at export; a communication step must be a whole number of
 those steps, and co-simulation starts at t = 0. The model has no events, no integer or boolean variables.
 
 An input (``valve.u``) is added to whatever drives it inside the system, as
-in :func:`~hydroservo.io.c_export.export_c`.
+in :func:`~hydroservo.codegen.c.export_c`.
 """
 
 from __future__ import annotations
@@ -54,9 +54,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from hydroservo.data import c_template
-from hydroservo.errors import ParameterError, shorten
-from hydroservo.io.c_export import (
+from hydroservo.codegen.c import (
     METHODS,
     NEWTON_TOLERANCE,
     c_identifier,
@@ -69,6 +67,8 @@ from hydroservo.io.c_export import (
     fill_template,
     library_suffix,
 )
+from hydroservo.data import c_template
+from hydroservo.errors import ParameterError, shorten
 from hydroservo.io.files import OutputFolder
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import DEFAULT_ACCURACY, tolerances
@@ -516,7 +516,7 @@ def export_fmu(
     Raises
     ------
     ParameterError
-        As :func:`~hydroservo.io.c_export.export_c` does; also if the file exists (without ``force``).
+        As :func:`~hydroservo.codegen.c.export_c` does; also if the file exists (without ``force``).
     ModelError
         If the system has no states, or two of its variables share a name.
     """
@@ -540,7 +540,7 @@ def export_fmu(
             system, build / "sources", step=h, method=method, inputs=targets, name=cid,
             newton_tolerance=newton_tolerance,
         )  # fmt: skip
-        model = Model(*assemble(system, perturbed=targets))
+        model = Model(assemble(system, perturbed=targets))
         fwd = _directional(model, len(export.parameters), cid)
         generator = ca.CodeGenerator(f"{cid}_fmu_model.c", {"with_header": True, "prefix": f"{cid}_fmu_"})
         generator.add(fwd)

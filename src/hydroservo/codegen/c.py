@@ -238,12 +238,12 @@ class _Functions:
     algebraic: list[str]
 
 
-def _functions(model: Model, args: Sequence[Any], cid: str, method: str) -> _Functions:
+def _functions(model: Model, cid: str, method: str) -> _Functions:
     """``f``, ``jac`` (bdf2), ``y``, ``z0`` and ``conv`` (algebraic unknowns) of ``model`` on z = x / x_nom.
 
-    ``args`` are the assembly's (:func:`~hydroservo.system.assembly.assemble`), of which ``model`` was
-    built: its symbols and the unknowns' last Newton corrections. Every output is dense: the stepper reads
-    whole vectors and column-major matrices.
+    The unknowns' last Newton corrections come from the assembly ``model`` was compiled from
+    (:attr:`~hydroservo.system.model.Model.assembly`). Every output is dense: the stepper reads whole vectors
+    and column-major matrices.
     """
     t, z, p = ca.SX.sym("t"), ca.SX.sym("z", model.nx), ca.SX.sym("p", model.np)
     nominal = ca.DM(model.nominal)
@@ -255,10 +255,10 @@ def _functions(model: Model, args: Sequence[Any], cid: str, method: str) -> _Fun
     functions.append(ca.Function(f"{cid}_y", [t, z, p], [ca.densify(model.outputs(t, x, p))]))
     functions.append(ca.Function(f"{cid}_z0", [p], [ca.densify(model.x0(p) / nominal)]))
     algebraic: list[str] = []
-    convergence = args[-1]
-    if convergence is not None:
-        algebraic, correction = list(convergence[0]), convergence[1]
-        conv = ca.Function("conv", [args[1], args[2], args[3]], [correction])
+    a = model.assembly
+    if a.convergence is not None:
+        algebraic, correction = list(a.convergence[0]), a.convergence[1]
+        conv = ca.Function("conv", [a.t, a.x, a.p], [correction])
         functions.append(ca.Function(f"{cid}_conv", [t, z, p], [ca.densify(conv(t, x, p))]))
     return _Functions(functions, algebraic)
 
@@ -550,13 +550,12 @@ def export_c(
     out.expect(files)
     defaults = system.parameter_vector()
     built = system.build()
-    args = assemble(system, perturbed=targets)
-    model = Model(*args)
+    model = Model(assemble(system, perturbed=targets))
     if model.nx == 0:
         raise ModelError(f"system {system.name!r} has no states: there is nothing to step")
     if model.parameter_names[: len(defaults)] != built.parameter_names:  # the assembly's promise: inputs come last
         raise RuntimeError("export_c: the perturbed model's parameters are not the system's, in order")
-    functions = _functions(model, args, cid, method)
+    functions = _functions(model, cid, method)
     upper = cid.upper()
     units = {n: model.parameter_units[n] for n in built.parameter_names}
     units.update({target: model.parameter_units[f"d({target})"] for target in targets})

@@ -1,4 +1,4 @@
-"""The C stepper of a model (hydroservo.io.c_export): its order, its agreement with CVODES, its C API.
+"""The C stepper of a model (hydroservo.codegen.c): its order, its agreement with CVODES, its C API.
 
 Each stepper is exported and compiled once per module (about 0.3-0.6 s each); the whole module is
 skipped when there is no C compiler. Deviations are stated relative to the reference signal's range
@@ -18,9 +18,9 @@ import pytest
 
 import hydroservo as hs
 from hydroservo import components as c
+from hydroservo.codegen.c import CStepper, c_identifier, compiler, export_c
 from hydroservo.components.base import Algebraic, Component, Param, State
 from hydroservo.errors import HydroservoError, ModelError, ParameterError, SolverError
-from hydroservo.io.c_export import CStepper, c_identifier, compiler, export_c
 from hydroservo.system.assembly import assemble
 from hydroservo.system.model import Model
 
@@ -175,7 +175,7 @@ def test_input_matches_the_perturbed_model_under_cvodes(servo_rk4: CStepper) -> 
     acceleration limit (a kink in the rates, crossed inside a step) at other times than without the input;
     measured 3e-5 on the pressures and the spool, 1.5e-6 on the position, ten times less at half the step."""
     system = hs.load_model("servo-solenoid-cylinder")
-    model = Model(*assemble(system, perturbed=("valve.u",)))
+    model = Model(assemble(system, perturbed=("valve.u",)))
     assert model.parameter_names[-1] == "d(valve.u)"
     p = np.append(system.parameter_vector(), 0.05)
     ref = model.simulate(0.2, p, t_eval=np.linspace(0.0, 0.2, 201), rtol=1e-10, atol=1e-12)

@@ -1,4 +1,4 @@
-"""The FMU's model description (hydroservo.io.fmu): variables, value references, tunability, units, dependencies.
+"""The FMU's model description (hydroservo.codegen.fmu): variables, value references, tunability, units, dependencies.
 
 These tests build sources-only FMUs (no compiler needed) and read their modelDescription.xml; the
 integration tests (tests/integration/test_fmu_fmpy.py) build binaries and run them in FMPy.
@@ -15,8 +15,8 @@ import pytest
 
 import hydroservo as hs
 from hydroservo import components as c
+from hydroservo.codegen.fmu import export_fmu
 from hydroservo.errors import ParameterError, UnitError
-from hydroservo.io.fmu import export_fmu
 
 
 def _spring() -> hs.System:
