@@ -44,6 +44,7 @@ __all__ = [
     "VACUUM",
     "ABSOLUTE_ZERO",
     "registry",
+    "unit_table",
     "to_si",
     "from_si",
     "si_unit",
@@ -124,10 +125,21 @@ Shipped = tuple[float, float, tuple[tuple[str, float], ...], str, str]
 
 
 @functools.cache
+def unit_table() -> dict[str, Any]:
+    """``data/units.json``: ``{"pint": version, "units": {text: {factor, offset, dimension, coherent, printed}}}``.
+
+    This module is its one reader (a package resource; :mod:`hydroservo.data`, which converts parameter sets
+    with :func:`to_si`, is not imported for it: the two would import each other).
+    """
+    import json
+    from importlib import resources
+
+    return dict(json.loads(resources.files("hydroservo").joinpath("data", "units.json").read_text(encoding="utf-8")))
+
+
+@functools.cache
 def _shipped() -> dict[str, Shipped]:
     """The conversions of ``data/units.json`` (module notes), by unit text."""
-    from hydroservo.data import unit_table
-
     return {
         text: (e["factor"], e["offset"], tuple((d, float(x)) for d, x in e["dimension"]), e["coherent"], e["printed"])
         for text, e in unit_table()["units"].items()

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from hydroservo.data import unit_table
+from hydroservo.units import unit_table
 from hydroservo.errors import ModelError
 from hydroservo.system.expressions import check_dimension
 from hydroservo.units import (

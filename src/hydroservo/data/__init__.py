@@ -13,7 +13,7 @@
 * ``servovalves.toml``: the built-in servovalves of ``hydroservo servovalve``: what each is, its parameter
   set and its rated design point.
 * ``units.json``: the conversions of the units the package uses and engineers
-  commonly write, computed by pint (:mod:`hydroservo.units` reads them so that
+  commonly write, computed by pint (:func:`hydroservo.units.unit_table` reads them so that
   a run need not build the unit registry; ``scripts/unit_table.py`` writes it).
 * ``reference/``: results of other tools that hydroservo compares itself with
   (Hopsan's Position Servo), with a README on how each was made.
@@ -45,7 +45,6 @@ __all__ = [
     "reference_text",
     "c_template",
     "servovalves",
-    "unit_table",
 ]
 
 _ROOT = resources.files("hydroservo.data")
@@ -131,14 +130,6 @@ def c_template(name: str) -> str:
     if not path.is_file():
         raise ParameterError(f"no C template {name!r}")
     return path.read_text(encoding="utf-8")
-
-
-@functools.cache
-def unit_table() -> dict[str, Any]:
-    """``units.json``: ``{"pint": version, "units": {text: {factor, offset, dimension, coherent, printed}}}``."""
-    import json
-
-    return dict(json.loads((_ROOT / "units.json").read_text(encoding="utf-8")))
 
 
 @functools.cache
