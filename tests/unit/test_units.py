@@ -10,7 +10,6 @@ from pathlib import Path
 
 import pytest
 
-from hydroservo.units import unit_table
 from hydroservo.errors import ModelError
 from hydroservo.system.expressions import check_dimension
 from hydroservo.units import (
@@ -23,6 +22,7 @@ from hydroservo.units import (
     registry,
     si_unit,
     to_si,
+    unit_table,
 )
 
 SHIPPED = unit_table()["units"]
