@@ -44,6 +44,7 @@ LAYERS = {
 #: Upward imports allowed inside functions: (importing module, imported top-level package).
 DELEGATIONS = {
     ("hydroservo.system.result", "io"),  # Result.to_csv / to_mat
+    ("hydroservo.system.system", "plotting"),  # System.diagram, a notebook's display of a system
     ("hydroservo.system.result", "plotting"),  # Result.plot, BatchResult.plot
     ("hydroservo.system.result", "analysis"),  # BatchResult.table
     ("hydroservo.analysis.frequency", "plotting"),  # FrequencyResponse.plot

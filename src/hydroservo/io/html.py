@@ -15,6 +15,10 @@ all inside it.
 
 from __future__ import annotations
 
+import functools
+import html
+import json
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
@@ -86,9 +90,157 @@ class Page:
     footer: str = ""
 
 
+_CSS = """
+:root { --ink: #1b1f24; --muted: #5b6470; --line: #d9dee4; --band: #f4f6f8; --accent: #0b5cad; }
+* { box-sizing: border-box; }
+body { margin: 0; color: var(--ink); background: #fff;
+       font: 14px/1.5 system-ui, -apple-system, "Segoe UI", Roboto, Helvetica, Arial, sans-serif; }
+header { padding: 22px 32px 14px; border-bottom: 3px solid var(--accent); background: var(--band); }
+header h1 { margin: 0 0 4px; font-size: 24px; }
+header p { margin: 0; color: var(--muted); }
+nav { padding: 8px 32px; border-bottom: 1px solid var(--line); font-size: 13px; }
+nav a { margin-right: 14px; color: var(--accent); text-decoration: none; white-space: nowrap; }
+main { padding: 8px 32px 24px; max-width: 1200px; }
+section { margin-top: 22px; }
+h2 { font-size: 18px; margin: 0 0 10px; padding-bottom: 4px; border-bottom: 1px solid var(--line); }
+p.text { margin: 6px 0; max-width: 900px; }
+pre { background: var(--band); padding: 10px 12px; border: 1px solid var(--line); overflow-x: auto; font-size: 12px; }
+.scroll { max-height: 520px; overflow: auto; border: 1px solid var(--line); }
+table { border-collapse: collapse; font-size: 13px; margin: 4px 0 10px; }
+.scroll table { margin: 0; }
+th, td { padding: 4px 10px; border-bottom: 1px solid var(--line); text-align: left; vertical-align: top; }
+th { background: var(--band); position: sticky; top: 0; font-weight: 600; }
+td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+tr:hover td { background: #fafbfc; }
+caption { caption-side: bottom; text-align: left; color: var(--muted); font-size: 12px; padding-top: 4px; }
+figure { margin: 8px 0 16px; }
+figcaption { color: var(--muted); font-size: 12px; }
+.plot { width: 100%; min-height: 300px; }
+.drawing { overflow-x: auto; border: 1px solid var(--line); padding: 8px; background: #fff; }
+.drawing svg { max-width: 100%; height: auto; }
+.notice { padding: 8px 12px; margin: 6px 0; border-left: 4px solid; border-radius: 2px; }
+.notice.warning { background: #fff6e5; border-color: #e69f00; }
+.notice.error { background: #fdecea; border-color: #c62828; }
+.notice.ok { background: #eaf6ee; border-color: #2e7d32; }
+.notice.info { background: #eaf2fb; border-color: var(--accent); }
+footer { padding: 14px 32px; color: var(--muted); font-size: 12px; border-top: 1px solid var(--line); }
+@media print { nav { display: none; } .scroll { max-height: none; overflow: visible; } th { position: static; } }
+"""
+
+
+def _cell(value: Any, digits: int) -> tuple[str, bool]:
+    """A table cell's text and whether it is a number (right-aligned)."""
+    import math
+
+    if value is None:
+        return "–", False
+    if isinstance(value, bool):
+        return ("yes" if value else "no"), False
+    if isinstance(value, int | float) or hasattr(value, "dtype"):
+        v = float(value)
+        if math.isnan(v):
+            return "–", True
+        return f"{v:.{digits}g}", True
+    return html.escape(str(value)), False
+
+
+def _table(t: Table) -> str:
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in t.columns)
+    rows = []
+    for row in t.rows:
+        cells = []
+        for v in row:
+            text, number = _cell(v, t.digits)
+            cells.append(f'<td class="num">{text}</td>' if number else f"<td>{text}</td>")
+        rows.append("<tr>" + "".join(cells) + "</tr>")
+    caption = f"<caption>{html.escape(t.caption)}</caption>" if t.caption else ""
+    body = f"<table>{caption}<thead><tr>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table>"
+    return f'<div class="scroll">{body}</div>' if len(t.rows) > 25 else body
+
+
+def _script_json(value: Any) -> str:
+    """JSON safe inside a <script> element."""
+    return json.dumps(value, default=_plain).replace("</", "<\\/")
+
+
+def _plain(value: Any) -> Any:
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    raise TypeError(f"not JSON: {type(value).__name__}")
+
+
+def _svg(markup: str) -> str:
+    """SVG markup to put inline: without its XML declaration and doctype."""
+    text = re.sub(r"<\?xml[^>]*\?>", "", markup)
+    text = re.sub(r"<!DOCTYPE[^>]*>", "", text, flags=re.I)
+    return text.strip()
+
+
+def _item(item: Item, figures: list[tuple[str, Figure]]) -> str:
+    if isinstance(item, Text):
+        if item.preformatted:
+            return f"<pre>{html.escape(item.text)}</pre>"
+        return "".join(f'<p class="text">{html.escape(p)}</p>' for p in item.text.split("\n\n"))
+    if isinstance(item, Table):
+        return _table(item)
+    if isinstance(item, Figure):
+        ident = f"figure-{len(figures) + 1}"
+        figures.append((ident, item))
+        caption = f"<figcaption>{html.escape(item.caption)}</figcaption>" if item.caption else ""
+        return f'<figure><div class="plot" id="{ident}"></div>{caption}</figure>'
+    if isinstance(item, Drawing):
+        caption = f"<figcaption>{html.escape(item.caption)}</figcaption>" if item.caption else ""
+        return f'<figure><div class="drawing">{_svg(item.svg)}</div>{caption}</figure>'
+    if isinstance(item, Notice):
+        level = item.level if item.level in ("info", "ok", "warning", "error") else "warning"
+        return f'<div class="notice {level}">{html.escape(item.text)}</div>'
+    raise TypeError(f"a page item: {type(item).__name__}")
+
+
+def _anchor(k: int, title: str) -> str:
+    return f"s{k}-" + re.sub(r"[^a-z0-9]+", "-", title.lower()).strip("-")[:40]
+
+
 def render_html(page: Page) -> str:
-    """The page as one self-contained HTML document."""
-    raise NotImplementedError("render_html: the HTML writer is not written yet")
+    """The page as one self-contained HTML document: styles, drawings and plotly.js (when it has figures) inside.
+
+    Nothing is fetched when it is viewed: no fonts, no scripts, no MathJax from the network.
+    """
+    figures: list[tuple[str, Figure]] = []
+    sections = []
+    for k, section in enumerate(page.sections):
+        body = "\n".join(_item(item, figures) for item in section.items)
+        sections.append(f'<section id="{_anchor(k, section.title)}"><h2>{html.escape(section.title)}</h2>{body}</section>')
+    nav = " ".join(f'<a href="#{_anchor(k, s.title)}">{html.escape(s.title)}</a>' for k, s in enumerate(page.sections))
+    scripts = ""
+    if figures:
+        config = {"responsive": True, "displaylogo": False, "modeBarButtonsToRemove": ["lasso2d", "select2d"],
+                  "toImageButtonOptions": {"format": "png", "scale": 2}}
+        calls = "\n".join(
+            f"Plotly.newPlot({json.dumps(ident)}, {_script_json(f.spec.get('data', []))}, "
+            f"{_script_json(f.spec.get('layout', {}))}, {json.dumps(config)});"
+            for ident, f in figures
+        )
+        scripts = (f"<script>window.PlotlyConfig = {{MathJaxConfig: 'local'}};</script>\n"
+                   f"<script>{_plotly_js()}</script>\n<script>\n{calls}\n</script>")
+    subtitle = f"<p>{html.escape(page.subtitle)}</p>" if page.subtitle else ""
+    footer = f"<footer>{html.escape(page.footer)}</footer>" if page.footer else ""
+    return (
+        "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+        '<meta name="viewport" content="width=device-width, initial-scale=1">\n'
+        '<meta name="generator" content="hydroservo">\n'
+        f"<title>{html.escape(page.title)}</title>\n<style>{_CSS}</style>\n</head>\n<body>\n"
+        f"<header><h1>{html.escape(page.title)}</h1>{subtitle}</header>\n<nav>{nav}</nav>\n"
+        f"<main>\n{''.join(sections)}\n</main>\n{footer}\n{scripts}\n</body>\n</html>\n"
+    )
+
+
+@functools.cache
+def _plotly_js() -> str:
+    """plotly.js, as the ``plotly`` package ships it, safe inside a <script> element."""
+    from plotly.offline import get_plotlyjs
+
+    return str(get_plotlyjs()).replace("</script", "<\\/script")
 
 
 def write_html(page: Page, path: str | Path) -> Path:

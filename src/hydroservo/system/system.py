@@ -28,6 +28,9 @@ from hydroservo.system.nodes import Node, nodes, port_of, resolve
 from hydroservo.units import check_unit, same_dimension, to_si
 
 if TYPE_CHECKING:
+    from pathlib import Path
+
+    from hydroservo.plotting.schematic import Schematic
     from hydroservo.system.result import BatchResult, Result
 
 __all__ = ["System", "Alias", "CircuitFluid", "split_name"]
@@ -350,6 +353,21 @@ class System:
             found += cited_in(inspect.getdoc(type(fluid)) or "") + cited_in(getattr(fluid, "description", "") or "")
         order = {k: i for i, k in enumerate(keys())}
         return sorted(set(found) & set(order), key=order.__getitem__)
+
+    def diagram(self, file: str | Path | None = None, *, parameters: bool = True,
+                title: str | None = None) -> Schematic:
+        """The circuit diagram (ISO 1219-1 symbols, laid out automatically; :mod:`hydroservo.plotting.schematic`),
+        written to ``file`` (``.svg``, ``.png`` or ``.pdf``) when given. ``parameters``: each component's main
+        parameters beside its name, in the units they were given in."""
+        from hydroservo.plotting.schematic import draw
+
+        drawing = draw(self, parameters=parameters, title=title)
+        if file is not None:
+            drawing.save(file)
+        return drawing
+
+    def _repr_svg_(self) -> str:  # Jupyter shows a system as its circuit
+        return self.diagram().svg
 
     def hydraulic_inputs(self) -> dict[str, list[tuple[float, str]]]:
         """The inputs the hydraulic nodes feed: "comp.input" -> terms (coefficient, "comp.output")
