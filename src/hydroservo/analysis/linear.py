@@ -412,7 +412,7 @@ def linearize(
         {s: float(v) for s, v in zip(state_names, xv)}, u0,
         {o: float(v) for o, v in zip(out_names, y0.ravel())},
         {s: float(v) for s, v in zip(state_names, f0.ravel())},
-        np.where(np.asarray(nominal) > 0, nominal, 1.0), name, float(t),
+        np.where(np.asarray(nominal) > 0, nominal, 1.0), a.name, float(t),
         {"at": at if isinstance(at, str) else "given", **({"free": list(free)} if free else {})},
     )
 

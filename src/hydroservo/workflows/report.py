@@ -7,7 +7,7 @@ attachment with no network, its plots zoom, pan and show each value with its uni
 >>> from hydroservo.workflows import report
 >>> page = report.run("flight-simulator", t_end="0.2 s", validation=False)
 >>> [s.title for s in page.document().sections][:3]
-['Circuit', 'Response', 'Signals']
+['Model', 'Circuit', 'Response']
 """
 
 from __future__ import annotations
@@ -93,6 +93,9 @@ class ModelReport(Report):
         panels = system.plots or system.default_panels()
         shown = [n for panel in panels for n in panel]
         sections: list[Section] = []
+        about = pages.system_summary(system)
+        if about:
+            sections.append(Section("Model", about))
         warned = pages.warnings_section(sim.warnings)
         if warned is not None:
             sections.append(warned)
@@ -105,9 +108,7 @@ class ModelReport(Report):
         sections.append(Section("Solver", [pages.solver_table({**sim.result.stats, "wall_time_s": sim.wall_time})]))
         sections.append(pages.references_section(system.references()))
         subtitle = f"simulated for {sim.t_end:g} s" + (f" with {', '.join(sim.changes)}" if sim.changes else "")
-        page = Page(f"{system.name}", subtitle, sections, footer())
-        page.sections[0:0] = [Section("Model", pages.system_summary(system))] if pages.system_summary(system) else []
-        return page
+        return Page(system.name, subtitle, sections, footer())
 
 
 @dataclass
