@@ -52,7 +52,7 @@ def cite(key: str) -> str:
     'Efe, Yalcin (2014). Dynamic Model of a Hydraulic Servo System for a Manipulator Robot. KTH Royal Institute of Technology.'
     """
     e = entry(key)
-    authors = e.get("author", "Anonymous").replace(" and ", "; ")
+    authors = e.get("author", "Anonymous").replace(" and ", "; ").replace("{", "").replace("}", "")
     where = e.get("journal") or e.get("booktitle") or e.get("school") or e.get("publisher") or e.get("type")
     parts = [f"{authors} ({e.get('year', 'n.d.')})", e.get("title"), where]
     return ". ".join(p.rstrip(".") for p in parts if p) + "."
@@ -62,7 +62,7 @@ def cited_in(text: str) -> list[str]:
     """The keys of the bibliography a text cites in brackets (``[Efe2014] eq. (3.47)``, ``[GordicND, Table 1]``),
     in the order they first appear.
 
-    >>> cited_in("the flow of [Efe2014] eq. 3.5, after [Merritt1967] and [Efe2014]; not [Nobody2020]")
+    >>> cited_in("the flow of [Efe2014] eq. 3.5, after [Merritt1967] and [Efe2014]; not [Fig3]")
     ['Efe2014', 'Merritt1967']
     """
     known = entries()

@@ -19,6 +19,7 @@ import functools
 import html
 import json
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
@@ -77,7 +78,7 @@ class Section:
     """A titled part of a page."""
 
     title: str
-    items: list[Item] = field(default_factory=list)
+    items: Sequence[Item] = field(default_factory=list)
 
 
 @dataclass

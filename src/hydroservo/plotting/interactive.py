@@ -203,7 +203,8 @@ def bar_figure(
     layout["hovermode"] = "closest"
     layout["showlegend"] = False
     layout["grid"] = {"rows": max(len(names), 1), "columns": 1, "pattern": "independent",
-                      "roworder": "top to bottom", "ygap": 0.35}
+                      "roworder": "top to bottom", "ygap": 0.55}
+    annotations: list[dict[str, Any]] = []
     for row, name in enumerate(names, start=1):
         bars = sorted(groups[name], key=lambda b: abs(b[1]) if np.isfinite(b[1]) else -1.0)
         suffix = "" if row == 1 else str(row)
@@ -218,6 +219,10 @@ def bar_figure(
                               "visible": True, "color": "#444"}
         data.append(bar)
         layout[f"xaxis{suffix}"] = _axis(value_label if row == len(names) else "")
-        layout[f"yaxis{suffix}"] = _axis(name, automargin=True)
-    layout["height"] = 90 + sum(50 + 22 * len(groups[n]) for n in names)
+        layout[f"yaxis{suffix}"] = _axis("", automargin=True)
+        annotations.append({"text": f"<b>{name}</b>", "xref": f"x{suffix} domain", "yref": f"y{suffix} domain",
+                            "x": 0, "y": 1.0, "xanchor": "left", "yanchor": "bottom", "showarrow": False,
+                            "font": {"size": 12}})
+    layout["annotations"] = annotations
+    layout["height"] = 90 + sum(70 + 22 * len(groups[n]) for n in names)
     return {"data": data, "layout": layout}

@@ -16,6 +16,7 @@ from hydroservo.workflows.base import Progress, Report, Workflow
 
 if TYPE_CHECKING:
     from hydroservo.components.reference import Reference
+    from hydroservo.io.html import Page
 
 __all__ = ["Catalogue", "CatalogueReport", "Describe", "DescriptionReport", "catalogue", "describe"]
 
@@ -88,6 +89,14 @@ class DescriptionReport(Report):
         from hydroservo.components.reference import text
 
         return text(self.reference)
+
+
+    def document(self) -> Page:
+        """The component's description as the command prints it."""
+        from hydroservo.io.html import Section, Text
+        from hydroservo.workflows import pages
+
+        return pages.page(self.reference.name, self.reference.summary, [Section("Reference", [Text(self.text(), True)])])
 
 
 @dataclass

@@ -21,6 +21,7 @@ if TYPE_CHECKING:
     import numpy as np
 
     from hydroservo.fluids import Fluid
+    from hydroservo.io.html import Page
 
 __all__ = ["FluidProperties", "FluidReport", "run", "SHOWN"]
 
@@ -103,6 +104,29 @@ class FluidReport(Report):
                 out.append("  ".join(cells))
         out += [f"warning: {w}" for w in self.notes]
         return out
+
+
+    def document(self) -> Page:
+        """The properties at every temperature and pressure, and each against temperature (interactive)."""
+        import numpy as np
+
+        from hydroservo.io.html import Figure, Notice, Section, Table
+        from hydroservo.plotting.interactive import xy_figure
+        from hydroservo.workflows import pages
+
+        rows = [[t, p / 1e6, *(float(self.shown[q][i, j]) for q in self.properties)]
+                for i, t in enumerate(self.temperatures) for j, p in enumerate(self.pressures)]
+        table = Table(["T [degC]", "p [MPa]", *(f"{q} [{SHOWN[q]}]" for q in self.properties)], rows)
+        figures = []
+        if len(self.temperatures) > 1:
+            for q in self.properties:
+                curves = [(np.array(self.temperatures), self.shown[q][:, j], f"{p / 1e6:g} MPa")
+                          for j, p in enumerate(self.pressures)]
+                figures.append(Figure(xy_figure(curves, "T [degC]", f"{q} [{SHOWN[q]}]", title=q)))
+        return pages.page(self.title(), "fluid properties", [
+            Section("Properties", [table, *(Notice(n) for n in self.notes)]),
+            Section("Against temperature", figures) if figures else None,
+        ], self.warnings)
 
 
 @dataclass

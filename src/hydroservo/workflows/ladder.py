@@ -18,6 +18,7 @@ from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load
 
 if TYPE_CHECKING:
     from hydroservo.analysis.ladder import LadderTable
+    from hydroservo.io.html import Page
     from hydroservo.system.system import System
 
 __all__ = ["Ladder", "LadderReport", "run"]
@@ -78,6 +79,35 @@ class LadderReport(Report):
         for f, path in self.files.items():
             out.append(f"  {f}: {path}")
         return out
+
+
+    def document(self) -> Page:
+        """The error table, its classes, and every rung's response at each step (interactive)."""
+        import numpy as np
+
+        from hydroservo.io.html import Figure, Section
+        from hydroservo.plotting.interactive import xy_figure
+        from hydroservo.units import si_unit
+        from hydroservo.workflows import pages
+
+        lad = self.ladder
+        figures = []
+        for k, step in enumerate(lad.steps):
+            curves = []
+            for rung, batch in lad.runs.items():
+                t = np.asarray(batch.t, dtype=float)
+                y = np.asarray(batch[lad.output], dtype=float)
+                curves.append((t, y[k] if y.ndim > 1 else y, rung))
+            if curves:
+                figures.append(Figure(xy_figure(curves, "t [s]", f"{lad.output} [{si_unit(self.unit)}]",
+                                                title=f"step {100 * step:g} % of {lad.parameter}")))
+        return pages.page(self.title(), f"against {lad.reference}", [
+            Section("Errors and classes ([Efe2014] Table 5.3)", [pages.dataframe_table(lad.table, index=True)]),
+            Section("Responses", figures) if figures else None,
+            pages.circuit_section(self.system),
+            pages.references_section(self.system.references()),
+            pages.files_section(self.files),
+        ], self.warnings)
 
 
 @dataclass

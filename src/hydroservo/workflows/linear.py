@@ -21,6 +21,7 @@ if TYPE_CHECKING:
 
     from hydroservo.analysis.frequency import FrequencyResponse
     from hydroservo.analysis.linear import LinearModel, ValveCoefficients
+    from hydroservo.io.html import Page
     from hydroservo.system.system import System
 
 __all__ = ["Linearize", "LinearReport", "run", "operating_point"]
@@ -160,6 +161,50 @@ class LinearReport(Report):
             if "not_run" in sim.info:
                 out.append(f"    note: {sim.info['not_run']}")
         return out
+
+
+    def document(self) -> Page:
+        """The operating point, the modes, the valve coefficients, and Bode plots of the first input."""
+        import numpy as np
+
+        from hydroservo.io.html import Figure, Section, Table
+        from hydroservo.plotting.interactive import bode_figure
+        from hydroservo.units import si_unit
+        from hydroservo.workflows import pages
+
+        lin = self.model
+        point = Table(["state", "value", "unit", "rate [unit/s]"],
+                      [[s, v, si_unit(lin.units[s]), lin.drift[s]] for s, v in lin.x0.items()])
+        modes = Table(["pole [1/s]", "f_n [Hz]", "damping", "tau [s]", "states taking part"], [
+            [f"{m.eigenvalue.real:.4g}" + (f" ± {abs(m.eigenvalue.imag):.4g}j" if m.oscillatory else ""), m.frequency,
+             None if m.damping != m.damping else m.damping, m.time_constant if abs(m.time_constant) < 1e12 else None,
+             ", ".join(f"{s} {100 * m.participation[s]:.0f}%" for s in m.main_states(0.1))] for m in lin.modes()
+        ], "slowest first")
+        grid = self.frequencies if self.frequencies is not None else np.logspace(-1, 3, 200)
+        figures = []
+        for out in lin.outputs[:4]:
+            response = lin.bode(grid, lin.inputs[0], out)
+            response.label = "linear"
+            others = [response]
+            if self.simulated is not None and out == lin.outputs[0]:
+                self.simulated.label = "simulated"
+                others.append(self.simulated)
+            figures.append(Figure(bode_figure(others, title=f"{out} / {lin.inputs[0]}",
+                                              input_unit=si_unit(lin.units.get(lin.inputs[0], "")),
+                                              output_unit=si_unit(lin.units.get(out, "")))))
+        valves = [Table(["coefficient", "model", "closed form", "unit"], [
+            [f"{key}_{side}", vc.model[f"{key}_{side}"], vc.closed_form.get(f"{key}_{side}") if vc.closed_form else None,
+             unit] for key, unit in (("K_Qx", "m^2/s"), ("K_Qp", "m^3/(s Pa)"), ("K_px", "Pa/m")) for side in ("A", "B")
+        ], f"valve {vc.valve} ([Efe2014] eqs. 4.8-4.12)") for vc in self.valves]
+        return pages.page(self.title(), f"{len(lin.states)} states, inputs {', '.join(lin.inputs)}", [
+            pages.circuit_section(self.system),
+            Section("Operating point", [point]),
+            Section("Modes", [modes]),
+            Section("Frequency response", figures),
+            Section("Valve coefficients", valves) if valves else None,
+            pages.references_section(self.system.references()),
+            pages.files_section(self.files),
+        ], self.warnings)
 
 
 @dataclass

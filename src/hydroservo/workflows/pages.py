@@ -24,6 +24,9 @@ __all__ = [
     "references_section",
     "circuit_section",
     "system_summary",
+    "dataframe_table",
+    "files_section",
+    "page",
 ]
 
 
@@ -150,3 +153,41 @@ def system_summary(system: System) -> list[Item]:
     if facts:
         items.append(Text("; ".join(facts)))
     return items
+
+
+def dataframe_table(frame: Any, caption: str = "", index: bool = False) -> Table:
+    """A pandas DataFrame as a table (its index as the first column when ``index``)."""
+    from hydroservo.io.html import Table
+
+    columns = ([str(frame.index.name or "")] if index else []) + [str(c) for c in frame.columns]
+    rows = [([str(i)] if index else []) + [_plain(v) for v in row] for i, row in zip(frame.index, frame.itertuples(index=False))]
+    return Table(columns, rows, caption)
+
+
+def _plain(value: Any) -> Any:
+    """A cell of a frame: numbers as floats, the rest as text."""
+    if isinstance(value, bool):
+        return value
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return None if value is None else str(value)
+
+
+def files_section(files: Mapping[str, str]) -> Section | None:
+    """The files the report wrote, or None before it wrote any."""
+    from hydroservo.io.html import Section, Table
+
+    if not files:
+        return None
+    return Section("Files", [Table(["file", "path"], [[k, v] for k, v in files.items()])])
+
+
+def page(title: str, subtitle: str, sections: Sequence[Section | None], warnings: Sequence[str] = ()) -> Any:
+    """A page of ``sections`` (None left out), its warnings first."""
+    from hydroservo.io.html import Page
+    from hydroservo.workflows.base import footer
+
+    kept = [s for s in sections if s is not None]
+    warned = warnings_section(warnings)
+    return Page(title, subtitle, ([warned] if warned else []) + kept, footer())

@@ -23,6 +23,7 @@ from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load
 
 if TYPE_CHECKING:
     from hydroservo.analysis.sensitivity import GlobalStudy, OneAtATime
+    from hydroservo.io.html import Page
     from hydroservo.system.system import System
 
 __all__ = ["Sensitivity", "OneAtATimeReport", "GlobalReport", "run", "METHODS"]
@@ -86,6 +87,32 @@ class OneAtATimeReport(Report):
         return out
 
 
+    def document(self) -> Page:
+        """The metrics of each level, and each factor's response family (interactive)."""
+        from hydroservo.io.html import Figure, Section
+        from hydroservo.plotting.interactive import xy_figure
+        from hydroservo.units import from_si, si_unit
+        from hydroservo.workflows import pages
+
+        study, units = self.study, self.system.plot_units
+        figures = []
+        for factor, levels in study.levels.items():
+            for signal in (self.signals or [n for p in (self.system.plots or self.system.default_panels()) for n in p])[:4]:
+                own = study.units.get(signal, "")
+                unit = units.get(signal) or si_unit(own)
+                scale = from_si(1.0, own, units[signal]) if signal in units else 1.0
+                curves = [(study.t, study.responses[factor][k][signal] * scale, f"{factor} = {level}")
+                          for k, level in enumerate(levels) if signal in study.responses[factor][k]]
+                if curves:
+                    figures.append(Figure(xy_figure(curves, "t [s]", f"{signal} [{unit}]", title=f"{signal}: {factor}")))
+        return pages.page(self.title(), "one factor at a time, the others at their values", [
+            Section("Metrics", [pages.dataframe_table(study.table)]),
+            Section("Responses", figures) if figures else None,
+            pages.circuit_section(self.system),
+            pages.files_section(self.files),
+        ], self.warnings)
+
+
 @dataclass
 class GlobalReport(Report):
     """Sobol indices or Morris screening of every metric, with the runs behind them."""
@@ -134,6 +161,30 @@ class GlobalReport(Report):
         for f, path in self._files().items():
             out.append(f"  {f}: {path}")
         return out
+
+
+    def document(self) -> Page:
+        """The indices with their confidence intervals (a bar chart per metric), and the table."""
+        from hydroservo.io.html import Figure, Notice, Section
+        from hydroservo.plotting.interactive import bar_figure
+        from hydroservo.workflows import pages
+
+        study = self.study
+        key, conf = ("ST", "ST_conf") if study.method == "sobol" else ("mu_star", "mu_star_conf")
+        groups = {
+            str(metric): [(str(r["parameter"]), float(r[key]), float(r[conf])) for _, r in rows.iterrows()]
+            for metric, rows in study.indices.groupby("metric", sort=False)
+        }
+        label = "total Sobol index ST" if study.method == "sobol" else "Morris mu* (the metric's unit)"
+        s = study.runs.stats
+        return pages.page(self.title(), f"{s['runs']} runs, {s['failed']} failed, {self.wall_time:.1f} s", [
+            Section("Indices", [Figure(bar_figure(groups, label, title=self.title()))]),
+            Section("Table", [pages.dataframe_table(study.indices)]),
+            Section("Notes", [Notice(n, "info") for n in study.notes]) if study.notes else None,
+            pages.circuit_section(self.system),
+            pages.references_section(sorted(set(self.system.references()) | {"Saltelli2010", "Campolongo2007"})),
+            pages.files_section(self._files()),
+        ], self.warnings)
 
 
 @dataclass

@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from hydroservo.analysis.servovalve_design import DesignStudy
     from hydroservo.components.base import Component
     from hydroservo.identification.servovalve_catalogue import CatalogueFit
+    from hydroservo.io.html import Page
 
 __all__ = ["DesignPoint", "Bench", "BenchTestsReport", "Design", "DesignReport", "FitCatalogue", "CatalogueReport", "bench",
            "design", "fit_catalogue"]
@@ -174,6 +175,30 @@ class BenchTestsReport(Report):
         return out
 
 
+    def document(self) -> Page:
+        """The figures of every test, and the flow-current characteristic, steps and Bode (interactive)."""
+        from hydroservo.io.html import Figure, Section, Table
+        from hydroservo.plotting.interactive import bode_figure, xy_figure
+        from hydroservo.workflows import pages
+
+        b = self.bench
+        figures = []
+        if b.static is not None:
+            figures.append(Figure(xy_figure([(b.static.currents * 1e3, b.static.flows * 6e4, "no-load flow")], "i [mA]",
+                                            "Q [L/min]", title="flow against current at rest")))
+        if b.steps:
+            figures.append(Figure(xy_figure([(s.t * 1e3, s.flow * 6e4, f"±{s.fraction * 100:g} %") for s in b.steps],
+                                            "t [ms]", "Q [L/min]", title="square-wave steps")))
+        if b.bode is not None:
+            figures.append(Figure(bode_figure(b.bode, title="no-load flow / current")))
+        rows = [[n, float(v), u] for n, v, u in b.table()]
+        return pages.page(self.title(), self.point.label(), [
+            Section("Figures", [Table(["figure", "value", "unit"], rows)]),
+            Section("Tests", figures) if figures else None,
+            pages.references_section(["GordicND"]), pages.files_section(self.files),
+        ], self.warnings)
+
+
 @dataclass
 class Bench(DesignPoint):
     """The bench's ``tests`` (some of :data:`hydroservo.analysis.servovalve_bench.TESTS`; default all) on the valve
@@ -271,6 +296,21 @@ class DesignReport(Report):
         if self.files:
             out.append(f"wrote {', '.join(self.files.values())}")
         return out
+
+
+    def document(self) -> Page:
+        """Each figure's largest elasticities (interactive bars) and the table."""
+        from hydroservo.analysis.servovalve_design import FIGURES
+        from hydroservo.io.html import Figure, Section
+        from hydroservo.plotting.interactive import bar_figure
+        from hydroservo.workflows import pages
+
+        study = self.study
+        groups = {FIGURES[k][0]: [(n, e, None) for n, e in study.ranked(k, self.top)] for k in study.figures}
+        return pages.page(self.title(), "elasticity: % change of the figure per % change of the parameter", [
+            Section("What moves each figure", [Figure(bar_figure(groups, "elasticity [-]", title=self.title()))]),
+            pages.references_section(["GordicND"]), pages.files_section(self.files),
+        ], self.warnings)
 
 
 @dataclass
@@ -371,6 +411,29 @@ class CatalogueReport(Report):
         if self.files:
             out.append(f"wrote {', '.join(self.files.values())}")
         return out
+
+
+    def document(self) -> Page:
+        """The bench's response beside each catalogue model (interactive Bode), and their parameters."""
+        from hydroservo.io.html import Figure, Section, Table
+        from hydroservo.plotting.interactive import bode_figure
+        from hydroservo.workflows import pages
+
+        import numpy as np
+
+        from hydroservo.analysis.frequency import FrequencyResponse
+
+        self.bode.label = "bench"
+        responses = [self.bode] + [FrequencyResponse(np.array([self.amplitude]), f.frequencies, f.gain_db, f.phase_deg,
+                                                     label=f"order {f.order}") for f in self.fits]
+        rows = [[f.order, f.params.get("tau"), f.params.get("omega_n"), f.params.get("zeta"), f.gain_error_db,
+                 f.phase_error_deg] for f in self.fits]
+        return pages.page(self.title(), self.point.label(), [
+            Section("Frequency response", [Figure(bode_figure(responses, title=self.title()))]),
+            Section("Models", [Table(["order", "tau [s]", "omega_n [rad/s]", "zeta [-]", "gain error [dB]",
+                                      "phase error [deg]"], rows)]),
+            pages.references_section(["GordicND"]), pages.files_section(self.files),
+        ], self.warnings)
 
 
 @dataclass

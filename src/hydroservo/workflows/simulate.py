@@ -21,6 +21,7 @@ from hydroservo.errors import HydroservoError, ImplausibleResultError, Parameter
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
 
 if TYPE_CHECKING:
+    from hydroservo.io.html import Page
     from hydroservo.system.result import Result
     from hydroservo.system.system import System
 
@@ -99,6 +100,26 @@ class SimulationReport(Report):
             "png": lambda path: self.result.plot(units=self.system.plot_units, file=path, title=self.title()),
         }
         return [Artifact(kind, f"{name}.{kind}", writers[kind]) for kind in self.kinds]
+
+
+    def document(self) -> Page:
+        """The run: the circuit, the response (interactive), the signals, the parameters, the solver, references."""
+        from hydroservo.io.html import Figure, Section
+        from hydroservo.plotting.interactive import result_figure
+        from hydroservo.workflows import pages
+
+        system, result = self.system, self.result
+        panels = system.plots or system.default_panels()
+        return pages.page(self.title(), f"simulated for {self.t_end:g} s", [
+            Section("Model", pages.system_summary(system)) if pages.system_summary(system) else None,
+            pages.circuit_section(system),
+            Section("Response", [Figure(result_figure(result, panels, system.plot_units, title=self.title()))]),
+            Section("Signals", [pages.signal_table(result, system.plot_units)]),
+            Section("Parameters", [pages.parameter_table(system)]),
+            Section("Solver", [pages.solver_table(result.stats)]),
+            pages.references_section(system.references()),
+            pages.files_section(self.files),
+        ], self.warnings)
 
 
 def _warnings(result: Result) -> list[str]:

@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from hydroservo.analysis.static_bench import Bench, BenchCurves
     from hydroservo.components.valves.staged_slot import StagedSlotValve
     from hydroservo.identification.staged_slot import StagedSlotIdentification
+    from hydroservo.io.html import Page
 
 __all__ = ["Characteristics", "CharacteristicsReport", "Identify", "IdentificationReport", "characteristics",
            "identify", "MAX_OPENINGS"]
@@ -131,6 +132,30 @@ class CharacteristicsReport(Report):
             folder = Path(next(iter(self.files.values()))).parent
             out.append(f"wrote {len(self.files)} files to {folder}")
         return out
+
+
+    def document(self) -> Page:
+        """The Table-2 metrics across temperature and the bench curves of each temperature (interactive)."""
+        from hydroservo.analysis.static_bench import METRICS
+        from hydroservo.io.html import Figure, Section, Table
+        from hydroservo.plotting.interactive import xy_figure
+        from hydroservo.workflows import pages
+
+        temps = sorted(self.table["metrics"])
+        metrics = Table(["metric", "unit", *(f"{t:g} °C" for t in temps)], [
+            [label, unit, *(self.table["metrics"][t][key] for t in temps)] for key, (label, unit) in METRICS.items()
+        ], f"changes from {self.table['reference']:g} °C: the JSON and the command's text")
+        flow = [(c.X_flow * 1e6, c.Q_L * 6e4, f"{c.temperature:g} °C") for c in self.curves if c.X_flow is not None
+                and c.Q_L is not None]
+        leak = [(c.X_blocked * 1e6, c.Q_lk * 6e4, f"{c.temperature:g} °C") for c in self.curves
+                if c.X_blocked is not None and c.Q_lk is not None]
+        figures = [Figure(xy_figure(flow, "X [um]", "Q_L [L/min]", title="flow gain (connected ports)"))] if flow else []
+        if leak:
+            figures.append(Figure(xy_figure(leak, "X [um]", "Q_lk [L/min]", title="leakage (blocked ports)")))
+        return pages.page(self.title(), "staged-slot valve on the ARP490 bench ([MareAttarND])", [
+            Section("Metrics", [metrics]), Section("Curves", figures),
+            pages.references_section(["MareAttarND", "SAEARP490"]), pages.files_section(self.files),
+        ], self.warnings)
 
 
 @dataclass
@@ -253,6 +278,24 @@ class IdentificationReport(Report):
         if self.files:
             out.append(f"wrote {self.files['parameters']} and {self.files['plot']}")
         return out
+
+
+    def document(self) -> Page:
+        """The identified parameters beside the start, the steps, and the predicted metrics."""
+        from hydroservo.io.html import Section, Table
+        from hydroservo.workflows import pages
+
+        res = self.result
+        params = Table(["parameter", "start", "identified"],
+                       [[n, self.start.values[n], res.valve.values[n]] for n in self.names()], "SI")
+        errors = Table(["curve", "largest relative error [%]"], [[k, 100 * v] for k, v in res.errors.items()])
+        temps = sorted(self.table["metrics"])
+        rows = [[key, *(self.table["metrics"][t][key] for t in temps)] for key in self.table["metrics"][temps[0]]]
+        return pages.page(self.title(), "[MareAttarND] eqs. 21-24", [
+            Section("Parameters", [params, errors]),
+            Section("Predicted metrics", [Table(["metric", *(f"{t:g} °C" for t in temps)], rows)]),
+            pages.references_section(["MareAttarND"]), pages.files_section(self.files),
+        ], self.warnings)
 
 
 @dataclass

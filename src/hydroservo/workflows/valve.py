@@ -24,6 +24,7 @@ if TYPE_CHECKING:
     from hydroservo.analysis.frequency import FrequencyResponse
     from hydroservo.identification.datasheet import PseudoSectionFit
     from hydroservo.identification.spool_dynamics import SpoolFit
+    from hydroservo.io.html import Page
 
 __all__ = ["ValveFit", "ValveFitReport", "SpoolBode", "SpoolBodeReport", "FitDynamics", "DynamicsReport", "fit", "bode",
            "fit_dynamics"]
@@ -158,6 +159,46 @@ class ValveFitReport(Report):
         }
 
 
+    def document(self) -> Page:
+        """The fitted parameters, the characteristics beside the datasheet, and the valve's curves (interactive)."""
+        import numpy as np
+
+        from hydroservo.io.html import Figure, Section, Table
+        from hydroservo.laws.pseudo_section import PRINTED_UNITS
+        from hydroservo.plotting.interactive import xy_figure
+        from hydroservo.workflows import pages
+
+        fit, shown, given = self.fit, self.shown(), self.given()
+        valve, ds = fit.valve, fit.datasheet
+        assert ds is not None
+        params = Table(["parameter", "value", "unit"], [[k, v, PRINTED_UNITS[k] or "-"] for k, v in fit.in_paper_units().items()])
+        chars = Table(["characteristic", "model", "datasheet", "unit", "deviation [%]"], [
+            [k, shown[k], given.get(k), CHARACTERISTIC_UNITS[k] or "-",
+             100 * fit.deviation[k] if k in fit.deviation else None] for k in NULL])
+        x = np.linspace(-1.0, 1.0, 801)
+        a_p, a_n = valve.sections(x)
+        k = 6e4 / np.sqrt(1e-5)  # m^3/s/Pa^0.5 -> L/min/bar^0.5
+        sections = [(x, a_p * k, "A_p"), (x, a_n * k, "A_n")]
+        measured = []
+        if self.curves is not None:
+            m = fit.measured_sections(self.curves)
+            measured = [(m["x_s"], m["A_p"] * k, "A_p from curves (eq. 17)"), (m["x_s"], m["A_n"] * k, "A_n from curves (eq. 16)")]
+        near = np.linspace(-0.06, 0.06, 401)
+        p_l, q_lk = valve.blocked_ports(near, ds.P_s)
+        figures = [
+            Figure(xy_figure(sections, "x_s [-]", "pseudo-section [L/min/bar^0.5]", title="pseudo-sections ([FerreiraND] Figs. 2-3)",
+                             markers=measured)),
+            Figure(xy_figure([(near, p_l, "P_L [-]"), (near, q_lk * 6e4, "q_lk [L/min]")], "x_s [-]", "P_L [-], q_lk [L/min]",
+                             title=f"blocked ports at {ds.P_s / 1e5:g} bar (Figs. 4, 7)")),
+            Figure(xy_figure([(x, valve.no_load_flow(x, ds.P_n) * 6e4, "Q_L")], "x_s [-]", "Q_L [L/min]",
+                             title=f"no-load flow, {ds.P_n / 1e5:g} bar per edge (Figs. 5-6, 8-9)")),
+        ]
+        return pages.page(self.title(), "pseudo-section valve ([FerreiraND])", [
+            Section("Parameters", [params]), Section("Characteristics", [chars]), Section("Curves", figures),
+            pages.references_section(["FerreiraND"]), pages.files_section(self.files),
+        ], self.warnings)
+
+
 @dataclass
 class ValveFit(Workflow):
     """Pseudo-sections of the valve ``datasheet`` (a TOML file with a [datasheet] table, or a built-in valve such as
@@ -285,6 +326,20 @@ class SpoolBodeReport(Report):
         return out
 
 
+    def document(self) -> Page:
+        """The Bode plot (interactive) and each amplitude's bandwidths."""
+        from hydroservo.io.html import Figure, Section, Table
+        from hydroservo.plotting.interactive import bode_figure
+        from hydroservo.workflows import pages
+
+        rows = [[a, bw["f_-3dB_Hz"], bw["f_-90deg_Hz"]] for a, bw in bandwidths(self.response).items()]
+        return pages.page(self.title(), ", ".join(f"{k} = {v}" for k, v in self.params.items()), [
+            Section("Frequency response", [Figure(bode_figure(self.response, title=self.title()))]),
+            Section("Bandwidths", [Table(["amplitude", "-3 dB [Hz]", "-90 deg [Hz]"], rows, "– : not reached")]),
+            pages.references_section(["FerreiraND"]), pages.files_section(self.files),
+        ], self.warnings)
+
+
 @dataclass
 class SpoolBode(Workflow):
     """Bode of the spool dynamics of ``params`` (a built-in valve such as ``"KBSDG4V-3"``, or a spool component
@@ -381,6 +436,27 @@ class DynamicsReport(Report):
         if self.files:
             out.append(f"wrote {', '.join(self.files.values())}")
         return out
+
+
+    def document(self) -> Page:
+        """The data and the fitted models (interactive Bode), and each model's parameters and errors."""
+        from hydroservo.io.html import Figure, Section, Table
+        from hydroservo.plotting.interactive import bode_figure
+        from hydroservo.workflows import pages
+
+        first = next(iter(self.fits.values()))
+        first.data.label = "data"
+        responses = [first.data] + [f.response for f in self.fits.values()]
+        for m, f in self.fits.items():
+            f.response.label = m
+        tables = [Table(["parameter", "value", "unit"],
+                        [[k, v, f.summary()["units"].get(k, "")] for k, v in f.params.items()], m)
+                  for m, f in self.fits.items()]
+        return pages.page(self.title(), "[FerreiraND] eq. 43, then the delay", [
+            Section("Fit", [Figure(bode_figure(responses, title=self.title()))]),
+            Section("Parameters", tables),
+            pages.references_section(["FerreiraND"]), pages.files_section(self.files),
+        ], self.warnings)
 
 
 @dataclass
