@@ -89,6 +89,12 @@ CASES: list[tuple[str, list[str]]] = [
     ("validate-json", ["validate", "position-servo", "--json"]),
     ("validate-markdown", ["validate", "position-servo", "--markdown"]),
     ("examples", ["examples", "ex"]),
+    ("report", ["report", "position-servo", "--t-end", "0.3", "--out", "rep"]),
+    ("report-json", ["report", "flight-simulator", "--t-end", "0.2", "--no-validation", "--out", "rep2", "--json"]),
+    ("report-result", ["report", "sim/flight-simulator.csv", "--out", "rep3"]),
+    ("draw", ["draw", "pump_circuit.toml", "--format", "svg,pdf", "--out", "drw"]),
+    ("draw-json", ["draw", "robot-arm", "--names-only", "--out", "drw2", "--json"]),
+    ("bad-format", ["draw", "robot-arm", "--format", "jpg"]),
     # refusals: one message, exit 2, nothing written
     ("bad-model", ["simulate", "no-such-model"]),
     ("bad-set", ["simulate", "flight-simulator", "--set", "load.mass=3 kg"]),
