@@ -2,7 +2,8 @@
 
 Each case runs one ``hydroservo`` command in a folder holding the example files and compares what it
 printed with the record in ``cli_golden/`` after masking what may differ from run to run or machine to
-machine: numbers (each becomes ``#``), runs of spaces, and the temporary folder's path. A change of
+machine: numbers (each becomes ``#``), GUIDs (a hash of an FMU's contents), runs of spaces, and the temporary
+folder's path. A change of
 wording, of a JSON key, of a file's name or of an exit code fails here; a change of a value does not (the
 command's own tests check the values).
 
@@ -108,8 +109,11 @@ CASES: list[tuple[str, list[str]]] = [
 _NUMBER = re.compile(r"(?<![A-Za-z_])[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 
 
+_GUID = re.compile(r"\{[0-9a-fA-F]{8}-[0-9a-fA-F]{4}-[0-9a-fA-F]{4}-[0-9a-fA-F]{4}-[0-9a-fA-F]{12}\}")
+
+
 def _mask(text: str, folder: Path) -> str:
-    text = text.replace(str(folder), "<tmp>")
+    text = _GUID.sub("{GUID}", text.replace(str(folder), "<tmp>"))
     text = _NUMBER.sub("#", text)
     return "\n".join(" ".join(line.split()) for line in text.splitlines())
 

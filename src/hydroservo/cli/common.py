@@ -12,6 +12,7 @@ import json
 from typing import TYPE_CHECKING, Any
 
 from hydroservo.errors import ParameterError, shorten
+from hydroservo.workflows.base import numbers
 
 if TYPE_CHECKING:
     import numpy as np
@@ -27,33 +28,6 @@ __all__ = [
 
 #: Most frequencies one command computes (each is a periodic orbit per amplitude).
 MAX_FREQUENCIES = 2000
-
-
-def numbers(
-    text: str,
-    what: str,
-    *,
-    above: float | None = None,
-    at_most: float | None = None,
-    expected: str = "",
-) -> list[float]:
-    """Comma-separated finite numbers, e.g. ``5,25,50``; each above ``above`` and at most ``at_most`` if given.
-
-    An error names the option ``what``, the value and ``expected``.
-    """
-    import math
-
-    try:
-        vals = [float(v) for v in text.split(",") if v.strip()]
-    except ValueError:
-        raise ParameterError(f"{what} {text!r}: expected comma-separated numbers, e.g. 5,25,50") from None
-    if not vals:
-        raise ParameterError(f"{what} {text!r}: expected at least one number")
-    for v in vals:
-        bad = not math.isfinite(v) or (above is not None and v <= above) or (at_most is not None and v > at_most)
-        if bad:
-            raise ParameterError(f"{what} {text!r}: {v:g} is not acceptable; expected {expected or 'finite numbers'}")
-    return vals
 
 
 def frequencies(text: str) -> np.ndarray:

@@ -46,6 +46,7 @@ __all__ = [
     "Report",
     "Workflow",
     "Progress",
+    "numbers",
     "load_with_sets",
     "parse_sets",
     "output_folder",
@@ -194,6 +195,33 @@ def footer() -> str:
     from hydroservo.version import __version__
 
     return f"made by hydroservo {__version__} on {datetime.date.today().isoformat()}"
+
+
+def numbers(
+    text: str,
+    what: str,
+    *,
+    above: float | None = None,
+    at_most: float | None = None,
+    expected: str = "",
+) -> list[float]:
+    """Comma-separated finite numbers, e.g. ``5,25,50``; each above ``above`` and at most ``at_most`` if given.
+
+    An error names the option ``what``, the value and ``expected``.
+    """
+    import math
+
+    try:
+        vals = [float(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise ParameterError(f"{what} {text!r}: expected comma-separated numbers, e.g. 5,25,50") from None
+    if not vals:
+        raise ParameterError(f"{what} {text!r}: expected at least one number")
+    for v in vals:
+        bad = not math.isfinite(v) or (above is not None and v <= above) or (at_most is not None and v > at_most)
+        if bad:
+            raise ParameterError(f"{what} {text!r}: {v:g} is not acceptable; expected {expected or 'finite numbers'}")
+    return vals
 
 
 # -- loading a model with changes ---------------------------------------------------------

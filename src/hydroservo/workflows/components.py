@@ -90,7 +90,6 @@ class DescriptionReport(Report):
 
         return text(self.reference)
 
-
     def document(self) -> Page:
         """The component's description as the command prints it."""
         from hydroservo.io.html import Section, Text

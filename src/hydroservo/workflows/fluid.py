@@ -105,7 +105,6 @@ class FluidReport(Report):
         out += [f"warning: {w}" for w in self.notes]
         return out
 
-
     def document(self) -> Page:
         """The properties at every temperature and pressure, and each against temperature (interactive)."""
         import numpy as np

@@ -80,7 +80,6 @@ class LadderReport(Report):
             out.append(f"  {f}: {path}")
         return out
 
-
     def document(self) -> Page:
         """The error table, its classes, and every rung's response at each step (interactive)."""
         import numpy as np

@@ -162,7 +162,6 @@ class LinearReport(Report):
                 out.append(f"    note: {sim.info['not_run']}")
         return out
 
-
     def document(self) -> Page:
         """The operating point, the modes, the valve coefficients, and Bode plots of the first input."""
         import numpy as np

@@ -86,7 +86,6 @@ class OneAtATimeReport(Report):
             out.append(f"  {f}: {path}")
         return out
 
-
     def document(self) -> Page:
         """The metrics of each level, and each factor's response family (interactive)."""
         from hydroservo.io.html import Figure, Section
@@ -161,7 +160,6 @@ class GlobalReport(Report):
         for f, path in self._files().items():
             out.append(f"  {f}: {path}")
         return out
-
 
     def document(self) -> Page:
         """The indices with their confidence intervals (a bar chart per metric), and the table."""

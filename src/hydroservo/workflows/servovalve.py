@@ -174,7 +174,6 @@ class BenchTestsReport(Report):
             out.append(f"wrote {', '.join(self.files.values())}")
         return out
 
-
     def document(self) -> Page:
         """The figures of every test, and the flow-current characteristic, steps and Bode (interactive)."""
         from hydroservo.io.html import Figure, Section, Table
@@ -297,7 +296,6 @@ class DesignReport(Report):
             out.append(f"wrote {', '.join(self.files.values())}")
         return out
 
-
     def document(self) -> Page:
         """Each figure's largest elasticities (interactive bars) and the table."""
         from hydroservo.analysis.servovalve_design import FIGURES
@@ -412,16 +410,14 @@ class CatalogueReport(Report):
             out.append(f"wrote {', '.join(self.files.values())}")
         return out
 
-
     def document(self) -> Page:
         """The bench's response beside each catalogue model (interactive Bode), and their parameters."""
-        from hydroservo.io.html import Figure, Section, Table
-        from hydroservo.plotting.interactive import bode_figure
-        from hydroservo.workflows import pages
-
         import numpy as np
 
         from hydroservo.analysis.frequency import FrequencyResponse
+        from hydroservo.io.html import Figure, Section, Table
+        from hydroservo.plotting.interactive import bode_figure
+        from hydroservo.workflows import pages
 
         self.bode.label = "bench"
         responses = [self.bode] + [FrequencyResponse(np.array([self.amplitude]), f.frequencies, f.gain_db, f.phase_deg,

@@ -101,7 +101,6 @@ class SimulationReport(Report):
         }
         return [Artifact(kind, f"{name}.{kind}", writers[kind]) for kind in self.kinds]
 
-
     def document(self) -> Page:
         """The run: the circuit, the response (interactive), the signals, the parameters, the solver, references."""
         from hydroservo.io.html import Figure, Section

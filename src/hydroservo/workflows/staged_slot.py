@@ -16,7 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ParameterError
-from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, safe_name
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, numbers, safe_name
 
 if TYPE_CHECKING:
     from hydroservo.analysis.static_bench import Bench, BenchCurves
@@ -40,18 +40,13 @@ def temperatures_of(value: str | Sequence[float], what: str) -> list[float]:
 
     if not isinstance(value, str):
         temps = [float(v) for v in value]
+        bad = [t for t in temps if not math.isfinite(t)]
+        if not temps or bad:
+            raise ParameterError(f"{what} {value!r}: expected at least one finite temperature")
     else:
         if value.strip().lower().endswith(("degc", "°c", "c")):
             raise ParameterError(f"{what} {value!r}: give bare numbers in degC, e.g. -40,-15,32")
-        try:
-            temps = [float(v) for v in value.split(",") if v.strip()]
-        except ValueError:
-            raise ParameterError(f"{what} {value!r}: expected comma-separated numbers, e.g. 5,25,50") from None
-    if not temps:
-        raise ParameterError(f"{what} {value!r}: expected at least one number")
-    for t in temps:
-        if not math.isfinite(t):
-            raise ParameterError(f"{what} {value!r}: {t:g} is not acceptable; expected finite numbers")
+        temps = numbers(value, what)
     return temps
 
 
@@ -132,7 +127,6 @@ class CharacteristicsReport(Report):
             folder = Path(next(iter(self.files.values()))).parent
             out.append(f"wrote {len(self.files)} files to {folder}")
         return out
-
 
     def document(self) -> Page:
         """The Table-2 metrics across temperature and the bench curves of each temperature (interactive)."""
@@ -278,7 +272,6 @@ class IdentificationReport(Report):
         if self.files:
             out.append(f"wrote {self.files['parameters']} and {self.files['plot']}")
         return out
-
 
     def document(self) -> Page:
         """The identified parameters beside the start, the steps, and the predicted metrics."""

@@ -158,7 +158,6 @@ class ValveFitReport(Report):
             "files": self.files,
         }
 
-
     def document(self) -> Page:
         """The fitted parameters, the characteristics beside the datasheet, and the valve's curves (interactive)."""
         import numpy as np
@@ -325,7 +324,6 @@ class SpoolBodeReport(Report):
             out.append(f"wrote {self.files['csv']} and {self.files['plot']}")
         return out
 
-
     def document(self) -> Page:
         """The Bode plot (interactive) and each amplitude's bandwidths."""
         from hydroservo.io.html import Figure, Section, Table
@@ -436,7 +434,6 @@ class DynamicsReport(Report):
         if self.files:
             out.append(f"wrote {', '.join(self.files.values())}")
         return out
-
 
     def document(self) -> Page:
         """The data and the fitted models (interactive Bode), and each model's parameters and errors."""
