@@ -14,10 +14,13 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from hydroservo.errors import ParameterError
 from hydroservo.io.toml import read_toml
+
+if TYPE_CHECKING:
+    from hydroservo.analysis.linear import LinearModel
 
 __all__ = ["read_operating_point", "write_linear_model"]
 
@@ -38,7 +41,7 @@ def read_operating_point(path: str | Path) -> dict[str, Any]:
     return dict(table)
 
 
-def write_linear_model(lin: Any, path: str | Path, extra: dict[str, Any] | None = None) -> Path:
+def write_linear_model(lin: LinearModel, path: str | Path, extra: dict[str, Any] | None = None) -> Path:
     """The linear model as JSON: named matrices, operating point, modes (``LinearModel.to_dict``) and ``extra``."""
     path = Path(path)
     path.write_text(json.dumps({**lin.to_dict(), **(extra or {})}, indent=2, default=float) + "\n", encoding="utf-8")

@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from hydroservo.plotting import finish, pyplot
+
+if TYPE_CHECKING:
+    from hydroservo.analysis.ladder import LadderTable
 
 __all__ = ["plot_ladder_responses", "plot_ladder_classes"]
 
@@ -15,7 +18,7 @@ __all__ = ["plot_ladder_responses", "plot_ladder_classes"]
 CLASS_COLOURS = {"accurate": "#8fd18f", "moderate": "#f5d76e", "inaccurate": "#f08c8c", "failed": "#bbbbbb"}
 
 
-def plot_ladder_responses(ladder: Any, *, unit: str = "", title: str = "", file: str | Path | None = None) -> Any:
+def plot_ladder_responses(ladder: LadderTable, *, unit: str = "", title: str = "", file: str | Path | None = None) -> Any:
     """A panel per step: ``output`` against time for every model, the reference in black."""
     plt = pyplot(file)
     steps = ladder.steps
@@ -53,7 +56,7 @@ def plot_ladder_responses(ladder: Any, *, unit: str = "", title: str = "", file:
     return fig
 
 
-def plot_ladder_classes(ladder: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+def plot_ladder_classes(ladder: LadderTable, *, title: str = "", file: str | Path | None = None) -> Any:
     """[Efe2014] Table 5.3 as a map: a cell per model and step, coloured by class, with the error in %."""
     plt = pyplot(file)
     table = ladder.table

@@ -4,16 +4,19 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from hydroservo.plotting import finish, pyplot
 
+if TYPE_CHECKING:
+    from hydroservo.analysis.linear import LinearModel
+
 __all__ = ["plot_poles", "plot_linear_bode"]
 
 
-def plot_poles(lin: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+def plot_poles(lin: LinearModel, *, title: str = "", file: str | Path | None = None) -> Any:
     """The modes on a map of natural frequency (log) and damping ratio, each labelled with its main states;
     unstable modes in red. Poles at the origin (free integrators) are listed in the title, not drawn."""
     plt = pyplot(file)
@@ -45,7 +48,7 @@ def plot_poles(lin: Any, *, title: str = "", file: str | Path | None = None) -> 
 
 
 def plot_linear_bode(
-    lin: Any,
+    lin: LinearModel,
     frequencies: Sequence[float] | np.ndarray,
     pairs: Sequence[tuple[str, str]],
     *,

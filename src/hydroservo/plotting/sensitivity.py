@@ -4,11 +4,14 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from hydroservo.plotting import finish, pyplot
+
+if TYPE_CHECKING:
+    from hydroservo.analysis.sensitivity import GlobalStudy, OneAtATime
 from hydroservo.units import si_unit
 
 __all__ = ["plot_one_at_a_time", "plot_indices"]
@@ -23,7 +26,7 @@ def _scaled(values: np.ndarray, unit_si: str, unit: str | None) -> tuple[np.ndar
 
 
 def plot_one_at_a_time(
-    study: Any,
+    study: OneAtATime,
     factor: str,
     signals: Sequence[str] | None = None,
     *,
@@ -57,7 +60,7 @@ def plot_one_at_a_time(
     return finish(fig, file, plt)
 
 
-def plot_indices(study: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+def plot_indices(study: GlobalStudy, *, title: str = "", file: str | Path | None = None) -> Any:
     """Sobol S1 and ST (or Morris mu* and sigma) per parameter with their confidence intervals, a panel per metric."""
     plt = pyplot(file)
     table = study.indices

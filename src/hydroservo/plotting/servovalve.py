@@ -3,17 +3,22 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from hydroservo.identification.servovalve_catalogue import catalogue_response
 from hydroservo.plotting import finish, lpm, pyplot
 
+if TYPE_CHECKING:
+    from hydroservo.analysis.servovalve_bench import Bode, Report, StaticTests
+    from hydroservo.analysis.servovalve_design import DesignStudy
+    from hydroservo.identification.servovalve_catalogue import CatalogueFit
+
 __all__ = ["plot_static_bench", "plot_sensitivity", "plot_flow_current", "plot_steps", "plot_bench_bode", "plot_blocked", "plot_catalogue_fits"]
 
 
-def plot_static_bench(bench: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+def plot_static_bench(bench: StaticTests, *, title: str = "", file: str | Path | None = None) -> Any:
     """The flow-current characteristic with the rated line (left) and the flow drawn from supply (right).
 
     ``bench`` is a :class:`hydroservo.analysis.servovalve.StaticBench` (read by its attributes).
@@ -38,7 +43,7 @@ def plot_static_bench(bench: Any, *, title: str = "", file: str | Path | None = 
     return finish(fig, file, plt)
 
 
-def plot_sensitivity(sens: Any, figures: Any, *, top: int = 8, title: str = "", file: str | Path | None = None) -> Any:
+def plot_sensitivity(sens: DesignStudy, figures: dict[str, Any], *, top: int = 8, title: str = "", file: str | Path | None = None) -> Any:
     """One bar chart per design figure: the ``top`` parameters by elasticity (d ln figure / d ln parameter).
 
     ``sens`` is a :class:`hydroservo.analysis.servovalve.Sensitivity`; ``figures`` maps a figure's key to its
@@ -67,7 +72,7 @@ def plot_sensitivity(sens: Any, figures: Any, *, top: int = 8, title: str = "", 
     return finish(fig, file, plt)
 
 
-def plot_flow_current(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+def plot_flow_current(report: Report, *, title: str = "", file: str | Path | None = None) -> Any:
     """The flow-current characteristic at rest (points) with the slow-sine loop (line): whole range (left) and
     within 10 % of rated current of null (right), where hysteresis and the null show.
 
@@ -91,7 +96,8 @@ def plot_flow_current(report: Any, *, title: str = "", file: str | Path | None =
     axes[0].legend(loc="upper left", fontsize="small")
     zoom = 0.1 * report.i_rated * 1e3
     axes[1].set_xlim(-zoom, zoom)
-    q_zoom = 0.15 * abs(st.rated_flow if st is not None else max(abs(np.asarray(hy.flows)))) * 6e4
+    largest = st.rated_flow if st is not None else float(np.max(np.abs(hy.flows))) if hy is not None else 1.0
+    q_zoom = 0.15 * abs(largest) * 6e4
     axes[1].set_ylim(-q_zoom, q_zoom)
     axes[1].set_title("near null")
     if title:
@@ -99,7 +105,7 @@ def plot_flow_current(report: Any, *, title: str = "", file: str | Path | None =
     return finish(fig, file, plt)
 
 
-def plot_steps(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+def plot_steps(report: Report, *, title: str = "", file: str | Path | None = None) -> Any:
     """The square-wave tests ([GordicND] Fig. 9): the flow (left) and the flapper tip against the nozzle gap (right)."""
     plt = pyplot(file)
     fig, (ax_q, ax_x) = plt.subplots(1, 2, figsize=(11, 4.5))
@@ -128,10 +134,11 @@ def plot_steps(report: Any, *, title: str = "", file: str | Path | None = None) 
     return finish(fig, file, plt)
 
 
-def plot_bench_bode(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+def plot_bench_bode(report: Report, *, title: str = "", file: str | Path | None = None) -> Any:
     """Amplitude ratio and phase of the no-load flow against current, one line per amplitude."""
     plt = pyplot(file)
     bode = report.bode
+    assert bode is not None, "the report has no frequency response"
     fig, (ax_g, ax_p) = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
     for k, amp in enumerate(bode.amplitudes):
         label = f"+-{amp * 100:g} %"
@@ -146,10 +153,11 @@ def plot_bench_bode(report: Any, *, title: str = "", file: str | Path | None = N
     return _finish_bode(fig, ax_g, ax_p, "no-load flow against current (relative to the lowest frequency)", title, file, plt)
 
 
-def plot_blocked(report: Any, *, title: str = "", file: str | Path | None = None) -> Any:
+def plot_blocked(report: Report, *, title: str = "", file: str | Path | None = None) -> Any:
     """Ports blocked: load pressure through null (left) and internal leakage over the whole range (right)."""
     plt = pyplot(file)
     bl = report.blocked
+    assert bl is not None, "the report has no blocked-port test"
     fig, (ax, ax_l) = plt.subplots(1, 2, figsize=(11, 4.5))
     ax.plot(np.asarray(bl.currents) * 1e3, np.asarray(bl.load_pressure) / 1e5, "-", lw=1.0)
     ax.set_xlabel("current i [mA]")
@@ -169,7 +177,7 @@ def plot_blocked(report: Any, *, title: str = "", file: str | Path | None = None
     return finish(fig, file, plt)
 
 
-def plot_catalogue_fits(bode: Any, fits: Any, *, amplitude: int = 0, title: str = "", file: str | Path | None = None) -> Any:
+def plot_catalogue_fits(bode: Bode, fits: list[CatalogueFit], *, amplitude: int = 0, title: str = "", file: str | Path | None = None) -> Any:
     """The servovalve's frequency response (points) and the catalogue models fitted to it (lines).
 
     ``bode`` is a :class:`hydroservo.analysis.servovalve_bench.Bode`, ``fits`` a sequence of
