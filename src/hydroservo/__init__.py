@@ -22,7 +22,10 @@ namespace                   what
 ``hs.io``                   every reader and writer; ``hs.load_model``
 ``hs.data``                 published and example parameter sets, models
 ``hs.validation``           published figures beside computed ones
-``hs.plotting``             the plots
+``hs.plotting``             the plots; circuit diagrams (``System.diagram``)
+``hs.codegen``              a model as C code with a real-time stepper, or an FMU
+``hs.workflows``            whole tasks as the commands run them, each returning a
+                            report that prints, writes its files and shows itself
 ==========================  ===================================================
 
 Names are imported on first use, so that ``import hydroservo`` and the command
@@ -62,6 +65,7 @@ _LAZY: dict[str, tuple[str, str | None]] = {
         for name in (
             "analysis",
             "backend",
+            "codegen",
             "components",
             "data",
             "errors",
@@ -74,6 +78,7 @@ _LAZY: dict[str, tuple[str, str | None]] = {
             "system",
             "units",
             "validation",
+            "workflows",
         )
     },
 }
@@ -88,6 +93,7 @@ __all__ = [
     "available_models",
     "analysis",
     "backend",
+    "codegen",
     "components",
     "data",
     "errors",
@@ -100,6 +106,7 @@ __all__ = [
     "system",
     "units",
     "validation",
+    "workflows",
     "to_si",
     "ureg",
     "HydroservoError",
@@ -132,6 +139,7 @@ if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and edit
     from hydroservo import (
         analysis,
         backend,
+        codegen,
         components,
         data,
         fluids,
@@ -143,6 +151,7 @@ if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and edit
         system,
         units,
         validation,
+        workflows,
     )
     from hydroservo.io.model_file import available_models, load_model
     from hydroservo.system import BatchResult, Model, Result, System
