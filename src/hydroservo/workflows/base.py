@@ -143,7 +143,7 @@ class Report:
     def _repr_html_(self) -> str:
         """In a notebook, the page in a frame of its own (its styles and scripts kept apart from the notebook's)."""
         page = html.escape(self.to_html(), quote=True)
-        return f'<iframe srcdoc="{page}" style="width: 100%; height: 820px; border: 1px solid #d9dee4;"></iframe>
+        return f'<iframe srcdoc="{page}" style="width: 100%; height: 820px; border: 1px solid #d9dee4;"></iframe>'
 
     def __str__(self) -> str:
         return "\n".join(self.lines())
