@@ -975,6 +975,113 @@ class Model:
         X[:, runs, :] = xf.reshape(self.nx, size, -1) * self.nominal[:, None, None]  # unscaled as they arrive
         chunks.append((list(runs), xf))
 
+    # -- forward sensitivities ---------------------------------------------
+    def _sensitivity_integrator(self, grid: np.ndarray, settings: SolverSettings, columns: tuple[int | None, ...]) -> ca.Function:
+        """CVODES on the states and their sensitivities to ``len(columns)`` directions, in scaled form.
+
+        The sensitivity equations :math:`\\dot S = \\partial f/\\partial z\\, S + \\partial f/\\partial p_k\\, d_k`
+        are built from the model's own graph (exact derivatives), so CVODES integrates them with the states under
+        one error control. Column ``k`` is driven by parameter ``columns[k]`` scaled by ``d_k`` (an extra
+        parameter of the integrator), or by nothing (``None``: a direction of the initial state only).
+        """
+        steps = settings.steps_per_interval(grid.size - 1)
+        key = ("sens", grid.tobytes(), settings.rtol, settings.atol, steps, columns)
+        if key not in self._integrators:
+            if len(self._integrators) > 16:
+                self._integrators.clear()
+                self._batch_maps.clear()
+            z, t, p, fz = self._dae["x"], self._dae["t"], self._dae["p"], self._dae["ode"]
+            n = len(columns)
+            S = ca.SX.sym("S", self.nx, n)
+            d = ca.SX.sym("d", n)
+            Jz = ca.jacobian(fz, z)
+            Jp = ca.jacobian(fz, p)
+            forcing = ca.horzcat(*[Jp[:, c] * d[k] if c is not None else ca.SX.zeros(self.nx, 1) for k, c in enumerate(columns)])
+            dS = ca.mtimes(Jz, S) + forcing
+            dae = {"x": ca.vertcat(z, ca.vec(S)), "t": t, "p": ca.vertcat(p, d), "ode": ca.vertcat(fz, ca.vec(dS))}
+            opts = {"abstol": settings.atol, "reltol": settings.rtol, "max_num_steps": steps}
+            self._integrators[key] = ca.integrator("sens", "cvodes", dae, float(grid[0]), [float(g) for g in grid], opts)
+        return self._integrators[key]
+
+    def initial_jacobian(self, p: np.ndarray) -> np.ndarray:
+        """:math:`\\partial x_0/\\partial p` of the parameter-based initial state (SI), ``nx`` by ``np``."""
+        key = "x0_jac"
+        if key not in self._maps:
+            ps = ca.SX.sym("p", self.np)
+            self._maps[key] = ca.Function("x0_jac", [ps], [ca.densify(ca.jacobian(self.x0(ps), ps))])
+        return np.asarray(self._maps[key](p), dtype=float).reshape(self.nx, self.np)
+
+    def sensitivities(
+        self,
+        grid: np.ndarray,
+        p: np.ndarray,
+        x0: np.ndarray,
+        dx0: np.ndarray,
+        columns: Sequence[int | None],
+        scale: Sequence[float],
+        settings: SolverSettings,
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """States and their exact derivatives along ``len(columns)`` directions, at the times ``grid``.
+
+        Direction ``k`` changes parameter ``columns[k]`` by ``scale[k]`` per unit (``None``: no parameter) and
+        the initial state by ``dx0[:, k]`` (SI). Returns ``X`` (SI, ``nx`` by ``nt``) and ``S`` (``nt`` by ``nx``
+        by ``len(columns)``, SI per unit of each direction).
+
+        Raises
+        ------
+        SolverError
+            If the integration fails (the reason, in CVODES' words translated).
+        """
+        p = self._check_parameters(p)
+        n = len(columns)
+        integ = self._sensitivity_integrator(np.asarray(grid, dtype=float), settings, tuple(columns))
+        nominal = self.nominal[:, None]
+        start = np.concatenate([np.asarray(x0, dtype=float) / self.nominal, (np.asarray(dx0, dtype=float) / nominal).ravel(order="F")])
+        scale_vec = np.asarray([s if c is not None else 0.0 for c, s in zip(columns, scale)], dtype=float)
+        try:
+            with captured() as printed:
+                args = {integ.index_in("x0"): start, integ.index_in("p"): np.concatenate([p, scale_vec])}
+                out, _ = _buffered(integ, args, raises=True)
+        except RuntimeError as exc:
+            t_fail, _ = failure_point(printed.getvalue())
+            where = f" at t = {t_fail:.6g} s" if t_fail is not None else ""
+            raise SolverError(f"integration of {self.name!r} with its sensitivities failed{where}: {translate(str(exc))}") from None
+        nt = out.shape[1]
+        X = out[: self.nx] * nominal
+        S = out[self.nx :].reshape(self.nx, n, nt, order="F").transpose(2, 0, 1) * self.nominal[None, :, None]
+        if not (np.isfinite(X).all() and np.isfinite(S).all()):
+            raise SolverError(f"integration of {self.name!r} with its sensitivities: the solution became NaN or Inf")
+        return X, S
+
+    def output_sensitivities(
+        self, names: Sequence[str], grid: np.ndarray, X: np.ndarray, S: np.ndarray, p: np.ndarray,
+        columns: Sequence[int | None], scale: Sequence[float],
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Outputs ``names`` (in :attr:`units`) at the times ``grid`` and their derivatives along the directions of
+        :meth:`sensitivities` (whose ``X`` and ``S`` they take): ``(Y, dY)``, ``len(names)`` by ``nt`` and ``nt`` by
+        ``len(names)`` by ``len(columns)``."""
+        key = ("out_sens", tuple(names), tuple(columns))
+        if key not in self._maps:
+            t, x, ps = ca.SX.sym("t"), ca.SX.sym("x", self.nx), ca.SX.sym("p", self.np)
+            n = len(columns)
+            Sx, d = ca.SX.sym("S", self.nx, n), ca.SX.sym("d", n)
+            y = self.outputs(t, x, ps)
+            idx = [self._output_index[nm] for nm in names]
+            ysel = ca.vertcat(*[y[i] for i in idx])
+            Jp = ca.jacobian(ysel, ps)
+            direct = ca.horzcat(*[Jp[:, c] * d[k] if c is not None else ca.SX.zeros(len(idx), 1) for k, c in enumerate(columns)])
+            dy = ca.mtimes(ca.jacobian(ysel, x), Sx) + direct
+            self._maps[key] = ca.Function("y_sens", [t, x, ps, Sx, d], [ca.densify(ysel), ca.densify(ca.vec(dy))])
+        fn = self._maps[key]
+        nt, m, n = grid.size, len(names), len(columns)
+        mapped = fn.map(nt)
+        scale_vec = np.asarray([s if c is not None else 0.0 for c, s in zip(columns, scale)], dtype=float)
+        Sflat = S.transpose(1, 2, 0).reshape(self.nx, n * nt, order="F")
+        Y, dY = mapped(grid[None, :], X, np.repeat(p[:, None], nt, axis=1), Sflat, np.repeat(scale_vec[:, None], nt, axis=1))
+        Y = np.asarray(Y, dtype=float).reshape(m, nt)
+        dY = np.asarray(dY, dtype=float).reshape(m, n, nt, order="F").transpose(2, 0, 1)
+        return Y, dY
+
     # -- code generation ---------------------------------------------------
     def generate_c(self, filename: str | Path = "model.c") -> Path:
         """Write C code of ``f``, its Jacobian ``jac_x`` and the outputs ``y`` (CasADi code generation).

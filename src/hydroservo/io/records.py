@@ -1,0 +1,162 @@
+"""Rig records: CSV files with a time column and ``name [unit]`` signal columns.
+
+One experiment is one or more files; each file has its own time column, so a
+logger that samples at several rates writes one file per rate ([Efe2014]
+Table 5.1)::
+
+    # robot arm, step of 36.8 %, logged at 40 Hz
+    t [s],cyl.pA [bar],cyl.pB [bar],supply.p [bar]
+    0,1.22,2.0,30.1
+    0.025,1.25,,30.0
+
+Column names are the model's signal names (states, outputs, aliases); a
+results file written by hydroservo is a record too. Lines starting with ``#``
+are comments; empty cells and ``nan`` are missing samples. Values keep the
+unit of their header: the record is converted where it meets a model.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+
+from hydroservo.errors import ParameterError, UnitError
+from hydroservo.identification.records import Channel, Record
+from hydroservo.io.files import OutputFolder, read_text
+from hydroservo.io.results import parseable_unit
+from hydroservo.units import check_unit, same_dimension, si_definition
+
+__all__ = ["read_record", "write_record", "record_files"]
+
+_TIME_NAMES = ("t", "time")
+
+
+def _header(cell: str, where: str, k: int) -> tuple[str, str]:
+    text = cell.strip().lstrip("\ufeff")
+    if not (text.endswith("]") and " [" in text):
+        raise ParameterError(f"{where}: column {k + 1} {text!r}: expected 'name [unit]', e.g. 'cyl.pA [bar]' or 'command.y [-]'")
+    name, unit = text[:-1].split(" [", 1)
+    unit = parseable_unit(unit)
+    try:
+        check_unit(unit)
+    except UnitError as exc:
+        raise UnitError(f"{where}: column {name.strip()!r}: unit {unit!r} is not a unit ({exc})") from None
+    return name.strip(), unit
+
+
+def _read_file(path: Path) -> dict[str, Channel]:
+    where = f"record {str(path)!r}"
+    text = read_text(path, "record")
+    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff"))) if r and not r[0].lstrip().startswith("#")]
+    rows = [r for r in rows if any(c.strip() for c in r)]
+    if not rows:
+        raise ParameterError(f"{where}: no header; expected a first line such as 't [s],load.x [mm]'")
+    header = [_header(c, where, k) for k, c in enumerate(rows[0])]
+    (tname, tunit), signals = header[0], header[1:]
+    if tname not in _TIME_NAMES or not same_dimension(tunit, "s"):
+        raise ParameterError(f"{where}: first column {rows[0][0].strip()!r}: expected the time, e.g. 't [s]'")
+    if not signals:
+        raise ParameterError(f"{where}: only a time column; expected signal columns 'name [unit]' after it")
+    seen: set[str] = set()
+    for name, _ in signals:
+        if name in seen:
+            raise ParameterError(f"{where}: column {name!r} appears twice")
+        seen.add(name)
+    body = rows[1:]
+    if len(body) < 2:
+        raise ParameterError(f"{where}: {len(body)} sample(s); a record needs at least two")
+    values = np.full((len(body), len(header)), np.nan)
+    for i, row in enumerate(body):
+        if len(row) != len(header):
+            raise ParameterError(f"{where}: data row {i + 1} has {len(row)} cells; the header has {len(header)}")
+        for j, cell in enumerate(row):
+            cell = cell.strip()
+            if not cell:
+                continue
+            try:
+                values[i, j] = float(cell)
+            except ValueError:
+                raise ParameterError(
+                    f"{where}: data row {i + 1}, column {header[j][0]!r}: {cell!r} is not a number"
+                ) from None
+    factor, offset, _ = si_definition(tunit)
+    t = values[:, 0] * factor + offset
+    if not np.all(np.isfinite(t)):
+        k = int(np.argmax(~np.isfinite(t)))
+        raise ParameterError(f"{where}: data row {k + 1} has no time; every row needs one")
+    return {name: Channel(name, t, values[:, j + 1], unit, str(path)) for j, (name, unit) in enumerate(signals)}
+
+
+def read_record(paths: str | Path | Sequence[str | Path], name: str | None = None) -> Record:
+    """One experiment from one or more CSV files (one per sample rate), each with its own time column.
+
+    ``paths`` may also be one string of file names separated by commas, as the
+    command line gives them. The record is named ``name`` (default: the first
+    file's name). A signal in two files is an error naming both.
+    """
+    if isinstance(paths, str):
+        paths = [p for p in (s.strip() for s in paths.split(",")) if p]
+    elif isinstance(paths, Path):
+        paths = [paths]
+    files = [Path(p) for p in paths]
+    if not files:
+        raise ParameterError("record: no file given; expected one or more CSV files")
+    channels: dict[str, Channel] = {}
+    for path in files:
+        for cname, channel in _read_file(path).items():
+            if cname in channels:
+                raise ParameterError(
+                    f"record: signal {cname!r} is in both {channels[cname].source!r} and {str(path)!r}; "
+                    "expected each signal in one file"
+                )
+            channels[cname] = channel
+    return Record(name or files[0].stem, channels)
+
+
+def record_files(record: Record, stem: str | None = None) -> dict[str, str]:
+    """The CSV text of ``record``, one file per sample rate, by file name (``STEM-200Hz.csv``)."""
+    stem = stem or record.name
+    groups = record.by_rate()
+    out: dict[str, str] = {}
+    for rate, names in sorted(groups.items(), key=lambda kv: -kv[0]):
+        label = f"{rate:g}Hz".replace(".", "p")
+        fname = f"{stem}.csv" if len(groups) == 1 else f"{stem}-{label}.csv"
+        first = record[names[0]]
+        lines = ["t [s]," + ",".join(f"{n} [{record[n].unit or '-'}]" for n in names)]
+        cols = [first.t, *(record[n].values for n in names)]
+        buffer = io.StringIO()
+        np.savetxt(buffer, np.column_stack(cols), fmt="%.10g", delimiter=",")
+        body = buffer.getvalue().replace("nan", "")
+        out[fname] = "\n".join(lines) + "\n" + body
+    return out
+
+
+def write_record(record: Record, folder: str | Path | OutputFolder, stem: str | None = None) -> list[Path]:
+    """Write ``record`` as CSV files into ``folder``, one per sample rate; returns the paths.
+
+    Into an :class:`~hydroservo.io.files.OutputFolder` the files are written through it (never
+    replacing a file unasked); into a plain folder, which must exist, a file already there is an error.
+    """
+    texts = record_files(record, stem)
+    if isinstance(folder, OutputFolder):
+        written = []
+        for name, text in texts.items():
+            path = folder.file(name)
+            path.write_text(text, encoding="utf-8")
+            written.append(path)
+        return written
+    base = Path(folder)
+    if not base.is_dir():
+        raise ParameterError(f"record: folder {str(base)!r} does not exist")
+    paths = [base / name for name in texts]
+    existing = [str(p) for p in paths if p.exists()]
+    if existing:
+        raise ParameterError(f"record: {', '.join(existing)} exists already; expected a new file name")
+    for p, text in zip(paths, texts.values()):
+        p.write_text(text, encoding="utf-8")
+    return paths
+
