@@ -67,6 +67,7 @@ __all__ = [
     "parse_fit",
     "Experiment",
     "prepare",
+    "driven_system",
     "Calibration",
     "calibrate",
     "Prediction",
@@ -272,6 +273,19 @@ def _driven(system: System, record: Record, signal: str) -> None:
         )
 
 
+def driven_system(system: System, record: Record, inputs: Sequence[str]) -> System:
+    """A copy of ``system`` whose sources of ``inputs`` (``"command.y"``, ``"supply.p"``) replay the record."""
+    missing = [s for s in inputs if s not in record]
+    if missing:
+        raise ParameterError(
+            f"record {record.name!r}: no column {missing[0]!r} to drive the model with; it has {', '.join(record.names)}"
+        )
+    driven = system.copy()
+    for signal in inputs:
+        _driven(driven, record, signal)
+    return driven
+
+
 def prepare(
     system: System, record: Record, inputs: Sequence[str] = (), *, initial: str = "record",
 ) -> Experiment:
@@ -284,14 +298,7 @@ def prepare(
     """
     if initial not in ("record", "model", "estimate"):
         raise ParameterError(f"initial = {initial!r}: expected 'record', 'model' or 'estimate'")
-    missing = [s for s in inputs if s not in record]
-    if missing:
-        raise ParameterError(
-            f"record {record.name!r}: no column {missing[0]!r} to drive the model with; it has {', '.join(record.names)}"
-        )
-    driven = system.copy()
-    for signal in inputs:
-        _driven(driven, record, signal)
+    driven = driven_system(system, record, inputs)
     model = driven.build()
     known = _signals(model)
     measured = [n for n in record.names if n not in inputs]

@@ -578,6 +578,7 @@ class Model:
         x_guess: np.ndarray | None = None,
         tol: float = 1e-9,
         free: Sequence[str] = (),
+        steady_motion: bool = True,
     ) -> dict[str, float]:
         """Equilibrium :math:`f(t, x, p) = 0` for the inputs at time ``t``.
 
@@ -589,6 +590,9 @@ class Model:
         ``free`` names states that keep their guessed value and whose rates need
         not vanish: with a piston's position free, the trim is the *steady
         motion* of an open-loop drive (constant speed, pressures and spool).
+        That the free states then move steadily is checked unless
+        ``steady_motion`` is False (the free states are measured values, held
+        while the others settle).
 
         Raises
         ------
@@ -640,7 +644,7 @@ class Model:
         why = self.unconverged(np.array([t]), z[:, None], p)
         if why is not None:
             raise TrimError(f"no equilibrium found for {self.name!r}: {why}")
-        if free:
+        if free and steady_motion:
             # a steady motion: the free states' rates must be constant too (d/dt f = J f = 0), or it is no steady state
             fz = np.asarray(self._fz(t, z, p), dtype=float).ravel()
             Jz = np.asarray(self._jz(t, z, p), dtype=float)

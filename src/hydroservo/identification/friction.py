@@ -1,0 +1,209 @@
+"""Friction of a cylinder from a rig record, and the Stribeck law fitted to it ([Efe2014] sections 4.5.4, 5.1.1).
+
+The experiment: the rod is driven at several constant speeds (the valve signal
+held at several levels, both directions); the chamber pressures and the rod
+position are logged. At each speed the friction force is the piston's force
+balance, [Efe2014] eq. 4.24,
+
+.. math:: F_f = p_A A_A - p_B A_B - m \\ddot x \\; (- F_{ext}),
+
+which in steady motion is eq. 4.25 (no acceleration). Speed and acceleration
+come from the position by a centred Savitzky-Golay filter
+(:func:`~hydroservo.identification.records.derivatives`): centred, it has no
+lag, and the transient after each change of the valve signal is left out
+(:func:`~hydroservo.identification.steady.segments`). The forces are averaged
+over each held interval: one point per speed, as Table 5.2 lists them.
+
+The Stribeck law, eq. 3.47 (:func:`hydroservo.laws.friction.stribeck`, the
+published form with the sign not smoothed), is then fitted to the points by
+least squares in log scale (all four parameters positive); relative errors
+follow the thesis's convention, (experimental - simulated) / experimental.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from hydroservo.errors import ParameterError
+from hydroservo.identification.records import Record, derivatives
+from hydroservo.identification.steady import operating_points, segments
+from hydroservo.laws.friction import stribeck
+
+if TYPE_CHECKING:
+    from hydroservo.system.system import System
+
+__all__ = ["FrictionPoints", "friction_from_record", "StribeckFit", "fit_stribeck", "STRIBECK_PARAMETERS"]
+
+#: The Stribeck parameters as the load components name them, with their units: eq. 3.47's sigma (F_v), F_c0,
+#: F_s0 and c_s.
+STRIBECK_PARAMETERS = {"B": "N*s/m", "F_c0": "N", "F_s0": "N", "c_s": "m/s"}
+
+
+@dataclass
+class FrictionPoints:
+    """Friction force against speed: one point per held valve signal (speed [m/s], force [N], the force's
+    standard deviation over the interval [N], the valve signal, and the interval [s])."""
+
+    velocity: np.ndarray
+    force: np.ndarray
+    spread: np.ndarray
+    command: np.ndarray
+    intervals: list[tuple[float, float]]
+    source: str = ""
+
+    def __len__(self) -> int:
+        return int(self.velocity.size)
+
+
+def friction_from_record(
+    system: System,
+    record: Record,
+    *,
+    command: str = "command.y",
+    position: str = "load.x",
+    pressures: tuple[str, str] = ("cyl.pA", "cyl.pB"),
+    cylinder: str = "cyl",
+    load: str = "load",
+    external: str | None = None,
+    window: float = 0.05,
+    settle: float = 0.25,
+    min_speed: float = 1e-3,
+) -> FrictionPoints:
+    """The friction force at each held valve signal of ``record`` ([Efe2014] eqs. 4.24-4.25).
+
+    The piston areas come from ``system[cylinder]`` (``A_A``, ``A_B``), the moving mass from
+    ``system[load]`` (``m``); ``external`` names a recorded external force on the rod (+ extends), if any.
+    Intervals slower than ``min_speed`` [m/s] (the rod held by its overlap or by friction) are left out.
+    """
+    cyl, mass = system[cylinder], system[load]
+    for comp, key in ((cyl, "A_A"), (cyl, "A_B"), (mass, "m")):
+        if key not in comp.values:
+            raise ParameterError(f"friction: {comp.name} has no parameter {key!r}; expected a cylinder and a mass")
+    A_A, A_B, m = cyl.values["A_A"], cyl.values["A_B"], mass.values["m"]
+    segs = segments(record, command, settle=settle)
+    if not segs:
+        raise ParameterError(f"record {record.name!r}: no interval where {command} is held for long enough")
+    signals = [*pressures, *([external] if external else [])]
+    points = operating_points(record, segs, signals, {pressures[0]: "Pa", pressures[1]: "Pa", **({external: "N"} if external else {})},
+                              position=position, window=window)
+    ch = record[position]
+    _, accel = derivatives(ch.t, ch.to("m"), window)
+    pa, pb = record[pressures[0]], record[pressures[1]]
+    rows = []
+    for s, pt in zip(segs, points):
+        v = pt[f"{position}:v"]
+        if abs(v) < min_speed:
+            continue
+        sel = pa.valid & pb.valid & (pa.t >= s.start) & (pa.t <= s.end)
+        if np.array_equal(pa.t, pb.t):
+            force = pa.to("Pa")[sel] * A_A - pb.to("Pa")[sel] * A_B
+        else:
+            force = pa.to("Pa")[sel] * A_A - np.interp(pa.t[sel], pb.t[pb.valid], pb.to("Pa")[pb.valid]) * A_B
+        a = np.interp(pa.t[sel], ch.t, accel)
+        force = force - m * a
+        if external:
+            force = force - np.interp(pa.t[sel], record[external].t, record[external].to("N"))
+        rows.append((v, float(np.mean(force)), float(np.std(force)), s.command, (s.start, s.end)))
+    if len(rows) < 1:
+        raise ParameterError(f"record {record.name!r}: the rod never moved faster than {min_speed:g} m/s in a held interval")
+    rows.sort(key=lambda r: r[0])
+    return FrictionPoints(
+        np.array([r[0] for r in rows]), np.array([r[1] for r in rows]), np.array([r[2] for r in rows]),
+        np.array([r[3] for r in rows]), [r[4] for r in rows], record.name,
+    )
+
+
+@dataclass
+class StribeckFit:
+    """The Stribeck law fitted to friction points: parameters (SI, by the load's names ``B``, ``F_c0``, ``F_s0``,
+    ``c_s``), their standard errors (NaN with no degrees of freedom left), the law at the points and the relative
+    errors in % ((experimental - simulated) / experimental)."""
+
+    parameters: dict[str, float]
+    stderr: dict[str, float]
+    velocity: np.ndarray
+    force: np.ndarray
+    simulated: np.ndarray
+    relative_error: np.ndarray
+    warnings: list[str] = field(default_factory=list)
+
+    def law(self, v: Any) -> Any:
+        """The fitted law at speeds ``v`` [m/s] [N]."""
+        p = self.parameters
+        return stribeck(np.asarray(v, dtype=float), p["B"], p["F_c0"], p["F_s0"], p["c_s"])
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "parameters": {k: {"value": v, "unit": STRIBECK_PARAMETERS[k], "stderr": _finite(self.stderr[k])} for k, v in self.parameters.items()},
+            "points": [
+                {"velocity": float(v), "experimental": float(f), "simulated": float(s), "relative_error_percent": float(e)}
+                for v, f, s, e in zip(self.velocity, self.force, self.simulated, self.relative_error)
+            ],
+            "max_relative_error_percent": float(np.max(np.abs(self.relative_error))),
+            "warnings": list(self.warnings),
+        }
+
+
+def _finite(x: float) -> float | None:
+    return float(x) if math.isfinite(x) else None
+
+
+def relative_errors(force: np.ndarray, simulated: np.ndarray) -> np.ndarray:
+    """[Efe2014] Table 5.2's relative error [%]: (experimental - simulated) / experimental."""
+    return 100.0 * (force - simulated) / force
+
+
+def fit_stribeck(
+    velocity: Sequence[float] | np.ndarray,
+    force: Sequence[float] | np.ndarray,
+    *,
+    start: dict[str, float] | None = None,
+) -> StribeckFit:
+    """Fit eq. 3.47 to friction forces [N] at speeds [m/s] (both directions allowed: the law is odd).
+
+    Least squares on the relative errors (Table 5.2 judges the law by them), in log scale of the four positive
+    parameters; ``start`` defaults to a line through the points for ``B`` and ``F_c0``, ``F_s0`` a tenth of
+    ``F_c0`` and ``c_s`` the smallest speed.
+    """
+    from scipy.optimize import least_squares
+
+    v = np.asarray(velocity, dtype=float)
+    f = np.asarray(force, dtype=float)
+    if v.size != f.size or v.size < 2:
+        raise ParameterError(f"fit_stribeck: {v.size} speeds and {f.size} forces; expected equally many, at least two")
+    if np.any(v == 0) or np.any(np.sign(v) != np.sign(f)):
+        raise ParameterError("fit_stribeck: every point needs a non-zero speed and a force opposing it (the same sign)")
+    names = list(STRIBECK_PARAMETERS)
+    if start is None:
+        slope, intercept = np.polyfit(np.abs(v), np.abs(f), 1)
+        start = {"B": max(slope, 1e-3), "F_c0": max(intercept, 1e-3), "F_s0": max(0.1 * intercept, 1e-3), "c_s": float(np.min(np.abs(v)))}
+    x0 = np.log([start[n] for n in names])
+
+    def residuals(x: np.ndarray) -> np.ndarray:
+        B, Fc, Fs, cs = np.exp(x)
+        return np.asarray((f - stribeck(v, B, Fc, Fs, cs)) / f)
+
+    sol = least_squares(residuals, x0, method="trf", xtol=1e-14, ftol=1e-14, gtol=1e-14, max_nfev=5000)
+    values = np.exp(sol.x)
+    dof = v.size - len(names)
+    stderr = {n: math.nan for n in names}
+    if dof > 0:
+        s2 = float(np.sum(sol.fun**2)) / dof
+        _, sv, vt = np.linalg.svd(sol.jac, full_matrices=False)
+        lost = sv <= 1e-8 * sv[0]  # directions the points do not reach at all (a Stribeck velocity far below them)
+        var = np.sum((vt[~lost] / sv[~lost, None]) ** 2, axis=0) * s2
+        blind = np.any(np.abs(vt[lost]) > 0.05, axis=0) if lost.any() else np.zeros(len(names), dtype=bool)
+        stderr = {n: (math.inf if b else float(val * math.sqrt(w))) for n, val, w, b in zip(names, values, var, blind)}
+    params = dict(zip(names, values.tolist()))
+    sim = np.asarray(stribeck(v, *values))
+    notes = [
+        f"{n} is not determined by these points (standard error {'infinite' if math.isinf(stderr[n]) else f'{100 * stderr[n] / params[n]:.0f} %'}): "
+        + ("the static term needs speeds near and below the Stribeck velocity c_s" if n in ("F_s0", "c_s") else "too few or too similar speeds")
+        for n in names if math.isfinite(params[n]) and params[n] > 0 and not stderr[n] <= params[n]
+    ]
+    return StribeckFit(params, stderr, v, f, sim, relative_errors(f, sim), notes)
