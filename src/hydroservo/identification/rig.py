@@ -81,7 +81,7 @@ def virtual_rig(
     t_stop = system.t_end if t_end is None else to_si(t_end, "s", what="t_end")
     times = {sig: sample_times(s.rate, t_stop) for sig, s in sensors.items()}
     grid = np.unique(np.concatenate(list(times.values())))
-    result = system.simulate(params=params, t_eval=grid, accuracy=accuracy, initial=initial)
+    result = system.simulate(params=params, t_eval=grid, accuracy=accuracy, initial=initial, max_steps=5_000_000)
     rng = seed if isinstance(seed, np.random.Generator) else np.random.default_rng(seed)
     channels = {}
     for sig, sensor in sensors.items():

@@ -91,10 +91,13 @@ def operating_points(
 
 def balancing_value(
     model: Model, p: np.ndarray, t: float, measured: Mapping[str, float], parameter: str, state: str,
-    probe: float | None = None,
+    probe: float | None = None, x: np.ndarray | None = None,
 ) -> float:
     """The value of ``parameter`` at which the rate of ``state`` vanishes, with the ``measured`` states (SI)
     held and the other states at their own steady value.
+
+    With ``x`` given (SI, every state: a simulation of the unmeasured ones, such as a spool that lags its
+    signal during a sweep) the unmeasured states are taken from it instead of trimmed.
 
     The rate must be affine in the parameter (a flow coefficient, a leakage conductance): it is evaluated at 0
     and at ``probe`` (default: the parameter's value in ``p``) and checked at a third point.
@@ -107,10 +110,12 @@ def balancing_value(
     names = model.parameter_names
     k = names.index(parameter)
     i = model.state_names.index(state)
-    guess = np.asarray(model.x0(p), dtype=float).ravel()
+    guess = np.asarray(model.x0(p) if x is None else x, dtype=float).ravel().copy()
     for n, v in measured.items():
         guess[model.state_names.index(n)] = v
-    if len(measured) < model.nx:
+    if x is not None:
+        x = guess
+    elif len(measured) < model.nx:
         try:
             steady = model.trim(p, t=t, x_guess=guess, free=list(measured), steady_motion=False)
             x = np.array([steady[n] for n in model.state_names])

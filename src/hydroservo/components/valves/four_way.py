@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Mapping
 from typing import Any
 
@@ -89,6 +90,14 @@ class FourWayValve(Component):
 
     def config(self) -> dict[str, Any]:
         return {"tables": {k: v.tolist() for k, v in self.tables.items()}} if self.has_tables() else {}
+
+    def with_tables(self, tables: Mapping[str, Any] | None = None) -> FourWayValve:
+        """A copy of this valve with other compensation tables (none: K = H = 1, the plain law of eq. 3.18)."""
+        new = copy.copy(self)
+        new.values, new.given, new.explicit = dict(self.values), dict(self.given), set(self.explicit)
+        new.option_values = dict(self.option_values)
+        new.tables = type(self)(self.name, tables=tables).tables
+        return new
 
     def has_tables(self) -> bool:
         return any(np.any(self.tables[k] != 1.0) for k in ("K", "H_opening", "H_closing"))
