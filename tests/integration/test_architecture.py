@@ -49,6 +49,8 @@ DELEGATIONS = {
     ("hydroservo.system.result", "analysis"),  # BatchResult.table
     ("hydroservo.analysis.frequency", "plotting"),  # FrequencyResponse.plot
     ("hydroservo.analysis.sensitivity", "plotting"),  # OneAtATime.plot, GlobalStudy.plot
+    ("hydroservo.system.system", "identification"),  # System.calibrate, System.plan_experiment
+    ("hydroservo.identification.calibration", "plotting"),  # Calibration.plot
 }
 
 

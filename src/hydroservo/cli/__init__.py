@@ -34,6 +34,7 @@ from collections.abc import Sequence
 from typing import NoReturn
 
 from hydroservo.cli import (
+    calibrate,
     components,
     examples,
     export_c,
@@ -80,6 +81,7 @@ def build_parser() -> argparse.ArgumentParser:
     fluid.add_parsers(sub)
     validate.add_parsers(sub)
     report.add_parsers(sub)
+    calibrate.add_parsers(sub)
     examples.add_parsers(sub)
     return parser
 

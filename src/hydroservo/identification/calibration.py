@@ -778,11 +778,12 @@ def calibrate(
         if (math.isfinite(p.lower) and v <= p.lower * (1 + 1e-6) + 1e-300) or (math.isfinite(p.upper) and v >= p.upper * (1 - 1e-6)):
             warns.append(f"{p.name} ended on its bound ({p.shown(v):.4g} {si_unit(p.unit)}): the optimum may lie beyond it")
     parts = _split(problem, r)
-    signals = [
-        SignalFit(nm, _shown_unit(experiments, nm), float(math.sqrt(np.mean((res * sigma[nm]) ** 2))) if res.size else math.nan,
-                  sigma[nm], given[nm], count)
-        for nm, (res, count) in parts.items()
-    ]
+    signals = []
+    for nm, (res, count) in parts.items():
+        unit, shown = _shown_unit(experiments, nm)
+        factor = from_si(1.0, coherent_unit(unit), shown) / from_si(1.0, coherent_unit(unit), unit) if shown != unit else 1.0
+        rms = float(math.sqrt(np.mean((res * sigma[nm]) ** 2))) if res.size else math.nan
+        signals.append(SignalFit(nm, shown, rms * factor, sigma[nm] * factor, given[nm], count))
     for sf in signals:
         if sf.noise_given and sf.samples > 30 and sf.rms > 1.25 * sf.noise:
             warns.append(
@@ -812,8 +813,10 @@ def calibrate(
     )
 
 
-def _shown_unit(experiments: list[Experiment], name: str) -> str:
-    return next(e.unit(name) for e in experiments if name in e.measured)
+def _shown_unit(experiments: list[Experiment], name: str) -> tuple[str, str]:
+    """The model's unit of a compared signal, and the unit its first record gives it in (where a person reads it)."""
+    exp = next(e for e in experiments if name in e.measured)
+    return exp.unit(name), exp.record[name].unit or exp.unit(name)
 
 
 def _split(problem: _Problem, r: np.ndarray) -> dict[str, tuple[np.ndarray, int]]:

@@ -114,7 +114,16 @@ def read_record(paths: str | Path | Sequence[str | Path], name: str | None = Non
                     "expected each signal in one file"
                 )
             channels[cname] = channel
-    return Record(name or files[0].stem, channels)
+    return Record(name or _common_stem(files), channels)
+
+
+def _common_stem(files: Sequence[Path]) -> str:
+    """The name of a record of several files: what their names share (``step-40Hz``, ``step-200Hz`` -> ``step``)."""
+    import os
+
+    stems = [f.stem for f in files]
+    common = os.path.commonprefix(stems).rstrip("-_. ") if len(stems) > 1 else stems[0]
+    return common or stems[0]
 
 
 def record_files(record: Record, stem: str | None = None) -> dict[str, str]:

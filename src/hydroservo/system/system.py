@@ -599,6 +599,32 @@ class System:
                     invalid[i] = str(exc)
         return model.batch(t, self._vector(model, None), si, failed=invalid, **kwargs)
 
+    def calibrate(self, records: Any, fit: Any, **options: Any) -> Any:
+        """Fit parameters of this system to rig records, with exact gradients and Fisher-information intervals;
+        see :func:`hydroservo.identification.calibration.calibrate` (the system itself is not changed: the
+        result's ``system`` is the calibrated copy).
+
+        Examples
+        --------
+        >>> import hydroservo as hs
+        >>> from hydroservo.identification.rig import Sensor, virtual_rig
+        >>> arm = hs.load_model("robot-arm")
+        >>> rec = virtual_rig(arm, {"load.x": Sensor(200, "mm", noise=0.02)}, params={"load.B": 320.0}, seed=1)
+        >>> cal = arm.calibrate([rec], ["load.B"], noise={"load.x": "0.02 mm"}, initial="model")
+        >>> abs(cal.values[0] - 320.0) < 2 * cal.stderr[0]
+        True
+        """
+        from hydroservo.identification.calibration import calibrate
+
+        return calibrate(self, records, fit, **options)
+
+    def plan_experiment(self, records: Any, fit: Any, noise: Any, **options: Any) -> Any:
+        """What planned experiments (records as the virtual rig makes them) would determine of the parameters
+        ``fit``, before any record exists; see :func:`hydroservo.identification.calibration.plan_experiment`."""
+        from hydroservo.identification.calibration import plan_experiment
+
+        return plan_experiment(self, records, fit, noise, **options)
+
     def parameter_vector(self, params: Mapping[str, Any] | None = None) -> np.ndarray:
         """The parameter vector of the built model (SI, in :attr:`Model.parameter_names` order):
         the components' values, with ``params`` ("comp.param" -> value, units allowed) applied.
