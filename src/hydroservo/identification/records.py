@@ -107,7 +107,7 @@ class Record:
     >>> import numpy as np
     >>> t = np.linspace(0, 1, 5)
     >>> r = Record("step", {"load.x": Channel("load.x", t, 10 * t, "mm")})
-    >>> r.span, r["load.x"].si()[-1]
+    >>> r.span, float(r["load.x"].si()[-1])
     ((0.0, 1.0), 0.01)
     """
 

@@ -611,7 +611,7 @@ class System:
         >>> arm = hs.load_model("robot-arm")
         >>> rec = virtual_rig(arm, {"load.x": Sensor(200, "mm", noise=0.02)}, params={"load.B": 320.0}, seed=1)
         >>> cal = arm.calibrate([rec], ["load.B"], noise={"load.x": "0.02 mm"}, initial="model")
-        >>> abs(cal.values[0] - 320.0) < 2 * cal.stderr[0]
+        >>> bool(abs(cal.values[0] - 320.0) < 2 * cal.stderr[0])
         True
         """
         from hydroservo.identification.calibration import calibrate
