@@ -166,3 +166,54 @@ def staged_slot_start(tmp_path_factory: pytest.TempPathFactory) -> StagedSlotVal
     path = tmp_path_factory.mktemp("examples") / "guess.toml"
     path.write_text(example_files()["guess.toml"])
     return read_staged_slot_valve(path)[0]
+
+
+# -- rig records of the robot arm (calibration, identification) ------------------------------------
+#: Parameters of the "rig" the synthetic records come from: the robot-arm model with these changed.
+ARM_TRUTH = {"spool.tau": 0.024, "valve.c_v": 1.3e-4, "cyl.C_Li": 3e-13, "load.B": 350.0, "load.F_c0": 60.0}
+
+
+def arm_with_steps(levels: tuple[float, ...] = (0.368, -0.5), hold: float = 0.5, rest: float = 0.4,
+                   t_end: float = 4.0) -> hs.System:
+    """The robot arm driven by held valve-signal steps on the 200 Hz grid (a record replays them exactly)."""
+    from hydroservo.components.signals import Table
+    from hydroservo.identification.rig import held_steps
+
+    arm = hs.load_model("robot-arm")
+    arm.t_end = t_end
+    times, values = held_steps(levels, hold, rest=rest)
+    times[-1] = max(times[-1], t_end)
+    arm.replace(Table("command", times=times, values=values))
+    return arm
+
+
+def arm_record(seed: int = 3, *, params: dict | None = None, t_end: float = 4.0, sensors: tuple[str, ...] = ("cyl.pA", "cyl.pB", "load.x", "command.y")):
+    """A record of the stepped robot arm at [Efe2014] Table 5.1's rates and typical noise."""
+    from hydroservo.identification.rig import EFE_SENSORS, virtual_rig
+
+    arm = arm_with_steps(t_end=t_end)
+    return virtual_rig(arm, {s: EFE_SENSORS[s] for s in sensors}, params=ARM_TRUTH if params is None else params,
+                       seed=seed, t_end=t_end, name=f"step-{seed}")
+
+
+@pytest.fixture(scope="session")
+def step_record():
+    """One 4-s, two-rate record of the stepped robot arm (extend 36.8 %, retract 50 %) with ARM_TRUTH."""
+    return arm_record()
+
+
+@pytest.fixture(scope="session")
+def arm_truth() -> dict[str, float]:
+    return dict(ARM_TRUTH)
+
+
+@pytest.fixture(scope="session")
+def stepped_arm():
+    """The model the records are fitted with: the robot arm as published (it does not know ARM_TRUTH)."""
+    return arm_with_steps
+
+
+@pytest.fixture(scope="session")
+def make_arm_record():
+    """``make_arm_record(seed, params=..., t_end=...)``: more records of the stepped robot arm."""
+    return arm_record

@@ -29,14 +29,21 @@ Each fit returns the components it identified, so that a fitted valve is the
 same object a system simulates.
 """
 
-from hydroservo.identification.calibration import Calibration, ExperimentPlan, Prediction, calibrate, plan_experiment, predict
+from hydroservo.identification.calibration import (
+    Calibration,
+    ExperimentPlan,
+    Prediction,
+    calibrate,
+    plan_experiment,
+    predict,
+)
 from hydroservo.identification.curves import fit_curves
+from hydroservo.identification.datasheet import Datasheet, PseudoSectionFit, fit_datasheet
 from hydroservo.identification.flow_coefficient import FlowCoefficientTables, flow_coefficient_tables
 from hydroservo.identification.friction import FrictionPoints, StribeckFit, fit_stribeck, friction_from_record
 from hydroservo.identification.leakage import LeakageEstimate, leakage_from_record
 from hydroservo.identification.records import Channel, Record
 from hydroservo.identification.rig import Sensor, virtual_rig
-from hydroservo.identification.datasheet import Datasheet, PseudoSectionFit, fit_datasheet
 from hydroservo.identification.servovalve_catalogue import CatalogueFit, fit_catalogue
 from hydroservo.identification.spool_dynamics import SPOOL_MODELS, SpoolFit, fit_spool_dynamics, spool_response
 from hydroservo.identification.staged_slot import StagedSlotIdentification, identify_staged_slot

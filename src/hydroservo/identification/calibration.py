@@ -605,40 +605,59 @@ def _intervals(
     return values, stderr, np.column_stack([lo, hi])
 
 
-def _identifiability(names: list[str], params: list[FitParameter], J: np.ndarray) -> list[str]:
-    """Plain warnings for the directions ``J`` does not determine, with the combination that it does."""
+def _combination(names: list[str], params: list[FitParameter], J: np.ndarray, cov: np.ndarray, involved: list[int]) -> str:
+    """The best-determined combination of the parameters ``involved`` (the leading right singular vector of their
+    columns of ``J``), as a product of powers (log-scale parameters) or a weighted sum, with its standard error."""
+    _, _, vt = np.linalg.svd(J[:, involved], full_matrices=False)
+    w = vt[0] / vt[0][np.argmax(np.abs(vt[0]))]
+    full = np.zeros(cov.shape[0])
+    full[involved] = w
+    se = float(np.sqrt(max(full @ cov @ full, 0.0)))
+    if all(params[i].log for i in involved):
+        text = " · ".join(f"{names[i]}^{wi:.2f}" for i, wi in zip(involved, w))
+        return f"{text} (to ±{100 * se:.2g} %)"
+    text = " ".join(f"{wi:+.2f}·{names[i]}/{params[i].scale:.3g}" for i, wi in zip(involved, w))
+    return f"{text} (to ±{se:.2g})"
+
+
+def _identifiability(names: list[str], params: list[FitParameter], J: np.ndarray, cov: np.ndarray) -> list[str]:
+    """Plain warnings for what ``J`` does not determine: directions of the parameters with a relative standard
+    error above :data:`UNDETERMINED`, and pairs correlated beyond :data:`CORRELATED`; each with the combination
+    of the same parameters that the records do determine."""
     n = len(params)
     if n == 0 or J.size == 0:
         return []
     Jp = J[:, :n]
     _, s, Vt = np.linalg.svd(Jp, full_matrices=False)
     out = []
+    named: list[set[int]] = []
     for k, sk in enumerate(s):
         se = 1.0 / sk if sk > 0 else math.inf
         if se <= UNDETERMINED:
             continue
         v = Vt[k]
-        involved = [i for i in np.argsort(-np.abs(v)) if abs(v[i]) >= 0.2]
+        involved = [int(i) for i in np.argsort(-np.abs(v)) if abs(v[i]) >= 0.2]
         if not involved:
             continue
+        named.append(set(involved))
         label = ", ".join(names[i] for i in involved)
-        size = "nothing" if not math.isfinite(se) else f"only to ±{100 * se:.0f} %" if se < 100 else "nothing"
+        size = f"only to ±{100 * se:.0f} %" if math.isfinite(se) and se < 100 else "nothing"
         if len(involved) == 1:
             out.append(f"the records do not determine {label}: they fix it {size}")
             continue
-        # the best-determined combination of the same parameters
-        sub = Jp[:, involved]
-        _, _, vt = np.linalg.svd(sub, full_matrices=False)
-        w = vt[0] / np.max(np.abs(vt[0]))
-        terms = []
-        for i, wi in zip(involved, w):
-            name = names[i]
-            terms.append(f"{name}^{wi:.2f}" if params[i].log else f"{wi:+.2f}·{name}/{params[i].scale:.3g}")
-        joiner = " · " if all(params[i].log for i in involved) else " "
         out.append(
             f"the records cannot separate {label}: along one combination of them they fix {size}; "
-            f"what they determine is {joiner.join(terms)}"
+            f"what they determine is {_combination(names, params, J, cov, involved)}"
         )
+    sd = np.sqrt(np.maximum(np.diag(cov), 1e-300))
+    corr = cov / np.outer(sd, sd)
+    for i in range(n):
+        for j in range(i + 1, n):
+            if abs(corr[i, j]) > CORRELATED and not any({i, j} <= group for group in named):
+                out.append(
+                    f"{names[i]} and {names[j]} are correlated ({corr[i, j]:+.3f}): the records barely tell them apart; "
+                    f"what they determine is {_combination(names, params, J, cov, [i, j])}"
+                )
     return out
 
 
@@ -656,9 +675,11 @@ def _solve(problem: _Problem, theta0: np.ndarray, gradient: str, max_nfev: int) 
             "give other starting values or narrower bounds"
         )
     jac: Any = problem.jacobian if gradient == "exact" else "2-point"
+    # forward differences need a step well above the integration's own error (rtol): sqrt(rtol) in the fitted scale
+    step = math.sqrt(problem.settings.rtol) / np.maximum(np.abs(theta0), 1.0) if gradient != "exact" else None
     return least_squares(
         problem.residuals, theta0, jac=jac, bounds=(lo, hi), method="trf", x_scale=1.0,
-        xtol=1e-10, ftol=1e-10, gtol=1e-10, max_nfev=max_nfev,
+        xtol=1e-10, ftol=1e-10, gtol=1e-10, max_nfev=max_nfev, diff_step=step,
     )
 
 
@@ -766,12 +787,8 @@ def calibrate(
     sd = np.sqrt(np.maximum(np.diag(cov), 1e-300))
     corr = cov / np.outer(sd, sd)
     names = problem.names
-    warns = _identifiability(names, params, J)
+    warns = _identifiability(names, params, J, cov)
     n = len(params)
-    for i in range(n):
-        for j in range(i + 1, n):
-            if abs(corr[i, j]) > CORRELATED and not any(names[i] in w and names[j] in w for w in warns):
-                warns.append(f"{names[i]} and {names[j]} are correlated ({corr[i, j]:+.3f}): the records barely tell them apart")
     if not sol.success or sol.status == 0:
         warns.append(f"the fit did not converge: {sol.message} (after {sol.nfev} evaluations); raise max_evaluations or give better starting values")
     for p, v in zip(params, values):
@@ -975,7 +992,7 @@ def plan_experiment(
     noise: Mapping[str, Any],
     *,
     inputs: Sequence[str] = (),
-    initial: str = "record",
+    initial: str = "estimate",
     accuracy: float = CALIBRATION_ACCURACY,
 ) -> ExperimentPlan:
     """The Fisher information of planned experiments at the nominal parameters.
@@ -997,4 +1014,4 @@ def plan_experiment(
     _, stderr, ci = _intervals(params, theta, cov, 1.959963984540054)
     sd = np.sqrt(np.maximum(np.diag(cov), 1e-300))
     corr = (cov / np.outer(sd, sd))[: len(params), : len(params)]
-    return ExperimentPlan(params, stderr, ci, corr, _identifiability(problem.names, params, J), problem.size)
+    return ExperimentPlan(params, stderr, ci, corr, _identifiability(problem.names, params, J, cov), problem.size)

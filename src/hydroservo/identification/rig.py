@@ -8,7 +8,7 @@ of the calibration: records made from a model with known parameters, at
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -21,7 +21,8 @@ from hydroservo.units import same_dimension, si_unit, to_si
 if TYPE_CHECKING:
     from hydroservo.system.system import System
 
-__all__ = ["Sensor", "sample_times", "virtual_rig"]
+__all__ = ["Sensor", "sample_times", "virtual_rig", "held_steps", "triangle", "EFE_SENSORS"]
+
 
 
 @dataclass(frozen=True)
@@ -41,6 +42,44 @@ class Sensor:
             v = getattr(self, what)
             if not (isinstance(v, (int, float)) and math.isfinite(v) and v >= 0):
                 raise ParameterError(f"sensor {what} = {v!r}: expected a number ≥ 0 in the sensor's unit")
+
+
+#: [Efe2014] Table 5.1's logger on the robot-arm model: its rates, with the noise of typical sensors (a 0.05 bar
+#: pressure transducer, a 0.02 mm position sensor; the valve signal as the controller sent it).
+EFE_SENSORS = {
+    "cyl.pA": Sensor(40.0, "bar", 0.05),
+    "cyl.pB": Sensor(40.0, "bar", 0.05),
+    "supply.p": Sensor(40.0, "bar", 0.05),
+    "load.x": Sensor(200.0, "mm", 0.02),
+    "command.y": Sensor(200.0, ""),
+}
+
+
+def held_steps(
+    levels: Sequence[float], hold: float, *, rest: float = 0.2, start: float = 0.1, rate: float = 200.0,
+) -> tuple[list[float], list[float]]:
+    """A valve-signal programme (``times`` [s], ``values``) for a :class:`~hydroservo.components.signals.Table`:
+    after ``start`` seconds at 0, each of ``levels`` held for ``hold`` seconds, then 0 for ``rest`` seconds.
+
+    Every change is a ramp over one sample period ``1/rate`` that starts on a sample, so a record of the signal
+    at ``rate`` (linear between samples) replays it exactly.
+    """
+    dt = 1.0 / rate
+    snap = lambda t: round(t * rate) / rate  # noqa: E731 - a sample instant
+    t, times, values = snap(start), [0.0], [0.0]
+    for level in levels:
+        times += [t, t + dt, snap(t + hold), snap(t + hold) + dt]
+        values += [0.0, float(level), float(level), 0.0]
+        t = snap(t + hold + rest)
+    times.append(t)
+    values.append(0.0)
+    return times, values
+
+
+def triangle(peak: float, duration: float, *, start: float = 0.1, rest: float = 0.1) -> tuple[list[float], list[float]]:
+    """A valve-signal sweep from 0 to ``peak`` and back over ``duration`` seconds, after ``start`` and before
+    ``rest`` seconds at 0 (for the flow-coefficient test: slow, so that the rod moves quasi-steadily)."""
+    return [0.0, start, start + duration / 2, start + duration, start + duration + rest], [0.0, 0.0, float(peak), 0.0, 0.0]
 
 
 def sample_times(rate: float, t_end: float, t0: float = 0.0) -> np.ndarray:
