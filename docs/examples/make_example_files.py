@@ -15,7 +15,15 @@ generated, from which published model, and with what noise.
 * ``flow_gain.csv``, ``blocked_ports.csv``: test-bench curves at -15 degC of
   hydroservo's example staged-slot valve (MareAttarND_example), 1 % noise;
 * ``guess.toml``: a start for ``valve identify``, every fitted value 30-40 %
-  away from that valve's.
+  away from that valve's;
+* ``arm_*.csv``: records of the robot arm (Efe2014) made by the virtual rig
+  (:mod:`hydroservo.identification.rig`) at Table 5.1's rates with sensor noise
+  and resolution, from the published model with :data:`RIG_TRUTH` changed:
+  ``arm_step`` and ``arm_check`` (held valve-signal steps, for ``calibrate``
+  and its ``--validate``), ``arm_friction`` (twelve held speeds, ``identify
+  friction``), ``arm_locked`` (the piston at its stroke end, ``identify
+  leakage``), ``arm_sweep_out``/``arm_sweep_in`` (slow sweeps of the valve
+  signal, ``identify flow-coefficient``).
 """
 
 from __future__ import annotations
@@ -25,12 +33,16 @@ from pathlib import Path
 
 import numpy as np
 
+import hydroservo as hs
 from hydroservo.analysis.frequency import FrequencyResponse
 from hydroservo.analysis.static_bench import bench_curves
+from hydroservo.components.signals import Table
 from hydroservo.data import parameter_set
 from hydroservo.identification import fit_datasheet, spool_response
+from hydroservo.identification.rig import Sensor, held_steps, triangle, virtual_rig
 from hydroservo.identification.staged_slot import noisy_curves
 from hydroservo.io import read_staged_slot_valve, staged_slot_valve_toml, write_bench_curves
+from hydroservo.io.records import record_files
 from hydroservo.laws import pseudo_section as ps
 from hydroservo.validation.ferreira import bode_grid, published_dynamics
 
@@ -125,11 +137,60 @@ def bench_files(folder: Path) -> dict[str, str]:
     return out
 
 
+#: The robot arm "on the rig": the published model (robot-arm) with these values, which calibrate must find.
+RIG_TRUTH = {"spool.tau": "24 ms", "valve.c_v": "1.3e-4 m^2/s/Pa^0.5", "cyl.C_Li": "3e-13 m^3/s/Pa", "load.B": "350 N*s/m",
+             "load.F_c0": "60 N"}
+#: Table 5.1's logger with the resolution of a 16-bit channel on each sensor's range (0.001 bar, 0.001 mm).
+RIG_SENSORS = {
+    "cyl.pA": Sensor(40.0, "bar", 0.05, 0.001),
+    "cyl.pB": Sensor(40.0, "bar", 0.05, 0.001),
+    "load.x": Sensor(200.0, "mm", 0.02, 0.001),
+    "command.y": Sensor(200.0, "", 0.0, 0.0001),
+}
+
+
+def _arm(times: list[float], values: list[float], **sets: str) -> hs.System:
+    arm = hs.load_model("robot-arm")
+    for key, value in sets.items():
+        arm.set(key, value)
+    arm.replace(Table("command", times=times, values=values))
+    return arm
+
+
+def rig_records() -> dict[str, str]:
+    """Records of the robot arm on the virtual rig, by file name."""
+    programmes = {
+        # name: (valve-signal programme, extra settings, what it is for)
+        "arm_step": (held_steps([0.368, -0.5], 0.5, rest=0.4), {}, "hydroservo calibrate"),
+        "arm_check": (held_steps([0.505, -0.258, 0.2], 0.5, rest=0.5), {}, "hydroservo calibrate --validate"),
+        "arm_friction": (held_steps([s * u for u in (0.2, 0.25, 0.3, 0.4, 0.5, 0.6) for s in (1, -1)], 0.6, rest=0.2), {},
+                         "hydroservo identify friction"),
+        "arm_locked": (([0.0, 0.1, 0.105, 3.0], [0.0, 0.0, 0.15, 0.15]), {"load.x0": "295 mm"}, "hydroservo identify leakage"),
+        "arm_sweep_out": (triangle(0.75, 3.0), {}, "hydroservo identify flow-coefficient"),
+        "arm_sweep_in": (triangle(-0.75, 3.0), {"load.x0": "280 mm"}, "hydroservo identify flow-coefficient"),
+    }
+    out = {}
+    for k, (name, ((times, values), sets, use)) in enumerate(programmes.items()):
+        t_end = max(times[-1], 4.0) if name in ("arm_step", "arm_check") else times[-1]
+        times = [*times[:-1], t_end]
+        arm = _arm(times, values, **sets)
+        record = virtual_rig(arm, RIG_SENSORS, params=RIG_TRUTH, seed=SEED + k, t_end=t_end, name=name)
+        note = (
+            f"SYNTHETIC record, not a measurement: the robot arm (Efe2014; built-in model robot-arm{''.join(f', {a} = {b}' for a, b in sets.items())})\n"
+            f"on hydroservo's virtual rig with {', '.join(f'{a} = {b}' for a, b in RIG_TRUTH.items())},\n"
+            "logged at Efe2014 Table 5.1's rates with 0.05 bar and 0.02 mm of Gaussian noise, 0.001 bar and 0.001 mm resolution.\n"
+            f"Use it with: {use}"
+        )
+        out.update(record_files(record, comment=note))
+    return out
+
+
 def example_data(folder: Path) -> dict[str, str]:
     """The generated example files: name -> text."""
     rng = np.random.default_rng(SEED)
     files = {"my_valve.toml": datasheet_file(), "measured.csv": static_curves_file(rng), "bode.csv": bode_file(rng)}
     files.update(bench_files(folder))
+    files.update(rig_records())
     return files
 
 

@@ -17,6 +17,7 @@ import pytest
 
 from hydroservo.data import example_files
 from hydroservo.io import read_bench_curves, read_bode, read_datasheet, read_model, read_staged_slot_valve
+from hydroservo.io.records import read_record
 
 GENERATOR = Path(__file__).resolve().parents[2] / "docs" / "examples" / "make_example_files.py"
 NUMBER = re.compile(r"[-+]?\d+\.?\d*(?:[eE][-+]?\d+)?")
@@ -40,7 +41,10 @@ def test_generated_files_are_the_shipped_ones(tmp_path: Path) -> None:
         for a, b in zip(new, old, strict=True):
             assert NUMBER.sub("#", a) == NUMBER.sub("#", b), (name, a, b)
             x, y = (np.array([float(v) for v in NUMBER.findall(s)]) for s in (a, b))
-            np.testing.assert_allclose(x, y, rtol=1e-9, atol=0, err_msg=f"{name}: {a!r}")
+            # a rig record is rounded to its sensors' resolution (0.001 bar, 0.001 mm): an integration that differs
+            # in the last digits on another machine may round a sample to the next step, never further
+            atol = 1.0001e-3 if name.startswith("arm_") else 0.0
+            np.testing.assert_allclose(x, y, rtol=1e-9, atol=atol, err_msg=f"{name}: {a!r}")
 
 
 def test_every_example_file_loads(tmp_path: Path) -> None:
@@ -54,3 +58,5 @@ def test_every_example_file_loads(tmp_path: Path) -> None:
     assert curves.temperature == -15.0 and curves.Q_L is not None and curves.P_1 is not None
     valve, bench = read_staged_slot_valve(tmp_path / "guess.toml")
     assert bench is None and valve.values["c"] > 0
+    step = read_record([tmp_path / "arm_step-200Hz.csv", tmp_path / "arm_step-40Hz.csv"])
+    assert step.name == "arm_step" and set(step.names) == {"load.x", "command.y", "cyl.pA", "cyl.pB"}

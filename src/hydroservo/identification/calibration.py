@@ -84,6 +84,10 @@ CORRELATED = 0.95
 #: Default accuracy of the integrations inside a calibration (relative to each signal's range): tighter than a
 #: plain simulation's, so that the model's integration error stays well below any sensor's noise.
 CALIBRATION_ACCURACY = 1e-7
+#: Fits repeated at most with the noise re-estimated from the residuals (signals without a stated noise), until the
+#: estimates change by less than REWEIGHT_TOLERANCE (relative).
+MAX_REWEIGHTS = 6
+REWEIGHT_TOLERANCE = 0.05
 #: Bounds of a positive parameter given none: this factor either side of its starting value.
 DEFAULT_SPAN = 100.0
 
@@ -762,15 +766,21 @@ def calibrate(
         raise best[2] if best[2] is not None else SolverError("calibration: no start could be fitted")
     sol = best[1]
     problem.nfev, problem.njev = sum(s[3] for s in solutions), sum(s[4] for s in solutions)
-    if not all(given.values()):  # weights from the residuals, then the fit again from there
-        r = problem.residuals(sol.x)
-        parts = _split(problem, r)
-        for name, (res, _) in parts.items():
-            if not given[name] and res.size:
-                sigma[name] *= math.sqrt(float(np.mean(res**2)))
-        say("noise estimated from the residuals: " + ", ".join(f"{k} {sigma[k]:.3g}" for k in parts if not given[k]))
+    if not all(given.values()):
+        # weights from the residuals, then the fit again from there, until the noise estimates settle
         nfev, njev = problem.nfev, problem.njev
-        sol = _solve(problem, sol.x, grad, max_evaluations)
+        for _ in range(MAX_REWEIGHTS):
+            parts = _split(problem, problem.residuals(sol.x))
+            change = 0.0
+            for name, (res, _) in parts.items():
+                if not given[name] and res.size:
+                    factor = math.sqrt(float(np.mean(res**2)))
+                    sigma[name] *= factor
+                    change = max(change, abs(factor - 1.0))
+            if change < REWEIGHT_TOLERANCE:
+                break
+            say("noise estimated from the residuals: " + ", ".join(_noise_text(experiments, k, sigma[k]) for k in parts if not given[k]))
+            sol = _solve(problem, sol.x, grad, max_evaluations)
         problem.nfev += nfev
         problem.njev += njev
     theta = sol.x
@@ -798,7 +808,7 @@ def calibrate(
     signals = []
     for nm, (res, count) in parts.items():
         unit, shown = _shown_unit(experiments, nm)
-        factor = from_si(1.0, coherent_unit(unit), shown) / from_si(1.0, coherent_unit(unit), unit) if shown != unit else 1.0
+        factor = _factor(unit, shown)
         rms = float(math.sqrt(np.mean((res * sigma[nm]) ** 2))) if res.size else math.nan
         signals.append(SignalFit(nm, shown, rms * factor, sigma[nm] * factor, given[nm], count))
     for sf in signals:
@@ -828,6 +838,18 @@ def calibrate(
         str(sol.message), float(sol.cost), problem.nfev, problem.njev, time.perf_counter() - clock, warns,
         initial_states, summary, grad,
     )
+
+
+def _noise_text(experiments: list[Experiment], name: str, sigma: float) -> str:
+    unit, shown = _shown_unit(experiments, name)
+    return f"{name} {sigma * _factor(unit, shown):.3g} {si_unit(shown)}"
+
+
+def _factor(unit: str, shown: str) -> float:
+    """The factor from a signal's model unit to the unit it is shown in."""
+    if shown == unit:
+        return 1.0
+    return from_si(1.0, coherent_unit(unit), shown) / from_si(1.0, coherent_unit(unit), unit)
 
 
 def _shown_unit(experiments: list[Experiment], name: str) -> tuple[str, str]:
@@ -933,8 +955,10 @@ def predict(
             t = exp.grid[exp.index[n]]
             err = model - meas
             span = float(np.ptp(meas))
+            unit = exp.record[n].unit or exp.unit(n)  # shown in the record's unit
+            factor = _factor(exp.unit(n), unit)
             row: dict[str, Any] = {
-                "record": exp.name, "signal": n, "unit": exp.unit(n), "rms": float(np.sqrt(np.mean(err**2))),
+                "record": exp.name, "signal": n, "unit": unit, "rms": factor * float(np.sqrt(np.mean(err**2))),
                 "rms_percent": float(100 * np.sqrt(np.mean(err**2)) / span) if span > 0 else math.nan,
                 "final_error_percent": None, "class": None,
             }

@@ -126,9 +126,11 @@ def _common_stem(files: Sequence[Path]) -> str:
     return common or stems[0]
 
 
-def record_files(record: Record, stem: str | None = None) -> dict[str, str]:
-    """The CSV text of ``record``, one file per sample rate, by file name (``STEM-200Hz.csv``)."""
+def record_files(record: Record, stem: str | None = None, comment: str = "") -> dict[str, str]:
+    """The CSV text of ``record``, one file per sample rate, by file name (``STEM-200Hz.csv``); ``comment``
+    (lines of text) heads every file as ``#`` lines."""
     stem = stem or record.name
+    head = "".join(f"# {line}".rstrip() + "\n" for line in comment.splitlines())
     groups = record.by_rate()
     out: dict[str, str] = {}
     for rate, names in sorted(groups.items(), key=lambda kv: -kv[0]):
@@ -140,7 +142,7 @@ def record_files(record: Record, stem: str | None = None) -> dict[str, str]:
         buffer = io.StringIO()
         np.savetxt(buffer, np.column_stack(cols), fmt="%.10g", delimiter=",")
         body = buffer.getvalue().replace("nan", "")
-        out[fname] = "\n".join(lines) + "\n" + body
+        out[fname] = head + "\n".join(lines) + "\n" + body
     return out
 
 

@@ -76,12 +76,18 @@ class FrictionReport(Report):
         from hydroservo.identification.friction import STRIBECK_PARAMETERS
         from hydroservo.io.component_file import component_toml
 
+        fit = self.fit
+        determined = {k: v for k, v in fit.parameters.items() if math.isfinite(fit.stderr[k]) and fit.stderr[k] <= abs(v)}
+        left = [k for k in fit.parameters if k not in determined]
+        header = _header("Stribeck friction (eq. 3.47)", self.model, self.records, self.component)
+        if left:
+            header += ("\nNot determined by the records, so not written (the model keeps its own): "
+                       + ", ".join(f"{k} (the fit ended at {fit.parameters[k]:.4g} {STRIBECK_PARAMETERS[k]})" for k in left))
         return component_toml(
-            self.component_type, self.fit.parameters, STRIBECK_PARAMETERS,
-            comments={k: f"± {self.fit.stderr[k]:.3g}" if math.isfinite(self.fit.stderr[k]) else "not determined by the records"
-                      for k in self.fit.parameters},
-            header=_header("Stribeck friction (eq. 3.47)", self.model, self.records, self.component),
-            extra={"points": {"velocity": self.fit.velocity.tolist(), "force": self.fit.force.tolist()}},
+            self.component_type, determined, STRIBECK_PARAMETERS,
+            comments={k: f"± {fit.stderr[k]:.3g}" for k in determined},
+            header=header,
+            extra={"points": {"velocity": fit.velocity.tolist(), "force": fit.force.tolist()}},
         )
 
     def artifacts(self) -> list[Artifact]:
