@@ -520,7 +520,6 @@ class Calibration:
             "signals": {s.name: {"rms": s.rms, "unit": s.unit, "noise": s.noise, "noise_given": s.noise_given, "samples": s.samples} for s in self.signals},
             "initial_states": dict(self.initial_states),
             "converged": self.success,
-            "message": self.message,
             "cost": self.cost,
             "evaluations": {"residuals": self.nfev, "jacobians": self.njev, "gradient": self.gradient},
             "seconds": self.seconds,
@@ -541,18 +540,14 @@ class Calibration:
             out.append(f"{s.name:<18} {s.rms:>13.4g} {noise:>11}  {si_unit(s.unit)}")
         n = len(self.parameters)
         if n > 1:
-            pairs = [
-                (self.names[i], self.names[j], self.correlation[i, j])
-                for i in range(n) for j in range(i + 1, n) if abs(self.correlation[i, j]) >= 0.5
-            ]
-            if pairs:
-                out.append("")
-                out += [f"correlation {a} ~ {b}: {r:+.3f}" for a, b, r in pairs]
+            out.append("")
+            out.append("correlation " + " ".join(f"{k + 1:>6}" for k in range(n)))
+            for i, name in enumerate(self.names[:n]):
+                out.append(f"{i + 1:>2} {name:<16}" + " ".join(f"{self.correlation[i, j]:>+6.2f}" for j in range(n)))
         out.append("")
         status = "converged" if self.success else "NOT converged"
         out.append(
-            f"{status}: {self.message} ({self.nfev} residual and {self.njev} {self.gradient} Jacobian evaluations, "
-            f"{self.seconds:.2f} s)"
+            f"{status} after {self.nfev} residual and {self.njev} {self.gradient} Jacobian evaluations ({self.seconds:.2f} s)"
         )
         return out
 
@@ -939,16 +934,25 @@ def _settled(t: np.ndarray, y: np.ndarray) -> bool:
 
 
 def predict(
-    system: System, records: Sequence[Record], *, inputs: Sequence[str] = (), initial: str = "record",
+    system: System, records: Sequence[Record], *, inputs: Sequence[str] = (), initial: str = "estimate",
     accuracy: float = CALIBRATION_ACCURACY,
 ) -> Prediction:
-    """Run ``system`` against each record (driven by ``inputs``) and measure how well it predicts them."""
+    """Run ``system`` against each record (driven by ``inputs``) and measure how well it predicts them.
+
+    ``initial`` as in :func:`calibrate`: with ``"estimate"`` (the default) the measured states' initial values
+    are fitted to each record (and nothing else), so that one noisy first sample does not offset the prediction.
+    """
     settings = SolverSettings.of(accuracy=accuracy, max_steps=5_000_000)
-    experiments = [prepare(system, r, inputs, initial="model" if initial == "model" else "record") for r in records]
+    experiments = [prepare(system, r, inputs, initial=initial) for r in records]
     problem = _Problem(experiments, [], {n: 1.0 for e in experiments for n in e.measured}, settings)
+    theta = problem.start()
+    if theta.size:
+        sigma, _ = _noise(None, experiments)  # weights: 1 % of each signal's range
+        problem.sigma = sigma
+        theta = _solve(problem, theta, "exact", 50).x
     rows, traces = [], []
     for e, exp in enumerate(experiments):
-        Y = problem.simulate(e, np.zeros(0))
+        Y = problem.simulate(e, theta)
         traces.append(Y)
         for n in exp.measured:
             model, meas = Y[n][exp.index[n]], exp.values[n]
