@@ -80,7 +80,7 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--validate", action="append", default=[], metavar="C.csv[,D.csv]",
                    help="a record kept out of the fit, to check the prediction; repeat")
     p.add_argument("--starts", type=int, default=1, metavar="N", help="starting points (the model's values and N-1 drawn over the bounds)")
-    p.add_argument("--initial", default="estimate", choices=["estimate", "record", "model"],
+    p.add_argument("--initial", default="estimate", choices=["estimate", "record", "trim", "model"],
                    help="initial states: fitted from the records' first samples (default), taken as recorded, or the model's")
     p.add_argument("--plan", action="store_true",
                    help="do not fit: tell what the records, as planned experiments (hydroservo rig), would determine")

@@ -53,7 +53,7 @@ import numpy as np
 from hydroservo.analysis.ladder import classify
 from hydroservo.components.signals import Table
 from hydroservo.components.sources import PressureTable
-from hydroservo.errors import HydroservoError, ParameterError, SolverError, UnitError
+from hydroservo.errors import HydroservoError, ParameterError, SolverError, TrimError, UnitError
 from hydroservo.identification.records import Channel, Record
 from hydroservo.system.integration import SolverSettings
 from hydroservo.units import coherent_unit, from_si, same_dimension, si_unit, split_quantity, to_si
@@ -231,6 +231,7 @@ class Experiment:
     index: dict[str, np.ndarray]  # positions of the channel's samples (with a value) in the grid
     fixed_states: dict[str, float]  # initial states taken from the record (SI)
     estimate_initial: list[str] = field(default_factory=list)
+    trim: bool = False  # the states not measured start in equilibrium with the measured ones
 
     @property
     def name(self) -> str:
@@ -297,11 +298,13 @@ def prepare(
     other channel that names a model signal is compared.
 
     ``initial``: ``"record"`` (states measured at the start take their recorded value, the rest the model's),
-    ``"model"`` (the model's initial state), or ``"estimate"`` (the measured states' initial values are fitted
-    with the parameters, starting from the record's).
+    ``"model"`` (the model's initial state), ``"estimate"`` (the measured states' initial values are fitted
+    with the parameters, starting from the record's), or ``"trim"`` (the measured states from the record, the
+    others in equilibrium with them: :meth:`~hydroservo.system.model.Model.trim` with the measured ones held;
+    their derivatives follow by the implicit-function theorem).
     """
-    if initial not in ("record", "model", "estimate"):
-        raise ParameterError(f"initial = {initial!r}: expected 'record', 'model' or 'estimate'")
+    if initial not in ("record", "model", "estimate", "trim"):
+        raise ParameterError(f"initial = {initial!r}: expected 'estimate', 'record', 'trim' or 'model'")
     driven = driven_system(system, record, inputs)
     model = driven.build()
     known = _signals(model)
@@ -327,13 +330,14 @@ def prepare(
         index[n] = np.searchsorted(grid, ch.t[ok])
     fixed: dict[str, float] = {}
     estimate: list[str] = []
-    if initial in ("record", "estimate"):
+    if initial in ("record", "estimate", "trim"):
         for n in measured:
             if n in model.state_names:
                 fixed[n] = record.value_at(n, t0, coherent_unit(model.units.get(n, "")))
         if initial == "estimate":
             estimate = list(fixed)
-    return Experiment(record, driven, model, grid, list(inputs), measured, values, index, fixed, estimate)
+    trim = initial == "trim" and len(fixed) < model.nx
+    return Experiment(record, driven, model, grid, list(inputs), measured, values, index, fixed, estimate, trim)
 
 
 # -- the problem -------------------------------------------------------------
@@ -385,7 +389,29 @@ class _Problem:
         for k, (ee, s) in enumerate(self.extra):
             if ee == e:
                 x0[exp.model.state_names.index(s)] = theta[len(self.params) + k] * self._nominal(e, s)
+        if exp.trim:
+            t0 = float(exp.grid[0])
+            steady = exp.model.trim(p, t=t0, x_guess=x0, free=list(exp.fixed_states), steady_motion=False)
+            x0 = np.array([steady[n] for n in exp.model.state_names])
         return p, x0
+
+    def _trimmed_directions(self, e: int, p: np.ndarray, x0: np.ndarray, dx0: np.ndarray, scale: list[float]) -> None:
+        """Derivatives of the trimmed initial states (implicit-function theorem on f_s(x_s, x_m, p) = 0)."""
+        exp = self.experiments[e]
+        m = exp.model
+        t0 = float(exp.grid[0])
+        held = np.array([n in exp.fixed_states for n in m.state_names])
+        A = m.linearize(x0, p, t0)
+        forcing = np.zeros((m.nx, dx0.shape[1]))
+        if self.params:
+            forcing[:, : len(self.params)] = m.parameter_jacobian(t0, x0, p)[:, self.columns[e]] * np.asarray(scale[: len(self.params)])
+        rhs = A[np.ix_(~held, held)] @ dx0[held] + forcing[~held]
+        # in scaled states, and least-norm: a state the equilibrium leaves free (a rod's position under a closed
+        # valve) keeps its guess, as the trim itself does, and gets no derivative along that freedom
+        nom = m.nominal[~held]
+        Az = A[np.ix_(~held, ~held)] * nom[None, :] / nom[:, None]
+        dz, *_ = np.linalg.lstsq(Az, rhs / nom[:, None], rcond=1e-9)
+        dx0[~held] = -dz * nom[:, None]
 
     def _signals(self, e: int, X: np.ndarray, p: np.ndarray) -> dict[str, np.ndarray]:
         exp = self.experiments[e]
@@ -423,7 +449,7 @@ class _Problem:
                 for e, exp in enumerate(self.experiments):
                     Y = self.simulate(e, theta)
                     parts += [(Y[n][exp.index[n]] - exp.values[n]) / self.sigma[n] for n in exp.measured]
-        except (SolverError, ParameterError):
+        except (SolverError, ParameterError, TrimError):
             return np.full(self.size, np.nan)  # a rejected trial point
         return np.concatenate(parts)
 
@@ -446,6 +472,8 @@ class _Problem:
                 if ee == e:
                     i = m.state_names.index(s)
                     dx0[i, len(self.params) + k] = self._nominal(e, s)
+            if exp.trim:
+                self._trimmed_directions(e, p, x0, dx0, scale)
             X, S = m.sensitivities(exp.grid, p, x0, dx0, columns, scale, self.settings)
             outs = [n for n in exp.measured if n not in m.state_names]
             dY: dict[str, np.ndarray] = {}

@@ -14,7 +14,9 @@ grouped by the valve signal (bins of ``bin_width``):
 * K(x_v) is the median ratio over the samples where the valve was *opening*
   (the magnitude of its signal rising), which [Efe2014] section 5.1.2 uses;
 * H(x_v, closing) is the median ratio while *closing* divided by K at the
-  same signal (Fig. 5.2), and H(x_v, opening) is 1.
+  same signal (Fig. 5.2), and H(x_v, opening) is 1; it is not read within
+  twice the valve's largest lap of the null, where the flow is a small
+  difference of large ones.
 
 The relative spool position is taken as the valve signal, as the valve's
 spool holds it in steady state; during a sweep the spool lags the signal, so
@@ -143,6 +145,8 @@ def flow_coefficient_tables(
     if len(signal) < 3:
         raise ParameterError("flow coefficient: fewer than three samples with the rod moving; the records show no steady motion")
     s, r, o = np.array(signal), np.array(ratio), np.array(opening)
+    # near the laps the flow is a small difference of large numbers: H is not read there (K still is)
+    lap = max(float(comp.values.get(k, 0.0)) for k in ("x_PA", "x_AT", "x_PB", "x_BT")) / float(comp.values["xv_max"])
     edges = np.arange(-1.0, 1.0 + 1e-9, bin_width)
     K_x, K, H_x, H_c = [], [], [], []
     for lo, hi in zip(edges[:-1], edges[1:]):
@@ -154,7 +158,7 @@ def flow_coefficient_tables(
             K_x.append(centre)
             K.append(k_open)
             closed = inside & ~o
-            if closed.sum() >= 2:
+            if closed.sum() >= 2 and abs(centre) > 2 * lap:
                 H_x.append(centre)
                 H_c.append(float(np.median(r[closed])) / k_open)
     if len(K_x) < 2:

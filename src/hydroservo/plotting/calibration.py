@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -62,5 +63,5 @@ def plot_fit(
         bottom.set_title(f"RMS {rms:.3g} {si_unit(label)}", fontsize=8)
         bottom.grid(True, alpha=0.3)
     axes[0, 0].legend(fontsize=8, loc="best")
-    fig.suptitle(title or f"calibration: {experiment.name}", fontsize=10)
+    fig.suptitle(textwrap.fill(title or f"calibration: {experiment.name}", 110), fontsize=10)
     return finish(fig, file, plt)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import textwrap
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -39,7 +40,7 @@ def plot_friction(points: FrictionPoints, fit: StribeckFit, *, title: str = "", 
     bottom.set_ylabel("error [%]")
     bottom.set_xlabel("rod speed [m/s]")
     bottom.grid(True, alpha=0.3)
-    fig.suptitle(title or "friction from rig records", fontsize=10)
+    fig.suptitle(textwrap.fill(title or "friction from rig records", 80), fontsize=10)
     return finish(fig, file, plt)
 
 
@@ -64,5 +65,5 @@ def plot_flow_coefficient(result: FlowCoefficientTables, *, title: str = "", fil
     bottom.set_ylabel("H [-] (eq. 3.23)")
     bottom.set_xlabel("relative spool position x_v / x_v,max [-]")
     bottom.grid(True, alpha=0.3)
-    fig.suptitle(title or "flow coefficient from rig records", fontsize=10)
+    fig.suptitle(textwrap.fill(title or "flow coefficient from rig records", 80), fontsize=10)
     return finish(fig, file, plt)

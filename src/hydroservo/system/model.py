@@ -1015,6 +1015,14 @@ class Model:
             self._maps[key] = ca.Function("x0_jac", [ps], [ca.densify(ca.jacobian(self.x0(ps), ps))])
         return np.asarray(self._maps[key](p), dtype=float).reshape(self.nx, self.np)
 
+    def parameter_jacobian(self, t: float, x: np.ndarray, p: np.ndarray) -> np.ndarray:
+        """:math:`\\partial f/\\partial p` at ``(t, x, p)`` (SI), ``nx`` by ``np``."""
+        key = "f_p"
+        if key not in self._maps:
+            ts, xs, ps = ca.SX.sym("t"), ca.SX.sym("x", self.nx), ca.SX.sym("p", self.np)
+            self._maps[key] = ca.Function("f_p", [ts, xs, ps], [ca.densify(ca.jacobian(self.f(ts, xs, ps), ps))])
+        return np.asarray(self._maps[key](t, x, p), dtype=float).reshape(self.nx, self.np)
+
     def sensitivities(
         self,
         grid: np.ndarray,

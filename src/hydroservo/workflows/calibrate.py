@@ -235,8 +235,8 @@ class Calibrate(Workflow):
             raise ParameterError(f"{self.name('fit')}: no parameter to fit; expected e.g. {self.name('fit')} valve.c_v")
         if isinstance(self.starts, bool) or not isinstance(self.starts, int) or not 1 <= self.starts <= 1000:
             raise ParameterError(f"{self.name('starts')} {self.starts!r}: expected a whole number from 1 to 1000")
-        if self.initial not in ("estimate", "record", "model"):
-            raise ParameterError(f"{self.name('initial')} {self.initial!r}: expected estimate, record or model")
+        if self.initial not in ("estimate", "record", "trim", "model"):
+            raise ParameterError(f"{self.name('initial')} {self.initial!r}: expected estimate, record, trim or model")
         self._accuracy = CALIBRATION_ACCURACY if self.accuracy is None else float(self.accuracy)
 
     def folder(self) -> str:

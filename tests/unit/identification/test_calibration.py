@@ -185,3 +185,34 @@ def test_plan_agrees_with_the_fit_it_plans(five, step_record, stepped_arm, arm_t
     np.testing.assert_allclose(plan.stderr, five.stderr, rtol=0.2)
     with pytest.raises(ParameterError, match="a plan needs every signal's sensor noise"):
         plan_experiment(truth, [planned], FIVE, {"load.x": "0.02 mm"}, inputs=["command.y"])
+
+
+def test_trimmed_initial_states_have_exact_derivatives(stepped_arm) -> None:
+    # Only the pressures are logged: the rod position and speed and the spool start in equilibrium with them
+    # (trim, measured states held). Their derivatives come by the implicit-function theorem; central differences
+    # (Richardson, runs to 1e-10) agree.
+    arm = stepped_arm(t_end=0.55)
+    record = virtual_rig(arm, {"cyl.pA": Sensor(40, "bar"), "cyl.pB": Sensor(40, "bar")}, t_end=0.55, seed=0)
+    exps = [prepare(arm, record, (), initial="trim")]
+    assert exps[0].trim and set(exps[0].fixed_states) == {"cyl.pA", "cyl.pB"}
+    problem = _Problem(exps, parse_fit(arm, ["valve.c_v", "load.B"]), {"cyl.pA": 1.0, "cyl.pB": 1.0},
+                       SolverSettings.of(accuracy=1e-10, max_steps=10_000_000))
+    theta = problem.start() + 0.01
+    J = problem.jacobian(theta)
+    for k in range(theta.size):
+        best = min(np.linalg.norm(J[:, k] - _richardson(problem, theta, k, h)) / np.linalg.norm(J[:, k])
+                   for h in (2e-3, 1e-3, 5e-4))
+        assert best < 1e-5, best
+
+
+def test_a_recorded_supply_drives_the_model(stepped_arm) -> None:
+    # supply.p logged (Table 5.1's pump outlet, 40 Hz) replaces the supply's table: the model then sees the
+    # recorded pressure, here a 10 % sag the model's own table does not have
+    arm = stepped_arm(t_end=1.0)
+    sagging = arm.copy()
+    sagging["supply"].set_table(["0 s", "0.5 s", "1 s"], ["30 bar", "27 bar", "27 bar"])
+    record = virtual_rig(sagging, {"supply.p": Sensor(40, "bar"), "load.x": Sensor(200, "mm"), "command.y": Sensor(200)},
+                         t_end=1.0)
+    fitted = predict(arm, [record], inputs=["command.y", "supply.p"], initial="model").to_dict()[record.name]
+    ignored = predict(arm, [record], inputs=["command.y"], initial="model").to_dict()[record.name]
+    assert fitted["load.x"]["rms"] < 1e-3 < ignored["load.x"]["rms"]
