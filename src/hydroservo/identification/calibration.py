@@ -1033,12 +1033,13 @@ class ExperimentPlan:
             "warnings": list(self.warnings),
         }
 
-    def lines(self) -> list[str]:
+    def lines(self, warnings: bool = True) -> list[str]:
+        """The table; ``warnings``: with the identifiability warnings after it."""
         out = [f"{'parameter':<18} {'nominal':>12} {'± stderr':>11} {'relative':>9}  unit"]
         for p, s in zip(self.parameters, self.stderr):
             rel = f"{100 * s / abs(p.start):.2f} %" if p.start else "-"
             out.append(f"{p.name:<18} {p.shown(p.start):>12.5g} {abs(p.shown(p.start + s) - p.shown(p.start)):>11.3g} {rel:>9}  {si_unit(p.unit)}")
-        return out + [f"warning: {w}" for w in self.warnings]
+        return out + ([f"warning: {w}" for w in self.warnings] if warnings else [])
 
 
 def plan_experiment(

@@ -178,7 +178,7 @@ class PlanReport(Report):
         return f"{self.model}: what the planned experiments would determine ({self.plan.samples} samples)"
 
     def lines(self) -> list[str]:
-        return [self.title(), "", *self.plan.lines()]
+        return [self.title(), "", *self.plan.lines(warnings=False)]  # the warnings go to stderr
 
     def to_dict(self) -> dict[str, Any]:
         return {"model": self.model, **self.plan.to_dict(), "files": self.files}
