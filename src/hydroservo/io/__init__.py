@@ -10,6 +10,7 @@ module                   files
 :mod:`.bode`             Bode data (CSV)
 :mod:`.tables`           time tables (CSV) of recorded signals
 :mod:`.results`          simulation results (CSV, MAT)
+:mod:`.records`          rig records (CSV, one file per sample rate)
 :mod:`.linear`           operating points (TOML) and linear models (JSON)
 :mod:`.runs`             the runs of a study, written as they arrive (Parquet parts)
 :mod:`.toml`             the TOML reader and value writer they share
@@ -48,6 +49,8 @@ _LAZY: dict[str, str] = {
     "model_to_toml": "hydroservo.io.model_file",
     "read_model": "hydroservo.io.model_file",
     "write_model": "hydroservo.io.model_file",
+    "read_record": "hydroservo.io.records",
+    "write_record": "hydroservo.io.records",
     "write_csv": "hydroservo.io.results",
     "write_mat": "hydroservo.io.results",
     "RunStore": "hydroservo.io.runs",
@@ -83,6 +86,8 @@ __all__ = [
     "model_to_toml",
     "read_model",
     "write_model",
+    "read_record",
+    "write_record",
     "write_csv",
     "write_mat",
     "RunStore",
@@ -124,6 +129,7 @@ if TYPE_CHECKING:  # the names the lazy imports give, for type checkers and edit
     from hydroservo.io.datasheet import read_datasheet
     from hydroservo.io.linear import read_operating_point, write_linear_model
     from hydroservo.io.model_file import builtin_models, load_model, model_to_toml, read_model, write_model
+    from hydroservo.io.records import read_record, write_record
     from hydroservo.io.results import write_csv, write_mat
     from hydroservo.io.runs import RunStore, read_runs
     from hydroservo.io.servovalve import (

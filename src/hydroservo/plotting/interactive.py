@@ -171,17 +171,21 @@ def xy_figure(
     y_label: str,
     title: str = "",
     markers: Sequence[tuple[Any, Any, str]] = (),
+    marker_size: int = 6,
 ) -> dict[str, Any]:
     """Curves ``(x, y, name)`` (lines) and measured points ``markers`` (``(x, y, name)``) on one pair of axes;
-    ``x_label`` and ``y_label`` carry the units (``"i [mA]"``)."""
+    ``x_label`` and ``y_label`` carry the units (``"i [mA]"``). Many markers (a record's samples) read better
+    small (``marker_size``), and are drawn in grey behind the curves."""
     data: list[dict[str, Any]] = []
     for k, (x, y, name) in enumerate(curves):
         data.append({"type": "scatter", "mode": "lines", "name": name, "x": _numbers(x), "y": _numbers(y),
                      "line": {"color": COLORS[k % len(COLORS)], "width": 1.8},
                      "hovertemplate": f"{y_label} %{{y:.5g}}<br>{x_label} %{{x:.5g}}<extra>{name}</extra>"})
     for k, (x, y, name) in enumerate(markers):
-        data.append({"type": "scatter", "mode": "markers", "name": name, "x": _numbers(x), "y": _numbers(y),
-                     "marker": {"color": COLORS[k % len(COLORS)], "size": 6, "symbol": "circle-open"},
+        marker = ({"color": COLORS[k % len(COLORS)], "size": marker_size, "symbol": "circle-open"} if marker_size >= 5
+                  else {"color": "#8a8f96", "size": marker_size, "symbol": "circle"})
+        data.insert(k, {"type": "scatter", "mode": "markers", "name": name, "x": _numbers(x), "y": _numbers(y),
+                     "marker": marker,
                      "hovertemplate": f"{y_label} %{{y:.5g}}<br>{x_label} %{{x:.5g}}<extra>{name}</extra>"})
     layout = _layout(title, 1, 360)
     layout["hovermode"] = "closest"

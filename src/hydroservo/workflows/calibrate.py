@@ -19,7 +19,7 @@ from hydroservo.errors import ParameterError, shorten
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
 
 if TYPE_CHECKING:
-    from hydroservo.identification.calibration import Calibration, ExperimentPlan, Prediction
+    from hydroservo.identification.calibration import Calibration, Experiment, ExperimentPlan, Prediction
     from hydroservo.identification.records import Record
     from hydroservo.io.html import Page
     from hydroservo.system.system import System
@@ -122,7 +122,6 @@ class CalibrationReport(Report):
 
     def document(self) -> Page:
         from hydroservo.io.html import Figure, Section, Table
-        from hydroservo.plotting.interactive import xy_figure
         from hydroservo.units import si_unit
         from hydroservo.workflows import pages
 
@@ -136,22 +135,36 @@ class CalibrationReport(Report):
         corr = Table(["", *c.names[:n]], [[a, *(float(c.correlation[i, j]) for j in range(n))] for i, a in enumerate(c.names[:n])])
         sig = Table(["signal", "RMS residual", "noise", "noise given", "samples", "unit"],
                     [[s.name, s.rms, s.noise, "yes" if s.noise_given else "estimated", s.samples, si_unit(s.unit)] for s in c.signals])
-        figures = []
-        for e, trace in zip(c.experiments, c.traces):
-            for name in e.measured:
-                t = e.grid[e.index[name]]
-                figures.append(Figure(xy_figure([(e.grid, trace[name], "model")], "t [s]", f"{name} [{si_unit(e.unit(name))}]",
-                                                title=f"{e.name}: {name}", markers=[(t, e.values[name], "measured")])))
+        figures = [
+            Figure(_fit_figure(e, trace, name, f"{e.name}: {name}"))
+            for e, trace in zip(c.experiments, c.traces) for name in e.measured
+        ]
         sections: list[Section | None] = [Section("Parameters", [params]), Section("Correlation", [corr]), Section("Residuals", [sig]),
                     Section("Measured and model", figures)]
         if self.prediction is not None:
             pr = self.prediction
+            sections.append(Section("Prediction of records not fitted: measured and model", [
+                Figure(_fit_figure(e, trace, name, f"{e.name}: {name} (not fitted)"))
+                for e, trace in zip(pr.experiments, pr.traces) for name in e.measured]))
             prow = [[r["record"], r["signal"], r["rms"], r["rms_percent"], r["final_error_percent"], r["class"] or "-",
                      si_unit(r["unit"])] for r in pr.rows]
             sections.append(Section("Prediction of records not fitted", [
                 Table(["record", "signal", "RMS error", "% of range", "final error [%]", "class (Efe2014 Table 5.3)", "unit"], prow)]))
         sections += [pages.references_section(["Efe2014"]), pages.files_section(self.files)]
         return pages.page(self.title(), "calibration against rig records", sections, self.warnings)
+
+
+def _fit_figure(experiment: Experiment, trace: Mapping[str, Any], name: str, title: str) -> dict[str, Any]:
+    """One signal of an experiment, measured (grey dots) and model (line), in the record's unit."""
+    from hydroservo.plotting.interactive import xy_figure
+    from hydroservo.units import coherent_unit, from_si, si_unit
+
+    unit = experiment.unit(name)
+    shown = experiment.record[name].unit or unit
+    factor = 1.0 if shown == unit else from_si(1.0, coherent_unit(unit), shown) / from_si(1.0, coherent_unit(unit), unit)
+    t = experiment.grid[experiment.index[name]]
+    return xy_figure([(experiment.grid, trace[name] * factor, "model")], "t [s]", f"{name} [{si_unit(shown)}]", title=title,
+                     markers=[(t, experiment.values[name] * factor, "measured")], marker_size=3)
 
 
 def _plot_fit(calibration: Calibration, k: int, path: Path) -> Any:
