@@ -486,6 +486,20 @@ def _overwrite_cases() -> dict[str, tuple[Callable[[Workspace], list[Any]], str]
         "ladder-over-existing-csv": (
             lambda w: ["ladder", "robot-arm", "--steps", "36.8", "--models", "nonlinear", "--out", w.out], "ladder.csv"
         ),
+        "calibrate-over-existing-model-file": (
+            lambda w: ["calibrate", "robot-arm", "--record", f"{w.example('arm_step-40Hz.csv')}", "--fit", "load.B",
+                       "--out", w.out],
+            "robot-arm-calibrated.toml",
+        ),
+        "identify-friction-over-existing-file": (
+            lambda w: ["identify", "friction", f"{w.example('arm_friction-200Hz.csv')},{w.example('arm_friction-40Hz.csv')}",
+                       "--model", "robot-arm", "--out", w.out],
+            "friction.toml",
+        ),
+        "rig-over-existing-record": (
+            lambda w: ["rig", "robot-arm", "--sensor", "load.x=200 Hz", "--t-end", "0.1", "--out", w.out],
+            "robot-arm-rig.csv",
+        ),
         "sensitivity-over-existing-indices": (
             lambda w: ["sensitivity", "robot-arm", "--method", "morris", "--n", "2", "--vary", "load.m=15kg..35kg",
                        "--out", w.out],
@@ -767,6 +781,7 @@ def _good_content(kind: str) -> str:
         "identify-start-file": ex["guess.toml"],
         "operating-point-file": '"cyl.pA" = "6 bar"\n',
         "measured-response-csv": "t [s], x [mm]\n0, 0\n1.5, 33\n",
+        "rig-record-csv": "t [s],load.x [mm]\n0,20\n0.005,20.1\n",
     }[kind]
 
 
@@ -804,6 +819,8 @@ def _reader_argv(ws: Workspace, kind: str, bad: Path) -> list[Any]:
         return ["linearize", "robot-arm", "--at", bad, *out]
     if kind == "measured-response-csv":
         return ["ladder", "robot-arm", "--steps", "36.8", "--measured", f"36.8={bad}", *out]
+    if kind == "rig-record-csv":
+        return ["calibrate", "robot-arm", "--record", bad, "--fit", "load.B", *out]
     raise AssertionError(kind)
 
 
@@ -821,6 +838,7 @@ READER_KINDS = {
     "identify-start-file": ".toml",
     "operating-point-file": ".toml",
     "measured-response-csv": ".csv",
+    "rig-record-csv": ".csv",
 }
 BAD_FILES = ["binary", "latin-1", "empty", "a-folder", "missing"]
 
@@ -848,6 +866,34 @@ def test_reader_bad_file(kind: str, bad_kind: str, ws: Workspace, run) -> None:
     else:
         detail = [r"(?i)no such file|not found|missing|does not exist|cannot read|neither"]
     refused(run, ws, _reader_argv(ws, kind, bad), [re.escape(name), *detail])
+
+
+# ========================================================================================================
+# 7b. Rig records and calibration: the records, the fit requested, the noise, the inputs
+# ========================================================================================================
+RECORD_CASES = {
+    "time-goes-back": ("t [s],load.x [mm]\n0,20\n0.01,20\n0.005,20\n", [], [r"bad\.csv", r"does not increase at sample 3"]),
+    "one-sample": ("t [s],load.x [mm]\n0,20\n", [], [r"bad\.csv", r"at least two"]),
+    "wrong-dimension": ("t [s],load.x [bar]\n0,20\n1,20\n", [], [r"bad\.csv", r"'load\.x'", r"not of the dimension"]),
+    "unknown-signal": ("t [s],load.xx [mm]\n0,20\n1,20\n", [], [r"'load\.xx' is not a signal", r"did you mean load\.x"]),
+    "only-the-input": ("t [s],command.y [-]\n0,0\n1,0.5\n", ["--input", "command.y"], [r"no column to compare"]),
+    "input-not-recorded": ("t [s],load.x [mm]\n0,20\n1,20\n", ["--input", "command.y"], [r"no column 'command\.y'"]),
+    "bad-fit-name": ("t [s],load.x [mm]\n0,20\n1,20\n", ["--fit", "load.BB"], [r"'load\.BB' is not a parameter", r"load\.B"]),
+    "bad-bounds": ("t [s],load.x [mm]\n0,20\n1,20\n", ["--fit", "load.m=50 kg..10 kg"], [r"lower bound must be below"]),
+    "bounds-wrong-unit": ("t [s],load.x [mm]\n0,20\n1,20\n", ["--fit", "load.m=1 bar..2 bar"], [r"load\.m", r"dimension"]),
+    "noise-wrong-unit": ("t [s],load.x [mm]\n0,20\n1,20\n", ["--noise", "load.x=0.1 bar"], [r"noise load\.x", r"dimension"]),
+    "noise-not-compared": ("t [s],load.x [mm]\n0,20\n1,20\n", ["--noise", "cyl.pA=0.1 bar"], [r"noise: 'cyl\.pA' is not a compared signal"]),
+    "noise-negative": ("t [s],load.x [mm]\n0,20\n1,20\n", ["--noise", "load.x=-1 mm"], [r"noise load\.x", r"positive"]),
+    "starts-zero": ("t [s],load.x [mm]\n0,20\n1,20\n", ["--starts", "0"], [r"--starts 0"]),
+}
+
+
+@pytest.mark.parametrize("case", list(RECORD_CASES))
+def test_calibrate_refuses_bad_records_and_requests(case: str, ws: Workspace, run) -> None:
+    text, extra, patterns = RECORD_CASES[case]
+    bad = ws.write("bad.csv", text)
+    fit = [] if "--fit" in extra else ["--fit", "load.B"]
+    refused(run, ws, ["calibrate", "robot-arm", "--record", bad, *fit, *extra, "--out", ws.out], patterns)
 
 
 # ========================================================================================================
