@@ -12,6 +12,12 @@ module                     task (command)
 :mod:`.sensitivity`        one at a time, Sobol, Morris (``sensitivity``)
 :mod:`.staged_slot`        staged-slot valve characteristics and identification
                            (``valve characteristics``, ``valve identify``)
+:mod:`.valve`              the servo-solenoid valve: datasheet fit, Bode, dynamics fit (``valve``)
+:mod:`.servovalve`         the two-stage servovalve: bench, design, catalogue fit (``servovalve``)
+:mod:`.calibrate`          rig records to a calibrated model, experiment design, the virtual
+                           rig (``calibrate``, ``calibrate --plan``, ``rig``)
+:mod:`.identify`           Efe's procedures on rig records (``identify friction``,
+                           ``identify leakage``, ``identify flow-coefficient``)
 :mod:`.validate`           published figures beside computed ones (``validate``)
 :mod:`.fluid`              fluid properties (``fluid``)
 :mod:`.components`         the component reference (``components``, ``describe``)
@@ -41,8 +47,8 @@ from typing import Any
 
 #: The workflow modules, imported on first use.
 MODULES: tuple[str, ...] = (
-    "base", "components", "draw", "examples", "export", "fluid", "ladder", "linear", "models", "pages", "report",
-    "sensitivity", "simulate", "staged_slot", "validate",
+    "base", "calibrate", "components", "draw", "examples", "export", "fluid", "identify", "ladder", "linear", "models",
+    "pages", "report", "sensitivity", "servovalve", "simulate", "staged_slot", "validate", "valve",
 )
 
 

@@ -47,6 +47,11 @@ def parse_noise(items: Sequence[str] | Mapping[str, Any] | None, what: str = "--
     return out
 
 
+def signal_list(items: Sequence[str]) -> list[str]:
+    """Signal names given one by one or separated by commas (``["command.y,supply.p"]``)."""
+    return [s.strip() for item in items for s in str(item).split(",") if s.strip()]
+
+
 def _records(items: Sequence[RecordFiles] | None, what: str) -> list[Record]:
     from hydroservo.io.records import read_record
 
@@ -240,7 +245,7 @@ class Calibrate(Workflow):
         from hydroservo.identification.calibration import CALIBRATION_ACCURACY
 
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
-        self.inputs = [s.strip() for item in self.inputs for s in str(item).split(",") if s.strip()]
+        self.inputs = signal_list(self.inputs)
         self._records = _records(self.records, self.name("records"))
         self._validate = _records(self.validate, "")
         self._noise = parse_noise(self.noise, self.name("noise"))

@@ -17,7 +17,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
-from hydroservo.workflows.calibrate import RecordFiles, _records
+from hydroservo.workflows.calibrate import RecordFiles, _records, signal_list
 
 if TYPE_CHECKING:
     from hydroservo.identification.flow_coefficient import FlowCoefficientTables
@@ -211,7 +211,7 @@ class IdentifyLeakage(Workflow):
         self._records = _records(self.records, "RECORD")
         if len(self._records) != 1:
             raise ParameterError(f"RECORD: {len(self._records)} records; the locked-piston test reads one")
-        self.inputs = [s.strip() for item in self.inputs for s in str(item).split(",") if s.strip()]
+        self.inputs = signal_list(self.inputs)
 
     def folder(self) -> str:
         return f"hydroservo-leakage-{safe_name(self.system.name)}"
@@ -296,7 +296,7 @@ class IdentifyFlowCoefficient(Workflow):
     def __post_init__(self) -> None:
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
         self._records = _records(self.records, "RECORD")
-        self.inputs = [s.strip() for item in self.inputs for s in str(item).split(",") if s.strip()]
+        self.inputs = signal_list(self.inputs)
         if self.valve not in self.system.components:
             raise ParameterError(f"{self.name('valve')} {self.valve!r}: not a component of {self.system.name!r}")
 
