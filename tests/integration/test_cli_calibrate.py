@@ -64,3 +64,28 @@ def test_calibrate_recovers_the_rig_and_predicts_the_held_out_record(cli, record
     for key, name in (("B", "load.B"), ("F_c0", "load.F_c0")):
         assert abs(friction[key]["value"] - RIG_TRUTH[name]) < 3 * friction[key]["stderr"], (key, friction[key])
     assert (tmp_path / "fr" / "friction.toml").read_text().count("F_s0") == 1  # named as undetermined, not written
+
+
+def test_a_model_includes_the_parameter_files(cli, records: Path, tmp_path: Path) -> None:
+    import tomllib
+
+    from hydroservo.data import model_text
+    from hydroservo.io.model_file import system_from_dict
+
+    out = tmp_path / "files"
+    for argv in (["friction", _files(records, "arm_friction")], ["leakage", _files(records, "arm_locked")],
+                 ["flow-coefficient", _files(records, "arm_sweep_out"), _files(records, "arm_sweep_in")]):
+        code, _, err = cli("identify", *argv, "--model", "robot-arm", "--out", str(out))
+        assert code == 0, err
+    data = tomllib.loads(model_text("robot-arm"))
+    comps = data["components"]
+    for name, file, keys in (("load", "friction.toml", ("B", "F_c0")), ("cyl", "leakage.toml", ("C_Li",)),
+                             ("valve", "flow-coefficient.toml", ("tables",))):
+        assert f"delete {', '.join(keys)} there" in (out / file).read_text()
+        comps[name] = {"file": file, **{k: v for k, v in comps[name].items() if k not in keys}}
+    system = system_from_dict(data, base=out)
+    friction = tomllib.loads((out / "friction.toml").read_text())["component"]
+    assert system["load"].given["B"] == friction["B"]
+    assert system["cyl"].values["C_Li"] == pytest.approx(3.3e-13, rel=0.05)  # the published valve's c_v: 10 % high
+    assert system["valve"].tables["H_closing"].min() < 0.97  # the hysteresis read off the sweeps
+    assert system.simulate(t_end=0.5).stats["nsteps"] > 0

@@ -29,10 +29,11 @@ __all__ = ["IdentifyFriction", "FrictionReport", "IdentifyLeakage", "LeakageRepo
            "FlowCoefficientReport", "friction", "leakage", "flow_coefficient"]
 
 
-def _header(what: str, model: str, records: Sequence[str], component: str) -> str:
+def _header(what: str, model: str, records: Sequence[str], component: str, file: str, keys: Sequence[str]) -> str:
     return (
         f"{what} identified by hydroservo (Efe2014) from {', '.join(records)} on the model {model}.\n"
-        f'Use it in a model file: [components.{component}] file = "THIS FILE" (keys given there override it).'
+        f'Use it in a model file: [components.{component}] file = "{file}". A key the model file also gives in\n'
+        f"that table overrides this file's: delete {', '.join(keys)} there."
     )
 
 
@@ -79,7 +80,8 @@ class FrictionReport(Report):
         fit = self.fit
         determined = {k: v for k, v in fit.parameters.items() if math.isfinite(fit.stderr[k]) and fit.stderr[k] <= abs(v)}
         left = [k for k in fit.parameters if k not in determined]
-        header = _header("Stribeck friction (eq. 3.47)", self.model, self.records, self.component)
+        header = _header("Stribeck friction (eq. 3.47)", self.model, self.records, self.component, "friction.toml",
+                         list(determined))
         if left:
             header += ("\nNot determined by the records, so not written (the model keeps its own): "
                        + ", ".join(f"{k} (the fit ended at {fit.parameters[k]:.4g} {STRIBECK_PARAMETERS[k]})" for k in left))
@@ -185,7 +187,7 @@ class LeakageReport(Report):
         return component_toml(
             self.component_type, {"C_Li": e.value}, {"C_Li": "m^3/s/Pa"},
             comments={"C_Li": f"± {e.stderr:.3g} m^3/s/Pa; = {e.value * 6e9:.4g} L/min/bar"},
-            header=_header("Internal leakage (eq. 3.42)", self.model, self.records, self.component),
+            header=_header("Internal leakage (eq. 3.42)", self.model, self.records, self.component, "leakage.toml", ["C_Li"]),
         )
 
     def artifacts(self) -> list[Artifact]:
@@ -262,7 +264,7 @@ class FlowCoefficientReport(Report):
         from hydroservo.io.toml import toml_string, toml_table, toml_value
 
         header = _header("Flow-coefficient compensation K(x_v) and hysteresis H(x_v, d_f) (eqs. 3.22-3.23)",
-                         self.model, self.records, self.result.valve)
+                         self.model, self.records, self.result.valve, "flow-coefficient.toml", ["tables"])
         lines = [f"# {line}" for line in header.splitlines()]
         tables = {k: [round(float(v), 6) for v in vals] for k, vals in self.result.tables.items()}
         lines += toml_table("component", {"type": toml_string(self.component_type), "tables": toml_value(tables)})
