@@ -17,7 +17,8 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
     from hydroservo.workflows.calibrate import Calibrate
 
     job = Calibrate(args.model, args.record, args.fit, inputs=args.input, noise=args.noise, validate=args.validate,
-                    starts=args.starts, initial=args.initial, sets=args.set, plan=args.plan, cli=True)
+                    starts=args.starts, initial=args.initial, sets=args.set, plan=args.plan,
+                    max_evaluations=args.max_evaluations, cli=True)
     return execute(job, args, stage_printer(args))
 
 
@@ -82,6 +83,8 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--starts", type=int, default=1, metavar="N", help="starting points (the model's values and N-1 drawn over the bounds)")
     p.add_argument("--initial", default="estimate", choices=["estimate", "record", "trim", "model"],
                    help="initial states: fitted from the records' first samples (default), taken as recorded, or the model's")
+    p.add_argument("--max-evaluations", type=int, default=200, metavar="N",
+                   help="residual evaluations each fit may use before it stops, unconverged (default 200)")
     p.add_argument("--plan", action="store_true",
                    help="do not fit: tell what the records, as planned experiments (hydroservo rig), would determine")
     _model_options(p)

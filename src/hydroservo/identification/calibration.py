@@ -823,7 +823,7 @@ def calibrate(
     warns = _identifiability(names, params, J, cov)
     n = len(params)
     if not sol.success or sol.status == 0:
-        warns.append(f"the fit did not converge: {sol.message} (after {sol.nfev} evaluations); raise max_evaluations or give better starting values")
+        warns.append(f"the fit did not converge: {sol.message} (after {sol.nfev} evaluations); raise the evaluation budget (max_evaluations, --max-evaluations) or start nearer")
     for p, v in zip(params, values):
         if (math.isfinite(p.lower) and v <= p.lower * (1 + 1e-6) + 1e-300) or (math.isfinite(p.upper) and v >= p.upper * (1 - 1e-6)):
             warns.append(f"{p.name} ended on its bound ({p.shown(v):.4g} {si_unit(p.unit)}): the optimum may lie beyond it")

@@ -240,10 +240,13 @@ class Calibrate(Workflow):
     plan: bool = False
     gradient: str = "exact"
     accuracy: float | None = None
+    max_evaluations: int = 200
 
     def __post_init__(self) -> None:
         from hydroservo.identification.calibration import CALIBRATION_ACCURACY
 
+        if isinstance(self.max_evaluations, bool) or not isinstance(self.max_evaluations, int) or not 1 <= self.max_evaluations <= 100_000:
+            raise ParameterError(f"{self.name('max_evaluations')} {self.max_evaluations!r}: expected a whole number from 1 to 100000")
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
         self.inputs = signal_list(self.inputs)
         self._records = _records(self.records, self.name("records"))
@@ -278,7 +281,7 @@ class Calibrate(Workflow):
             return PlanReport(name, plan, warnings=list(plan.warnings))
         result = calibrate(self.system, self._records, self.fit, inputs=self.inputs, noise=self._noise,
                            initial=self.initial, starts=self.starts, accuracy=self._accuracy, gradient=self.gradient,
-                           progress=progress)
+                           max_evaluations=self.max_evaluations, progress=progress)
         prediction = None
         if self._validate:
             if progress:
