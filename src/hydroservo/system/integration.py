@@ -13,6 +13,8 @@ import contextlib
 import io
 import math
 import re
+import sys
+import threading
 from collections.abc import Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -173,12 +175,59 @@ def batch_columns(sets: Mapping[str, Any]) -> tuple[dict[str, list[Any]], int]:
     return columns, n
 
 
+class _Router(io.TextIOBase):
+    """A stream that writes to the calling thread's capture buffer, if it has one, else to the stream it replaced."""
+
+    def __init__(self, original: Any) -> None:
+        super().__init__()
+        self.original = original
+        self.local = threading.local()
+
+    def write(self, text: str) -> int:
+        buffer = getattr(self.local, "buffer", None)
+        return (buffer if buffer is not None else self.original).write(text)
+
+    def flush(self) -> None:
+        if getattr(self.local, "buffer", None) is None:
+            self.original.flush()
+
+
+_CAPTURE_LOCK = threading.Lock()
+_captures = 0
+_routers: tuple[_Router, _Router] | None = None
+
+
 @contextlib.contextmanager
 def captured() -> Iterator[io.StringIO]:
-    """Collect what CasADi and CVODES print (they print through Python's streams) instead of showing it."""
+    """Collect what CasADi and CVODES print (they print through Python's streams) instead of showing it.
+
+    Safe across threads (a calibration's starts run on several): while any thread captures, stdout and stderr
+    are routers that send each thread's output to its own buffer, and the streams they replaced come back when
+    the last capture ends. (``contextlib.redirect_stdout`` is not: two threads restoring in the wrong order
+    leave the process writing into a dead buffer.)
+    """
+    global _captures, _routers
     buffer = io.StringIO()
-    with contextlib.redirect_stdout(buffer), contextlib.redirect_stderr(buffer):
+    with _CAPTURE_LOCK:
+        if _captures == 0:
+            _routers = (_Router(sys.stdout), _Router(sys.stderr))
+            sys.stdout, sys.stderr = _routers  # type: ignore[assignment]
+        _captures += 1
+        routers = _routers
+    assert routers is not None
+    outer = getattr(routers[0].local, "buffer", None)  # a capture inside a capture gives it back when done
+    for router in routers:
+        router.local.buffer = buffer
+    try:
         yield buffer
+    finally:
+        for router in routers:
+            router.local.buffer = outer
+        with _CAPTURE_LOCK:
+            _captures -= 1
+            if _captures == 0:
+                sys.stdout, sys.stderr = routers[0].original, routers[1].original
+                _routers = None
 
 
 def translate(message: str) -> str:
