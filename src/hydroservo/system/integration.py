@@ -185,7 +185,8 @@ class _Router(io.TextIOBase):
 
     def write(self, text: str) -> int:
         buffer = getattr(self.local, "buffer", None)
-        return (buffer if buffer is not None else self.original).write(text)
+        written: int = (buffer if buffer is not None else self.original).write(text)
+        return written
 
     def flush(self) -> None:
         if getattr(self.local, "buffer", None) is None:
@@ -211,7 +212,7 @@ def captured() -> Iterator[io.StringIO]:
     with _CAPTURE_LOCK:
         if _captures == 0:
             _routers = (_Router(sys.stdout), _Router(sys.stderr))
-            sys.stdout, sys.stderr = _routers  # type: ignore[assignment]
+            sys.stdout, sys.stderr = _routers
         _captures += 1
         routers = _routers
     assert routers is not None
