@@ -791,7 +791,6 @@ def calibrate(
     problem.nfev, problem.njev = sum(s[3] for s in solutions), sum(s[4] for s in solutions)
     if not all(given.values()):
         # weights from the residuals, then the fit again from there, until the noise estimates settle
-        nfev, njev = problem.nfev, problem.njev
         for _ in range(MAX_REWEIGHTS):
             parts = _split(problem, problem.residuals(sol.x))
             change = 0.0
@@ -804,8 +803,6 @@ def calibrate(
                 break
             say("noise estimated from the residuals: " + ", ".join(_noise_text(experiments, k, sigma[k]) for k in parts if not given[k]))
             sol = _solve(problem, sol.x, grad, max_evaluations)
-        problem.nfev += nfev
-        problem.njev += njev
     theta = sol.x
     J = problem.jacobian(theta)
     problem.njev -= 1  # the statistics' Jacobian is not the optimiser's
