@@ -165,6 +165,12 @@ def parse_fit(system: System, fit: Mapping[str, Any] | Sequence[str]) -> list[Fi
             raise ParameterError(f"fit: {raw!r} is not a parameter of {system.name!r}{hint}") from None
         if any(f.name == key for f in out):
             raise ParameterError(f"fit: {key} is given twice")
+        shared = [pair for pair in system.stroke_pairs() if key in pair]
+        if shared:
+            raise ParameterError(
+                f"fit: {key} is the stroke {' and '.join(shared[0])} share; a shared stroke cannot be fitted yet "
+                "(fit the flow coefficient, which scales the flow the same way)"
+            )
         cname, pname = key.split(".", 1)
         comp = system[cname]
         spec = comp.PARAMETERS[pname]

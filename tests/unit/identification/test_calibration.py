@@ -136,6 +136,8 @@ def test_bad_fit_requests_are_refused(stepped_arm) -> None:
         parse_fit(arm, ["spool.tau=50 ms..10 ms"])
     with pytest.raises(ParameterError, match="expected bounds LO..HI"):
         parse_fit(arm, {"spool.tau": "10 ms"})
+    with pytest.raises(ParameterError, match="a shared stroke cannot be fitted"):
+        parse_fit(arm, ["spool.xv_max"])
     fit = parse_fit(arm, ["spool.tau=10 ms..100 ms", "load.F_c0"])
     assert fit[0].unit == "ms" and fit[0].lower == pytest.approx(0.01) and fit[0].log
     assert fit[1].unit == "N" and fit[1].lower == pytest.approx(0.78)
