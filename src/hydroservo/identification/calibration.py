@@ -244,7 +244,15 @@ class Experiment:
         return self.record.name
 
     def unit(self, signal: str) -> str:
+        """The model's unit of ``signal``: values, residuals and traces are in it."""
         return self.model.units.get(signal, "")
+
+    def shown(self, signal: str, unit: str | None = None) -> tuple[float, str]:
+        """``(factor, unit)``: the unit a person reads ``signal`` in (``unit``, else the record column's) and the
+        factor from the model's unit to it."""
+        own = self.unit(signal)
+        shown = unit or self.record[signal].unit or own
+        return (1.0 if shown == own else from_si(1.0, own, shown)), shown
 
 
 def _signals(model: Model) -> list[str]:
@@ -833,8 +841,7 @@ def calibrate(
     parts = _split(problem, r)
     signals = []
     for nm, (res, count) in parts.items():
-        unit, shown = _shown_unit(experiments, nm)
-        factor = _factor(unit, shown)
+        factor, shown = _first(experiments, nm).shown(nm)
         rms = float(math.sqrt(np.mean((res * sigma[nm]) ** 2))) if res.size else math.nan
         signals.append(SignalFit(nm, shown, rms * factor, sigma[nm] * factor, given[nm], count))
     for sf in signals:
@@ -866,22 +873,14 @@ def calibrate(
     )
 
 
+def _first(experiments: list[Experiment], name: str) -> Experiment:
+    """The first experiment that compares signal ``name`` (whose record's unit it is shown in)."""
+    return next(e for e in experiments if name in e.measured)
+
+
 def _noise_text(experiments: list[Experiment], name: str, sigma: float) -> str:
-    unit, shown = _shown_unit(experiments, name)
-    return f"{name} {sigma * _factor(unit, shown):.3g} {si_unit(shown)}"
-
-
-def _factor(unit: str, shown: str) -> float:
-    """The factor from a signal's model unit to the unit it is shown in."""
-    if shown == unit:
-        return 1.0
-    return from_si(1.0, coherent_unit(unit), shown) / from_si(1.0, coherent_unit(unit), unit)
-
-
-def _shown_unit(experiments: list[Experiment], name: str) -> tuple[str, str]:
-    """The model's unit of a compared signal, and the unit its first record gives it in (where a person reads it)."""
-    exp = next(e for e in experiments if name in e.measured)
-    return exp.unit(name), exp.record[name].unit or exp.unit(name)
+    factor, shown = _first(experiments, name).shown(name)
+    return f"{name} {sigma * factor:.3g} {si_unit(shown)}"
 
 
 def _split(problem: _Problem, r: np.ndarray) -> dict[str, tuple[np.ndarray, int]]:
@@ -990,8 +989,7 @@ def predict(
             t = exp.grid[exp.index[n]]
             err = model - meas
             span = float(np.ptp(meas))
-            unit = exp.record[n].unit or exp.unit(n)  # shown in the record's unit
-            factor = _factor(exp.unit(n), unit)
+            factor, unit = exp.shown(n)  # in the record's unit
             row: dict[str, Any] = {
                 "record": exp.name, "signal": n, "unit": unit, "rms": factor * float(np.sqrt(np.mean(err**2))),
                 "rms_percent": float(100 * np.sqrt(np.mean(err**2)) / span) if span > 0 else math.nan,

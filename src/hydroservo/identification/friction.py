@@ -31,7 +31,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError
 from hydroservo.identification.records import Record, derivatives
-from hydroservo.identification.steady import operating_points, segments
+from hydroservo.identification.steady import segments
 from hydroservo.laws.friction import stribeck
 
 if TYPE_CHECKING:
@@ -88,26 +88,28 @@ def friction_from_record(
     segs = segments(record, command, settle=settle)
     if not segs:
         raise ParameterError(f"record {record.name!r}: no interval where {command} is held for long enough")
-    signals = [*pressures, *([external] if external else [])]
-    points = operating_points(record, segs, signals, {pressures[0]: "Pa", pressures[1]: "Pa", **({external: "N"} if external else {})},
-                              position=position, window=window)
+    for n in (position, *pressures):
+        if n not in record:
+            raise ParameterError(f"record {record.name!r}: no column {n!r}; the friction test needs the rod position and both chamber pressures")
     ch = record[position]
-    _, accel = derivatives(ch.t, ch.to("m"), window)
-    pa, pb = record[pressures[0]], record[pressures[1]]
+    speed, accel = derivatives(ch.t, ch.to("m"), window)
+    pa = record[pressures[0]]  # the forces at chamber A's samples, the other signals interpolated to them
+
+    def at(name: str, unit: str, times: np.ndarray) -> np.ndarray:
+        """A channel at the chamber-A pressure's sample times (linear between its own samples with a value)."""
+        c = record[name]
+        return np.interp(times, c.t[c.valid], c.to(unit)[c.valid])
+
     rows = []
-    for s, pt in zip(segs, points):
-        v = pt[f"{position}:v"]
+    for s in segs:
+        v = float(np.mean(speed[(ch.t >= s.start) & (ch.t <= s.end)]))
         if abs(v) < min_speed:
             continue
-        sel = pa.valid & pb.valid & (pa.t >= s.start) & (pa.t <= s.end)
-        if np.array_equal(pa.t, pb.t):
-            force = pa.to("Pa")[sel] * A_A - pb.to("Pa")[sel] * A_B
-        else:
-            force = pa.to("Pa")[sel] * A_A - np.interp(pa.t[sel], pb.t[pb.valid], pb.to("Pa")[pb.valid]) * A_B
-        a = np.interp(pa.t[sel], ch.t, accel)
-        force = force - m * a
+        times = pa.t[pa.valid & (pa.t >= s.start) & (pa.t <= s.end)]
+        force = at(pressures[0], "Pa", times) * A_A - at(pressures[1], "Pa", times) * A_B  # eq. 4.24
+        force -= m * np.interp(times, ch.t, accel)
         if external:
-            force = force - np.interp(pa.t[sel], record[external].t, record[external].to("N"))
+            force -= at(external, "N", times)
         rows.append((v, float(np.mean(force)), float(np.std(force)), s.command, (s.start, s.end)))
     if len(rows) < 1:
         raise ParameterError(f"record {record.name!r}: the rod never moved faster than {min_speed:g} m/s in a held interval")

@@ -11,7 +11,6 @@ identification procedures) is in the neighbouring modules.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -19,10 +18,7 @@ import numpy as np
 from hydroservo.errors import ParameterError, UnitError
 from hydroservo.units import check_unit, coherent_unit, same_dimension, si_definition, si_unit
 
-__all__ = ["Channel", "Record", "derivatives", "EFE_RATES"]
-
-#: The sample rates [Hz] of [Efe2014] Table 5.1, by the robot-arm model's signal names.
-EFE_RATES = {"cyl.pA": 40.0, "cyl.pB": 40.0, "supply.p": 40.0, "load.x": 200.0, "command.y": 200.0}
+__all__ = ["Channel", "Record", "derivatives"]
 
 
 @dataclass(frozen=True)
@@ -36,7 +32,7 @@ class Channel:
     source: str = ""
 
     def __post_init__(self) -> None:
-        where = f"{self.source}: column {self.name!r}" if self.source else f"channel {self.name!r}"
+        where = self.where
         t = np.asarray(self.t, dtype=float).ravel()
         v = np.asarray(self.values, dtype=float).ravel()
         if t.size != v.size:
@@ -93,10 +89,6 @@ class Channel:
         factor, offset, _ = si_definition(unit)
         return (self.si() - offset) / factor
 
-    def with_values(self, values: np.ndarray, unit: str | None = None) -> Channel:
-        """This channel with other values (the same times)."""
-        return Channel(self.name, self.t, values, self.unit if unit is None else unit, self.source)
-
 
 @dataclass
 class Record:
@@ -141,21 +133,6 @@ class Record:
             float(max(c.t[-1] for c in self.channels.values())),
         )
 
-    @property
-    def sources(self) -> list[str]:
-        """The files the record was read from, in order."""
-        return list(dict.fromkeys(c.source for c in self.channels.values() if c.source))
-
-    def times(self, names: Iterable[str] | None = None) -> np.ndarray:
-        """The sorted union of the sample times of ``names`` (default: every channel) [s]."""
-        chosen = self.channels if names is None else {n: self[n] for n in names}
-        return np.unique(np.concatenate([c.t for c in chosen.values()]))
-
-    def without(self, names: Iterable[str]) -> Record:
-        """The record without the channels ``names``."""
-        drop = set(names)
-        return Record(self.name, {n: c for n, c in self.channels.items() if n not in drop})
-
     def value_at(self, name: str, t: float, unit: str) -> float:
         """The channel ``name`` at time ``t`` (linear between samples with a value), in ``unit``."""
         ch = self[name]
@@ -199,7 +176,3 @@ def derivatives(t: np.ndarray, x: np.ndarray, window: float, order: int = 2) -> 
     a = savgol_filter(x, n, poly, deriv=2, delta=h, mode="interp")
     return v, a
 
-
-def as_channels(data: Mapping[str, tuple[np.ndarray, np.ndarray, str]], source: str = "") -> dict[str, Channel]:
-    """Channels from ``name -> (t, values, unit)``."""
-    return {n: Channel(n, t, v, u, source) for n, (t, v, u) in data.items()}

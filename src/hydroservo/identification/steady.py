@@ -17,16 +17,16 @@ serve all three procedures:
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
 
 from hydroservo.errors import HydroservoError, ParameterError
-from hydroservo.identification.records import Record, derivatives
+from hydroservo.identification.records import Record
 from hydroservo.system.model import Model
 
-__all__ = ["Segment", "segments", "operating_points", "balancing_value"]
+__all__ = ["Segment", "segments", "balancing_value"]
 
 
 @dataclass(frozen=True)
@@ -58,34 +58,6 @@ def segments(record: Record, command: str, *, settle: float = 0.25, min_length: 
         if end - start >= min_length:
             out.append(Segment(start, end, level, abs(level) > abs(previous) + tolerance))
         previous = level
-    return out
-
-
-def operating_points(
-    record: Record, segs: Sequence[Segment], signals: Sequence[str], units: Mapping[str, str],
-    *, position: str | None = None, window: float = 0.05,
-) -> list[dict[str, float]]:
-    """The mean of each of ``signals`` (in ``units``) over each segment, and with ``position`` given, its speed
-    ``<position>:v`` [m/s] (the position's smoothed derivative, :func:`derivatives`) and its spread."""
-    speed = None
-    if position is not None:
-        ch = record[position]
-        v, _ = derivatives(ch.t, ch.to("m"), window)
-        speed = (ch.t, v)
-    out = []
-    for s in segs:
-        point: dict[str, float] = {"t_start": s.start, "t_end": s.end, "command": s.command}
-        for n in signals:
-            ch = record[n]
-            sel = ch.valid & (ch.t >= s.start) & (ch.t <= s.end)
-            if not sel.any():
-                raise ParameterError(f"record {record.name!r}: no sample of {n} between {s.start:g} s and {s.end:g} s")
-            point[n] = float(np.mean(ch.to(units[n])[sel]))
-        if speed is not None:
-            sel = (speed[0] >= s.start) & (speed[0] <= s.end)
-            point[f"{position}:v"] = float(np.mean(speed[1][sel]))
-            point[f"{position}:v_spread"] = float(np.std(speed[1][sel]))
-        out.append(point)
     return out
 
 

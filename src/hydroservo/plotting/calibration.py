@@ -10,18 +10,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from hydroservo.plotting import finish, pyplot
-from hydroservo.units import from_si, si_unit
+from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
     from hydroservo.identification.calibration import Experiment
 
 __all__ = ["plot_fit"]
-
-
-def _display(unit: str, wanted: str | None) -> tuple[float, str]:
-    if wanted is None or wanted == unit:
-        return 1.0, unit
-    return from_si(1.0, unit, wanted), wanted
 
 
 def plot_fit(
@@ -42,9 +36,7 @@ def plot_fit(
     fig, axes = plt.subplots(2, ncol, figsize=(max(4.0 * ncol, 6.0), 5.2), sharex=True, squeeze=False,
                              gridspec_kw={"height_ratios": [2.2, 1.0]})
     for k, name in enumerate(names):
-        unit = experiment.unit(name)
-        shown = (units or {}).get(name) or experiment.record[name].unit or unit
-        factor, label = _display(unit, shown)
+        factor, label = experiment.shown(name, (units or {}).get(name))
         t = experiment.grid[experiment.index[name]]
         meas = experiment.values[name] * factor
         model = trace[name] * factor

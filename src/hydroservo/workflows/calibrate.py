@@ -162,11 +162,9 @@ class CalibrationReport(Report):
 def _fit_figure(experiment: Experiment, trace: Mapping[str, Any], name: str, title: str) -> dict[str, Any]:
     """One signal of an experiment, measured (grey dots) and model (line), in the record's unit."""
     from hydroservo.plotting.interactive import xy_figure
-    from hydroservo.units import coherent_unit, from_si, si_unit
+    from hydroservo.units import si_unit
 
-    unit = experiment.unit(name)
-    shown = experiment.record[name].unit or unit
-    factor = 1.0 if shown == unit else from_si(1.0, coherent_unit(unit), shown) / from_si(1.0, coherent_unit(unit), unit)
+    factor, shown = experiment.shown(name)
     t = experiment.grid[experiment.index[name]]
     return xy_figure([(experiment.grid, trace[name] * factor, "model")], "t [s]", f"{name} [{si_unit(shown)}]", title=title,
                      markers=[(t, experiment.values[name] * factor, "measured")], marker_size=3)
