@@ -79,6 +79,9 @@ __all__ = [
 
 #: A direction of the parameters whose relative standard error exceeds this is not determined by the records.
 UNDETERMINED = 1.0
+#: The normal distribution's 97.5 % quantile: a 95 % interval is ±Z95 standard errors (noise stated; Student's t when
+#: the noise is estimated from the residuals).
+Z95 = 1.959963984540054
 #: Correlation beyond which two parameters are reported as hard to tell apart.
 CORRELATED = 0.95
 #: Default accuracy of the integrations inside a calibration (relative to each signal's range): tighter than a
@@ -635,6 +638,13 @@ def _noise(
     return sigma, given
 
 
+def _correlation(cov: np.ndarray) -> np.ndarray:
+    """The correlation matrix of a covariance matrix."""
+    sd = np.sqrt(np.maximum(np.diag(cov), 1e-300))
+    corr: np.ndarray = cov / np.outer(sd, sd)
+    return corr
+
+
 def _intervals(
     params: list[FitParameter], theta: np.ndarray, cov: np.ndarray, quantile: float
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -690,8 +700,7 @@ def _identifiability(names: list[str], params: list[FitParameter], J: np.ndarray
             f"the records cannot separate {label}: along one combination of them they fix {size}; "
             f"what they determine is {_combination(names, params, J, cov, involved)}"
         )
-    sd = np.sqrt(np.maximum(np.diag(cov), 1e-300))
-    corr = cov / np.outer(sd, sd)
+    corr = _correlation(cov)
     for i in range(n):
         for j in range(i + 1, n):
             if abs(corr[i, j]) > CORRELATED and not any({i, j} <= group for group in named):
@@ -825,11 +834,10 @@ def calibrate(
     dof = max(problem.size - theta.size, 1)
     from scipy import stats
 
-    quantile = float(stats.norm.ppf(0.975)) if all(given.values()) else float(stats.t.ppf(0.975, dof))
+    quantile = Z95 if all(given.values()) else float(stats.t.ppf(0.975, dof))
     cov = np.linalg.pinv(J.T @ J)
     values, stderr, ci = _intervals(params, theta, cov, quantile)
-    sd = np.sqrt(np.maximum(np.diag(cov), 1e-300))
-    corr = cov / np.outer(sd, sd)
+    corr = _correlation(cov)
     names = problem.names
     warns = _identifiability(names, params, J, cov)
     n = len(params)
@@ -1069,7 +1077,6 @@ def plan_experiment(
     theta = problem.start()
     J = problem.jacobian(theta)
     cov = np.linalg.pinv(J.T @ J)
-    _, stderr, ci = _intervals(params, theta, cov, 1.959963984540054)
-    sd = np.sqrt(np.maximum(np.diag(cov), 1e-300))
-    corr = (cov / np.outer(sd, sd))[: len(params), : len(params)]
+    _, stderr, ci = _intervals(params, theta, cov, Z95)
+    corr = _correlation(cov)[: len(params), : len(params)]
     return ExperimentPlan(params, stderr, ci, corr, _identifiability(problem.names, params, J, cov), problem.size)

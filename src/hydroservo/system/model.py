@@ -172,15 +172,19 @@ class Model:
         steps = settings.steps_per_interval(grid.size - 1)
         key = (grid.tobytes(), settings.rtol, settings.atol, steps)
         if key not in self._integrators:
-            if len(self._integrators) > 16:
-                self._integrators.clear()
-                self._batch_maps.clear()
+            self._make_room()
             # CVODES' own warnings stay on: they are captured, and on a failure they give its time and step
             opts = {"abstol": settings.atol, "reltol": settings.rtol, "max_num_steps": steps}
             self._integrators[key] = ca.integrator(
                 "sim", "cvodes", self._dae, float(grid[0]), [float(g) for g in grid], opts
             )
         return self._integrators[key]
+
+    def _make_room(self) -> None:
+        """Before an integrator is added: past 16 kept (one per output grid and tolerance), start afresh."""
+        if len(self._integrators) > 16:
+            self._integrators.clear()
+            self._batch_maps.clear()
 
     def _interval_integrator(self, settings: SolverSettings, steps: int) -> ca.Function:
         """One output interval at a time, in normalised time: parameters ``[p, t0, h]``, tau from 0 to 1.
@@ -991,9 +995,7 @@ class Model:
         steps = settings.steps_per_interval(grid.size - 1)
         key = ("sens", grid.tobytes(), settings.rtol, settings.atol, steps, columns)
         if key not in self._integrators:
-            if len(self._integrators) > 16:
-                self._integrators.clear()
-                self._batch_maps.clear()
+            self._make_room()
             z, t, p, fz = self._dae["x"], self._dae["t"], self._dae["p"], self._dae["ode"]
             n = len(columns)
             S = ca.SX.sym("S", self.nx, n)
