@@ -37,6 +37,37 @@ def _header(what: str, model: str, records: Sequence[str], component: str, file:
     )
 
 
+@dataclass
+class _Procedure(Workflow):
+    """What the procedures share: a model (with ``sets`` changes), its ``records`` (each one file or several, one per
+    rate), the cylinder and load they concern; the output folder and files named after the procedure."""
+
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "inputs": "--input"}
+    #: The procedure's name (its folder: ``hydroservo-NAME-MODEL``) and the files its report writes.
+    NAME: ClassVar[str] = ""
+    FILES: ClassVar[tuple[str, ...]] = ()
+
+    model: str | Path | System
+    records: Sequence[RecordFiles] = field(default_factory=list)
+    cylinder: str = "cyl"
+    load: str = "load"
+    sets: Sequence[str] | Mapping[str, Any] | None = None
+
+    def __post_init__(self) -> None:
+        self.system = load_with_sets(self.model, self.sets, self.name("sets"))
+        self._records = _records(self.records, "RECORD")
+        for what in ("cylinder", "load"):
+            name = getattr(self, what)
+            if name not in self.system.components:
+                raise ParameterError(f"{self.name(what)} {name!r}: not a component of {self.system.name!r}")
+
+    def folder(self) -> str:
+        return f"hydroservo-{self.NAME}-{safe_name(self.system.name)}"
+
+    def planned(self) -> list[str]:
+        return list(self.FILES)
+
+
 # -- friction ------------------------------------------------------------------------------
 @dataclass
 class FrictionReport(Report):
@@ -103,32 +134,15 @@ class FrictionReport(Report):
 
 
 @dataclass
-class IdentifyFriction(Workflow):
-    """Friction forces from ``records`` of the rod at several held valve signals, and the Stribeck law."""
+class IdentifyFriction(_Procedure):
+    """Friction forces from ``records`` of the rod at several held valve signals (``command``), and the Stribeck law."""
 
-    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
+    NAME: ClassVar[str] = "friction"
+    FILES: ClassVar[tuple[str, ...]] = ("friction.toml", "friction.png")
 
-    model: str | Path | System
-    records: Sequence[RecordFiles] = field(default_factory=list)
     command: str = "command.y"
-    cylinder: str = "cyl"
-    load: str = "load"
     window: float = 0.05
     settle: float = 0.25
-    sets: Sequence[str] | Mapping[str, Any] | None = None
-
-    def __post_init__(self) -> None:
-        self.system = load_with_sets(self.model, self.sets, self.name("sets"))
-        self._records = _records(self.records, "RECORD")
-        for n in (self.cylinder, self.load):
-            if n not in self.system.components:
-                raise ParameterError(f"{self.name('cylinder' if n == self.cylinder else 'load')} {n!r}: not a component of {self.system.name!r}")
-
-    def folder(self) -> str:
-        return f"hydroservo-friction-{safe_name(self.system.name)}"
-
-    def planned(self) -> list[str]:
-        return ["friction.toml", "friction.png"]
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> FrictionReport:
         from hydroservo.identification.friction import FrictionPoints, fit_stribeck, friction_from_record
@@ -195,31 +209,20 @@ class LeakageReport(Report):
 
 
 @dataclass
-class IdentifyLeakage(Workflow):
+class IdentifyLeakage(_Procedure):
     """The cylinder's internal leakage from a locked-piston ``record``, driven by ``inputs``."""
 
-    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "inputs": "--input"}
+    NAME: ClassVar[str] = "leakage"
+    FILES: ClassVar[tuple[str, ...]] = ("leakage.toml",)
 
-    model: str | Path | System
-    records: Sequence[RecordFiles] = field(default_factory=list)
     inputs: Sequence[str] = ("command.y",)
-    cylinder: str = "cyl"
-    load: str = "load"
     window: tuple[float, float] | None = None
-    sets: Sequence[str] | Mapping[str, Any] | None = None
 
     def __post_init__(self) -> None:
-        self.system = load_with_sets(self.model, self.sets, self.name("sets"))
-        self._records = _records(self.records, "RECORD")
+        super().__post_init__()
         if len(self._records) != 1:
             raise ParameterError(f"RECORD: {len(self._records)} records; the locked-piston test reads one")
         self.inputs = signal_list(self.inputs)
-
-    def folder(self) -> str:
-        return f"hydroservo-leakage-{safe_name(self.system.name)}"
-
-    def planned(self) -> list[str]:
-        return ["leakage.toml"]
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> LeakageReport:
         from hydroservo.identification.leakage import leakage_from_record
@@ -281,32 +284,21 @@ class FlowCoefficientReport(Report):
 
 
 @dataclass
-class IdentifyFlowCoefficient(Workflow):
+class IdentifyFlowCoefficient(_Procedure):
     """K(x_v) and H(x_v, d_f) of the model's valve from ``records`` of a slowly swept valve signal."""
 
-    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "inputs": "--input"}
+    NAME: ClassVar[str] = "flow-coefficient"
+    FILES: ClassVar[tuple[str, ...]] = ("flow-coefficient.toml", "flow-coefficient.png")
 
-    model: str | Path | System
-    records: Sequence[RecordFiles] = field(default_factory=list)
     inputs: Sequence[str] = ("command.y",)
     valve: str = "valve"
-    cylinder: str = "cyl"
-    load: str = "load"
     bin_width: float = 0.05
-    sets: Sequence[str] | Mapping[str, Any] | None = None
 
     def __post_init__(self) -> None:
-        self.system = load_with_sets(self.model, self.sets, self.name("sets"))
-        self._records = _records(self.records, "RECORD")
+        super().__post_init__()
         self.inputs = signal_list(self.inputs)
         if self.valve not in self.system.components:
             raise ParameterError(f"{self.name('valve')} {self.valve!r}: not a component of {self.system.name!r}")
-
-    def folder(self) -> str:
-        return f"hydroservo-flow-coefficient-{safe_name(self.system.name)}"
-
-    def planned(self) -> list[str]:
-        return ["flow-coefficient.toml", "flow-coefficient.png"]
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> FlowCoefficientReport:
         from hydroservo.identification.flow_coefficient import flow_coefficient_tables
