@@ -29,7 +29,6 @@ takes (``K_x``, ``K``, ``H_x``, ``H_opening``, ``H_closing``).
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -72,12 +71,10 @@ def _direction(t: np.ndarray, u: np.ndarray, at: np.ndarray) -> np.ndarray:
     """Whether the valve was opening (its signal's magnitude last rose rather than fell) at the times ``at``."""
     change = np.diff(np.abs(u))
     moving = np.flatnonzero(np.abs(change) > 1e-9)
-    out = np.ones(at.size, dtype=bool)
     if moving.size == 0:
-        return out
-    for k, tk in enumerate(at):
-        last = moving[np.searchsorted(t[moving + 1], tk, side="right") - 1] if np.any(t[moving + 1] <= tk) else None
-        out[k] = True if last is None else bool(change[last] > 0)
+        return np.ones(at.size, dtype=bool)
+    last = np.searchsorted(t[moving + 1], at, side="right") - 1  # the last change at or before each time
+    out: np.ndarray = np.where(last >= 0, change[moving[np.maximum(last, 0)]] > 0, True)
     return out
 
 
@@ -175,6 +172,6 @@ def flow_coefficient_tables(
         notes.append("too few closing samples for H (fewer than two bins): sweep the valve signal back down")
     if not (~o).any():
         notes.append("no closing samples: H(x_v, d_f) needs the valve signal swept back down as well")
-    if math.isfinite(float(np.max(s))) and float(np.max(np.abs(s))) < 0.5:
+    if float(np.max(np.abs(s))) < 0.5:
         notes.append(f"the records reach only {float(np.max(np.abs(s))):.2f} of the stroke: K beyond it is held at its last value")
     return FlowCoefficientTables(tables, s, r, o, valve, notes)
