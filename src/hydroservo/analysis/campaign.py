@@ -109,7 +109,7 @@ def _chunk(
     n_points: int,
     rtol: float,
     threads: int | None,
-    max_steps: int = 100_000,
+    max_steps: int | None = None,
 ) -> tuple[int, np.ndarray, list[str], list[str]]:
     """Run one chunk; returns (first, metrics (runs x metrics), status, reason)."""
     import warnings
@@ -204,7 +204,7 @@ def run_design(
     t_end: float | None = None,
     n_points: int = 301,
     rtol: float = 1e-6,
-    max_steps: int = 100_000,
+    max_steps: int | None = None,
     chunk: int | None = None,
     threads: int | None = None,
     scheduler: Any = None,

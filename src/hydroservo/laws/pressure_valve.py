@@ -19,7 +19,12 @@ from typing import Any
 
 from hydroservo import backend as bk
 
-__all__ = ["opening_fraction", "linear_opening", "pressure_valve_coefficient"]
+__all__ = ["opening_fraction", "linear_opening", "pressure_valve_coefficient", "limited_lag_rate", "STOP_RELAXATION"]
+
+#: The time constant with which :func:`limited_lag_rate` settles on a bound, as a fraction of the lag's own [-]:
+#: small enough that the lag reaches its bound within 0.1 % of ``tau`` later than in finite time, large enough
+#: that an implicit step of any length has a unique solution there.
+STOP_RELAXATION = 1e-3
 
 
 def linear_opening(p: Any, p_c: Any, dp_o: Any) -> Any:
@@ -131,3 +136,63 @@ def pressure_valve_coefficient(over: Any, dp: Any, k_cs: Any, k_cf: Any, p_nom: 
     Cs = bk.sqrt(p_nom) / k_cs
     Cf = 1.0 / (k_cf * bk.sqrt(p_nom))
     return over / (Cs + Cf * bk.fmax(dp, 0.0))
+
+
+def limited_lag_rate(K: Any, target: Any, tau: Any, K_max: Any, relax: Any = STOP_RELAXATION) -> Any:
+    r"""Rate of a first-order lag whose output stops at its bounds :math:`[0, K_{max}]`, without wind-up [1/s × unit of K].
+
+    Away from the bounds, :math:`\tau\dot K = K_s - K`. Hopsan's limited filter
+    (``FirstOrderTransferFunction`` with a minimum and a maximum, [Hopsan2026])
+    clamps the output and its memory at a bound, so a closing lag reaches 0 in
+    finite time and stays there while the target is below it. As an ODE that
+    law is discontinuous on the bound: just above 0 the rate is
+    :math:`K_s/\tau`, on it 0. An implicit step that predicts a value in
+    :math:`(0, h|K_s|/\tau)` then has no solution, and CVODES' Newton corrector
+    fails at any step length (measured on Hopsan's Position Servo at rtol
+    1e-7 and tighter). Here the approach to a bound is relaxed over the last
+    stretch :math:`K < |K_s|\,\delta/(\tau - \delta)`, with :math:`\delta =`
+    ``relax`` :math:`\tau`:
+
+    .. math:: \dot K = \min\Big(\max\big(\tfrac{K_s - K}{\tau},\;
+              -\tfrac{\max(K, 0)}{\delta}\big),\; \tfrac{\max(K_{max} - K, 0)}{\delta}\Big)
+
+    The rate is continuous and never increases with :math:`K` (so an implicit
+    step has exactly one solution); outside the bounds it is zero toward
+    them, as the clamp's; the lag arrives at a bound about :math:`\delta` later
+    than the clamped one.
+
+    Parameters
+    ----------
+    K : array_like
+        Output of the lag, its state [any unit; m^3/s/Pa^0.5 for a valve's flow coefficient].
+    target : array_like
+        Static value it follows, :math:`K_s`, which may lie outside the bounds [unit of K].
+    tau : array_like
+        Time constant [s], > 0.
+    K_max : array_like
+        Upper bound, > 0 [unit of K].
+    relax : float
+        :math:`\delta/\tau` [-], in (0, 1).
+
+    Returns
+    -------
+    array_like
+        :math:`\dot K` [unit of K / s].
+
+    References
+    ----------
+    [Hopsan2026] FirstOrderTransferFunction (limited output) in HydraulicPressureReliefValve and
+    HydraulicPressureReducingValve; the relaxation on the bound is hydroservo's.
+
+    Examples
+    --------
+    Closing: the lag's rate above the bound, zero on it, and no wind-up below it:
+
+    >>> [float(limited_lag_rate(K, -1.0, 1e-3, 2.0)) + 0.0 for K in (1.0, 0.0, -0.5)]
+    [-2000.0, 0.0, 0.0]
+    >>> round(float(limited_lag_rate(1e-4, -1.0, 1e-3, 2.0)), 6)  # the last 0.1 % of the way: relaxed
+    -100.0
+    """
+    delta = relax * tau
+    lag = (target - K) / tau
+    return bk.fmin(bk.fmax(lag, -bk.fmax(K, 0.0) / delta), bk.fmax(K_max - K, 0.0) / delta)

@@ -262,7 +262,7 @@ class Model:
         n_points: int = 1001,
         rtol: float | None = None,
         atol: float | None = None,
-        max_steps: int = 100_000,
+        max_steps: int | None = None,
         initial: str | Mapping[str, float] = "parameters",
         accuracy: float | None = None,
     ) -> Result:
@@ -287,7 +287,9 @@ class Model:
             given: 1e-4, i.e. rtol 1e-6 and atol 1e-8.
         max_steps : int
             Step budget of the run, shared out over the output intervals (at least 500
-            each): a hopeless parameter set fails in about this many steps.
+            each): a hopeless parameter set fails in about this many steps. Default: 100 000 at
+            rtol 1e-6 and looser, more at tighter tolerances
+            (:func:`~hydroservo.system.integration.default_max_steps`).
         initial : "parameters", "trim" or mapping
             Initial state, see :meth:`initial_state`.
 
@@ -785,7 +787,7 @@ class Model:
         t_eval: Sequence[float] | None = None,
         rtol: float | None = None,
         atol: float | None = None,
-        max_steps: int = 100_000,
+        max_steps: int | None = None,
         threads: int | None = None,
         failed: Mapping[int, str] | None = None,
         progress: Callable[[int, int], None] | None = None,

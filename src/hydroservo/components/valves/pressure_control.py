@@ -9,7 +9,7 @@ from hydroservo import backend as bk
 from hydroservo.components.base import Component, Hydraulic, Output, Param, Port, State, register
 from hydroservo.components.valves.ports import TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
 from hydroservo.laws.orifice import turbulent_flow
-from hydroservo.laws.pressure_valve import opening_fraction, pressure_valve_coefficient
+from hydroservo.laws.pressure_valve import limited_lag_rate, opening_fraction, pressure_valve_coefficient
 
 __all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve"]
 
@@ -37,7 +37,7 @@ class _PressureControl(Component):
     .. math:: \tau\dot K = K_s - K, \quad K \in [0, q_{nom}/\sqrt{p_{nom}}], \qquad Q = K\sqrt{\Delta p}
 
     (:func:`hydroservo.laws.pressure_valve.pressure_valve_coefficient`; the state
-    stops at its bounds, no wind-up). Subclasses give the pressure by which the
+    stops at its bounds, no wind-up: :func:`~hydroservo.laws.pressure_valve.limited_lag_rate`). Subclasses give the pressure by which the
     pilot exceeds the setting.
     """
 
@@ -65,10 +65,7 @@ class _PressureControl(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         target = pressure_valve_coefficient(self.over(u, p), u["pA"] - u["pB"], p["k_cs"], p["k_cf"], p["p_nom"])
-        rate = (target - x["K"]) / p["tau"]
-        K_max = p["q_nom"] / bk.sqrt(p["p_nom"])
-        at_stop = (x["K"] <= 0.0) * (rate < 0.0) + (x["K"] >= K_max) * (rate > 0.0)
-        return {"K": bk.if_else(at_stop > 0, 0.0, rate)}
+        return {"K": limited_lag_rate(x["K"], target, p["tau"], p["q_nom"] / bk.sqrt(p["p_nom"]))}
 
 
 @register
