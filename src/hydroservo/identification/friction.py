@@ -160,6 +160,29 @@ def relative_errors(force: np.ndarray, simulated: np.ndarray) -> np.ndarray:
     return 100.0 * (force - simulated) / force
 
 
+def _profile_start(v: np.ndarray, f: np.ndarray) -> dict[str, float]:
+    """The start of :func:`fit_stribeck`: for a given ``c_s`` the law is linear in ``B``, ``F_c0`` and ``F_s0``,
+    solved exactly (non-negative least squares on the relative errors); ``c_s`` is the best of a log-spaced grid
+    from a hundredth of the slowest speed to a hundred times the fastest (the first of equals). A term the points
+    do not support comes out 0 and starts at a millionth of ``F_c0``, where the fit leaves it and the
+    identifiability check finds it: the same answer from every SciPy, where a start far off let the optimiser
+    drift along the flat valley (``c_s`` above every speed makes ``F_s0`` a second ``F_c0``)."""
+    from scipy.optimize import nnls
+
+    speed = np.abs(v)
+    best: tuple[float, float, np.ndarray] | None = None
+    for c_s in np.geomspace(speed.min() / 100.0, 100.0 * speed.max(), 121):
+        A = np.column_stack([v, np.sign(v), np.sign(v) * np.exp(-speed / c_s)]) / f[:, None]
+        theta, norm = nnls(A, np.ones_like(f))
+        if best is None or norm < best[0] * (1.0 - 1e-9):
+            best = (norm, float(c_s), theta)
+    assert best is not None
+    _, c_s, theta = best
+    floor = 1e-6 * max(float(theta[1]), float(np.abs(f).min()))
+    B, F_c0, F_s0 = (max(float(value), floor) for value in theta)
+    return {"B": B, "F_c0": F_c0, "F_s0": F_s0, "c_s": c_s}
+
+
 def fit_stribeck(
     velocity: Sequence[float] | np.ndarray,
     force: Sequence[float] | np.ndarray,
@@ -169,8 +192,7 @@ def fit_stribeck(
     """Fit eq. 3.47 to friction forces [N] at speeds [m/s] (both directions allowed: the law is odd).
 
     Least squares on the relative errors (Table 5.2 judges the law by them), in log scale of the four positive
-    parameters; ``start`` defaults to a line through the points for ``B`` and ``F_c0``, ``F_s0`` a tenth of
-    ``F_c0`` and ``c_s`` the smallest speed.
+    parameters; ``start`` defaults to the best linear fit over a grid of ``c_s`` (:func:`_profile_start`).
     """
     from scipy.optimize import least_squares
 
@@ -182,8 +204,7 @@ def fit_stribeck(
         raise ParameterError("fit_stribeck: every point needs a non-zero speed and a force opposing it (the same sign)")
     names = list(STRIBECK_PARAMETERS)
     if start is None:
-        slope, intercept = np.polyfit(np.abs(v), np.abs(f), 1)
-        start = {"B": max(slope, 1e-3), "F_c0": max(intercept, 1e-3), "F_s0": max(0.1 * intercept, 1e-3), "c_s": float(np.min(np.abs(v)))}
+        start = _profile_start(v, f)
     x0 = np.log([start[n] for n in names])
 
     def residuals(x: np.ndarray) -> np.ndarray:
