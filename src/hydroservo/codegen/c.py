@@ -63,6 +63,7 @@ from hydroservo.units import to_si
 from hydroservo.version import __version__
 
 __all__ = [
+    "ADAPTIVE_METHODS",
     "METHODS",
     "NEWTON_TOLERANCE",
     "CExport",
@@ -80,6 +81,11 @@ __all__ = [
 
 #: The fixed-step methods: ``rk4`` (explicit, classical Runge-Kutta) and ``bdf2`` (implicit, for stiff circuits).
 METHODS = ("rk4", "bdf2")
+
+#: The variable-step methods with error control of every export (``integrate``), in the order of their C
+#: constants: ``dopri5`` (explicit, Dormand-Prince 5(4)) and ``ros23`` (linearly implicit, Rosenbrock 2(3), for
+#: stiff circuits).
+ADAPTIVE_METHODS = ("dopri5", "ros23")
 
 #: bdf2: a step's Newton iterations have converged when the last correction of every state is at most this
 #: fraction of its nominal magnitude.
@@ -239,7 +245,8 @@ class _Functions:
 
 
 def _functions(model: Model, cid: str, method: str) -> _Functions:
-    """``f``, ``jac`` (bdf2), ``y``, ``z0`` and ``conv`` (algebraic unknowns) of ``model`` on z = x / x_nom.
+    """``f``, ``jac`` (bdf2, ros23), ``dfdt`` (ros23), ``y``, ``z0`` and ``conv`` (algebraic unknowns) of ``model``
+    on z = x / x_nom.
 
     The unknowns' last Newton corrections come from the assembly ``model`` was compiled from
     (:attr:`~hydroservo.system.model.Model.assembly`). Every output is dense: the stepper reads whole vectors
@@ -250,8 +257,9 @@ def _functions(model: Model, cid: str, method: str) -> _Functions:
     x = z * nominal
     rates = model.f(t, x, p) / nominal
     functions = [ca.Function(f"{cid}_f", [t, z, p], [ca.densify(rates)])]
-    if method == "bdf2":
-        functions.append(ca.Function(f"{cid}_jac", [t, z, p], [ca.densify(ca.jacobian(rates, z))]))
+    # the Jacobian (bdf2, ros23) and the rates' time derivative (ros23): the adaptive solvers are in every export
+    functions.append(ca.Function(f"{cid}_jac", [t, z, p], [ca.densify(ca.jacobian(rates, z))]))
+    functions.append(ca.Function(f"{cid}_dfdt", [t, z, p], [ca.densify(ca.jacobian(rates, t))]))
     functions.append(ca.Function(f"{cid}_y", [t, z, p], [ca.densify(model.outputs(t, x, p))]))
     functions.append(ca.Function(f"{cid}_z0", [p], [ca.densify(model.x0(p) / nominal)]))
     algebraic: list[str] = []
@@ -691,6 +699,9 @@ class CStepper:
             "time": (dbl, [inst]),
             "message": (ctypes.c_char_p, [inst]),
             "statistics": (None, [inst, *[ctypes.POINTER(ctypes.c_longlong)] * 3]),
+            "integrate": (i32, [inst, i32, dbl, dbl, dbl, ctypes.c_long, ctypes.c_long, ptr, ptr, ptr]),
+            "integration_statistics": (None, [inst, *[ctypes.POINTER(ctypes.c_longlong)] * 4]),
+            "set_state": (i32, [inst, i32, dbl]),
         }
         self._c: dict[str, Any] = {}
         for what, (restype, argtypes) in signatures.items():
@@ -823,6 +834,52 @@ class CStepper:
         times = t0 + self.step_size * np.arange(n + 1)
         return times, np.vstack([start, np.hstack([X, Y])])
 
+    def integrate(
+        self,
+        times: Sequence[float] | np.ndarray,
+        *,
+        method: str = "ros23",
+        rtol: float = 1e-6,
+        atol: float = 1e-8,
+        max_step: float = 0.0,
+        max_steps: int = 1_000_000,
+    ) -> tuple[np.ndarray, np.ndarray]:
+        """Variable steps with error control (``dopri5`` or ``ros23``, :data:`ADAPTIVE_METHODS`) from the current
+        states, taken to be those at ``times[0]``, through the output ``times`` [s] (increasing), in one call
+        into C; the inputs are held. ``max_step`` [s] bounds every step (0: only the span does).
+
+        Returns
+        -------
+        (states, outputs)
+            One row per time: the states (in their units, :attr:`CExport.states`) and the outputs.
+
+        Raises
+        ------
+        SolverError
+            If the C code stops (the reason, the time and the step from the C code).
+        """
+        if method not in ADAPTIVE_METHODS:
+            raise ParameterError(f"method {shorten(str(method))!r}: expected one of {', '.join(ADAPTIVE_METHODS)}")
+        grid = np.ascontiguousarray(times, dtype=float)
+        nx, ny = len(self.export.states), len(self.export.outputs)
+        X, Y = np.zeros((grid.size, nx)), np.zeros((grid.size, ny))
+        status = self._c["integrate"](
+            self._inst, ADAPTIVE_METHODS.index(method) + 1, float(rtol), float(atol), float(max_step), int(max_steps), grid.size,
+            _pointer(grid), _pointer(X), _pointer(Y),
+        )
+        self._check(status, method)
+        return X, Y
+
+    def integration_statistics(self) -> dict[str, int]:
+        """Accepted and rejected steps, evaluations of the rates and Jacobians of :meth:`integrate` since the last reset."""
+        counts = [ctypes.c_longlong() for _ in range(4)]
+        self._c["integration_statistics"](self._inst, *(ctypes.byref(c) for c in counts))
+        return dict(zip(("steps", "rejected", "evaluations", "jacobians"), (c.value for c in counts)))
+
+    def set_state(self, name: str, value: float) -> None:
+        """Overwrite a state (in its unit, SI) at the current time."""
+        self._c["set_state"](self._inst, self._index(self.export.states, name, "state"), float(value))
+
     def statistics(self) -> dict[str, int]:
         """Steps, Newton iterations and Jacobian evaluations since the last reset (bdf2; 0 for rk4)."""
         counts = [ctypes.c_longlong() for _ in range(3)]
@@ -837,11 +894,11 @@ class CStepper:
             )
         return list(names).index(name)
 
-    def _check(self, status: int) -> None:
+    def _check(self, status: int, method: str | None = None) -> None:
         self.status = status
         if status != 0:
             message = (self._c["message"](self._inst) or b"").decode("utf-8", "replace")
-            raise SolverError(f"C stepper of {self.export.model!r} ({self.export.method}): {message}")
+            raise SolverError(f"C stepper of {self.export.model!r} ({method or self.export.method}): {message}")
 
 
 def _pointer(array: np.ndarray) -> Any:

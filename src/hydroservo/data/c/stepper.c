@@ -22,10 +22,27 @@
  *
  * Both evaluate the model on [t0, t1) of each step (@NAME@_end): a source that jumps at a step boundary
  * acts from the next step on, as in CVODES' solution.
+ *
+ * @NAME@_integrate: variable steps with error control, from the instance's time and states through a list of
+ * output times (dense output between steps), for either method of the run's choosing:
+ * dopri5: the explicit Runge-Kutta pair of Dormand and Prince, order 5 with an embedded order-4 error
+ *     estimate, seven stages of which the last is the next step's first ([Dormand1980]; [Hairer1993],
+ *     Table II.5.2);
+ * ros23: the linearly implicit Rosenbrock pair of Shampine and Reichelt, order 2 with an order-3 error
+ *     estimate, L-stable, on the exact Jacobian and the exact time derivative of the rates
+ *     ([Shampine1997] section 3; Rosenbrock methods: [Hairer1996] section IV.7), for stiff circuits.
+ * The error of a step is the root mean square over the scaled states of
+ *     err_i / (atol + rtol max(|z0_i|, |z1_i|))
+ * and a step is accepted when it is at most 1; the next step is h (1/err)^(1/(q+1)) times 0.9, within 0.2
+ * and 5 times h (not growing after a rejection), with q + 1 = 5 (dopri5) or 3 (ros23) ([Hairer1993] section
+ * II.4). The first step follows [Hairer1993] section II.4, "Starting step size". Between steps the solution is
+ * the cubic Hermite interpolant of the states and rates at both ends (third order; [Hairer1993] section II.6).
+ * No step is longer than max_step (if given) nor passes the last output time.
  */
 #include "@NAME@.h"
 #include "@NAME@_model.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,8 +57,10 @@
 @DATA@
 
 struct @NAME@_instance {
-    long long steps; /* since the reset: t = steps h */
+    long long steps; /* since the reset (or the end of @NAME@_integrate): t = t_start + steps h */
+    double t_start;
     long long iterations, jacobians;
+    long long accepted, rejected, evaluations; /* @NAME@_integrate, since the reset */
     int outputs_current; /* y holds the outputs of the current time, states and inputs */
     int history;         /* bdf2: z_prev holds the state one step back */
     int factorised;      /* bdf2: lu holds I - gamma J for gamma = lu_gamma */
@@ -49,12 +68,12 @@ struct @NAME@_instance {
     double p[@UPPER@_AT_LEAST_1(@UPPER@_NP)]; /* the parameters, then the inputs */
     double z[@UPPER@_NZ], z_prev[@UPPER@_NZ], z_new[@UPPER@_NZ];
     double y[@UPPER@_AT_LEAST_1(@UPPER@_N_OUTPUTS)];
-    double k[4][@UPPER@_NZ]; /* rk4: the stages; bdf2: the predictor, the constant part, the correction */
+    double k[7][@UPPER@_NZ]; /* rk4, dopri5, ros23: the stages; bdf2: the predictor, the constant part, the correction */
     double z_host[@UPPER@_NZ]; /* the continuous-time functions: the host's states, scaled */
-#if @UPPER@_BDF2
+    double f0[@UPPER@_NZ], f1[@UPPER@_NZ], dfdt[@UPPER@_NZ]; /* @NAME@_integrate: rates at both ends, df/dt */
+    double jac[@UPPER@_NZ * @UPPER@_NZ]; /* ros23: the Jacobian at the step's start */
     double lu[@UPPER@_NZ * @UPPER@_NZ];
     int pivot[@UPPER@_NZ];
-#endif
     const casadi_real *arg[@UPPER@_SZ_ARG];
     casadi_real *res[@UPPER@_SZ_RES];
     casadi_int iw[@UPPER@_AT_LEAST_1(@UPPER@_SZ_IW)];
@@ -82,9 +101,9 @@ static void @NAME@_rates_scaled(@NAME@_instance *m, double t, const double *z, d
     @NAME@_call(m, @NAME@_f, &t, z, dz);
 }
 
-/* The time after `steps` steps [s]: a product, so that no rounding error accumulates. */
-static double @NAME@_now(long long steps) {
-    return (double)steps * @UPPER@_STEP;
+/* The time after `steps` steps from t_start [s]: a product, so that no rounding error accumulates. */
+static double @NAME@_now(const @NAME@_instance *m, long long steps) {
+    return m->t_start + (double)steps * @UPPER@_STEP;
 }
 
 /* The end of the step that starts after `steps` steps, as the model sees it: the largest time below
@@ -92,8 +111,8 @@ static double @NAME@_now(long long steps) {
  * (a Step at t_step = t1) acts from the next step on, as it does in CVODES' solution, rather than
  * entering the last stage of this one (for rk4 the jump then costs nothing of its order; bdf2's two-step
  * formula still spans it, and is first order across it). */
-static double @NAME@_end(long long steps) {
-    return nextafter(@NAME@_now(steps + 1), 0.0);
+static double @NAME@_end(const @NAME@_instance *m, long long steps) {
+    return nextafter(@NAME@_now(m, steps + 1), -HUGE_VAL);
 }
 
 /* The first state of z that is NaN or infinite, or -1. */
@@ -125,7 +144,6 @@ static int @NAME@_algebraic(@NAME@_instance *m, double t, const double *z) {
     return @UPPER@_OK;
 }
 
-#if @UPPER@_BDF2
 /* LU factorisation with partial pivoting of the n x n column-major matrix a, in place (P a = L U, unit
  * lower L); rows are swapped whole, as LAPACK's dgetrf does. Returns 0, or 1 if a pivot is zero or not finite. */
 static int @NAME@_lu(double *a, int *pivot, int n) {
@@ -176,6 +194,7 @@ static void @NAME@_lu_solve(const double *lu, const int *pivot, int n, double *b
     }
 }
 
+#if @UPPER@_BDF2
 /* Evaluate the Jacobian at (t, z) and factorise I - gamma J. Returns 0 or @UPPER@_SINGULAR. */
 static int @NAME@_factorise(@NAME@_instance *m, double t, const double *z, double gamma) {
     const int n = @UPPER@_N_STATES;
@@ -233,7 +252,7 @@ static int @NAME@_newton(@NAME@_instance *m, double t1, double gamma, const doub
  * do not converge fast, again with the Jacobian at every iterate. */
 static int @NAME@_advance(@NAME@_instance *m) {
     const int n = @UPPER@_N_STATES;
-    const double h = @UPPER@_STEP, t1 = @NAME@_end(m->steps);
+    const double h = @UPPER@_STEP, t1 = @NAME@_end(m, m->steps);
     const double gamma = m->history ? 2.0 * h / 3.0 : h;
     double *predicted = m->k[0], *known = m->k[1], size = 0.0;
     int worst = 0, iterations = 0, status = 1;
@@ -250,7 +269,7 @@ static int @NAME@_advance(@NAME@_instance *m) {
                  "t = %.9g s: Newton's iterations did not converge (%d iterations, each with a new Jacobian; "
                  "last correction of %s: %.3g of its nominal magnitude, accepted: %.3g); the step %.6g s is too "
                  "long for the model's fastest dynamics here, or the model has no solution",
-                 @NAME@_now(m->steps + 1), iterations, @NAME@_state_names[worst], size, @UPPER@_TOLERANCE, h);
+                 @NAME@_now(m, m->steps + 1), iterations, @NAME@_state_names[worst], size, @UPPER@_TOLERANCE, h);
         m->factorised = 0;
         return @UPPER@_NOT_CONVERGED;
     }
@@ -260,7 +279,7 @@ static int @NAME@_advance(@NAME@_instance *m) {
 /* One classical Runge-Kutta step into m->z_new. */
 static int @NAME@_advance(@NAME@_instance *m) {
     const int n = @UPPER@_N_STATES;
-    const double h = @UPPER@_STEP, t0 = @NAME@_now(m->steps), t1 = @NAME@_end(m->steps);
+    const double h = @UPPER@_STEP, t0 = @NAME@_now(m, m->steps), t1 = @NAME@_end(m, m->steps);
     double *s = m->z_new;
     @NAME@_rates_scaled(m, t0, m->z, m->k[0]);
     for (int i = 0; i < n; ++i) s[i] = m->z[i] + 0.5 * h * m->k[0][i];
@@ -276,9 +295,262 @@ static int @NAME@_advance(@NAME@_instance *m) {
 }
 #endif
 
+/* ---- @NAME@_integrate: the adaptive solvers ------------------------------------------------------------- */
+
+/* dopri5 ([Hairer1993] Table II.5.2): nodes, coefficients, and the error weights b - b^ of the embedded pair. */
+static const double @NAME@_dp_c[7] = {0.0, 0.2, 0.3, 0.8, 8.0 / 9.0, 1.0, 1.0};
+static const double @NAME@_dp_a[7][6] = {
+    {0.0},
+    {0.2},
+    {3.0 / 40.0, 9.0 / 40.0},
+    {44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0},
+    {19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0},
+    {9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0, -5103.0 / 18656.0},
+    {35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0},
+};
+static const double @NAME@_dp_e[7] = {71.0 / 57600.0, 0.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 / 339200.0,
+                                      22.0 / 525.0, -1.0 / 40.0};
+
+/* The scaled error norm of a step: the root mean square of err_i / (atol + rtol max(|z0_i|, |z1_i|)). */
+static double @NAME@_error_norm(const double *err, const double *z0, const double *z1, double rtol, double atol) {
+    double sum = 0.0;
+    for (int i = 0; i < @UPPER@_N_STATES; ++i) {
+        double scale = atol + rtol * fmax(fabs(z0[i]), fabs(z1[i]));
+        double r = err[i] / scale;
+        sum += r * r;
+    }
+    double norm = sqrt(sum / @UPPER@_AT_LEAST_1(@UPPER@_N_STATES));
+    return isfinite(norm) ? norm : HUGE_VAL;
+}
+
+/* One dopri5 step of h from (t, m->z) with m->f0 = f(t, z): m->z_new, m->f1 = f(t + h, z_new) (the next step's
+ * first stage), and the error estimate in m->k[6]'s place (err). */
+static void @NAME@_dopri5(@NAME@_instance *m, double t, double h, double *err) {
+    const int n = @UPPER@_N_STATES;
+    double *s = m->z_new;
+    memcpy(m->k[0], m->f0, sizeof(double) * (size_t)n);
+    for (int stage = 1; stage < 7; ++stage) {
+        for (int i = 0; i < n; ++i) {
+            double sum = 0.0;
+            for (int j = 0; j < stage; ++j) sum += @NAME@_dp_a[stage][j] * m->k[j][i];
+            s[i] = m->z[i] + h * sum;
+        }
+        double *k = stage < 6 ? m->k[stage] : m->f1;
+        @NAME@_rates_scaled(m, stage < 6 ? t + @NAME@_dp_c[stage] * h : t + h, s, k);
+    }
+    m->evaluations += 6;
+    for (int i = 0; i < n; ++i) {
+        double e = @NAME@_dp_e[6] * m->f1[i];
+        for (int j = 0; j < 6; ++j) e += @NAME@_dp_e[j] * m->k[j][i];
+        err[i] = h * e;
+    }
+}
+
+/* ros23 ([Shampine1997]): d = 1/(2 + sqrt 2), e32 = 6 + sqrt 2, W = I - h d J, T = df/dt, at (t, z):
+ *     k1 = W^-1 (F0 + h d T),  F1 = f(t + h/2, z + h k1 / 2),  k2 = W^-1 (F1 - k1) + k1,  z1 = z + h k2,
+ *     F2 = f(t + h, z1),  k3 = W^-1 (F2 - e32 (k2 - F1) - 2 (k1 - F0) + h d T),  err = h (k1 - 2 k2 + k3) / 6.
+ * m->jac and m->dfdt hold J and T at (t, z). Returns 0, or 1 if W is singular. */
+static int @NAME@_ros23(@NAME@_instance *m, double t, double h, double *err) {
+    const int n = @UPPER@_N_STATES;
+    const double d = 1.0 / (2.0 + sqrt(2.0)), e32 = 6.0 + sqrt(2.0);
+    double *k1 = m->k[0], *k2 = m->k[1], *k3 = m->k[2], *F1 = m->k[3], *s = m->z_new;
+    for (int i = 0; i < n * n; ++i) m->lu[i] = -h * d * m->jac[i];
+    for (int i = 0; i < n; ++i) m->lu[i + n * i] += 1.0;
+    if (@NAME@_lu(m->lu, m->pivot, n)) return 1;
+    for (int i = 0; i < n; ++i) k1[i] = m->f0[i] + h * d * m->dfdt[i];
+    @NAME@_lu_solve(m->lu, m->pivot, n, k1);
+    for (int i = 0; i < n; ++i) s[i] = m->z[i] + 0.5 * h * k1[i];
+    @NAME@_rates_scaled(m, t + 0.5 * h, s, F1);
+    for (int i = 0; i < n; ++i) k2[i] = F1[i] - k1[i];
+    @NAME@_lu_solve(m->lu, m->pivot, n, k2);
+    for (int i = 0; i < n; ++i) {
+        k2[i] += k1[i];
+        s[i] = m->z[i] + h * k2[i];
+    }
+    @NAME@_rates_scaled(m, t + h, s, m->f1);
+    for (int i = 0; i < n; ++i) {
+        k3[i] = m->f1[i] - e32 * (k2[i] - F1[i]) - 2.0 * (k1[i] - m->f0[i]) + h * d * m->dfdt[i];
+    }
+    @NAME@_lu_solve(m->lu, m->pivot, n, k3);
+    for (int i = 0; i < n; ++i) err[i] = h / 6.0 * (k1[i] - 2.0 * k2[i] + k3[i]);
+    m->evaluations += 2;
+    return 0;
+}
+
+/* The cubic Hermite interpolant at t in [t0, t0 + h] from the states and rates at both ends, scaled. */
+static void @NAME@_hermite(const @NAME@_instance *m, double t0, double h, double t, double *z) {
+    const double s = (t - t0) / h, s2 = s * s, s3 = s2 * s;
+    const double h00 = 2.0 * s3 - 3.0 * s2 + 1.0, h10 = s3 - 2.0 * s2 + s, h01 = -2.0 * s3 + 3.0 * s2, h11 = s3 - s2;
+    for (int i = 0; i < @UPPER@_N_STATES; ++i) {
+        z[i] = h00 * m->z[i] + h10 * h * m->f0[i] + h01 * m->z_new[i] + h11 * h * m->f1[i];
+    }
+}
+
+/* Row k of the results: the states (in their units) and the outputs at time t, scaled states z. */
+static void @NAME@_record(@NAME@_instance *m, long k, double t, const double *z, double *states, double *outputs) {
+    if (states != NULL) {
+        for (int i = 0; i < @UPPER@_N_STATES; ++i) states[k * @UPPER@_N_STATES + i] = z[i] * @NAME@_nominal[i];
+    }
+    if (outputs != NULL && @UPPER@_N_OUTPUTS > 0) {
+        @NAME@_call(m, @NAME@_y, &t, z, outputs + k * @UPPER@_N_OUTPUTS);
+    }
+}
+
+/* The first step ([Hairer1993] section II.4): from the sizes of the states and the rates, refined by the
+ * change of the rates over one explicit Euler step; order is the method's. */
+static double @NAME@_first_step(@NAME@_instance *m, double t, double span, double rtol, double atol, int order) {
+    const int n = @UPPER@_N_STATES;
+    double d0 = 0.0, d1 = 0.0, d2 = 0.0, h0, h1;
+    for (int i = 0; i < n; ++i) {
+        double scale = atol + rtol * fabs(m->z[i]);
+        d0 += (m->z[i] / scale) * (m->z[i] / scale);
+        d1 += (m->f0[i] / scale) * (m->f0[i] / scale);
+    }
+    d0 = sqrt(d0 / n), d1 = sqrt(d1 / n);
+    h0 = (d0 < 1e-5 || d1 < 1e-5) ? 1e-6 : 0.01 * d0 / d1;
+    h0 = fmin(h0, span);
+    for (int i = 0; i < n; ++i) m->z_new[i] = m->z[i] + h0 * m->f0[i];
+    @NAME@_rates_scaled(m, t + h0, m->z_new, m->f1);
+    m->evaluations += 1;
+    for (int i = 0; i < n; ++i) {
+        double scale = atol + rtol * fabs(m->z[i]);
+        double r = (m->f1[i] - m->f0[i]) / scale;
+        d2 += r * r;
+    }
+    d2 = sqrt(d2 / n) / h0;
+    if (!isfinite(d2)) return 1e-3 * h0;
+    double largest = fmax(d1, d2);
+    h1 = largest <= 1e-15 ? fmax(1e-6, 1e-3 * h0) : pow(0.01 / largest, 1.0 / (order + 1));
+    return fmin(fmin(100.0 * h0, h1), span);
+}
+
+int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, double max_step, long max_steps,
+                     long n_times, const double *times, double *states, double *outputs) {
+    const int n = @UPPER@_N_STATES;
+    if ((method != @UPPER@_DOPRI5 && method != @UPPER@_ROS23) || !(rtol > 0.0 && rtol < 1.0) ||
+        !(atol > 0.0 && atol <= 1.0) || !(max_step >= 0.0) || max_steps < 1 || n_times < 1 || times == NULL) {
+        snprintf(m->message, sizeof m->message,
+                 "integrate: expected method 1 (dopri5) or 2 (ros23), 0 < rtol < 1, 0 < atol <= 1, max_step >= 0, "
+                 "max_steps >= 1 and at least one output time");
+        return @UPPER@_BAD_ARGUMENT;
+    }
+    double hmax = 0.0;
+    for (long k = 1; k < n_times; ++k) {
+        if (!(times[k] > times[k - 1])) {
+            snprintf(m->message, sizeof m->message, "integrate: output time %ld (%.9g s) is not after the one before",
+                     k, times[k]);
+            return @UPPER@_BAD_ARGUMENT;
+        }
+    }
+    hmax = times[n_times - 1] - times[0];
+    if (max_step > 0.0) hmax = fmin(hmax, max_step);
+    const int explicit_method = method == @UPPER@_DOPRI5;
+    const double exponent = explicit_method ? 1.0 / 5.0 : 1.0 / 3.0;
+    double t = times[0], t_end = times[n_times - 1], *err = m->k[6];
+    long out = 1, taken = 0;
+    int rejected_last = 0, status = @UPPER@_OK;
+    @NAME@_record(m, 0, t, m->z, states, outputs);
+    if (n_times == 1) return @UPPER@_OK;
+    if (n == 0) {
+        for (; out < n_times; ++out) @NAME@_record(m, out, times[out], m->z, states, outputs);
+        m->t_start = t_end, m->steps = 0;
+        return @UPPER@_OK;
+    }
+    @NAME@_rates_scaled(m, t, m->z, m->f0);
+    m->evaluations += 1;
+    int bad = @NAME@_not_finite(m->f0);
+    if (bad >= 0) {
+        snprintf(m->message, sizeof m->message, "t = %.9g s: the rate of the state %s is %g at the start", t,
+                 @NAME@_state_names[bad], m->f0[bad] * @NAME@_nominal[bad]);
+        return @UPPER@_NOT_FINITE;
+    }
+    double h = fmin(@NAME@_first_step(m, t, t_end - t, rtol, atol, explicit_method ? 5 : 2), hmax);
+    int have_jacobian = 0;
+    while (t < t_end) {
+        if (taken >= max_steps) {
+            snprintf(m->message, sizeof m->message,
+                     "t = %.9g s: the step budget of %ld steps was used up (last step %.3g s); the dynamics are too "
+                     "fast for the time span%s, or a state diverges",
+                     t, max_steps, h, explicit_method ? " (stiff? ros23 is for stiff circuits)" : "");
+            status = @UPPER@_TOO_MUCH_WORK;
+            break;
+        }
+        const double remaining = t_end - t;
+        if (h >= remaining || t + h >= t_end) h = remaining;
+        if (!(h > 16.0 * DBL_EPSILON * fmax(fabs(t), 1e-3 * hmax))) {
+            snprintf(m->message, sizeof m->message,
+                     "t = %.9g s: the step fell to %.3g s; the rates are discontinuous or not finite here (%s)", t, h,
+                     explicit_method ? "dopri5" : "ros23");
+            status = @UPPER@_STEP_TOO_SMALL;
+            break;
+        }
+        if (explicit_method) {
+            @NAME@_dopri5(m, t, h, err);
+        } else {
+            if (!have_jacobian) {
+                @NAME@_call(m, @NAME@_jac, &t, m->z, m->jac);
+                @NAME@_call(m, @NAME@_dfdt, &t, m->z, m->dfdt);
+                m->jacobians += 1;
+                have_jacobian = 1;
+            }
+            if (@NAME@_ros23(m, t, h, err)) {
+                h *= 0.25;
+                m->rejected += 1;
+                rejected_last = 1;
+                continue;
+            }
+        }
+        taken += 1;
+        double size = @NAME@_not_finite(m->z_new) >= 0 || @NAME@_not_finite(m->f1) >= 0
+                          ? HUGE_VAL
+                          : @NAME@_error_norm(err, m->z, m->z_new, rtol, atol);
+        if (size > 1.0) {
+            m->rejected += 1;
+            h *= size == HUGE_VAL ? 0.25 : fmax(0.2, 0.9 * pow(size, -exponent));
+            rejected_last = 1;
+            continue;
+        }
+        if (@NAME@_algebraic(m, t + h, m->z_new)) {
+            status = @UPPER@_ALGEBRAIC;
+            break;
+        }
+        /* accepted: the outputs inside (t, t + h] from the interpolant, the last exactly */
+        const double t1 = (h == remaining) ? t_end : t + h;
+        for (; out < n_times && times[out] <= t1; ++out) {
+            if (times[out] == t1) {
+                @NAME@_record(m, out, t1, m->z_new, states, outputs);
+            } else {
+                @NAME@_hermite(m, t, h, times[out], m->z_host);
+                @NAME@_record(m, out, times[out], m->z_host, states, outputs);
+            }
+        }
+        m->accepted += 1;
+        memcpy(m->z, m->z_new, sizeof(double) * (size_t)n);
+        memcpy(m->f0, m->f1, sizeof(double) * (size_t)n);
+        t = t1;
+        have_jacobian = 0;
+        double grow = size <= 0.0 ? 5.0 : fmin(5.0, fmax(0.2, 0.9 * pow(size, -exponent)));
+        if (rejected_last) grow = fmin(grow, 1.0);
+        rejected_last = 0;
+        h = fmin(h * grow, hmax);
+    }
+    m->t_start = t, m->steps = 0; /* the fixed-step API goes on from here */
+    m->history = m->factorised = m->outputs_current = 0;
+    if (status == @UPPER@_OK) m->message[0] = '\0';
+    return status;
+}
+
+void @NAME@_integration_statistics(const @NAME@_instance *m, long long *accepted, long long *rejected,
+                                   long long *evaluations, long long *jacobians) {
+    if (accepted != NULL) *accepted = m->accepted;
+    if (rejected != NULL) *rejected = m->rejected;
+    if (evaluations != NULL) *evaluations = m->evaluations;
+    if (jacobians != NULL) *jacobians = m->jacobians;
+}
+
 int @NAME@_step(@NAME@_instance *m) {
     const int n = @UPPER@_N_STATES;
-    const double t1 = @NAME@_now(m->steps + 1);
+    const double t1 = @NAME@_now(m, m->steps + 1);
     int status = @NAME@_advance(m);
     if (status) return status;
     int bad = @NAME@_not_finite(m->z_new);
@@ -341,6 +613,8 @@ void @NAME@_free(@NAME@_instance *m) {
 void @NAME@_reset(@NAME@_instance *m) {
     @NAME@_call(m, @NAME@_z0, NULL, NULL, m->z);
     m->steps = m->iterations = m->jacobians = 0;
+    m->accepted = m->rejected = m->evaluations = 0;
+    m->t_start = 0.0;
     m->history = m->factorised = m->outputs_current = 0;
     m->message[0] = '\0';
 }
@@ -381,7 +655,7 @@ double @NAME@_get_state(const @NAME@_instance *m, int index) {
 double @NAME@_get_output(@NAME@_instance *m, int index) {
     if (index < 0 || index >= @UPPER@_N_OUTPUTS) return NAN;
     if (!m->outputs_current) {
-        double t = @NAME@_now(m->steps);
+        double t = @NAME@_now(m, m->steps);
         @NAME@_call(m, @NAME@_y, &t, m->z, m->y);
         m->outputs_current = 1;
     }
@@ -431,7 +705,7 @@ double @NAME@_state_nominal(int index) {
 }
 
 double @NAME@_time(const @NAME@_instance *m) {
-    return @NAME@_now(m->steps);
+    return @NAME@_now(m, m->steps);
 }
 
 const char *@NAME@_message(const @NAME@_instance *m) {

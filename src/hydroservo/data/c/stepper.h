@@ -39,6 +39,13 @@ extern "C" {
 #define @UPPER@_NOT_FINITE 2    /* a state became NaN or infinite */
 #define @UPPER@_SINGULAR 3      /* bdf2: the Newton matrix I - gamma J is singular */
 #define @UPPER@_ALGEBRAIC 4     /* an algebraic unknown of the model was not solved */
+#define @UPPER@_TOO_MUCH_WORK 5 /* integrate: the step budget was used up */
+#define @UPPER@_STEP_TOO_SMALL 6 /* integrate: the step fell below what floating point resolves */
+#define @UPPER@_BAD_ARGUMENT 7  /* integrate: a method, tolerance or output time not accepted */
+
+/* The adaptive methods of @NAME@_integrate. */
+#define @UPPER@_DOPRI5 1 /* explicit Runge-Kutta pair of Dormand and Prince, order 5(4) */
+#define @UPPER@_ROS23 2  /* linearly implicit Rosenbrock pair of Shampine and Reichelt, order 2(3), for stiff circuits */
 
 /* Opaque: one running copy of the model (its parameters, inputs, states and work space). */
 typedef struct @NAME@_instance @NAME@_instance;
@@ -77,6 +84,20 @@ int @NAME@_step(@NAME@_instance *m);
  * written; @NAME@_time says where it stopped). */
 int @NAME@_run(@NAME@_instance *m, long n, const double *inputs, double *states, double *outputs);
 
+/* Variable steps with error control: from the instance's time and states, which must be those at times[0],
+ * through the n_times output times (increasing), with `method` (@UPPER@_DOPRI5 or @UPPER@_ROS23), the
+ * relative tolerance rtol and the absolute tolerance atol on the states scaled by their nominal magnitudes
+ * (@NAME@_state_nominal), steps of at most max_step seconds (0: no limit) and at most max_steps steps. states, outputs: NULL or room for n_times rows of
+ * @UPPER@_N_STATES / @UPPER@_N_OUTPUTS values, row k at times[k] (row 0: the start). The inputs are held.
+ * Returns @UPPER@_OK with the instance at times[n_times - 1], or a status with the instance at the last
+ * accepted step (@NAME@_time) and the rows up to there written; @NAME@_message says why. */
+int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, double max_step, long max_steps,
+                     long n_times, const double *times, double *states, double *outputs);
+/* Work done by @NAME@_integrate since the last reset: accepted and rejected steps, evaluations of the rates and
+ * Jacobians (ros23). */
+void @NAME@_integration_statistics(const @NAME@_instance *m, long long *accepted, long long *rejected,
+                                   long long *evaluations, long long *jacobians);
+
 /* The model in continuous time, for an integrator of the host's own (an FMU's Model Exchange uses these): at
  * any time t [s] and states x (in their units, @UPPER@_N_STATES values), with the instance's parameters and
  * inputs. The instance's own time, states and outputs are untouched. */
@@ -92,7 +113,8 @@ int @NAME@_check(@NAME@_instance *m, double t, const double *x);
 /* The nominal magnitude of a state, in its unit (a host integrator's scale for it); NaN for an index out of range. */
 double @NAME@_state_nominal(int index);
 
-/* Time since the last reset [s]: the number of steps times @UPPER@_STEP. */
+/* Time since the last reset [s]: where the last @NAME@_integrate ended (0 without one), plus the number of
+ * steps since times @UPPER@_STEP. */
 double @NAME@_time(const @NAME@_instance *m);
 /* Why the last step was refused ("" after a successful one). */
 const char *@NAME@_message(const @NAME@_instance *m);
