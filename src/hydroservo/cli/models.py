@@ -25,7 +25,7 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     write = "none" if args.write is None and args.json and args.out is None else args.write
     job = Simulate(
         args.model, args.set, t_end=args.t_end, points=args.points, initial=args.initial, accuracy=args.accuracy,
-        rtol=args.rtol, strict=args.strict, write=write, cli=True,
+        rtol=args.rtol, strict=args.strict, write=write, method=args.method, cli=True,
     )
     return execute(job, args)
 
@@ -66,6 +66,13 @@ def add_parsers(sub: Any) -> None:
         help="deviation wanted, relative to each signal's range: 1e-3 or 0.1%% (default 1e-4: rtol 1e-6, atol 1e-8)",
     )
     p.add_argument("--rtol", type=float, default=None, help="relative tolerance instead (atol = rtol/100)")
+    p.add_argument(
+        "--method",
+        default="cvodes",
+        metavar="M",
+        help="integration method: cvodes (default, BDF), ros23 (compiled Rosenbrock, stiff circuits) or dopri5 "
+        "(compiled Dormand-Prince, non-stiff); the compiled ones are built once per model and cached",
+    )
     p.add_argument(
         "--strict",
         action="store_true",

@@ -35,13 +35,8 @@ from __future__ import annotations
 
 import ctypes
 import math
-import os
 import re
-import shlex
-import shutil
-import subprocess
 import sys
-import sysconfig
 import tempfile
 import weakref
 from collections.abc import Mapping, Sequence
@@ -49,15 +44,31 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import casadi as ca
 import numpy as np
 
-from hydroservo.data import c_template
 from hydroservo.errors import ModelError, ParameterError, SolverError, shorten
 from hydroservo.io.files import OutputFolder
 from hydroservo.system.assembly import assemble
-from hydroservo.system.implicit import TOLERANCE as ALGEBRAIC_TOLERANCE
 from hydroservo.system.model import Model
+from hydroservo.system.native import (
+    _C_RESERVED,
+    ADAPTIVE_METHODS,
+    METHODS,
+    NEWTON_TOLERANCE,
+    _c_comment,
+    _c_number,
+    _c_string,
+    _library_name,
+    bind,
+    c_identifier,
+    compile_library,
+    compile_program,
+    compiler,
+    fill_template,
+    library_suffix,
+    model_sources,
+    pointer,
+)
 from hydroservo.system.system import System
 from hydroservo.units import to_si
 from hydroservo.version import __version__
@@ -78,47 +89,6 @@ __all__ = [
     "fill_template",
     "library_suffix",
 ]
-
-#: The fixed-step methods: ``rk4`` (explicit, classical Runge-Kutta) and ``bdf2`` (implicit, for stiff circuits).
-METHODS = ("rk4", "bdf2")
-
-#: The variable-step methods with error control of every export (``integrate``), in the order of their C
-#: constants: ``dopri5`` (explicit, Dormand-Prince 5(4)) and ``ros23`` (linearly implicit, Rosenbrock 2(3), for
-#: stiff circuits).
-ADAPTIVE_METHODS = ("dopri5", "ros23")
-
-#: bdf2: a step's Newton iterations have converged when the last correction of every state is at most this
-#: fraction of its nominal magnitude.
-NEWTON_TOLERANCE = 1e-8
-
-#: bdf2: the Jacobian kept from earlier steps is evaluated again when an iteration does not shrink the
-#: correction by at least this factor.
-NEWTON_RATE = 0.5
-
-#: bdf2: the most Newton iterations of each of a step's two attempts (with the factorisation kept, then with
-#: the Jacobian evaluated at every iterate).
-NEWTON_ITERATIONS = 10
-
-#: Names a model's C identifier must not take: C keywords, and standard headers its file would shadow.
-_C_RESERVED = frozenset(
-    "auto break case char const continue default do double else enum extern float for goto if inline int long "
-    "register restrict return short signed sizeof static struct switch typedef union unsigned void volatile while "
-    "bool true false assert complex ctype errno fenv limits locale math setjmp signal stdarg stdbool stddef stdint "
-    "stdio stdlib string tgmath time wchar".split()
-)
-
-
-def c_identifier(name: str) -> str:
-    """The C identifier of a model named ``name``: letters, digits and ``_``, not starting with a digit, not
-    a C keyword nor the name of a standard header.
-
-    >>> c_identifier("flight-simulator"), c_identifier("3 way"), c_identifier("int"), c_identifier("math")
-    ('flight_simulator', 'm_3_way', 'int_model', 'math_model')
-    """
-    cid = re.sub(r"_+", "_", re.sub(r"[^A-Za-z0-9]", "_", name)).strip("_") or "model"
-    if cid[0].isdigit():
-        cid = f"m_{cid}"
-    return f"{cid}_model" if cid in _C_RESERVED else cid
 
 
 @dataclass(frozen=True)
@@ -154,14 +124,15 @@ class CExport:
         """The shared library :func:`export_c` builds with ``build=True``."""
         return self.directory / _library_name(self.name)
 
+    @property
+    def main(self) -> bool:
+        """The folder holds the standalone simulator's ``main.c``."""
+        return "main.c" in self.files
 
-def library_suffix() -> str:
-    """The file suffix of a shared library on this platform: ``.so``, ``.dylib`` or ``.dll``."""
-    return {"darwin": ".dylib", "win32": ".dll"}.get(sys.platform, ".so")
-
-
-def _library_name(cid: str) -> str:
-    return f"lib{cid}{library_suffix()}"
+    @property
+    def executable(self) -> Path:
+        """The standalone simulator :func:`export_c` builds with ``main=True, build=True``."""
+        return self.directory / _executable_name(self.name)
 
 
 def check_step(step: float | str, what: str = "step") -> float:
@@ -203,138 +174,6 @@ def check_inputs(system: System, inputs: Sequence[str], what: str = "inputs") ->
     if repeated:
         raise ParameterError(f"{what}: {', '.join(repeated)} given twice; expected each input once")
     return names
-
-
-def _c_string(text: str) -> str:
-    """``text`` as a C string literal: ASCII, with quotes, backslashes and other bytes escaped."""
-    out = []
-    for byte in text.encode("utf-8"):
-        char = chr(byte)
-        if char in '"\\':
-            out.append("\\" + char)
-        elif 32 <= byte < 127 and char != "?":  # "?" escaped: no trigraphs
-            out.append(char)
-        else:
-            out.append(f"\\{byte:03o}")
-    return '"' + "".join(out) + '"'
-
-
-def _c_number(value: float) -> str:
-    """``value`` as a C double literal, exactly: Python's repr of a float is the shortest decimal that reads
-    back as the same double, and always has a point or an exponent."""
-    if math.isnan(value):
-        return "NAN"
-    if math.isinf(value):
-        return "INFINITY" if value > 0 else "(-INFINITY)"
-    return repr(float(value))
-
-
-def _array(ctype: str, name: str, items: Sequence[str], *, terminated: bool = False) -> str:
-    """A C array definition, one item per line (NULL-terminated if asked); a placeholder 0 if empty."""
-    body = [*items, "NULL"] if terminated else list(items) or ["0"]
-    lines = "".join(f"    {item},\n" for item in body)
-    return f"{ctype} {name}[] = {{\n{lines}}};\n"
-
-
-@dataclass(frozen=True)
-class _Functions:
-    """The model's CasADi functions on scaled states, named with the C identifier."""
-
-    functions: list[ca.Function]
-    algebraic: list[str]
-
-
-def _functions(model: Model, cid: str, method: str) -> _Functions:
-    """``f``, ``jac`` (bdf2, ros23), ``dfdt`` (ros23), ``y``, ``z0`` and ``conv`` (algebraic unknowns) of ``model``
-    on z = x / x_nom.
-
-    The unknowns' last Newton corrections come from the assembly ``model`` was compiled from
-    (:attr:`~hydroservo.system.model.Model.assembly`). Every output is dense: the stepper reads whole vectors
-    and column-major matrices.
-    """
-    t, z, p = ca.SX.sym("t"), ca.SX.sym("z", model.nx), ca.SX.sym("p", model.np)
-    nominal = ca.DM(model.nominal)
-    x = z * nominal
-    rates = model.f(t, x, p) / nominal
-    functions = [ca.Function(f"{cid}_f", [t, z, p], [ca.densify(rates)])]
-    # the Jacobian (bdf2, ros23) and the rates' time derivative (ros23): the adaptive solvers are in every export
-    functions.append(ca.Function(f"{cid}_jac", [t, z, p], [ca.densify(ca.jacobian(rates, z))]))
-    functions.append(ca.Function(f"{cid}_dfdt", [t, z, p], [ca.densify(ca.jacobian(rates, t))]))
-    functions.append(ca.Function(f"{cid}_y", [t, z, p], [ca.densify(model.outputs(t, x, p))]))
-    functions.append(ca.Function(f"{cid}_z0", [p], [ca.densify(model.x0(p) / nominal)]))
-    algebraic: list[str] = []
-    a = model.assembly
-    if a.convergence is not None:
-        algebraic, correction = list(a.convergence[0]), a.convergence[1]
-        conv = ca.Function("conv", [a.t, a.x, a.p], [correction])
-        functions.append(ca.Function(f"{cid}_conv", [t, z, p], [ca.densify(conv(t, x, p))]))
-    return _Functions(functions, algebraic)
-
-
-def _data_block(cid: str, upper: str, model: Model, method: str, tolerance: float, functions: _Functions) -> str:
-    """The model's data and the method's settings, for the ``@DATA@`` place of the stepper's source."""
-    sizes = {
-        what: max(getattr(f, f"sz_{what}")() for f in functions.functions) for what in ("arg", "res", "iw", "w")
-    }
-    lines = [
-        f"#define {upper}_BDF2 {int(method == 'bdf2')}",
-        f"#define {upper}_TOLERANCE {_c_number(tolerance)}",
-        f"#define {upper}_RATE {_c_number(NEWTON_RATE)}",
-        f"#define {upper}_MAX_ITERATIONS {NEWTON_ITERATIONS}",
-        f"#define {upper}_N_ALGEBRAIC {len(functions.algebraic)}",
-        f"#define {upper}_ALGEBRAIC_TOLERANCE {_c_number(ALGEBRAIC_TOLERANCE)}",
-        *(f"#define {upper}_SZ_{what.upper()} {size}" for what, size in sizes.items()),
-        "",
-        "/* The nominal magnitude of each state, in its unit: x = z x_nom. */",
-        _array("static const double", f"{cid}_nominal", [_c_number(v) for v in model.nominal]),
-    ]
-    if functions.algebraic:
-        lines.append(
-            _array("static const char *const", f"{cid}_algebraic_names", [_c_string(n) for n in functions.algebraic])
-        )
-    return "\n".join(lines)
-
-
-def _tables(
-    cid: str, system: System, model: Model, inputs: tuple[str, ...], defaults: np.ndarray, step: float, method: str
-) -> str:
-    """The public constants: counts, step, method, and the arrays of names, units, descriptions and defaults."""
-    params = model.parameter_names[: len(defaults)]
-    spec = system.declared("PARAMETERS")
-    strings = {
-        "parameter_names": params,
-        "parameter_units": [model.parameter_units[n] for n in params],
-        "parameter_descriptions": [spec[n].description for n in params],
-        "input_names": list(inputs),
-        "input_units": [model.parameter_units[n] for n in model.parameter_names[len(defaults) :]],
-        "state_names": model.state_names,
-        "state_units": [model.units[n] for n in model.state_names],
-        "output_names": model.output_names,
-        "output_units": [model.units[n] for n in model.output_names],
-    }
-    constants = (
-        f"const int {cid}_n_parameters = {len(params)}, {cid}_n_inputs = {len(inputs)}, "
-        f"{cid}_n_states = {model.nx}, {cid}_n_outputs = {len(model.output_names)};\n"
-        f"const double {cid}_step_size = {_c_number(step)};\n"
-        f"const char {cid}_method[] = {_c_string(method)};\n"
-    )
-    arrays = [
-        _array("const char *const", f"{cid}_{what}", [_c_string(v) for v in values], terminated=True)
-        for what, values in strings.items()
-    ]
-    defaults_array = _array("const double", f"{cid}_parameter_defaults", [_c_number(v) for v in defaults])
-    return "\n".join([constants, *arrays, defaults_array])
-
-
-def fill_template(name: str, values: Mapping[str, str]) -> str:
-    """The C template ``name`` of ``hydroservo.data`` with every ``@KEY@`` replaced."""
-    text = c_template(name)
-    for key, value in values.items():
-        text = text.replace(f"@{key}@", value)
-    left = sorted(set(re.findall(r"@[A-Z_]+@", text)))
-    if left:  # a template and this writer disagree: a bug, not the user's input
-        raise RuntimeError(f"C template {name}: no value for {', '.join(left)}")
-    return text
 
 
 def _markdown_table(header: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
@@ -394,6 +233,22 @@ def _readme(export: CExport, system: System, model: Model) -> str:
             for i, (n, v) in enumerate(zip(export.parameters, export.defaults))
         ],
     )
+    simulator = (
+        f"""
+## The standalone simulator
+
+`main.c` is a command built on this API (`make {cid}`): it reads parameters (`NAME=VALUE` arguments, or
+`--params FILE` of such lines, in the units listed below), runs the model from its initial states with a
+variable-step method with error control (`--method ros23`, the default, a Rosenbrock method for stiff circuits,
+or `dopri5`, Dormand-Prince 5(4)), to `--accuracy` (default 1e-4 of each signal's range) and writes the states
+and outputs at `--points` equally spaced times as CSV (`t [s],NAME [unit],...`) to standard output or
+`--output FILE`. `./{cid} --help` lists the options, `./{cid} --list` the parameters with their values. Exit
+status 0 done, 1 the solver stopped (the rows up to there are written, the reason on standard error), 2 a bad
+option, value or file.
+"""
+        if export.main
+        else ""
+    )
     return f"""# {cid}: the hydroservo model `{export.model}` in C, stepping in real time
 
 Generated by hydroservo {__version__} (`hydroservo export-c`): C99 with libc and libm only, no Python
@@ -405,9 +260,9 @@ on the target. Fixed step h = {export.step!r} s (`{upper}_STEP`), baked in.
 
 ## Build
 
-    cc -O2 -c *.c      # objects to link into your program (link with -lm)
-    make               # lib{cid}.a and {_library_name(cid)} (CC and CFLAGS as usual)
-
+    cc -O2 -c {" ".join(f for f in export.files if f.endswith(".c") and f != "main.c")}      # objects to link into your program (link with -lm)
+    make               # lib{cid}.a and {_library_name(cid)}{f" and the simulator {cid}" if export.main else ""} (CC and CFLAGS as usual)
+{simulator}
 `{cid}.h` is the API, documented; `{cid}.c` holds the stepper and the model's data; `{cid}_model.c` and
 `{cid}_model.h` the model's functions, generated by CasADi on the states scaled by their nominal
 magnitudes (z = x / x_nom).
@@ -464,19 +319,31 @@ above every supply, pistons through their stops) are not made here: watch the ou
 """
 
 
+def _executable_name(cid: str) -> str:
+    return f"{cid}.exe" if sys.platform == "win32" else cid
+
+
 def _makefile(cid: str, files: Sequence[str]) -> str:
-    sources = " ".join(f for f in files if f.endswith(".c"))
+    sources = " ".join(f for f in files if f.endswith(".c") and f != "main.c")
     headers = " ".join(f for f in files if f.endswith(".h"))
     shared = _library_name(cid)
-    return f"""# Builds lib{cid}.a and {shared} from the sources hydroservo exported (make; make clean).
+    simulator = ""
+    targets = f"lib{cid}.a {shared}"
+    if "main.c" in files:
+        simulator = f"""
+{cid}: main.c lib{cid}.a {headers}
+\t$(CC) $(CFLAGS) -o $@ main.c lib{cid}.a -lm
+"""
+        targets += f" {cid}"
+    return f"""# Builds {targets} from the sources hydroservo exported (make; make clean).
 CC ?= cc
 CFLAGS ?= -O2
 AR ?= ar
 SOURCES = {sources}
 OBJECTS = $(SOURCES:.c=.o)
 
-all: lib{cid}.a {shared}
-
+all: {targets}
+{simulator}
 lib{cid}.a: $(OBJECTS)
 \t$(AR) rcs $@ $(OBJECTS)
 
@@ -487,7 +354,7 @@ lib{cid}.a: $(OBJECTS)
 \t$(CC) $(CFLAGS) -c $< -o $@
 
 clean:
-\trm -f $(OBJECTS) lib{cid}.a {shared}
+\trm -f $(OBJECTS) {targets}
 
 .PHONY: all clean
 """
@@ -504,6 +371,7 @@ def export_c(
     newton_tolerance: float = NEWTON_TOLERANCE,
     force: bool = False,
     build: bool = False,
+    main: bool = False,
 ) -> CExport:
     """Write ``system`` as C code with a fixed-step stepper into ``directory`` (module notes).
 
@@ -525,6 +393,9 @@ def export_c(
         ``bdf2``: largest accepted last Newton correction of a state [-], relative to its nominal magnitude.
     force : bool
         Replace files of the same names in ``directory``.
+    main : bool
+        Also write ``main.c``, the standalone simulator (a command that reads parameters, runs a
+        variable-step method and writes CSV; ``NAME --help``), built with the library.
     build : bool
         Also compile a shared library into the folder (:func:`compiler`), as :class:`CStepper` loads it.
 
@@ -552,8 +423,12 @@ def export_c(
     cid = c_identifier(system.name) if name is None else check_name(name)
     targets = check_inputs(system, inputs)
     files = [f"{cid}.h", f"{cid}.c", f"{cid}_model.c", f"{cid}_model.h", "README.md", "Makefile"]
+    if main:
+        files.append("main.c")
     if build:
         files.append(_library_name(cid))
+        if main:
+            files.append(_executable_name(cid))
     out = OutputFolder(directory, force=force, what="directory")
     out.expect(files)
     defaults = system.parameter_vector()
@@ -563,8 +438,6 @@ def export_c(
         raise ModelError(f"system {system.name!r} has no states: there is nothing to step")
     if model.parameter_names[: len(defaults)] != built.parameter_names:  # the assembly's promise: inputs come last
         raise RuntimeError("export_c: the perturbed model's parameters are not the system's, in order")
-    functions = _functions(model, cid, method)
-    upper = cid.upper()
     units = {n: model.parameter_units[n] for n in built.parameter_names}
     units.update({target: model.parameter_units[f"d({target})"] for target in targets})
     units.update({n: model.units[n] for n in (*model.state_names, *model.output_names)})
@@ -583,72 +456,26 @@ def export_c(
         units=units,
         files=tuple(files),
     )
-    values = {
-        "NAME": cid,
-        "UPPER": upper,
-        "GUARD": f"{upper}_H",
-        "MODEL": system.name.replace("*/", "* /"),
-        "VERSION": __version__,
-        "METHOD": method,
-        "STEP": _c_number(h),
-        "N_PARAMETERS": str(len(defaults)),
-        "N_INPUTS": str(len(targets)),
-        "N_STATES": str(model.nx),
-        "N_OUTPUTS": str(len(model.output_names)),
-    }
+    spec = system.declared("PARAMETERS")
+    sources = model_sources(
+        model, cid, method=method, step=h, newton_tolerance=newton_tolerance, inputs=targets, defaults=defaults,
+        descriptions=[spec[n].description for n in built.parameter_names], label=system.name,
+    )  # fmt: skip
     with out:
-        generator = ca.CodeGenerator(f"{cid}_model.c", {"with_header": True, "prefix": f"{cid}_"})
-        for function in functions.functions:
-            generator.add(function)
-        generator.generate(str(out.folder) + os.sep)
-        out.file(f"{cid}.h").write_text(fill_template("stepper.h", values), encoding="utf-8")
-        data = _data_block(cid, upper, model, method, newton_tolerance, functions)
-        tables = _tables(cid, system, model, targets, defaults, h, method)
-        source = fill_template("stepper.c", {**values, "DATA": data}) + "\n" + tables
-        out.file(f"{cid}.c").write_text(source, encoding="utf-8")
+        for file, text in sources.files.items():
+            out.file(file).write_text(text, encoding="utf-8")
         out.file("README.md").write_text(_readme(export, system, model), encoding="utf-8")
         out.file("Makefile").write_text(_makefile(cid, files), encoding="utf-8")
+        if main:
+            values = {"NAME": cid, "UPPER": cid.upper(), "MODEL": _c_comment(system.name), "VERSION": __version__,
+                      "MODEL_STRING": _c_string(system.name)[1:-1], "T_END": _c_number(system.t_end)}  # fmt: skip
+            out.file("main.c").write_text(fill_template("main.c", values), encoding="utf-8")
         if build:
-            compile_library(out.folder, [f for f in files if f.endswith(".c")], _library_name(cid))
+            library_sources = [f for f in files if f.endswith(".c") and f != "main.c"]
+            compile_library(out.folder, library_sources, _library_name(cid))
+            if main:
+                compile_program(out.folder, ["main.c", *library_sources], _executable_name(cid))
     return export
-
-
-def compiler() -> list[str]:
-    """The C compiler command: ``$CC``, else Python's own (sysconfig), else ``cc``, ``gcc`` or ``clang``.
-
-    Raises
-    ------
-    ParameterError
-        If none is found.
-    """
-    candidates = [os.environ.get("CC", ""), str(sysconfig.get_config_var("CC") or ""), "cc", "gcc", "clang"]
-    for candidate in candidates:
-        command = shlex.split(candidate)
-        if command and shutil.which(command[0]):
-            return command
-    raise ParameterError(
-        "C compiler: none found (CC is not set, and none of cc, gcc, clang is on PATH); expected a C compiler to "
-        "build the stepper (the exported sources need none until they are built)"
-    )
-
-
-def compile_library(folder: Path, sources: Sequence[str], library: str, flags: Sequence[str] = ("-O2",)) -> Path:
-    """Compile ``sources`` (in ``folder``) into the shared library ``library`` there, with :func:`compiler`.
-
-    Raises
-    ------
-    ParameterError
-        If there is no compiler, it cannot run, or it fails (with the end of its messages).
-    """
-    command = [*compiler(), *flags, "-fPIC", "-shared", "-o", library, *sources, "-lm"]
-    try:
-        done = subprocess.run(command, cwd=folder, capture_output=True, text=True, timeout=600)
-    except (OSError, subprocess.TimeoutExpired) as exc:
-        raise ParameterError(f"C compiler {command[0]!r}: could not run ({exc})") from None
-    if done.returncode != 0:
-        tail = "\n".join((done.stderr or done.stdout).strip().splitlines()[-12:])
-        raise ParameterError(f"C compiler {command[0]!r} failed on the exported sources (exit {done.returncode}):\n{tail}")
-    return folder / library
 
 
 class CStepper:
@@ -681,36 +508,10 @@ class CStepper:
         self.export = export_c(
             system, folder, step=step, method=method, inputs=inputs, newton_tolerance=newton_tolerance, build=True
         )
-        lib = ctypes.CDLL(str(self.export.library))
-        cid = self.export.name
-        inst, dbl, i32, ptr = ctypes.c_void_p, ctypes.c_double, ctypes.c_int, ctypes.POINTER(ctypes.c_double)
-        signatures: dict[str, tuple[Any, list[Any]]] = {
-            "new": (inst, []),
-            "free": (None, [inst]),
-            "reset": (None, [inst]),
-            "set_parameter": (i32, [inst, i32, dbl]),
-            "get_parameter": (dbl, [inst, i32]),
-            "set_input": (i32, [inst, i32, dbl]),
-            "get_input": (dbl, [inst, i32]),
-            "get_state": (dbl, [inst, i32]),
-            "get_output": (dbl, [inst, i32]),
-            "step": (i32, [inst]),
-            "run": (i32, [inst, ctypes.c_long, ptr, ptr, ptr]),
-            "time": (dbl, [inst]),
-            "message": (ctypes.c_char_p, [inst]),
-            "statistics": (None, [inst, *[ctypes.POINTER(ctypes.c_longlong)] * 3]),
-            "integrate": (i32, [inst, i32, dbl, dbl, dbl, ctypes.c_long, ctypes.c_long, ptr, ptr, ptr]),
-            "integration_statistics": (None, [inst, *[ctypes.POINTER(ctypes.c_longlong)] * 4]),
-            "set_state": (i32, [inst, i32, dbl]),
-        }
-        self._c: dict[str, Any] = {}
-        for what, (restype, argtypes) in signatures.items():
-            function = getattr(lib, f"{cid}_{what}")
-            function.restype, function.argtypes = restype, argtypes
-            self._c[what] = function
+        self._c = bind(self.export.library, self.export.name)
         self._inst = self._c["new"]()
         if not self._inst:
-            raise MemoryError(f"{cid}_new: out of memory")
+            raise MemoryError(f"{self.export.name}_new: out of memory")
         weakref.finalize(self, self._c["free"], self._inst)
         self._given: dict[str, Any] = {}
         #: The status the C code returned for the last step: 0, or why it refused it (the constants of the header).
@@ -830,7 +631,7 @@ class CStepper:
                           + [self._c["get_output"](self._inst, j) for j in range(ny)]])  # fmt: skip
         t0 = self.time
         X, Y = np.empty((n, nx)), np.empty((n, ny))
-        self._check(self._c["run"](self._inst, n, _pointer(U), _pointer(X), _pointer(Y)))
+        self._check(self._c["run"](self._inst, n, pointer(U), pointer(X), pointer(Y)))
         times = t0 + self.step_size * np.arange(n + 1)
         return times, np.vstack([start, np.hstack([X, Y])])
 
@@ -865,7 +666,7 @@ class CStepper:
         X, Y = np.zeros((grid.size, nx)), np.zeros((grid.size, ny))
         status = self._c["integrate"](
             self._inst, ADAPTIVE_METHODS.index(method) + 1, float(rtol), float(atol), float(max_step), int(max_steps), grid.size,
-            _pointer(grid), _pointer(X), _pointer(Y),
+            pointer(grid), pointer(X), pointer(Y),
         )
         self._check(status, method)
         return X, Y
@@ -899,10 +700,3 @@ class CStepper:
         if status != 0:
             message = (self._c["message"](self._inst) or b"").decode("utf-8", "replace")
             raise SolverError(f"C stepper of {self.export.model!r} ({method or self.export.method}): {message}")
-
-
-def _pointer(array: np.ndarray) -> Any:
-    """A C pointer to the data of a C-contiguous float64 array (NULL for an empty one)."""
-    if array.size == 0:
-        return None
-    return array.ctypes.data_as(ctypes.POINTER(ctypes.c_double))

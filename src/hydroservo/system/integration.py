@@ -23,7 +23,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError
 
-__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
+__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "METHODS", "check_method", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
 
 #: Largest output grid [points]: 100 001 points of 20 signals are 16 MB; a million would be gigabytes.
 MAX_POINTS = 100_001
@@ -59,16 +59,38 @@ ACCURACY_PER_RTOL = 100.0
 RTOL_PER_ATOL = 100.0
 
 
-def tolerances(accuracy: float) -> tuple[float, float]:
-    """``(rtol, atol)`` for a wanted relative ``accuracy`` of the signals (of their range); ``1e-4`` gives the
-    defaults, ``(1e-6, 1e-8)``."""
+#: The same per method: the compiled variable-step methods of :mod:`hydroservo.system.native` control each
+#: step's error as CVODES does, but their global error grows more over a run (ros23 is of order 2, and dopri5
+#: rides its stability bound on stiff circuits); 1000 meets the accuracy on the built-in models where 100 does not
+#: (benchmarks/bench_accuracy.py, docs/engine.md).
+ACCURACY_PER_RTOL_OF = {"cvodes": ACCURACY_PER_RTOL, "ros23": 1000.0, "dopri5": 1000.0}
+
+
+def tolerances(accuracy: float, method: str = "cvodes") -> tuple[float, float]:
+    """``(rtol, atol)`` for a wanted relative ``accuracy`` of the signals (of their range) with ``method``;
+    ``1e-4`` gives the defaults of CVODES, ``(1e-6, 1e-8)``."""
     if not _real(accuracy) or not 1e-10 <= accuracy <= 0.1:
         raise ParameterError(
             f"accuracy = {accuracy!r}: expected a relative accuracy between 1e-10 and 0.1 (the default is "
             f"{DEFAULT_ACCURACY:g}, about 0.01 % of each signal's range)"
         )
-    rtol = float(accuracy) / ACCURACY_PER_RTOL
+    rtol = float(accuracy) / ACCURACY_PER_RTOL_OF.get(method, ACCURACY_PER_RTOL)
     return rtol, rtol / RTOL_PER_ATOL
+
+
+#: The integration methods of a run: CVODES, and the compiled variable-step methods of
+#: :mod:`hydroservo.system.native` (the same names as its ``ADAPTIVE_METHODS``).
+METHODS = ("cvodes", "ros23", "dopri5")
+
+
+def check_method(method: str) -> str:
+    """``method`` if it is one of :data:`METHODS`."""
+    if method not in METHODS:
+        raise ParameterError(
+            f"method = {method!r}: expected one of {', '.join(METHODS)} (cvodes: BDF with error control, the default; "
+            "ros23: compiled Rosenbrock 2(3) for stiff circuits; dopri5: compiled Dormand-Prince 5(4), explicit)"
+        )
+    return method
 
 
 def default_max_steps(rtol: float) -> int:
@@ -112,6 +134,7 @@ class SolverSettings:
     def of(
         cls, rtol: float | None = None, atol: float | None = None, accuracy: float | None = None,
         max_steps: int | None = None,
+        method: str = "cvodes",
     ) -> SolverSettings:
         """The settings a caller asked for: an ``accuracy`` (:func:`tolerances`), or ``rtol`` and ``atol``;
         ``atol`` follows ``rtol`` (:data:`RTOL_PER_ATOL`) unless given; nothing given: :data:`DEFAULT_ACCURACY`;
@@ -122,9 +145,9 @@ class SolverSettings:
                     f"accuracy = {accuracy!r} with rtol = {rtol!r}, atol = {atol!r}: give an accuracy or tolerances, "
                     "not both"
                 )
-            rtol, atol = tolerances(accuracy)
+            rtol, atol = tolerances(accuracy, method)
         if rtol is None:
-            rtol, default_atol = tolerances(DEFAULT_ACCURACY)
+            rtol, default_atol = tolerances(DEFAULT_ACCURACY, method)
             atol = default_atol if atol is None else atol
         if atol is None:
             atol = rtol / RTOL_PER_ATOL if _real(rtol) else 1e-8

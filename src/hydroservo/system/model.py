@@ -26,6 +26,7 @@ from hydroservo.system.integration import (
     SolverSettings,
     batch_columns,
     captured,
+    check_method,
     failure_point,
     output_grid,
     translate,
@@ -265,8 +266,9 @@ class Model:
         max_steps: int | None = None,
         initial: str | Mapping[str, float] = "parameters",
         accuracy: float | None = None,
+        method: str = "cvodes",
     ) -> Result:
-        """Integrate with CVODES (BDF, Newton with the exact Jacobian).
+        """Integrate with CVODES (BDF, Newton with the exact Jacobian), or a compiled variable-step method.
 
         Parameters
         ----------
@@ -292,6 +294,12 @@ class Model:
             (:func:`~hydroservo.system.integration.default_max_steps`).
         initial : "parameters", "trim" or mapping
             Initial state, see :meth:`initial_state`.
+        method : str
+            ``"cvodes"`` (default), or one of :data:`~hydroservo.system.native.ADAPTIVE_METHODS` run as compiled
+            C (:mod:`hydroservo.system.native`; built once per model and kept in the user's cache folder):
+            ``"ros23"`` (Rosenbrock 2(3) on the exact Jacobian, for stiff circuits at moderate accuracy) or
+            ``"dopri5"`` (explicit Dormand-Prince 5(4), for circuits that are not stiff). docs/engine.md
+            compares them.
 
         Raises
         ------
@@ -302,7 +310,7 @@ class Model:
             reason and the fastest mode of the model there.
         """
         grid = output_grid(t_end, t_eval, n_points)
-        settings = SolverSettings.of(rtol, atol, accuracy, max_steps)
+        settings = SolverSettings.of(rtol, atol, accuracy, max_steps, method=check_method(method))
         p = self._check_parameters(p)
         x0 = self.initial_state(p, initial, t0=float(grid[0]))
         self._check_initial(x0)
@@ -311,6 +319,8 @@ class Model:
         why = self.unconverged(grid[:1], (x0 / self.nominal)[:, None], p)
         if why is not None:
             raise SolverError(f"integration of {self.name!r} cannot start: {why}")
+        if method != "cvodes":
+            return self._compiled_run(method, grid, x0, p, settings)
         integ = self._integrator(grid, settings)
         start = time.perf_counter()
         found: dict[str, Any] = {}  # the integrator's statistics
@@ -339,6 +349,29 @@ class Model:
         stats["rtol"], stats["atol"] = settings.rtol, settings.atol
         stats["wall_time_s"] = wall
         return self._result(grid, None, p, stats, xf)
+
+    def _compiled_run(
+        self, method: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, settings: SolverSettings
+    ) -> Result:
+        """One run of a compiled variable-step method (:mod:`hydroservo.system.native`)."""
+        from hydroservo.system.native import native
+
+        solver = native(self)
+        start = time.perf_counter()
+        X, stats, failure, t_reached, x_reached = solver.integrate(
+            p, x0, grid, method=method, rtol=settings.rtol, atol=settings.atol, max_steps=settings.max_steps
+        )
+        wall = time.perf_counter() - start
+        if failure is not None:
+            raise SolverError(
+                f"integration of {self.name!r} ({method}, compiled) failed: {failure}. "
+                f"{self._hint(t_reached, x_reached, p)}"
+            )
+        why = self.unconverged(grid, X / self.nominal[:, None], p)
+        if why is not None:
+            raise SolverError(f"integration of {self.name!r}: {why}")
+        stats.update({"method": method, "rtol": settings.rtol, "atol": settings.atol, "wall_time_s": wall})
+        return self._result(grid, X, p, stats)
 
     def _diagnose(
         self,

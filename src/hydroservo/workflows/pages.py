@@ -103,9 +103,15 @@ def solver_table(stats: Mapping[str, Any]) -> Table:
         "nsteps": "steps", "nfevals": "right-hand side evaluations", "nlinsetups": "Jacobians (linear solver setups)",
         "netfails": "error-test failures", "nniters": "Newton iterations", "nncfails": "Newton failures",
         "rtol": "relative tolerance", "atol": "absolute tolerance", "wall_time_s": "integration wall time [s]",
+        "nrejected": "rejected steps", "njevals": "Jacobians",
     }
     rows = [[labels.get(k, k), v] for k, v in stats.items() if isinstance(v, int | float) and math.isfinite(v)]
-    return Table(["statistic", "value"], rows, caption="CVODES (SUNDIALS), BDF with the exact Jacobian")
+    captions = {
+        "ros23": "ros23 (compiled): Rosenbrock 2(3) of Shampine and Reichelt on the exact Jacobian",
+        "dopri5": "dopri5 (compiled): Dormand-Prince 5(4), explicit",
+    }
+    caption = captions.get(str(stats.get("method")), "CVODES (SUNDIALS), BDF with the exact Jacobian")
+    return Table(["statistic", "value"], rows, caption=caption)
 
 
 def warnings_section(warnings: Sequence[str], title: str = "Warnings") -> Section | None:

@@ -65,7 +65,9 @@ class SimulationReport(Report):
         result = self.result
         out = [
             f"simulated {self.system.name!r} for {self.t_end:g} s in {self.wall_time * 1e3:.1f} ms "
-            f"(integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps)"
+            f"(integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps"
+            + (f", {result.stats['method']} compiled" if "method" in result.stats else "")
+            + ")"
         ]
         rows = [(n, s["unit"], s["final"], s["min"], s["max"]) for n, s in result.summary().items()]
         w = max(len(r[0]) for r in rows)
@@ -153,6 +155,9 @@ class Simulate(Workflow):
         Deviation wanted, relative to each signal's range (``1e-3`` or ``"0.1%"``); or ``rtol``.
     rtol : float, optional
         Relative tolerance (absolute: rtol/100).
+    method : str
+        ``cvodes`` (default), or the compiled ``ros23`` or ``dopri5``
+        (:meth:`~hydroservo.system.model.Model.simulate`).
     strict : bool
         Refuse a physically implausible result (:class:`~hydroservo.errors.ImplausibleResultError`).
     write : str or list of str, optional
@@ -170,6 +175,7 @@ class Simulate(Workflow):
     rtol: float | None = None
     strict: bool = False
     write: str | Sequence[str] | None = None
+    method: str = "cvodes"
 
     def __post_init__(self) -> None:
         from hydroservo.units import to_si
@@ -187,8 +193,13 @@ class Simulate(Workflow):
             raise ParameterError(f"{self.name('initial')} {self.initial!r}: expected 'parameters' or 'trim'")
 
     def _check_solver_options(self) -> None:
-        """Refuse rtol, accuracy and points before anything is loaded or built."""
-        from hydroservo.system.integration import MAX_POINTS, SolverSettings
+        """Refuse rtol, accuracy, method and points before anything is loaded or built."""
+        from hydroservo.system.integration import MAX_POINTS, SolverSettings, check_method
+
+        try:
+            check_method(self.method)
+        except ParameterError as exc:
+            raise ParameterError(f"{self.name('method')} {shorten(str(self.method))!r}: {str(exc).split(': ', 1)[-1]}") from None
 
         if self.rtol is not None and self.accuracy is not None:
             raise ParameterError(
@@ -255,7 +266,7 @@ class Simulate(Workflow):
         start = time.perf_counter()
         result = self.system.simulate(
             t_end=self.duration, n_points=self.points, initial=self.initial, rtol=self.rtol,
-            accuracy=self.accuracy_value,
+            accuracy=self.accuracy_value, method=self.method,
         )
         wall = time.perf_counter() - start
         found = _warnings(result)

@@ -626,6 +626,16 @@ int @NAME@_set_parameter(@NAME@_instance *m, int index, double value) {
     return 0;
 }
 
+void @NAME@_set_parameters(@NAME@_instance *m, const double *values) {
+    for (int i = 0; i < @UPPER@_N_PARAMETERS; ++i) m->p[i] = values[i];
+    m->factorised = m->outputs_current = 0;
+}
+
+void @NAME@_set_states(@NAME@_instance *m, const double *x) {
+    for (int i = 0; i < @UPPER@_N_STATES; ++i) m->z[i] = x[i] / @NAME@_nominal[i];
+    m->history = m->outputs_current = 0;
+}
+
 double @NAME@_get_parameter(const @NAME@_instance *m, int index) {
     return index >= 0 && index < @UPPER@_N_PARAMETERS ? m->p[index] : NAN;
 }

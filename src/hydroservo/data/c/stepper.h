@@ -66,6 +66,10 @@ void @NAME@_reset(@NAME@_instance *m);
  * A parameter takes effect from the next step; the states keep their values until @NAME@_reset. */
 int @NAME@_set_parameter(@NAME@_instance *m, int index, double value);
 double @NAME@_get_parameter(const @NAME@_instance *m, int index);
+/* All @UPPER@_N_PARAMETERS parameters at once, in index order. */
+void @NAME@_set_parameters(@NAME@_instance *m, const double *values);
+/* All @UPPER@_N_STATES states at once, in their units (as @NAME@_set_state each). */
+void @NAME@_set_states(@NAME@_instance *m, const double *x);
 /* An input is held constant over each step (zero-order hold) until it is set again. */
 int @NAME@_set_input(@NAME@_instance *m, int index, double value);
 double @NAME@_get_input(const @NAME@_instance *m, int index);

@@ -1,0 +1,114 @@
+"""Compiled models (hydroservo.system.native): simulate(method=...) against CVODES, the disk cache (reuse,
+damage, concurrent builds), and names that reach C only as escaped strings.
+
+Every test builds into a cache folder of its own (``HYDROSERVO_CACHE``), so the user's cache is untouched and
+each build is a real one. Deviations are relative to each signal's range over the run, against CVODES at
+rtol 1e-10 (about 1e-9 of range).
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import textwrap
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import hydroservo as hs
+from hydroservo import components as c
+from hydroservo.errors import ParameterError, SolverError
+from hydroservo.system import native
+from hydroservo.system.native import cache_folder, compiled, compiler, model_sources
+
+try:
+    compiler()
+except ParameterError:
+    pytest.skip("no C compiler", allow_module_level=True)
+
+
+@pytest.fixture(autouse=True)
+def own_cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    folder = tmp_path / "cache"
+    monkeypatch.setenv("HYDROSERVO_CACHE", str(folder))
+    return folder
+
+
+def _spring(name: str = "spring") -> hs.System:
+    s = hs.System(name, t_end=1.0)
+    s.add(c.Mass("load", m=2.0, k_spring=800.0, x0=0.01, incline=0.0, B=4.0))
+    return s
+
+
+@pytest.mark.parametrize("method", ["ros23", "dopri5"])
+def test_simulate_with_a_compiled_method_agrees_with_cvodes(method: str) -> None:
+    """servo-solenoid-cylinder at accuracy 1e-4: every plotted signal within 1e-3 of its range of CVODES'
+    (ros23 deviates most, 5.9e-5 measured), outputs and plausibility checks read as for CVODES."""
+    system = hs.load_model("servo-solenoid-cylinder")
+    ref = system.simulate(rtol=1e-10, atol=1e-12)
+    run = system.simulate(method=method)
+    assert run.stats["method"] == method and run.stats["nsteps"] > 0
+    for name in (n for panel in system.default_panels() for n in panel):
+        assert np.max(np.abs(run[name] - ref[name])) <= 1e-3 * np.ptp(ref[name]), name
+    assert run.warnings == ref.warnings
+
+
+def test_an_unknown_method_is_refused_with_the_choices() -> None:
+    with pytest.raises(ParameterError, match="method = 'euler': expected one of cvodes, ros23, dopri5"):
+        _spring().simulate(method="euler")
+
+
+def test_a_failing_compiled_run_names_the_time_and_the_state() -> None:
+    with pytest.raises(SolverError, match=r"\(dopri5, compiled\) failed: t = .* step budget of 100 steps"):
+        _spring().simulate(method="dopri5", max_steps=100, rtol=1e-12, atol=1e-14)
+
+
+def test_the_cache_is_reused_across_processes_and_a_damaged_entry_is_rebuilt(own_cache: Path) -> None:
+    model = _spring().build()
+    sources = model_sources(model, "hs_cache_test")
+    first = compiled(sources)
+    assert first.parent.parent == own_cache / "c" and cache_folder() == own_cache
+    stamp = first.stat().st_mtime_ns
+    assert compiled(sources) == first and first.stat().st_mtime_ns == stamp  # reused, not rebuilt
+    for damage in (lambda b: b[: len(b) // 2], lambda b: b[:100] + b"\x00" + b[101:]):  # truncated, altered
+        first.write_bytes(damage(first.read_bytes()))
+        again = compiled(sources)
+        assert again == first and (again.parent / "sha256").read_text().strip() == native._digest(again)
+        assert np.isfinite(_spring().simulate(method="ros23")["load.x"]).all()
+    other = model_sources(model, "hs_cache_other")  # other sources: another entry
+    assert compiled(other).parent != first.parent
+
+
+def test_two_processes_building_one_model_at_once_both_succeed(own_cache: Path) -> None:
+    script = textwrap.dedent(
+        """
+        import hydroservo as hs
+        r = hs.load_model("flight-simulator").simulate(method="ros23", n_points=11)
+        print(float(r["y"][-1]))
+        """
+    )
+    runs = [subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, text=True) for _ in range(2)]
+    outputs = [run.communicate(timeout=120)[0] for run in runs]
+    assert [run.returncode for run in runs] == [0, 0]
+    assert outputs[0] == outputs[1] and float(outputs[0])
+    entries = [p for p in (own_cache / "c").iterdir() if not p.name.startswith(".")]
+    assert len(entries) == 1 and not [p for p in (own_cache / "c").iterdir() if p.name.startswith(".build")]
+
+
+def test_hostile_names_reach_c_only_as_strings() -> None:
+    """A model name with a comment terminator, quotes, backslashes, a trigraph and a newline, and an alias
+    described in C syntax (names themselves must be identifiers): the sources compile, nothing of them is
+    code, and the run is the interpreted one's."""
+    hostile = 'evil */ #include "x.h" \\ ??/ \n "quoted" /*'
+    system = _spring(hostile)
+    system.alias("y", "load.x", "m", 'y"); system("rm -rf /"); /* */ with "quotes" \\')
+    sources = model_sources(system.build(), "hs_hostile")
+    assert "#include \"x.h\"" not in sources.files["hs_hostile.c"].replace('\\"', "")
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        run = system.simulate(method="ros23", rtol=1e-8)
+    ref = system.simulate(rtol=1e-10, atol=1e-12)
+    assert "system(" not in sources.files["hs_hostile.c"] and "*/ #include" not in sources.files["hs_hostile.c"]
+    assert np.max(np.abs(run["y"] - ref["load.x"])) < 1000 * 1e-8 * 0.02  # ros23's global error: test_adaptive
