@@ -91,7 +91,7 @@ def test_export_c_replaces_files_only_with_force(tmp_path, cli) -> None:
         (["--step", "1e-4", "--inputs", ","], "--inputs ',': expected comma-separated component inputs"),
         (["--step", "1e-4", "--name", "9lives"], "--name '9lives': expected a C identifier"),
         (["--step", "1e-4", "--set", "load.m=3 bar"], "wrong dimension"),
-        ([], "the following arguments are required: --step"),
+        ([], "--step: missing; expected the fixed step"),
     ],
 )
 def test_export_c_bad_input_exit_2_nothing_written(tmp_path, cli, capsys, monkeypatch, argv, message) -> None:
@@ -111,3 +111,50 @@ def test_export_c_build_without_a_compiler_writes_nothing(tmp_path, cli, monkeyp
     code, _, err = cli("export-c", "flight-simulator", "--step", "1e-4", "--build", "--out", str(tmp_path / "c"))
     assert code == 2 and "C compiler: none found" in err
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.skipif(not _has_compiler(), reason="no C compiler")
+def test_the_standalone_simulator_runs_without_python_and_agrees_with_simulate(tmp_path, cli) -> None:
+    """export-c --main --build: a command that takes parameters (arguments and a file), runs a variable-step
+    method and writes CSV in hydroservo's header form; its result is simulate's with the same method to
+    rounding, and bad input gets exit 2 with the option and value named."""
+    import subprocess
+
+    import numpy as np
+
+    import hydroservo as hs
+
+    out = tmp_path / "sim"
+    code, text, err = cli("export-c", "flight-simulator", "--main", "--build", "--name", "fs", "--out", str(out),
+                          "--json")  # fmt: skip
+    assert code == 0, err
+    program = json.loads(text)["executable"]
+    (tmp_path / "p.txt").write_text("# a parameter file\nload.W = 13344.6648  # 3000 lbf, in N\n\n")
+    csv = tmp_path / "run.csv"
+    done = subprocess.run([program, "--params", str(tmp_path / "p.txt"), "--t-end", "0.5", "--points", "51",
+                           "--method", "ros23", "--accuracy", "1e-4", "--output", str(csv)],
+                          capture_output=True, text=True, timeout=60)  # fmt: skip
+    assert done.returncode == 0, done.stderr
+    header = csv.read_text().splitlines()[0].split(",")
+    assert header[0] == "t [s]" and "y [m]" in header
+    data = np.loadtxt(csv, delimiter=",", skiprows=1)
+    system = hs.load_model("flight-simulator")
+    ref = system.simulate(t_end=0.5, n_points=51, params={"load.W": 13344.6648}, method="ros23")
+    np.testing.assert_allclose(data[:, header.index("y [m]")], ref["y"], rtol=0, atol=1e-12)
+    # refused: an existing output, an unknown parameter, a value that is not a number, an unknown option
+    for args, words in (
+        (["--output", str(csv)], "does not exist yet"),
+        (["load.nothing=1"], "a parameter of the model"),
+        (["load.W=3000 lbf"], "a finite number"),
+        (["--method", "euler"], "ros23 or dopri5"),
+        (["--points", "1"], "from 2 to"),
+    ):
+        done = subprocess.run([program, *args], capture_output=True, text=True, timeout=60)
+        assert done.returncode == 2 and words in done.stderr and "Traceback" not in done.stderr, (args, done.stderr)
+    done = subprocess.run([program, "--help"], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0 and "--accuracy" in done.stdout
+
+
+def test_export_c_needs_a_step_unless_it_writes_the_simulator(tmp_path, cli) -> None:
+    code, _, err = cli("export-c", "flight-simulator", "--out", str(tmp_path / "x"))
+    assert code == 2 and "--step: missing" in err and not (tmp_path / "x").exists()

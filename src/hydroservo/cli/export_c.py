@@ -21,7 +21,7 @@ def export_arguments(args: argparse.Namespace) -> dict[str, Any]:
 def cmd_export_c(args: argparse.Namespace) -> int:
     from hydroservo.workflows.export import ExportC
 
-    return execute(ExportC(**export_arguments(args), build=args.build), args)
+    return execute(ExportC(**export_arguments(args), build=args.build, main=args.main), args)
 
 
 def add_parsers(sub: Any) -> None:
@@ -34,7 +34,8 @@ def add_parsers(sub: Any) -> None:
         "C99 with libc and libm only, no Python on the target. See docs/realtime.md.",
     )
     p.add_argument("model", metavar="NAME_OR_FILE")
-    p.add_argument("--step", required=True, metavar="H", help="the fixed step, e.g. 1e-4 or '0.1 ms' (baked in)")
+    p.add_argument("--step", default=None, metavar="H",
+                   help="the fixed step, e.g. 1e-4 or '0.1 ms' (baked in); required unless --main (default 1e-4 there)")
     p.add_argument("--method", choices=["rk4", "bdf2"], default="rk4",
                    help="rk4 (explicit, default) or bdf2 (implicit, Newton with the exact Jacobian: stiff circuits, "
                    "longer steps)")
@@ -44,6 +45,9 @@ def add_parsers(sub: Any) -> None:
                    help='set a parameter or option before export (the C defaults), with units: --set "load.m=60 kg"')
     p.add_argument("--name", default=None, metavar="ID",
                    help="the C identifier that starts every symbol and file (default: from the model's name)")
+    p.add_argument("--main", action="store_true",
+                   help="also write the standalone simulator main.c: a command that reads parameters, runs a "
+                   "variable-step method (ros23 or dopri5) and writes CSV, no Python needed (built with --build)")
     p.add_argument("--build", action="store_true",
                    help="also compile a shared library into the folder with the system's C compiler (CC or cc)")
     add_output_options(p, "hydroservo-NAME-c")

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
+from hydroservo.errors import ParameterError
 from hydroservo.workflows.base import Progress, Report, Workflow, load_with_sets, safe_name
 
 if TYPE_CHECKING:
@@ -75,7 +76,7 @@ class _CodeExport(Workflow):
 
     model: str | Path | System
     sets: Sequence[str] | Mapping[str, Any] | None = None
-    step: float | str = 1e-4
+    step: float | str | None = 1e-4
     method: str = "rk4"
     inputs: Sequence[str] = ()
     c_name: str | None = None
@@ -84,6 +85,13 @@ class _CodeExport(Workflow):
     def __post_init__(self) -> None:
         from hydroservo.codegen.c import check_inputs, check_name, check_step
 
+        if self.step is None:
+            if not getattr(self, "main", False):
+                raise ParameterError(
+                    f"{self.name('step')}: missing; expected the fixed step of the real-time stepper, e.g. 1e-4 or "
+                    "'0.1 ms' (only the standalone simulator, --main, runs without one: its solvers choose their steps)"
+                )
+            self.step = 1e-4
         self.h = check_step(self.step, what=self.name("step"))
         self.identifier = check_name(self.c_name, what=self.name("c_name")) if self.c_name is not None else None
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
@@ -105,7 +113,9 @@ class CReport(Report):
     def lines(self) -> list[str]:
         e = self.export
         out = [
-            f"exported {e.model!r} as C ({e.method}, step {e.step:g} s) to {e.directory}: parameters "
+            f"exported {e.model!r} as C ({e.method}, step {e.step:g} s"
+            + (", with the standalone simulator main.c" if e.main else "")
+            + f") to {e.directory}: parameters "
             f"{len(e.parameters)}, inputs {len(e.inputs)}, states {len(e.states)}, outputs {len(e.outputs)}",
             f"  API: {e.directory / f'{e.name}.h'}; build: cd {e.directory} && cc -O2 -c *.c (or make)",
         ]
@@ -113,6 +123,8 @@ class CReport(Report):
             out.append(f"  inputs (each added to what drives it in the system): {', '.join(e.inputs)}")
         if self.built:
             out.append(f"  built: {e.library}")
+            if e.main:
+                out.append(f"  simulator: {e.executable} (--help; e.g. {e.executable} --points 301 > run.csv)")
         return out
 
     def to_dict(self) -> dict[str, Any]:
@@ -140,17 +152,21 @@ class CReport(Report):
             report["newton_tolerance"] = e.newton_tolerance
         if e.library.name in e.files:
             report["library"] = str(e.library)
+        if e.main and e.executable.name in e.files:
+            report["executable"] = str(e.executable)
         return report
 
 
 @dataclass
 class ExportC(_CodeExport):
     """``model`` as C code with a fixed-step stepper (``method`` rk4 or bdf2, step ``step``) and a C API; the host
-    sets ``inputs`` (component inputs); ``build`` also compiles a shared library (docs/realtime.md)."""
+    sets ``inputs`` (component inputs); ``main`` adds the standalone simulator (``main.c``); ``build`` also
+    compiles a shared library (and the simulator) (docs/realtime.md)."""
 
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "c_name": "--name"}
 
     build: bool = False
+    main: bool = False
 
     def folder(self) -> str:
         return f"hydroservo-{safe_name(self.system.name)}-c"
@@ -160,7 +176,7 @@ class ExportC(_CodeExport):
 
         directory = folder if folder is not None else Path(self.identifier or c_identifier(self.system.name))
         export = export_c(self.system, directory, step=self.h, method=self.method, inputs=self.targets,
-                          name=self.identifier, force=self.force, build=self.build)
+                          name=self.identifier, force=self.force, build=self.build, main=self.main)
         return CReport(export, self.build)
 
 
