@@ -174,33 +174,49 @@ class _Functions:
 
     functions: list[ca.Function]
     algebraic: list[str]
+    n_derived: int = 0
 
 
 def _functions(model: Model, cid: str, method: str) -> _Functions:
-    """``f``, ``jac`` (bdf2, ros23), ``dfdt`` (ros23), ``y``, ``z0`` and ``conv`` (algebraic unknowns) of ``model``
-    on z = x / x_nom.
+    """``f``, ``jac`` (bdf2, ros23), ``dfdt`` (ros23), ``y``, ``conv`` (algebraic unknowns) of ``model`` on
+    z = x / x_nom and the derived parameters q, ``q(p)`` and ``z0(p)``.
 
-    The unknowns' last Newton corrections come from the assembly ``model`` was compiled from
-    (:attr:`~hydroservo.system.model.Model.assembly`). Every output is dense: the stepper reads whole vectors
-    and column-major matrices.
+    Every part of the rates, their derivatives, the outputs and the corrections that depends on the
+    parameters alone (``W sin(incline)``, ``q_nom / sqrt(p_nom)``, ...) is taken out into ``q(p)``
+    (CasADi's ``extract_parametric``), which the C code evaluates once per change of the parameters
+    rather than at every evaluation: about a tenth of the arithmetic of a hydraulic model, and most of
+    its transcendental functions of parameters. The states are scaled by multiplying with the reciprocals of
+    their nominal magnitudes. The unknowns' last Newton corrections come from the assembly ``model`` was
+    compiled from (:attr:`~hydroservo.system.model.Model.assembly`). Every output is dense: the stepper reads
+    whole vectors and column-major matrices.
     """
     t, z, p = ca.SX.sym("t"), ca.SX.sym("z", model.nx), ca.SX.sym("p", model.np)
     nominal = ca.DM(model.nominal)
     x = z * nominal
-    rates = model.f(t, x, p) / nominal
-    functions = [ca.Function(f"{cid}_f", [t, z, p], [ca.densify(rates)])]
-    # the Jacobian (bdf2, ros23) and the rates' time derivative (ros23): the adaptive solvers are in every export
-    functions.append(ca.Function(f"{cid}_jac", [t, z, p], [ca.densify(ca.jacobian(rates, z))]))
-    functions.append(ca.Function(f"{cid}_dfdt", [t, z, p], [ca.densify(ca.jacobian(rates, t))]))
-    functions.append(ca.Function(f"{cid}_y", [t, z, p], [ca.densify(model.outputs(t, x, p))]))
-    functions.append(ca.Function(f"{cid}_z0", [p], [ca.densify(model.x0(p) / nominal)]))
+    rates = model.f(t, x, p) * ca.DM(1.0 / model.nominal)
+    parts = {
+        "f": rates,
+        # the Jacobian (bdf2, ros23) and the rates' time derivative (ros23): the adaptive solvers are in every export
+        "jac": ca.jacobian(rates, z),
+        "dfdt": ca.jacobian(rates, t),
+        "y": model.outputs(t, x, p),
+    }
     algebraic: list[str] = []
     a = model.assembly
     if a.convergence is not None:
         algebraic, correction = list(a.convergence[0]), a.convergence[1]
-        conv = ca.Function("conv", [a.t, a.x, a.p], [correction])
-        functions.append(ca.Function(f"{cid}_conv", [t, z, p], [ca.densify(conv(t, x, p))]))
-    return _Functions(functions, algebraic)
+        parts["conv"] = ca.Function("conv", [a.t, a.x, a.p], [correction])(t, x, p)
+    dense = {k: ca.densify(v) for k, v in parts.items()}
+    flat, symbols, values = ca.extract_parametric(ca.vertcat(*(ca.vec(v) for v in dense.values())), p)
+    q = ca.vertcat(*symbols) if symbols else ca.SX.sym("q", 0)
+    functions, start = [], 0
+    for key, value in dense.items():
+        size = value.numel()
+        functions.append(ca.Function(f"{cid}_{key}", [t, z, p, q], [ca.reshape(flat[start : start + size], value.shape)]))
+        start += size
+    functions.append(ca.Function(f"{cid}_q", [p], [ca.densify(ca.vertcat(*values) if values else ca.SX(0, 1))]))
+    functions.append(ca.Function(f"{cid}_z0", [p], [ca.densify(model.x0(p) / nominal)]))
+    return _Functions(functions, algebraic, q.numel())
 
 
 def _data_block(cid: str, upper: str, model: Model, method: str, tolerance: float, functions: _Functions) -> str:
@@ -214,6 +230,7 @@ def _data_block(cid: str, upper: str, model: Model, method: str, tolerance: floa
         f"#define {upper}_RATE {_c_number(NEWTON_RATE)}",
         f"#define {upper}_MAX_ITERATIONS {NEWTON_ITERATIONS}",
         f"#define {upper}_N_ALGEBRAIC {len(functions.algebraic)}",
+        f"#define {upper}_N_DERIVED {functions.n_derived}",
         f"#define {upper}_ALGEBRAIC_TOLERANCE {_c_number(ALGEBRAIC_TOLERANCE)}",
         *(f"#define {upper}_SZ_{what.upper()} {size}" for what, size in sizes.items()),
         "",

@@ -6,7 +6,8 @@
  *     @NAME@_f(t, z, p) = dz/dt,  @NAME@_jac(t, z, p) = d(dz/dt)/dz (dense, column-major),
  *     @NAME@_y(t, z, p) = outputs,  @NAME@_z0(p) = initial scaled states,
  *     @NAME@_conv(t, z, p) = last Newton correction of each algebraic unknown (models that have some),
- * with p the parameters followed by the inputs.
+ * with p the parameters followed by the inputs; each also takes q = @NAME@_q(p), the parts of its
+ * expressions that depend on the parameters alone, evaluated once per change of p (@NAME@_call).
  *
  * rk4: the classical fourth-order Runge-Kutta method.
  * bdf2: the two-step backward differentiation formula at the fixed step h,
@@ -62,6 +63,8 @@ struct @NAME@_instance {
     long long iterations, jacobians;
     long long accepted, rejected, evaluations; /* @NAME@_integrate, since the reset */
     int outputs_current; /* y holds the outputs of the current time, states and inputs */
+    int q_current;       /* q holds the derived parameters of the current parameters and inputs */
+    double q[@UPPER@_AT_LEAST_1(@UPPER@_N_DERIVED)]; /* parameter-only parts of the model's expressions */
     int history;         /* bdf2: z_prev holds the state one step back */
     int factorised;      /* bdf2: lu holds I - gamma J for gamma = lu_gamma */
     double lu_gamma;
@@ -87,9 +90,16 @@ typedef int (*@NAME@_function)(const casadi_real **, casadi_real **, casadi_int 
 
 static void @NAME@_call(@NAME@_instance *m, @NAME@_function fn, const double *t, const double *z, double *out) {
     if (t != NULL) {
+        if (!m->q_current) { /* the derived parameters, once per change of the parameters or inputs */
+            m->arg[0] = m->p;
+            m->res[0] = m->q;
+            @NAME@_q(m->arg, m->res, m->iw, m->w, 0);
+            m->q_current = 1;
+        }
         m->arg[0] = t;
         m->arg[1] = z;
         m->arg[2] = m->p;
+        m->arg[3] = m->q;
     } else {
         m->arg[0] = m->p;
     }
@@ -598,6 +608,7 @@ size_t @NAME@_instance_size(void) {
     if (m == NULL) return NULL;
     memset(m, 0, sizeof *m);
     for (int i = 0; i < @UPPER@_N_PARAMETERS; ++i) m->p[i] = @NAME@_parameter_defaults[i];
+    m->q_current = 0;
     @NAME@_reset(m);
     return m;
 }
@@ -622,13 +633,13 @@ void @NAME@_reset(@NAME@_instance *m) {
 int @NAME@_set_parameter(@NAME@_instance *m, int index, double value) {
     if (index < 0 || index >= @UPPER@_N_PARAMETERS) return -1;
     m->p[index] = value;
-    m->factorised = m->outputs_current = 0;
+    m->factorised = m->outputs_current = m->q_current = 0;
     return 0;
 }
 
 void @NAME@_set_parameters(@NAME@_instance *m, const double *values) {
     for (int i = 0; i < @UPPER@_N_PARAMETERS; ++i) m->p[i] = values[i];
-    m->factorised = m->outputs_current = 0;
+    m->factorised = m->outputs_current = m->q_current = 0;
 }
 
 void @NAME@_set_states(@NAME@_instance *m, const double *x) {
@@ -643,7 +654,7 @@ double @NAME@_get_parameter(const @NAME@_instance *m, int index) {
 int @NAME@_set_input(@NAME@_instance *m, int index, double value) {
     if (index < 0 || index >= @UPPER@_N_INPUTS) return -1;
     m->p[@UPPER@_N_PARAMETERS + index] = value;
-    m->outputs_current = 0;
+    m->outputs_current = m->q_current = 0;
     return 0;
 }
 
