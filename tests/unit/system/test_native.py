@@ -112,3 +112,20 @@ def test_hostile_names_reach_c_only_as_strings() -> None:
     ref = system.simulate(rtol=1e-10, atol=1e-12)
     assert "system(" not in sources.files["hs_hostile.c"] and "*/ #include" not in sources.files["hs_hostile.c"]
     assert np.max(np.abs(run["y"] - ref["load.x"])) < 1000 * 1e-8 * 0.02  # ros23's global error: test_adaptive
+
+
+def test_a_batch_with_a_compiled_method_is_its_runs_on_threads() -> None:
+    """Each run of a compiled batch is the single run with the same method (the same C code, to the last bit),
+    on two threads as on one; a run that fails keeps its reason and leaves the others."""
+    system = _spring()
+    masses = [1.0, 2.0, 3.0]
+    one = system.batch({"load.m": masses}, 1.0, n_points=51, method="dopri5", threads=1)
+    two = system.batch({"load.m": masses}, 1.0, n_points=51, method="dopri5", threads=2)
+    for k, m in enumerate(masses):
+        single = system.simulate(1.0, params={"load.m": m}, n_points=51, method="dopri5")
+        np.testing.assert_array_equal(one["load.x"][k], single["load.x"])
+        np.testing.assert_array_equal(two["load.x"][k], single["load.x"])
+    assert one.stats["method"] == "dopri5" and not one.failed
+    starved = system.batch({"load.m": masses}, 1.0, n_points=51, method="dopri5", max_steps=100, rtol=1e-12)
+    assert sorted(starved.failed) == [0, 1, 2] and "step budget" in starved.failed[0]
+    assert np.isnan(starved["load.x"]).all()
