@@ -66,6 +66,8 @@ def test_export_fmu_replaces_a_file_only_with_force(tmp_path, cli) -> None:
         (["--inputs", "valve.q"], "--inputs 'valve.q': 'valve' has no input 'q'; expected one of"),
         (["--name", "9lives"], "--name '9lives': expected a C identifier"),
         (["--set", "load.m=3 bar"], "wrong dimension"),
+        (["--accuracy", "1e-3"], "--accuracy 1e-3: only for a variable-step co-simulation method"),
+        (["--method", "ros23", "--accuracy", "2"], "--accuracy 2: expected a relative accuracy between"),
     ],
 )
 def test_export_fmu_bad_input_exit_2_nothing_written(tmp_path, cli, capsys, monkeypatch, argv, message) -> None:

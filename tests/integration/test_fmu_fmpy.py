@@ -340,3 +340,22 @@ def test_an_fmu_state_goes_back_and_is_serialised(flight) -> None:
     fmu.freeFMUstate(again)
     fmu.terminate()
     fmu.freeInstance()
+
+
+@pytest.mark.parametrize("method", ["ros23", "dopri5"])
+def test_co_simulation_with_a_variable_step_method(method: str, tmp_path: Path) -> None:
+    """--method ros23/dopri5: Co-Simulation with error control over any communication step (here 7 ms and 3 ms,
+    not multiples of anything), within 1e-3 of range of the engine on the flight simulator's main signals at
+    accuracy 1e-4; an unknown method is refused."""
+    system = hs.load_model("flight-simulator")
+    export = export_fmu(system, tmp_path, method=method, accuracy=1e-4)
+    assert validate_fmu(str(export.path)) == []
+    signals = _main_signals(system)
+    for interval in (7e-3, 3e-3):
+        got = simulate_fmu(str(export.path), fmi_type="CoSimulation", stop_time=1.4, output_interval=interval,
+                           output=signals)  # fmt: skip
+        ref = system.simulate(t_eval=got["time"], rtol=1e-10, atol=1e-12)
+        for name in signals:
+            assert np.max(np.abs(got[name] - ref[name])) <= 1e-3 * np.ptp(ref[name]), (interval, name)
+    with pytest.raises(ParameterError, match="expected one of rk4, bdf2, dopri5, ros23"):
+        export_fmu(system, tmp_path, method="euler")

@@ -37,10 +37,31 @@ def test_the_readme_has_commands() -> None:
     assert len(commands) >= 15 and commands[0].startswith("hydroservo examples")
 
 
+def _needs_a_compiler(line: str) -> bool:
+    """The command compiles C: a compiled method, or an export built."""
+    return "--build" in line or "--method dopri5" in line or "--method ros23" in line
+
+
+def _has_compiler() -> bool:
+    from hydroservo.errors import ParameterError
+    from hydroservo.system.native import compiler
+
+    try:
+        compiler()
+    except ParameterError:
+        return False
+    return True
+
+
 @pytest.mark.slow
 def test_every_readme_command_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every command runs (those that compile C only where there is a C compiler)."""
     monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("HYDROSERVO_CACHE", str(tmp_path / "cache"))
+    compiles = _has_compiler()
     for line in readme_commands():
+        if _needs_a_compiler(line) and not compiles:
+            continue
         for part in line.split("&&"):
             argv = shlex.split(part.strip())
             if argv[0] == "cd":

@@ -15,7 +15,7 @@ __all__ = ["add_parsers"]
 def cmd_export_fmu(args: argparse.Namespace) -> int:
     from hydroservo.workflows.export import ExportFmu
 
-    return execute(ExportFmu(**export_arguments(args), binary=not args.sources_only), args)
+    return execute(ExportFmu(**export_arguments(args), binary=not args.sources_only, accuracy=args.accuracy), args)
 
 
 def add_parsers(sub: Any) -> None:
@@ -31,8 +31,13 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("model", metavar="NAME_OR_FILE")
     p.add_argument("--step", default="1e-4", metavar="H",
                    help="co-simulation: the fixed step of the stepper inside, e.g. 1e-4 or '0.1 ms' (default 1e-4 s)")
-    p.add_argument("--method", choices=["rk4", "bdf2"], default="rk4",
-                   help="co-simulation: rk4 (explicit, default) or bdf2 (implicit, for stiff circuits)")
+    p.add_argument("--method", choices=["rk4", "bdf2", "ros23", "dopri5"], default="rk4",
+                   help="co-simulation: the fixed-step rk4 (explicit, default) or bdf2 (implicit, for stiff circuits), "
+                   "or a variable-step method with error control, ros23 (stiff circuits) or dopri5, that takes any "
+                   "communication step")
+    p.add_argument("--accuracy", default=None, metavar="A",
+                   help="co-simulation with ros23 or dopri5: the deviation wanted, relative to each signal's range, "
+                   "e.g. 1e-3 or 0.1%% (default 1e-4)")
     p.add_argument("--inputs", default=None, metavar="NAME,...",
                    help="component inputs the host sets, e.g. valve.u: each is added to what drives it in the system")
     p.add_argument("--set", action="append", default=[], metavar="PARAM=VALUE",

@@ -27,8 +27,10 @@ exact.
 integrator steps it, as CVODES does inside hydroservo). **Co-Simulation**
 steps it with the stepper's fixed-step method (``rk4`` by default; ``bdf2``
 for stiff circuits, but not across a right-hand side that jumps, docs/fmu.md)
-at the step chosen at export; a communication step must be a whole number of
-those steps, and co-simulation starts at t = 0. The model has no events, no integer or boolean variables.
+at the step chosen at export, a communication step being a whole number of
+those steps; or, with ``method="ros23"`` or ``"dopri5"``, with a variable-step
+method with error control (docs/engine.md, "Compiled solvers") to the
+accuracy chosen at export, over any communication step. Co-simulation starts at t = 0. The model has no events, no integer or boolean variables.
 
 An input (``valve.u``) is added to whatever drives it inside the system, as
 in :func:`~hydroservo.codegen.c.export_c`.
@@ -55,6 +57,7 @@ import casadi as ca
 import numpy as np
 
 from hydroservo.codegen.c import (
+    ADAPTIVE_METHODS,
     METHODS,
     NEWTON_TOLERANCE,
     c_identifier,
@@ -409,6 +412,16 @@ def _documentation(
             f"<h2>{title}</h2>\n<table>\n{head}{extra}<th>description</th></tr>\n{rows(kind)}\n</table>"
         )
     title = html.escape(system.name)
+    if method in ADAPTIVE_METHODS:
+        cosim = (
+            f"a variable-step {html.escape(method)} solver with error control inside: any communication step; a "
+            "co-simulation starts at t = 0."
+        )
+    else:
+        cosim = (
+            f"a fixed-step {html.escape(method)} stepper inside, with the step {step:g} s: a communication step "
+            "must be a whole number of those steps, and a co-simulation starts at t = 0."
+        )
     return f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>{title}</title>
 <style>body{{font-family:sans-serif;max-width:70em}} td,th{{padding:2px 8px;text-align:left}}
@@ -421,8 +434,7 @@ Co-Simulation. Model identifier <code>{name}</code>.</p>
 <ul>
 <li><b>Model Exchange</b>: the host's integrator steps the model in continuous time. The model has no events.
 Use a stiff integrator (BDF, e.g. CVODE) with a relative tolerance of about 1e-6.</li>
-<li><b>Co-Simulation</b>: a fixed-step {html.escape(method)} stepper inside, with the step {step:g} s: a
-communication step must be a whole number of those steps, and a co-simulation starts at t = 0.</li>
+<li><b>Co-Simulation</b>: {cosim}</li>
 <li>Parameters marked <i>tunable</i> may change between steps (the states keep their values); <i>fixed</i> ones set
 only the initial states and are set before the initialisation ends.</li>
 <li>An input is added to whatever drives it inside the model (zero: the model as exported).</li>
@@ -489,6 +501,7 @@ def export_fmu(
     newton_tolerance: float = NEWTON_TOLERANCE,
     binary: bool = True,
     force: bool = False,
+    accuracy: float = DEFAULT_ACCURACY,
 ) -> FmuExport:
     """Write ``system`` as the FMI 2.0 FMU ``NAME.fmu`` (Model Exchange and Co-Simulation) into ``directory``.
 
@@ -500,8 +513,13 @@ def export_fmu(
         The folder to write to; a file of the same name is replaced only with ``force``.
     step : float or str
         Co-Simulation: the fixed step [s] of the stepper inside (default 0.1 ms).
-    method : "rk4" or "bdf2"
-        Co-Simulation: the stepper's method (default ``rk4``; ``bdf2``, implicit, for stiff circuits).
+    method : "rk4", "bdf2", "ros23" or "dopri5"
+        Co-Simulation: the fixed-step stepper's method (default ``rk4``; ``bdf2``, implicit, for stiff circuits),
+        or a variable-step method with error control (``ros23`` for stiff circuits, ``dopri5``), which takes any
+        communication step and ignores ``step``.
+    accuracy : float
+        ``ros23``, ``dopri5``: the deviation wanted, relative to each signal's range (tolerances as
+        :func:`~hydroservo.system.integration.tolerances` sets them for the method; default 1e-4).
     inputs : sequence of str
         Component inputs (``"valve.u"``) the host sets; each is added to what drives it in the system.
     name : str, optional
@@ -520,9 +538,13 @@ def export_fmu(
     ModelError
         If the system has no states, or two of its variables share a name.
     """
-    if method not in METHODS:
-        raise ParameterError(f"method {shorten(str(method))!r}: expected one of {', '.join(METHODS)}")
+    if method not in (*METHODS, *ADAPTIVE_METHODS):
+        raise ParameterError(
+            f"method {shorten(str(method))!r}: expected one of {', '.join((*METHODS, *ADAPTIVE_METHODS))}"
+        )
     h = check_step(step)
+    adaptive = method in ADAPTIVE_METHODS
+    rtol, atol = tolerances(accuracy, method) if adaptive else tolerances(DEFAULT_ACCURACY)
     cid = c_identifier(system.name) if name is None else check_name(name)
     targets = check_inputs(system, inputs)
     filename = f"{cid}.fmu"
@@ -537,7 +559,7 @@ def export_fmu(
     with tempfile.TemporaryDirectory(prefix="hydroservo-fmu-") as tmp:
         build = Path(tmp)
         export = export_c(
-            system, build / "sources", step=h, method=method, inputs=targets, name=cid,
+            system, build / "sources", step=h, method="rk4" if adaptive else method, inputs=targets, name=cid,
             newton_tolerance=newton_tolerance,
         )  # fmt: skip
         model = Model(assemble(system, perturbed=targets))
@@ -559,7 +581,9 @@ def export_fmu(
         description = description.replace(placeholder, guid)
         data = _fmu_data(cid, guid, system, export.parameters, structure.tunable, fwd)
         values = {"NAME": cid, "UPPER": cid.upper(), "MODEL": system.name.replace("*/", "* /"),
-                  "VERSION": __version__, "METHOD": method, "STEP": repr(h), "FMU_DATA": data}  # fmt: skip
+                  "VERSION": __version__, "METHOD": method, "STEP": repr(h), "FMU_DATA": data,
+                  "FMU_ADAPTIVE": str(ADAPTIVE_METHODS.index(method) + 1 if adaptive else 0),
+                  "FMU_RTOL": repr(rtol), "FMU_ATOL": repr(atol)}  # fmt: skip
         interface = fill_template("fmi2.c", values)
         (build / "sources" / f"{cid}_fmi2.c").write_text(interface, encoding="utf-8")
         members: dict[str, Path] = {"modelDescription.xml": build / "modelDescription.xml"}

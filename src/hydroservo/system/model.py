@@ -1052,17 +1052,17 @@ class Model:
 
         solver = native(self)
 
-        def one(i: int) -> tuple[int, np.ndarray, str | None, float]:
-            Xi, _, failure, t_reached, _ = solver.integrate(
+        def one(i: int) -> tuple[int, np.ndarray, str | None]:
+            Xi, _, failure, _, _ = solver.integrate(
                 P[:, i], X0[:, i], grid, method=method, rtol=settings.rtol, atol=settings.atol,
                 max_steps=settings.max_steps,
             )  # fmt: skip
-            return i, Xi, failure, t_reached
+            return i, Xi, failure
 
         with ThreadPoolExecutor(max_workers=max(1, min(nthreads, len(runs)))) as pool:
             finished = list(pool.map(one, runs))
         good = []
-        for i, Xi, failure, t_reached in finished:
+        for i, Xi, failure in finished:
             if failure is not None:
                 failures[i] = f"{method}: {failure}"
             else:

@@ -199,7 +199,9 @@ class FmuReport(Report):
             f"exported {e.model!r} as an FMI 2.0 FMU (Model Exchange and Co-Simulation) to {e.path}: {built}; "
             f"parameters {len(e.parameters)} ({sum(e.tunable)} tunable), inputs {len(e.inputs)}, states "
             f"{len(e.states)}, outputs {len(e.outputs)}",
-            f"  co-simulation: {e.method}, fixed step {e.step:g} s (communication steps a whole number of it)",
+            (f"  co-simulation: {e.method}, variable steps with error control (any communication step)"
+             if e.method in ("ros23", "dopri5")
+             else f"  co-simulation: {e.method}, fixed step {e.step:g} s (communication steps a whole number of it)"),
         ]
         renamed = [v for v in e.variables if v.name != v.signal and v.kind != "derivative"]
         if renamed:
@@ -240,6 +242,29 @@ class ExportFmu(_CodeExport):
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "c_name": "--name", "folder": "--out"}
 
     binary: bool = True
+    accuracy: float | str | None = None
+
+    def __post_init__(self) -> None:
+        from hydroservo.codegen.c import ADAPTIVE_METHODS, METHODS
+        from hydroservo.system.integration import DEFAULT_ACCURACY, tolerances
+        from hydroservo.workflows.simulate import accuracy_of
+
+        if self.method not in (*METHODS, *ADAPTIVE_METHODS):
+            raise ParameterError(
+                f"{self.name('method')} {self.method!r}: expected one of {', '.join((*METHODS, *ADAPTIVE_METHODS))}"
+            )
+        value = accuracy_of(self.accuracy, self.name("accuracy"))
+        if value is not None and self.method not in ADAPTIVE_METHODS:
+            raise ParameterError(
+                f"{self.name('accuracy')} {self.accuracy}: only for a variable-step co-simulation method (ros23 or "
+                f"dopri5); {self.method} steps at the fixed {self.name('step')}"
+            )
+        self.accuracy_value = DEFAULT_ACCURACY if value is None else value
+        try:
+            tolerances(self.accuracy_value, self.method)
+        except ParameterError as exc:
+            raise ParameterError(f"{self.name('accuracy')} {self.accuracy}: {str(exc).split(': ', 1)[-1]}") from None
+        super().__post_init__()
 
     def folder(self) -> str:
         return "."
@@ -253,5 +278,6 @@ class ExportFmu(_CodeExport):
         from hydroservo.codegen.fmu import export_fmu
 
         export = export_fmu(self.system, folder if folder is not None else Path("."), step=self.h, method=self.method,
-                            inputs=self.targets, name=self.identifier, binary=self.binary, force=self.force)
+                            inputs=self.targets, name=self.identifier, binary=self.binary, force=self.force,
+                            accuracy=self.accuracy_value)
         return FmuReport(export)

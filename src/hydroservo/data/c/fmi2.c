@@ -88,6 +88,11 @@ typedef struct {
  * initialisation (tunable) and its range (NaN: none; the bounds excluded where the flag says so). */
 @FMU_DATA@
 
+/* Co-Simulation: 0 for the fixed-step stepper, else the method of @NAME@_integrate, and its tolerances. */
+#define FMU_ADAPTIVE @FMU_ADAPTIVE@
+#define FMU_RTOL @FMU_RTOL@
+#define FMU_ATOL @FMU_ATOL@
+
 typedef enum { INSTANTIATED, INITIALIZATION, RUNNING, TERMINATED, FAILED } Phase;
 
 typedef struct {
@@ -687,6 +692,25 @@ FMI2_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunication
     (void)noSetFMUStatePriorToCurrentPoint;
     if (fmu_refused_cs(fmu, "fmi2DoStep", PHASE_BIT(RUNNING))) return fmi2Error;
     const double h = @UPPER@_STEP, now = @NAME@_time(fmu->model);
+#if FMU_ADAPTIVE
+    /* A variable-step method with error control inside: any communication step, from the FMU's time. */
+    (void)h;
+    if (!(fabs(currentCommunicationPoint - now) <= 1e-9 * fmax(1.0, fabs(now)))) {
+        return fmu_error(fmu, "fmi2DoStep", "currentCommunicationPoint = %.12g s: expected the FMU's time, %.12g s",
+                         currentCommunicationPoint, now);
+    }
+    if (!(communicationStepSize > 0.0) || !isfinite(communicationStepSize)) {
+        return fmu_error(fmu, "fmi2DoStep", "communicationStepSize = %.9g s: expected a positive, finite step",
+                         communicationStepSize);
+    }
+    {
+        double times[2] = {now, now + communicationStepSize};
+        if (@NAME@_integrate(fmu->model, FMU_ADAPTIVE, FMU_RTOL, FMU_ATOL, 0.0, 100000000L, 2, times, NULL, NULL)) {
+            fmu->phase = FAILED;
+            return fmu_error(fmu, "fmi2DoStep", "%s", @NAME@_message(fmu->model));
+        }
+    }
+#else
     /* The FMU's time is a whole number of steps, without rounding. A host that sums its communication steps
      * (t += H) drifts from it by rounding that grows as t squared (1e-10 s after 100 s at 1 ms): its time is
      * taken as the FMU's within half a step, and the step to a thousandth of a step. */
@@ -707,6 +731,7 @@ FMI2_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunication
             return fmu_error(fmu, "fmi2DoStep", "%s", @NAME@_message(fmu->model));
         }
     }
+#endif
     fmu_changed(fmu);
     return fmi2OK;
 }
