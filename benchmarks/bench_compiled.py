@@ -13,12 +13,12 @@ Run: ``python benchmarks/bench_compiled.py``
 from __future__ import annotations
 
 import os
-import statistics
 import tempfile
 import time
 import warnings
 
 import numpy as np
+from bench_realtime import median_time
 
 import hydroservo as hs
 from hydroservo.system import native
@@ -26,14 +26,6 @@ from hydroservo.system import native
 ACCURACIES = (1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5, 3e-6, 1e-6)
 METHODS = ("cvodes", "ros23", "dopri5")
 
-
-def median_time(fn, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def equal_accuracy(repeat: int) -> dict[str, dict[float, tuple[float, float]]]:

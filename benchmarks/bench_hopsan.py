@@ -32,11 +32,11 @@ import statistics
 import subprocess
 import sys
 import tempfile
-import time
 import warnings
 from pathlib import Path
 
 import numpy as np
+from bench_realtime import median_time
 
 import hydroservo as hs
 from hydroservo.codegen.c import CStepper, export_c
@@ -53,14 +53,6 @@ HOPSAN_STEPS = (1e-4, 3e-5, 1e-5, 3e-6, 1e-6)
 TARGETS = [("x within 3e-2", ("x",), 3e-2), ("x within 1e-3", ("x",), 1e-3), ("x within 1e-4", ("x",), 1e-4),
            ("x, v, pA within 1e-3", ("x", "v", "pA"), 1e-3)]  # fmt: skip
 
-
-def median_time(fn, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        fn()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def reference() -> dict[str, np.ndarray]:
