@@ -350,13 +350,23 @@ class Model:
         stats["wall_time_s"] = wall
         return self._result(grid, None, p, stats, xf)
 
+    def _compiled_solvers(self, method: str) -> Any:
+        """The compiled solvers of this model (:func:`hydroservo.system.native.native`), or why not."""
+        from hydroservo.system.native import native
+
+        try:
+            return native(self)
+        except ParameterError as exc:
+            raise ParameterError(
+                f"method = {method!r} runs the model compiled to C, which needs a C compiler: {exc}. "
+                "method='cvodes' needs none"
+            ) from None
+
     def _compiled_run(
         self, method: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, settings: SolverSettings
     ) -> Result:
         """One run of a compiled variable-step method (:mod:`hydroservo.system.native`)."""
-        from hydroservo.system.native import native
-
-        solver = native(self)
+        solver = self._compiled_solvers(method)
         start = time.perf_counter()
         X, stats, failure, t_reached, x_reached = solver.integrate(
             p, x0, grid, method=method, rtol=settings.rtol, atol=settings.atol, max_steps=settings.max_steps
@@ -1048,9 +1058,7 @@ class Model:
         scaled states, as :meth:`_solve_runs` adds them."""
         from concurrent.futures import ThreadPoolExecutor
 
-        from hydroservo.system.native import native
-
-        solver = native(self)
+        solver = self._compiled_solvers(method)
 
         def one(i: int) -> tuple[int, np.ndarray, str | None]:
             Xi, _, failure, _, _ = solver.integrate(

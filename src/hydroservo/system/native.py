@@ -620,11 +620,11 @@ _LOCK = threading.Lock()
 def native(model: Model) -> Native:
     """The compiled solvers of ``model``: built on first use (from the disk cache if it holds them) and kept on
     the model."""
-    found = getattr(model, "_native", None)
+    found = getattr(model, "_native_solvers", None)
     if found is None:
         with _LOCK:
-            found = getattr(model, "_native", None)
+            found = getattr(model, "_native_solvers", None)
             if found is None:
                 found = Native(model)
-                model._native = found  # type: ignore[attr-defined]
+                model._native_solvers = found  # type: ignore[attr-defined]
     return found

@@ -129,3 +129,13 @@ def test_a_batch_with_a_compiled_method_is_its_runs_on_threads() -> None:
     starved = system.batch({"load.m": masses}, 1.0, n_points=51, method="dopri5", max_steps=100, rtol=1e-12)
     assert sorted(starved.failed) == [0, 1, 2] and "step budget" in starved.failed[0]
     assert np.isnan(starved["load.x"]).all()
+
+
+def test_without_a_compiler_a_compiled_method_is_refused_with_the_way_out(monkeypatch: pytest.MonkeyPatch) -> None:
+    def no_compiler() -> list[str]:
+        raise ParameterError("C compiler: none found (CC is not set, and none of cc, gcc, clang is on PATH)")
+
+    monkeypatch.setattr(native, "compiler", no_compiler)
+    with pytest.raises(ParameterError, match=r"method = 'ros23' runs the model compiled to C.*method='cvodes' needs none"):
+        _spring("no-compiler").simulate(method="ros23")
+    assert np.isfinite(_spring("no-compiler").simulate()["load.x"]).all()  # CVODES needs none
