@@ -74,7 +74,7 @@ def build(repeat: int) -> dict[str, tuple[float, float]]:
             def run(c=functions, m=instance, p=p, grid=grid, out=out) -> None:
                 c["set_parameters"](m, native.pointer(p))
                 c["reset"](m)
-                c["integrate"](m, 2, 1e-7, 1e-9, 0.0, 10**6, grid.size, native.pointer(grid), native.pointer(out), None)
+                c["integrate"](m, 2, 1, 1e-7, 1e-9, 0.0, 10**6, grid.size, native.pointer(grid), native.pointer(out), None)
 
             found[" ".join(flags)] = (seconds, median_time(run, repeat))
             functions["free"](instance)

@@ -644,10 +644,12 @@ class CStepper:
         atol: float = 1e-8,
         max_step: float = 0.0,
         max_steps: int = 1_000_000,
+        events: bool = True,
     ) -> tuple[np.ndarray, np.ndarray]:
         """Variable steps with error control (``dopri5`` or ``ros23``, :data:`ADAPTIVE_METHODS`) from the current
         states, taken to be those at ``times[0]``, through the output ``times`` [s] (increasing), in one call
-        into C; the inputs are held. ``max_step`` [s] bounds every step (0: only the span does).
+        into C; the inputs are held. ``max_step`` [s] bounds every step (0: only the span does); ``events``
+        ends a step at each kink the model declares.
 
         Returns
         -------
@@ -665,17 +667,19 @@ class CStepper:
         nx, ny = len(self.export.states), len(self.export.outputs)
         X, Y = np.zeros((grid.size, nx)), np.zeros((grid.size, ny))
         status = self._c["integrate"](
-            self._inst, ADAPTIVE_METHODS.index(method) + 1, float(rtol), float(atol), float(max_step), int(max_steps), grid.size,
+            self._inst, ADAPTIVE_METHODS.index(method) + 1, int(bool(events)), float(rtol), float(atol), float(max_step),
+            int(max_steps), grid.size,
             pointer(grid), pointer(X), pointer(Y),
         )
         self._check(status, method)
         return X, Y
 
     def integration_statistics(self) -> dict[str, int]:
-        """Accepted and rejected steps, evaluations of the rates and Jacobians of :meth:`integrate` since the last reset."""
-        counts = [ctypes.c_longlong() for _ in range(4)]
+        """Accepted and rejected steps, evaluations of the rates, Jacobians and events of :meth:`integrate` since the
+        last reset."""
+        counts = [ctypes.c_longlong() for _ in range(5)]
         self._c["integration_statistics"](self._inst, *(ctypes.byref(c) for c in counts))
-        return dict(zip(("steps", "rejected", "evaluations", "jacobians"), (c.value for c in counts)))
+        return dict(zip(("steps", "rejected", "evaluations", "jacobians", "events"), (c.value for c in counts)))
 
     def set_state(self, name: str, value: float) -> None:
         """Overwrite a state (in its unit, SI) at the current time."""

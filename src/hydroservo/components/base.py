@@ -404,6 +404,15 @@ class Component:
         """The residual of each algebraic unknown (zero at its solution)."""
         return {}
 
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        """Where this component's equations have a kink or a jump: name -> (an expression that changes sign
+        there, its nominal magnitude in SI). An end stop reached, a lap edge passed, a valve cracking, a
+        source's step. The compiled variable-step solvers end a step at each sign change (events), so that no
+        step straddles a kink; the equations themselves are unchanged. Default: none."""
+        return {}
+
     def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
         """An explicit first guess of each algebraic unknown (from states, inputs and parameters; default 0)."""
         return {k: 0.0 for k in self.ALGEBRAIC}

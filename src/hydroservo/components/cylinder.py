@@ -223,6 +223,18 @@ class Cylinder(Component):
                 out[f"V_cav{side}"] = V * bk.fmax(p["p_floor"] - x[f"p{side}_state"], 0.0) / self._bulk(out[f"p{side}"], p)
         return out
 
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        """The end stops reached, and a chamber at its pressure floor (options cavity and check-valve)."""
+        found = {"stop_min": (u["x"] - p["x_min"], 1e-3), "stop_max": (u["x"] - p["x_max"], 1e-3)}
+        floor = self.option("pressure_floor")
+        if floor == "cavity":
+            found.update({f"floor_{s}": (x[f"p{s}_state"] - p["p_floor"], 1e5) for s in ("A", "B")})
+        elif floor == "check-valve":
+            found.update({f"floor_{s}": (x[f"p{s}"] - p["p_floor"], 1e5) for s in ("A", "B")})
+        return found
+
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:

@@ -38,6 +38,11 @@ class Step(Component):
     ) -> dict[str, Any]:
         return {"y": p["offset"] + bk.if_else(t >= p["t_step"], p["amplitude"], 0.0)}
 
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        return {"step": (t - p["t_step"], 1e-3)}
+
 
 @register
 class Pulse(Component):

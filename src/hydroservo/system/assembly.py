@@ -252,6 +252,20 @@ def _limits(asm: _Assembler) -> list[tuple[Watched, Any, Any, Any]]:
     return found
 
 
+def _switches(asm: _Assembler) -> tuple[list[str], list[Any], list[float]]:
+    """Every component's switching functions (``Component.switch_equations``), named ``component.switch``."""
+    names: list[str] = []
+    exprs: list[Any] = []
+    nominal: list[float] = []
+    for cname, comp in asm.system.components.items():
+        found = comp.switch_equations(asm.t, asm.xz[cname], _Inputs(asm, cname), asm.p[cname], asm.out[cname])
+        for key, (expr, scale) in found.items():
+            names.append(f"{cname}.{key}")
+            exprs.append(ca.SX(expr))
+            nominal.append(float(scale) if float(scale) > 0 else 1.0)
+    return names, exprs, nominal
+
+
 @dataclass
 class _Implicit:
     """The algebraic unknowns of all components: symbols, residuals, first guesses."""
@@ -310,6 +324,8 @@ class Assembly:
     limits: list[tuple[Watched, Any, Any, Any]] = field(default_factory=list)
     #: the algebraic unknowns solved inside the graph, and the size of their last Newton correction
     convergence: tuple[list[str], Any] | None = None
+    #: where the equations have kinks (``Component.switch_equations``): names, expressions, nominal magnitudes
+    switches: tuple[list[str], Any, np.ndarray] = field(default_factory=lambda: ([], ca.SX(0, 1), np.zeros(0)))
 
 
 def assemble(system: Structure, perturbed: tuple[str, ...] = ()) -> Assembly:
@@ -344,6 +360,7 @@ def assemble(system: Structure, perturbed: tuple[str, ...] = ()) -> Assembly:
     outputs = _outputs(asm, states, params, units, descriptions)
     x0 = _initial_state(asm, states, params)
     limits = _limits(asm)
+    switch_names, switch_exprs, switch_nominal = _switches(asm)
     convergence = None
     if implicit.names:
         zsym = ca.vertcat(*implicit.z)
@@ -353,6 +370,7 @@ def assemble(system: Structure, perturbed: tuple[str, ...] = ()) -> Assembly:
         rates.exprs = [ca.substitute(e, zsym, solution) for e in rates.exprs]
         outputs.exprs = [ca.substitute(e, zsym, solution) for e in outputs.exprs]
         limits = [(w, ca.substitute(ca.SX(e), zsym, solution), lo, hi) for w, e, lo, hi in limits]
+        switch_exprs = [ca.substitute(e, zsym, solution) for e in switch_exprs]
         convergence = (implicit.names, correction)
     param_units = {
         f"{c}.{k}": spec.unit for c, comp in system.components.items() for k, spec in comp.PARAMETERS.items()
@@ -378,4 +396,5 @@ def assemble(system: Structure, perturbed: tuple[str, ...] = ()) -> Assembly:
         parameter_units=param_units,
         limits=limits,
         convergence=convergence,
+        switches=(switch_names, ca.vertcat(*switch_exprs) if switch_exprs else ca.SX(0, 1), np.array(switch_nominal)),
     )

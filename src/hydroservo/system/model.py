@@ -267,6 +267,7 @@ class Model:
         initial: str | Mapping[str, float] = "parameters",
         accuracy: float | None = None,
         method: str = "cvodes",
+        events: bool = True,
     ) -> Result:
         """Integrate with CVODES (BDF, Newton with the exact Jacobian), or a compiled variable-step method.
 
@@ -300,6 +301,9 @@ class Model:
             ``"ros23"`` (Rosenbrock 2(3) on the exact Jacobian, for stiff circuits at moderate accuracy) or
             ``"dopri5"`` (explicit Dormand-Prince 5(4), for circuits that are not stiff). docs/engine.md
             compares them.
+        events : bool
+            Compiled methods: end a step at each kink or jump the components declare (end stops, a chamber at
+            its pressure floor, a valve cracking, a source's step) rather than step across it. CVODES has none.
 
         Raises
         ------
@@ -320,7 +324,7 @@ class Model:
         if why is not None:
             raise SolverError(f"integration of {self.name!r} cannot start: {why}")
         if method != "cvodes":
-            return self._compiled_run(method, grid, x0, p, settings)
+            return self._compiled_run(method, grid, x0, p, settings, events)
         integ = self._integrator(grid, settings)
         start = time.perf_counter()
         found: dict[str, Any] = {}  # the integrator's statistics
@@ -363,13 +367,14 @@ class Model:
             ) from None
 
     def _compiled_run(
-        self, method: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, settings: SolverSettings
+        self, method: str, grid: np.ndarray, x0: np.ndarray, p: np.ndarray, settings: SolverSettings, events: bool
     ) -> Result:
         """One run of a compiled variable-step method (:mod:`hydroservo.system.native`)."""
         solver = self._compiled_solvers(method)
         start = time.perf_counter()
         X, stats, failure, t_reached, x_reached = solver.integrate(
-            p, x0, grid, method=method, rtol=settings.rtol, atol=settings.atol, max_steps=settings.max_steps
+            p, x0, grid, method=method, rtol=settings.rtol, atol=settings.atol, max_steps=settings.max_steps,
+            events=events,
         )
         wall = time.perf_counter() - start
         if failure is not None:
@@ -836,6 +841,7 @@ class Model:
         progress: Callable[[int, int], None] | None = None,
         accuracy: float | None = None,
         method: str = "cvodes",
+        events: bool = True,
     ) -> BatchResult:
         """Run the model once per parameter set, the integrator mapped over the sets.
 
@@ -849,7 +855,7 @@ class Model:
         and its reason in :attr:`BatchResult.failed`; the others keep their
         results. Runs go in chunks; a chunk in which a run fails is split until
         the failing runs are isolated. ``progress(done, total)`` is called after
-        every chunk. Tolerances, ``accuracy`` and ``method`` as in :meth:`simulate`; a compiled method runs
+        every chunk. Tolerances, ``accuracy``, ``method`` and ``events`` as in :meth:`simulate`; a compiled method runs
         each set on a thread of its own, the interpreter's lock released while it integrates.
         """
         grid = output_grid(t_end, t_eval, n_points)
@@ -883,7 +889,7 @@ class Model:
             done = len(failures)
             for c0 in range(0, len(todo), chunk):
                 part = todo[c0 : c0 + chunk]
-                self._compiled_runs(method, grid, settings, part, X0, P, X, failures, nthreads, chunks)
+                self._compiled_runs(method, grid, settings, part, X0, P, X, failures, nthreads, chunks, events)
                 done += len(part)
                 if progress is not None:
                     progress(done, n)
@@ -1052,6 +1058,7 @@ class Model:
         failures: dict[int, str],
         nthreads: int,
         chunks: list[tuple[list[int], Any]],
+        events: bool = True,
     ) -> None:
         """Integrate ``runs`` with a compiled method, ``nthreads`` at a time (each on its own C instance, the
         interpreter's lock released in C); the runs that succeed are added to ``chunks`` as one matrix of
@@ -1063,7 +1070,7 @@ class Model:
         def one(i: int) -> tuple[int, np.ndarray, str | None]:
             Xi, _, failure, _, _ = solver.integrate(
                 P[:, i], X0[:, i], grid, method=method, rtol=settings.rtol, atol=settings.atol,
-                max_steps=settings.max_steps,
+                max_steps=settings.max_steps, events=events,
             )  # fmt: skip
             return i, Xi, failure
 

@@ -206,6 +206,9 @@ def _functions(model: Model, cid: str, method: str) -> _Functions:
     if a.convergence is not None:
         algebraic, correction = list(a.convergence[0]), a.convergence[1]
         parts["conv"] = ca.Function("conv", [a.t, a.x, a.p], [correction])(t, x, p)
+    switch_names, switch_exprs, _ = a.switches
+    if switch_names:  # the events of the variable-step solvers: where the equations have kinks
+        parts["g"] = ca.Function("g", [a.t, a.x, a.p], [switch_exprs])(t, x, p)
     dense = {k: ca.densify(v) for k, v in parts.items()}
     flat, symbols, values = ca.extract_parametric(ca.vertcat(*(ca.vec(v) for v in dense.values())), p)
     q = ca.vertcat(*symbols) if symbols else ca.SX.sym("q", 0)
@@ -231,6 +234,7 @@ def _data_block(cid: str, upper: str, model: Model, method: str, tolerance: floa
         f"#define {upper}_MAX_ITERATIONS {NEWTON_ITERATIONS}",
         f"#define {upper}_N_ALGEBRAIC {len(functions.algebraic)}",
         f"#define {upper}_N_DERIVED {functions.n_derived}",
+        f"#define {upper}_N_SWITCHES {len(model.assembly.switches[0])}",
         f"#define {upper}_ALGEBRAIC_TOLERANCE {_c_number(ALGEBRAIC_TOLERANCE)}",
         *(f"#define {upper}_SZ_{what.upper()} {size}" for what, size in sizes.items()),
         "",
@@ -241,6 +245,11 @@ def _data_block(cid: str, upper: str, model: Model, method: str, tolerance: floa
         lines.append(
             _array("static const char *const", f"{cid}_algebraic_names", [_c_string(n) for n in functions.algebraic])
         )
+    names, _, nominal = model.assembly.switches
+    if names:
+        listed = _c_comment(", ".join(names))
+        lines.append(f"/* Where the equations have kinks: the nominal magnitude of each switching function ({listed}). */")
+        lines.append(_array("static const double", f"{cid}_switch_nominal", [_c_number(v) for v in nominal]))
     return "\n".join(lines)
 
 
@@ -528,8 +537,8 @@ SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "get_output": (_DBL, [_INST, _INT]),
     "step": (_INT, [_INST]),
     "run": (_INT, [_INST, ctypes.c_long, _PTR, _PTR, _PTR]),
-    "integrate": (_INT, [_INST, _INT, _DBL, _DBL, _DBL, ctypes.c_long, ctypes.c_long, _PTR, _PTR, _PTR]),
-    "integration_statistics": (None, [_INST, _LL, _LL, _LL, _LL]),
+    "integrate": (_INT, [_INST, _INT, _INT, _DBL, _DBL, _DBL, ctypes.c_long, ctypes.c_long, _PTR, _PTR, _PTR]),
+    "integration_statistics": (None, [_INST, _LL, _LL, _LL, _LL, _LL]),
     "time": (_DBL, [_INST]),
     "message": (ctypes.c_char_p, [_INST]),
     "statistics": (None, [_INST, _LL, _LL, _LL]),
@@ -581,6 +590,7 @@ class Native:
         atol: float,
         max_steps: int,
         max_step: float = 0.0,
+        events: bool = True,
     ) -> tuple[np.ndarray, dict[str, Any], str | None, float, np.ndarray]:
         """Integrate from the states ``x0`` [SI] at ``grid[0]`` through the output times ``grid``.
 
@@ -600,12 +610,12 @@ class Native:
             times = np.ascontiguousarray(grid, dtype=float)
             X = np.full((times.size, self.nx), np.nan)
             status = c["integrate"](
-                instance, ADAPTIVE_METHODS.index(method) + 1, float(rtol), float(atol), float(max_step),
-                int(max_steps), times.size, pointer(times), pointer(X), None,
+                instance, ADAPTIVE_METHODS.index(method) + 1, int(bool(events)), float(rtol), float(atol),
+                float(max_step), int(max_steps), times.size, pointer(times), pointer(X), None,
             )  # fmt: skip
-            counts = [ctypes.c_longlong() for _ in range(4)]
+            counts = [ctypes.c_longlong() for _ in range(5)]
             c["integration_statistics"](instance, *(ctypes.byref(k) for k in counts))
-            stats = dict(zip(("nsteps", "nrejected", "nfevals", "njevals"), (k.value for k in counts)))
+            stats = dict(zip(("nsteps", "nrejected", "nfevals", "njevals", "nevents"), (k.value for k in counts)))
             failure = None if status == 0 else (c["message"](instance) or b"").decode("utf-8", "replace")
             t_reached = float(c["time"](instance))
             x_reached = np.array([c["get_state"](instance, i) for i in range(self.nx)])

@@ -133,3 +133,4 @@ class FourWayValve(Component):
             K,
         )
         return {"QA": QA, "QB": QB, "QS": QS, "QT": QT}
+

@@ -67,6 +67,12 @@ class _PressureControl(Component):
         target = pressure_valve_coefficient(self.over(u, p), u["pA"] - u["pB"], p["k_cs"], p["k_cf"], p["p_nom"])
         return {"K": limited_lag_rate(x["K"], target, p["tau"], p["q_nom"] / bk.sqrt(p["p_nom"]))}
 
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        """Cracking: the pilot pressure passing the setting, where the static opening leaves zero."""
+        return {"cracking": (self.over(u, p), 1e5)}
+
 
 @register
 class ReliefValve(_PressureControl):

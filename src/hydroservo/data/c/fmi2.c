@@ -705,7 +705,7 @@ FMI2_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunication
     }
     {
         double times[2] = {now, now + communicationStepSize};
-        if (@NAME@_integrate(fmu->model, FMU_ADAPTIVE, FMU_RTOL, FMU_ATOL, 0.0, 100000000L, 2, times, NULL, NULL)) {
+        if (@NAME@_integrate(fmu->model, FMU_ADAPTIVE, 1, FMU_RTOL, FMU_ATOL, 0.0, 100000000L, 2, times, NULL, NULL)) {
             fmu->phase = FAILED;
             return fmu_error(fmu, "fmi2DoStep", "%s", @NAME@_message(fmu->model));
         }

@@ -30,6 +30,7 @@ static const char *@NAME@_usage =
     "  --accuracy A     deviation wanted, relative to each signal's range (default 1e-4)\n"
     "  --rtol R         relative tolerance instead (atol = rtol / 100)\n"
     "  --max-steps N    step budget (default 10000000)\n"
+    "  --no-events      step through the model's kinks instead of ending a step at each\n"
     "  --params FILE    PARAMETER=VALUE lines ('#' starts a comment), before those on the command line\n"
     "  --input I=V      hold the input I at V (inputs exported with --inputs)\n"
     "  --output FILE    write the CSV there (default: standard output); refused if it exists\n"
@@ -143,7 +144,7 @@ static void @NAME@_cell(FILE *out, const char *name, const char *unit) {
 int main(int argc, char **argv) {
     double t_end = @UPPER@_MAIN_T_END, accuracy = @UPPER@_MAIN_ACCURACY, rtol = 0.0;
     long points = 1001, max_steps = 10000000;
-    int method = @UPPER@_ROS23, list = 0, force = 0, ok = 0, status = 0;
+    int method = @UPPER@_ROS23, events = 1, list = 0, force = 0, ok = 0, status = 0;
     const char *output = NULL;
     @NAME@_instance *m = @NAME@_new();
     if (m == NULL) {
@@ -166,6 +167,8 @@ int main(int argc, char **argv) {
             list = 1;
         } else if (strcmp(a, "--force") == 0) {
             force = 1;
+        } else if (strcmp(a, "--no-events") == 0) {
+            events = 0;
         } else if (strcmp(a, "--t-end") == 0) {
             t_end = @NAME@_number(argv[++i], &ok);
             if (!ok || !(t_end > 0.0)) status = @NAME@_fail(a, argv[i], "a positive duration [s]");
@@ -229,7 +232,7 @@ int main(int argc, char **argv) {
     }
     for (long k = 0; k < points; ++k) times[k] = t_end * (double)k / (double)(points - 1);
     @NAME@_reset(m); /* the initial states from the parameters set */
-    status = @NAME@_integrate(m, method, rtol, rtol / 100.0, 0.0, max_steps, points, times, states, outputs);
+    status = @NAME@_integrate(m, method, events, rtol, rtol / 100.0, 0.0, max_steps, points, times, states, outputs);
     long rows = points;
     if (status != @UPPER@_OK) {
         fprintf(stderr, "@NAME@: error: the solver stopped: %s\n", @NAME@_message(m));

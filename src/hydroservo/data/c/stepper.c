@@ -38,7 +38,11 @@
  * and 5 times h (not growing after a rejection), with q + 1 = 5 (dopri5) or 3 (ros23) ([Hairer1993] section
  * II.4). The first step follows [Hairer1993] section II.4, "Starting step size". Between steps the solution is
  * the cubic Hermite interpolant of the states and rates at both ends (third order; [Hairer1993] section II.6).
- * No step is longer than max_step (if given) nor passes the last output time.
+ * No step is longer than max_step (if given) nor passes the last output time. Events: where a switching
+ * function the components declare (an end stop, a lap edge, a valve cracking, a source's step: the kinks and
+ * jumps of the equations) changes side within a step, the crossing is found by bisection on the interpolant
+ * and the step taken again to end just past it, before its error is judged, so that no step straddles a kink;
+ * step-size control goes on from that step (never longer than the step before the event).
  */
 #include "@NAME@.h"
 #include "@NAME@_model.h"
@@ -61,7 +65,7 @@ struct @NAME@_instance {
     long long steps; /* since the reset (or the end of @NAME@_integrate): t = t_start + steps h */
     double t_start;
     long long iterations, jacobians;
-    long long accepted, rejected, evaluations; /* @NAME@_integrate, since the reset */
+    long long accepted, rejected, evaluations, events; /* @NAME@_integrate, since the reset */
     int outputs_current; /* y holds the outputs of the current time, states and inputs */
     int q_current;       /* q holds the derived parameters of the current parameters and inputs */
     double q[@UPPER@_AT_LEAST_1(@UPPER@_N_DERIVED)]; /* parameter-only parts of the model's expressions */
@@ -75,6 +79,8 @@ struct @NAME@_instance {
     double z_host[@UPPER@_NZ]; /* the continuous-time functions: the host's states, scaled */
     double f0[@UPPER@_NZ], f1[@UPPER@_NZ], dfdt[@UPPER@_NZ]; /* @NAME@_integrate: rates at both ends, df/dt */
     double jac[@UPPER@_NZ * @UPPER@_NZ]; /* ros23: the Jacobian at the step's start */
+    double g1[@UPPER@_AT_LEAST_1(@UPPER@_N_SWITCHES)], gm[@UPPER@_AT_LEAST_1(@UPPER@_N_SWITCHES)]; /* events */
+    signed char side[@UPPER@_AT_LEAST_1(@UPPER@_N_SWITCHES)]; /* each switching function's last side: -1, 0, 1 */
     double lu[@UPPER@_NZ * @UPPER@_NZ];
     int pivot[@UPPER@_NZ];
     const casadi_real *arg[@UPPER@_SZ_ARG];
@@ -434,8 +440,49 @@ static double @NAME@_first_step(@NAME@_instance *m, double t, double span, doubl
     return fmin(fmin(100.0 * h0, h1), span);
 }
 
-int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, double max_step, long max_steps,
-                     long n_times, const double *times, double *states, double *outputs) {
+#if @UPPER@_N_SWITCHES > 0
+/* A switching function's side: -1, 1, or 0 within 1e-9 of its nominal magnitude of zero (on the kink). */
+static int @NAME@_side(double value, int i) {
+    const double band = 1e-9 * @NAME@_switch_nominal[i];
+    return value > band ? 1 : (value < -band ? -1 : 0);
+}
+
+/* The switching functions at (t, z) into g. */
+static void @NAME@_switches(@NAME@_instance *m, double t, const double *z, double *g) {
+    @NAME@_call(m, @NAME@_g, &t, z, g);
+}
+
+/* Events: after an accepted step from t0 to t1 (m->z to m->z_new), m->g1 holds the switching functions at t1;
+ * for each that has changed side since its last side, the time it did, by bisection on the step's interpolant
+ * (to 1e-12 of the step). Returns 1 and the earliest such time in *t_cross, or 0. */
+static int @NAME@_crossing(@NAME@_instance *m, double t0, double h, double t1, double *t_cross) {
+    int any = 0;
+    double earliest = t1;
+    @NAME@_switches(m, t1, m->z_new, m->g1);
+    for (int i = 0; i < @UPPER@_N_SWITCHES; ++i) {
+        int now = @NAME@_side(m->g1[i], i);
+        if (now == 0 || m->side[i] == 0 || now == m->side[i]) continue;
+        double lo = t0, hi = t1;
+        for (int k = 0; k < 60 && hi - lo > 1e-12 * h; ++k) {
+            double mid = 0.5 * (lo + hi);
+            @NAME@_hermite(m, t0, h, mid, m->z_host);
+            @NAME@_switches(m, mid, m->z_host, m->gm);
+            if (@NAME@_side(m->gm[i], i) == now) {
+                hi = mid;
+            } else {
+                lo = mid;
+            }
+        }
+        if (hi < earliest) earliest = hi;
+        any = 1;
+    }
+    *t_cross = earliest;
+    return any;
+}
+#endif
+
+int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, double atol, double max_step,
+                     long max_steps, long n_times, const double *times, double *states, double *outputs) {
     const int n = @UPPER@_N_STATES;
     if ((method != @UPPER@_DOPRI5 && method != @UPPER@_ROS23) || !(rtol > 0.0 && rtol < 1.0) ||
         !(atol > 0.0 && atol <= 1.0) || !(max_step >= 0.0) || max_steps < 1 || n_times < 1 || times == NULL) {
@@ -475,7 +522,13 @@ int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, d
         return @UPPER@_NOT_FINITE;
     }
     double h = fmin(@NAME@_first_step(m, t, t_end - t, rtol, atol, explicit_method ? 5 : 2), hmax);
-    int have_jacobian = 0;
+    int have_jacobian = 0, event_step = 0;
+    double h_resume = h;
+    (void)events;
+#if @UPPER@_N_SWITCHES > 0
+    @NAME@_switches(m, t, m->z, m->g1);
+    for (int i = 0; i < @UPPER@_N_SWITCHES; ++i) m->side[i] = (signed char)@NAME@_side(m->g1[i], i);
+#endif
     while (t < t_end) {
         if (taken >= max_steps) {
             snprintf(m->message, sizeof m->message,
@@ -507,10 +560,26 @@ int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, d
                 h *= 0.25;
                 m->rejected += 1;
                 rejected_last = 1;
+                event_step = 0;
                 continue;
             }
         }
         taken += 1;
+#if @UPPER@_N_SWITCHES > 0
+        if (events && !event_step && @NAME@_not_finite(m->z_new) < 0) {
+            /* an event: a kink or a jump of the equations inside the step. The step is taken again to end just
+             * past it, before its error is judged (a step across a jump fails its error test, and so would its
+             * shorter successors until one ends at the jump); after it, control goes on from the short step. */
+            const double t_try = (h == t_end - t) ? t_end : t + h;
+            double t_cross = t_try;
+            if (@NAME@_crossing(m, t, h, t_try, &t_cross) && t_cross < t + (1.0 - 1e-6) * h) {
+                h_resume = h;
+                h = (t_cross - t) * (1.0 + 1e-9) + 64.0 * DBL_EPSILON * fmax(fabs(t), 1.0);
+                event_step = 1;
+                continue;
+            }
+        }
+#endif
         double size = @NAME@_not_finite(m->z_new) >= 0 || @NAME@_not_finite(m->f1) >= 0
                           ? HUGE_VAL
                           : @NAME@_error_norm(err, m->z, m->z_new, rtol, atol);
@@ -518,14 +587,22 @@ int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, d
             m->rejected += 1;
             h *= size == HUGE_VAL ? 0.25 : fmax(0.2, 0.9 * pow(size, -exponent));
             rejected_last = 1;
+            event_step = 0; /* a step taken again to end past a kink failed: shorter steps will reach it */
             continue;
         }
         if (@NAME@_algebraic(m, t + h, m->z_new)) {
             status = @UPPER@_ALGEBRAIC;
             break;
         }
-        /* accepted: the outputs inside (t, t + h] from the interpolant, the last exactly */
         const double t1 = (h == remaining) ? t_end : t + h;
+#if @UPPER@_N_SWITCHES > 0
+        @NAME@_switches(m, t1, m->z_new, m->g1);
+        for (int i = 0; i < @UPPER@_N_SWITCHES; ++i) {
+            int now = @NAME@_side(m->g1[i], i);
+            if (now != 0) m->side[i] = (signed char)now;
+        }
+#endif
+        /* accepted: the outputs inside (t, t + h] from the interpolant, the last exactly */
         for (; out < n_times && times[out] <= t1; ++out) {
             if (times[out] == t1) {
                 @NAME@_record(m, out, t1, m->z_new, states, outputs);
@@ -542,7 +619,13 @@ int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, d
         double grow = size <= 0.0 ? 5.0 : fmin(5.0, fmax(0.2, 0.9 * pow(size, -exponent)));
         if (rejected_last) grow = fmin(grow, 1.0);
         rejected_last = 0;
-        h = fmin(h * grow, hmax);
+        if (event_step) { /* past the kink: the dynamics there are new, so control starts from the short step */
+            m->events += 1;
+            event_step = 0;
+            h = fmin(fmin(h * grow, h_resume), hmax);
+        } else {
+            h = fmin(h * grow, hmax);
+        }
     }
     m->t_start = t, m->steps = 0; /* the fixed-step API goes on from here */
     m->history = m->factorised = m->outputs_current = 0;
@@ -551,7 +634,8 @@ int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, d
 }
 
 void @NAME@_integration_statistics(const @NAME@_instance *m, long long *accepted, long long *rejected,
-                                   long long *evaluations, long long *jacobians) {
+                                   long long *evaluations, long long *jacobians, long long *events) {
+    if (events != NULL) *events = m->events;
     if (accepted != NULL) *accepted = m->accepted;
     if (rejected != NULL) *rejected = m->rejected;
     if (evaluations != NULL) *evaluations = m->evaluations;
@@ -624,7 +708,7 @@ void @NAME@_free(@NAME@_instance *m) {
 void @NAME@_reset(@NAME@_instance *m) {
     @NAME@_call(m, @NAME@_z0, NULL, NULL, m->z);
     m->steps = m->iterations = m->jacobians = 0;
-    m->accepted = m->rejected = m->evaluations = 0;
+    m->accepted = m->rejected = m->evaluations = m->events = 0;
     m->t_start = 0.0;
     m->history = m->factorised = m->outputs_current = 0;
     m->message[0] = '\0';

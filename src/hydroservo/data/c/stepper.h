@@ -89,18 +89,19 @@ int @NAME@_step(@NAME@_instance *m);
 int @NAME@_run(@NAME@_instance *m, long n, const double *inputs, double *states, double *outputs);
 
 /* Variable steps with error control: from the instance's time and states, which must be those at times[0],
- * through the n_times output times (increasing), with `method` (@UPPER@_DOPRI5 or @UPPER@_ROS23), the
+ * through the n_times output times (increasing), with `method` (@UPPER@_DOPRI5 or @UPPER@_ROS23), events at
+ * the kinks the model declares if `events` is nonzero (a step ends just past each: @NAME@.c says how), the
  * relative tolerance rtol and the absolute tolerance atol on the states scaled by their nominal magnitudes
  * (@NAME@_state_nominal), steps of at most max_step seconds (0: no limit) and at most max_steps steps. states, outputs: NULL or room for n_times rows of
  * @UPPER@_N_STATES / @UPPER@_N_OUTPUTS values, row k at times[k] (row 0: the start). The inputs are held.
  * Returns @UPPER@_OK with the instance at times[n_times - 1], or a status with the instance at the last
  * accepted step (@NAME@_time) and the rows up to there written; @NAME@_message says why. */
-int @NAME@_integrate(@NAME@_instance *m, int method, double rtol, double atol, double max_step, long max_steps,
-                     long n_times, const double *times, double *states, double *outputs);
+int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, double atol, double max_step,
+                     long max_steps, long n_times, const double *times, double *states, double *outputs);
 /* Work done by @NAME@_integrate since the last reset: accepted and rejected steps, evaluations of the rates and
- * Jacobians (ros23). */
+ * Jacobians (ros23), and events (steps ended at a kink of the equations). */
 void @NAME@_integration_statistics(const @NAME@_instance *m, long long *accepted, long long *rejected,
-                                   long long *evaluations, long long *jacobians);
+                                   long long *evaluations, long long *jacobians, long long *events);
 
 /* The model in continuous time, for an integrator of the host's own (an FMU's Model Exchange uses these): at
  * any time t [s] and states x (in their units, @UPPER@_N_STATES values), with the instance's parameters and
