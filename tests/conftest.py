@@ -6,7 +6,7 @@ modules cannot import one another: what several of them need lives here.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
@@ -25,6 +25,22 @@ from hydroservo.validation import Check, validate
 from hydroservo.validation.ferreira import bode_grid, published_dynamics
 
 CliRun = Callable[..., tuple[int, str, str]]
+
+
+@pytest.fixture(scope="session", autouse=True)
+def compiled_models_cache(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Path]:
+    """Compiled models (``simulate(method="ros23")``, ...) go to a cache folder of the session's own, not the
+    user's: the suite builds them afresh and leaves nothing behind."""
+    import os
+
+    folder = tmp_path_factory.mktemp("hydroservo-cache")
+    before = os.environ.get("HYDROSERVO_CACHE")
+    os.environ["HYDROSERVO_CACHE"] = str(folder)
+    yield folder
+    if before is None:
+        os.environ.pop("HYDROSERVO_CACHE", None)
+    else:
+        os.environ["HYDROSERVO_CACHE"] = before
 
 
 # -- the command line -----------------------------------------------------------
