@@ -30,6 +30,12 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     return execute(job, args)
 
 
+def cmd_cache(args: argparse.Namespace) -> int:
+    from hydroservo.workflows.cache import Cache
+
+    return execute(Cache(clear=args.clear, cli=True), args)
+
+
 def cmd_export(args: argparse.Namespace) -> int:
     from hydroservo.workflows.export import ExportModel
 
@@ -41,6 +47,17 @@ def add_parsers(sub: Any) -> None:
     """Add ``models``, ``simulate`` and ``export``."""
     p = sub.add_parser("models", help="list the built-in systems")
     p.set_defaults(func=cmd_models)
+
+    p = sub.add_parser(
+        "cache",
+        help="show the folder of compiled models (simulate --method ros23|dopri5), or clear it",
+        description="Compiled models are kept in $HYDROSERVO_CACHE, else the user's cache folder "
+        "(~/.cache/hydroservo), one per model structure, hydroservo version and compiler; each is built again "
+        "when next used after --clear.",
+    )
+    p.add_argument("--clear", action="store_true", help="remove every compiled model from the folder")
+    p.add_argument("--json", action="store_true", help="print the folder, the entries and their size as JSON")
+    p.set_defaults(func=cmd_cache)
 
     p = sub.add_parser("simulate", help="simulate a built-in system or a TOML model file")
     p.add_argument("model", metavar="NAME_OR_FILE")

@@ -60,7 +60,9 @@ __all__ = [
     "Native",
     "SourceSet",
     "c_identifier",
+    "cache_entries",
     "cache_folder",
+    "clear_cache",
     "compile_library",
     "compile_program",
     "compiled",
@@ -514,6 +516,31 @@ def compiled(sources: SourceSet, flags: Sequence[str] = CACHE_FLAGS) -> Path:
     if not _intact(entry, library):
         raise ParameterError(f"C compiler cache {entry}: the compiled model could not be stored (is the folder writable?)")
     return entry / library
+
+
+def cache_entries() -> list[tuple[Path, int]]:
+    """The compiled models in the cache (:func:`cache_folder`): each entry's folder and its size [bytes]."""
+    root = cache_folder() / "c"
+    if not root.is_dir():
+        return []
+    found = []
+    for entry in sorted(root.iterdir()):
+        if entry.is_dir() and (entry / _STAMP).is_file():
+            found.append((entry, sum(f.stat().st_size for f in entry.iterdir() if f.is_file())))
+    return found
+
+
+def clear_cache() -> tuple[int, int]:
+    """Remove every compiled model from the cache (they are built again when next used), and builds left behind
+    by interrupted processes; returns how many entries and bytes were removed."""
+    entries = cache_entries()
+    root = cache_folder() / "c"
+    for entry, _ in entries:
+        shutil.rmtree(entry, ignore_errors=True)
+    if root.is_dir():
+        for leftover in root.glob(".build-*"):
+            shutil.rmtree(leftover, ignore_errors=True)
+    return len(entries), sum(size for _, size in entries)
 
 
 # -- running the compiled solvers --------------------------------------------------------------------------------

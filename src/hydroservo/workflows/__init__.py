@@ -23,6 +23,7 @@ module                     task (command)
 :mod:`.components`         the component reference (``components``, ``describe``)
 :mod:`.models`             the built-in models (``models``)
 :mod:`.examples`           the example files (``examples``)
+:mod:`.cache`              the compiled models' folder (``cache``)
 :mod:`.base`               what they share: :class:`~.base.Report`, :class:`~.base.Workflow`,
                            loading a model with changes, output folders
 :mod:`.pages`              the parts of report pages several reports show
@@ -47,7 +48,7 @@ from typing import Any
 
 #: The workflow modules, imported on first use.
 MODULES: tuple[str, ...] = (
-    "base", "calibrate", "components", "draw", "examples", "export", "fluid", "identify", "ladder", "linear", "models",
+    "base", "cache", "calibrate", "components", "draw", "examples", "export", "fluid", "identify", "ladder", "linear", "models",
     "pages", "report", "sensitivity", "servovalve", "simulate", "staged_slot", "validate", "valve",
 )
 
