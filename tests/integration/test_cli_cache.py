@@ -8,19 +8,10 @@ from pathlib import Path
 import pytest
 
 import hydroservo as hs
-from hydroservo.errors import ParameterError
-from hydroservo.system.native import compiler
+from hydroservo.system.native import has_compiler
 
 
-def _has_compiler() -> bool:
-    try:
-        compiler()
-    except ParameterError:
-        return False
-    return True
-
-
-@pytest.mark.skipif(not _has_compiler(), reason="no C compiler")
+@pytest.mark.skipif(not has_compiler(), reason="no C compiler")
 def test_cache_shows_the_compiled_models_and_clears_them(tmp_path: Path, cli, monkeypatch) -> None:
     monkeypatch.setenv("HYDROSERVO_CACHE", str(tmp_path / "cache"))
     code, text, _ = cli("cache", "--json")

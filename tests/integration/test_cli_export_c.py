@@ -7,16 +7,7 @@ import json
 
 import pytest
 
-from hydroservo.codegen.c import compiler
-from hydroservo.errors import ParameterError
-
-
-def _has_compiler() -> bool:
-    try:
-        compiler()
-    except ParameterError:
-        return False
-    return True
+from hydroservo.system.native import has_compiler
 
 
 def test_export_c_writes_the_folder_and_reports_it(tmp_path, cli) -> None:
@@ -50,7 +41,7 @@ def test_export_c_default_folders_never_collide(tmp_path, cli, monkeypatch) -> N
     assert sorted(p.name for p in tmp_path.iterdir()) == ["hydroservo-flight-simulator-c", "hydroservo-flight-simulator-c-2"]
 
 
-@pytest.mark.skipif(not _has_compiler(), reason="no C compiler")
+@pytest.mark.skipif(not has_compiler(), reason="no C compiler")
 def test_export_c_build_gives_a_library_that_steps(tmp_path, cli) -> None:
     code, text, err = cli("export-c", "flight-simulator", "--step", "1e-4", "--build", "--name", "fs",
                           "--out", str(tmp_path), "--json")  # fmt: skip
@@ -113,7 +104,7 @@ def test_export_c_build_without_a_compiler_writes_nothing(tmp_path, cli, monkeyp
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.skipif(not _has_compiler(), reason="no C compiler")
+@pytest.mark.skipif(not has_compiler(), reason="no C compiler")
 def test_the_standalone_simulator_runs_without_python_and_agrees_with_simulate(tmp_path, cli) -> None:
     """export-c --main --build: a command that takes parameters (arguments and a file), runs a variable-step
     method and writes CSV in hydroservo's header form; its result is simulate's with the same method to
@@ -158,3 +149,20 @@ def test_the_standalone_simulator_runs_without_python_and_agrees_with_simulate(t
 def test_export_c_needs_a_step_unless_it_writes_the_simulator(tmp_path, cli) -> None:
     code, _, err = cli("export-c", "flight-simulator", "--out", str(tmp_path / "x"))
     assert code == 2 and "--step: missing" in err and not (tmp_path / "x").exists()
+
+
+@pytest.mark.skipif(not has_compiler(), reason="no C compiler")
+def test_the_standalone_simulator_writes_nothing_when_the_solver_stops(tmp_path, cli) -> None:
+    """A run that stops (here: a step budget of 10) exits 1 with the reason and leaves no file, partial or whole."""
+    import subprocess
+
+    code, text, err = cli("export-c", "flight-simulator", "--main", "--build", "--name", "fs", "--out",
+                          str(tmp_path / "sim"), "--json")  # fmt: skip
+    assert code == 0, err
+    program = json.loads(text)["executable"]
+    done = subprocess.run([program, "--max-steps", "10", "--output", str(tmp_path / "run.csv")],
+                          capture_output=True, text=True, timeout=60)  # fmt: skip
+    assert done.returncode == 1 and "step budget of 10 steps" in done.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sim"]
+    done = subprocess.run([program, "--max-steps", "10"], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 1 and done.stdout == ""

@@ -7,19 +7,10 @@ import zipfile
 
 import pytest
 
-from hydroservo.codegen.c import compiler
-from hydroservo.errors import ParameterError
+from hydroservo.system.native import has_compiler
 
 
-def _has_compiler() -> bool:
-    try:
-        compiler()
-    except ParameterError:
-        return False
-    return True
-
-
-@pytest.mark.skipif(not _has_compiler(), reason="no C compiler")
+@pytest.mark.skipif(not has_compiler(), reason="no C compiler")
 def test_export_fmu_writes_the_fmu_here_and_reports_it(tmp_path, cli, monkeypatch) -> None:
     monkeypatch.chdir(tmp_path)
     code, text, err = cli("export-fmu", "servo-solenoid-cylinder", "--inputs", "valve.u", "--set", "load.m=60 kg",

@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 
 from hydroservo.cli import main
+from hydroservo.system.native import has_compiler
 
 README = Path(__file__).resolve().parents[2] / "README.md"
 
@@ -42,15 +43,6 @@ def _needs_a_compiler(line: str) -> bool:
     return "--build" in line or "--method dopri5" in line or "--method ros23" in line
 
 
-def _has_compiler() -> bool:
-    from hydroservo.errors import ParameterError
-    from hydroservo.system.native import compiler
-
-    try:
-        compiler()
-    except ParameterError:
-        return False
-    return True
 
 
 @pytest.mark.slow
@@ -58,7 +50,7 @@ def test_every_readme_command_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPat
     """Every command runs (those that compile C only where there is a C compiler)."""
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("HYDROSERVO_CACHE", str(tmp_path / "cache"))
-    compiles = _has_compiler()
+    compiles = has_compiler()
     for line in readme_commands():
         if _needs_a_compiler(line) and not compiles:
             continue

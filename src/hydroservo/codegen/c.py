@@ -243,8 +243,8 @@ variable-step method with error control (`--method ros23`, the default, a Rosenb
 or `dopri5`, Dormand-Prince 5(4)), to `--accuracy` (default 1e-4 of each signal's range) and writes the states
 and outputs at `--points` equally spaced times as CSV (`t [s],NAME [unit],...`) to standard output or
 `--output FILE`. `./{cid} --help` lists the options, `./{cid} --list` the parameters with their values. Exit
-status 0 done, 1 the solver stopped (the rows up to there are written, the reason on standard error), 2 a bad
-option, value or file.
+status 0 done, 1 the solver stopped (nothing is written, the reason is on standard error), 2 a bad option, value
+or file. An `--output` file is written under another name and renamed into place once complete.
 """
         if export.main
         else ""

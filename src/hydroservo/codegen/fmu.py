@@ -76,11 +76,12 @@ from hydroservo.io.files import OutputFolder
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import DEFAULT_ACCURACY, tolerances
 from hydroservo.system.model import Model
+from hydroservo.system.native import _c_comment
 from hydroservo.system.system import System
 from hydroservo.units import si_definition
 from hydroservo.version import __version__
 
-__all__ = ["FmuExport", "Variable", "export_fmu", "fmu_platform", "model_description", "variables"]
+__all__ = ["FmuExport", "Variable", "check_cosimulation_method", "export_fmu", "fmu_platform", "model_description", "variables"]
 
 #: The Co-Simulation step when none is given [s].
 DEFAULT_STEP = 1e-4
@@ -490,6 +491,16 @@ def _fmu_data(
     )
 
 
+def check_cosimulation_method(method: str, what: str = "method") -> str:
+    """``method`` if the FMU can co-simulate with it: a fixed-step stepper (:data:`~hydroservo.codegen.c.METHODS`)
+    or a variable-step one (:data:`~hydroservo.codegen.c.ADAPTIVE_METHODS`); ``what`` names it in errors."""
+    if method not in (*METHODS, *ADAPTIVE_METHODS):
+        raise ParameterError(
+            f"{what} {shorten(str(method))!r}: expected one of {', '.join((*METHODS, *ADAPTIVE_METHODS))}"
+        )
+    return method
+
+
 def export_fmu(
     system: System,
     directory: str | Path,
@@ -538,10 +549,7 @@ def export_fmu(
     ModelError
         If the system has no states, or two of its variables share a name.
     """
-    if method not in (*METHODS, *ADAPTIVE_METHODS):
-        raise ParameterError(
-            f"method {shorten(str(method))!r}: expected one of {', '.join((*METHODS, *ADAPTIVE_METHODS))}"
-        )
+    check_cosimulation_method(method)
     h = check_step(step)
     adaptive = method in ADAPTIVE_METHODS
     rtol, atol = tolerances(accuracy, method) if adaptive else tolerances(DEFAULT_ACCURACY)
@@ -580,7 +588,7 @@ def export_fmu(
         guid = "{" + str(uuid.UUID(bytes=digest.digest()[:16], version=5)) + "}"
         description = description.replace(placeholder, guid)
         data = _fmu_data(cid, guid, system, export.parameters, structure.tunable, fwd)
-        values = {"NAME": cid, "UPPER": cid.upper(), "MODEL": system.name.replace("*/", "* /"),
+        values = {"NAME": cid, "UPPER": cid.upper(), "MODEL": _c_comment(system.name),
                   "VERSION": __version__, "METHOD": method, "STEP": repr(h), "FMU_DATA": data,
                   "FMU_ADAPTIVE": str(ADAPTIVE_METHODS.index(method) + 1 if adaptive else 0),
                   "FMU_RTOL": repr(rtol), "FMU_ATOL": repr(atol)}  # fmt: skip

@@ -884,22 +884,24 @@ class Model:
         start = time.perf_counter()
         if self.nx == 0:
             X = np.zeros((0, n, nt))
-        elif method != "cvodes":
-            chunk = max(4 * nthreads, min(256, len(todo)))
-            done = len(failures)
-            for c0 in range(0, len(todo), chunk):
-                part = todo[c0 : c0 + chunk]
-                self._compiled_runs(method, grid, settings, part, X0, P, X, failures, nthreads, chunks, events)
-                done += len(part)
-                if progress is not None:
-                    progress(done, n)
         else:
-            integ = self._integrator(grid, settings)
-            chunk = max(4 * nthreads, min(64, len(todo)))
+            if method != "cvodes":  # each run on a thread of its own: larger chunks cost nothing
+
+                def solve(part: list[int]) -> None:
+                    self._compiled_runs(method, grid, settings, part, X0, P, X, failures, nthreads, chunks, events)
+
+                chunk = max(4 * nthreads, min(256, len(todo)))
+            else:
+                integ = self._integrator(grid, settings)
+
+                def solve(part: list[int]) -> None:
+                    self._solve_runs(integ, part, X0 / self.nominal[:, None], P, X, failures, nthreads, chunks)
+
+                chunk = max(4 * nthreads, min(64, len(todo)))
             done = len(failures)
             for c0 in range(0, len(todo), chunk):
                 part = todo[c0 : c0 + chunk]
-                self._solve_runs(integ, part, X0 / self.nominal[:, None], P, X, failures, nthreads, chunks)
+                solve(part)
                 done += len(part)
                 if progress is not None:
                     progress(done, n)
@@ -1058,7 +1060,7 @@ class Model:
         failures: dict[int, str],
         nthreads: int,
         chunks: list[tuple[list[int], Any]],
-        events: bool = True,
+        events: bool,
     ) -> None:
         """Integrate ``runs`` with a compiled method, ``nthreads`` at a time (each on its own C instance, the
         interpreter's lock released in C); the runs that succeed are added to ``chunks`` as one matrix of

@@ -67,6 +67,7 @@ __all__ = [
     "compile_program",
     "compiled",
     "compiler",
+    "has_compiler",
     "fill_template",
     "library_suffix",
     "model_sources",
@@ -321,6 +322,15 @@ def compiler() -> list[str]:
     )
 
 
+def has_compiler() -> bool:
+    """Whether :func:`compiler` finds a C compiler (the compiled methods, exports built, the tests that need one)."""
+    try:
+        compiler()
+    except ParameterError:
+        return False
+    return True
+
+
 def compile_program(folder: Path, sources: Sequence[str], program: str, flags: Sequence[str] = ("-O2",)) -> Path:
     """Compile and link ``sources`` (in ``folder``) into the executable ``program`` there, with :func:`compiler`.
 
@@ -376,12 +386,10 @@ static inline double hydroservo_pow(double x, double y) {
 
 @dataclass(frozen=True)
 class SourceSet:
-    """The C sources of one model (file name -> text) and what they hold: the C identifier, the counts."""
+    """The C sources of one model (file name -> text) and their C identifier."""
 
     name: str
     files: Mapping[str, str]
-    n_parameters: int
-    n_inputs: int
 
 
 def model_sources(
@@ -433,8 +441,7 @@ def model_sources(
     tables = _tables(cid, model, inputs, defaults, step, method, descriptions)
     files[f"{cid}.h"] = fill_template("stepper.h", values)
     files[f"{cid}.c"] = fill_template("stepper.c", {**values, "DATA": data}) + "\n" + tables
-    return SourceSet(cid, {k: files[k] for k in (f"{cid}.h", f"{cid}.c", f"{cid}_model.c", f"{cid}_model.h")},
-                     n_parameters, len(inputs))  # fmt: skip
+    return SourceSet(cid, {k: files[k] for k in (f"{cid}.h", f"{cid}.c", f"{cid}_model.c", f"{cid}_model.h")})
 
 
 # -- the cache -------------------------------------------------------------------------------------------------
@@ -603,8 +610,7 @@ class Native:
         self.sources = model_sources(model, self.name)
         self.path = compiled(self.sources)
         self._c = bind(self.path, self.name)
-        self.nx, self.np = model.nx, model.np
-        self.ny = len(model.output_names)
+        self.nx = model.nx
 
     def integrate(
         self,

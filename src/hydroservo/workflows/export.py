@@ -245,14 +245,12 @@ class ExportFmu(_CodeExport):
     accuracy: float | str | None = None
 
     def __post_init__(self) -> None:
-        from hydroservo.codegen.c import ADAPTIVE_METHODS, METHODS
+        from hydroservo.codegen.c import ADAPTIVE_METHODS
+        from hydroservo.codegen.fmu import check_cosimulation_method
         from hydroservo.system.integration import DEFAULT_ACCURACY, tolerances
         from hydroservo.workflows.simulate import accuracy_of
 
-        if self.method not in (*METHODS, *ADAPTIVE_METHODS):
-            raise ParameterError(
-                f"{self.name('method')} {self.method!r}: expected one of {', '.join((*METHODS, *ADAPTIVE_METHODS))}"
-            )
+        check_cosimulation_method(self.method, self.name("method"))
         value = accuracy_of(self.accuracy, self.name("accuracy"))
         if value is not None and self.method not in ADAPTIVE_METHODS:
             raise ParameterError(

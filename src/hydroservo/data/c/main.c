@@ -6,8 +6,8 @@
  *     @NAME@ [options] [NAME=VALUE ...]
  *
  * NAME=VALUE sets a parameter (or, with --input, an input) in the unit @NAME@ --list shows (SI, except
- * aliases and temperatures as listed). Exit status: 0 done, 1 the solver stopped (the rows up to there are
- * written and the reason is on stderr), 2 a bad option, value or file.
+ * aliases and temperatures as listed). Exit status: 0 done, 1 the solver stopped (nothing is written; the
+ * reason is on stderr), 2 a bad option, value or file (nothing is written either).
  */
 #include "@NAME@.h"
 
@@ -230,27 +230,27 @@ int main(int argc, char **argv) {
         free(times), free(states), free(outputs), @NAME@_free(m);
         return 2;
     }
+    if (output != NULL && !force) { /* refused before the run, not after it */
+        FILE *existing = fopen(output, "r");
+        if (existing != NULL) {
+            fclose(existing);
+            free(times), free(states), free(outputs), @NAME@_free(m);
+            return @NAME@_fail("--output", output, "a file that does not exist yet (or --force)");
+        }
+    }
     for (long k = 0; k < points; ++k) times[k] = t_end * (double)k / (double)(points - 1);
     @NAME@_reset(m); /* the initial states from the parameters set */
     status = @NAME@_integrate(m, method, events, rtol, rtol / 100.0, 0.0, max_steps, points, times, states, outputs);
-    long rows = points;
-    if (status != @UPPER@_OK) {
+    if (status != @UPPER@_OK) { /* nothing written: no partial result */
         fprintf(stderr, "@NAME@: error: the solver stopped: %s\n", @NAME@_message(m));
-        rows = 0;
-        while (rows < points && times[rows] <= @NAME@_time(m)) ++rows;
+        free(times), free(states), free(outputs), @NAME@_free(m);
+        return 1;
     }
+    /* --output: written beside it under another name, and renamed into place once complete */
+    char part[4096];
     FILE *out = stdout;
     if (output != NULL) {
-        if (!force) {
-            FILE *existing = fopen(output, "r");
-            if (existing != NULL) {
-                fclose(existing);
-                free(times), free(states), free(outputs), @NAME@_free(m);
-                return @NAME@_fail("--output", output, "a file that does not exist yet (or --force)");
-            }
-        }
-        out = fopen(output, "w");
-        if (out == NULL) {
+        if (snprintf(part, sizeof part, "%s.part", output) >= (int)sizeof part || (out = fopen(part, "w")) == NULL) {
             free(times), free(states), free(outputs), @NAME@_free(m);
             return @NAME@_fail("--output", output, "a file that can be written");
         }
@@ -265,18 +265,23 @@ int main(int argc, char **argv) {
         @NAME@_cell(out, @NAME@_output_names[j], @NAME@_output_units[j]);
     }
     fputc('\n', out);
-    for (long k = 0; k < rows; ++k) {
+    for (long k = 0; k < points; ++k) {
         fprintf(out, "%.17g", times[k]);
         for (int i = 0; i < @UPPER@_N_STATES; ++i) fprintf(out, ",%.17g", states[k * @UPPER@_N_STATES + i]);
         for (int j = 0; j < @UPPER@_N_OUTPUTS; ++j) fprintf(out, ",%.17g", outputs[k * @UPPER@_N_OUTPUTS + j]);
         fputc('\n', out);
     }
     int written = fflush(out) == 0 && !ferror(out);
-    if (out != stdout) written = (fclose(out) == 0) && written;
+    if (out != stdout) {
+        written = (fclose(out) == 0) && written;
+        if (written && force) remove(output); /* rename does not replace a file everywhere */
+        written = written && rename(part, output) == 0;
+        if (!written) remove(part);
+    }
     free(times), free(states), free(outputs), @NAME@_free(m);
     if (!written) {
-        fprintf(stderr, "@NAME@: error: the results could not be written\n");
+        fprintf(stderr, "@NAME@: error: the results could not be written%s%s\n", output ? " to " : "", output ? output : "");
         return 2;
     }
-    return status == @UPPER@_OK ? 0 : 1;
+    return 0;
 }

@@ -524,7 +524,6 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
     double h = fmin(@NAME@_first_step(m, t, t_end - t, rtol, atol, explicit_method ? 5 : 2), hmax);
     int have_jacobian = 0, event_step = 0;
     double h_resume = h;
-    (void)events;
 #if @UPPER@_N_SWITCHES > 0
     @NAME@_switches(m, t, m->z, m->g1);
     for (int i = 0; i < @UPPER@_N_SWITCHES; ++i) m->side[i] = (signed char)@NAME@_side(m->g1[i], i);
