@@ -48,7 +48,7 @@ from hydroservo.data import reference_text
 QUOTED_HOPSAN = {1e-4: (5.31e-3, 3.1e-2), 3e-5: (17.2e-3, 6.9e-3), 1e-5: (49.3e-3, 2.1e-3), 3e-6: (168e-3, 5.9e-4),
                  1e-6: (496e-3, 2.0e-4)}  # fmt: skip
 
-HYDROSERVO = [(m, a, e) for m in ("dopri5", "ros23", "cvodes") for a in (1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5)
+HYDROSERVO = [(m, a, e) for m in ("dopri5", "ros23", "rodas3", "cvodes") for a in (1e-1, 3e-2, 1e-2, 3e-3, 1e-3, 3e-4, 1e-4, 3e-5, 1e-5)
               for e in ((True, False) if m != "cvodes" else (True,))]  # fmt: skip
 HOPSAN_STEPS = (1e-4, 3e-5, 1e-5, 3e-6, 1e-6)
 TARGETS = [("x within 3e-2", ("x",), 3e-2), ("x within 1e-3", ("x",), 1e-3), ("x within 1e-4", ("x",), 1e-4),

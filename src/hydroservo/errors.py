@@ -18,6 +18,7 @@ __all__ = [
     "ImplausibleResultError",
     "FluidRangeWarning",
     "ImplausibleResultWarning",
+    "InterpretedWarning",
     "RenamedWarning",
     "shorten",
 ]
@@ -61,6 +62,10 @@ class FluidRangeWarning(UserWarning):
 
 class ImplausibleResultWarning(UserWarning):
     """A run crossed a physical bound (``Result.warnings`` holds each crossing)."""
+
+
+class InterpretedWarning(UserWarning):
+    """``method="auto"`` runs CVODES in the interpreter: no C compiler was found (said once a process)."""
 
 
 class RenamedWarning(UserWarning):

@@ -26,6 +26,7 @@ import pytest
 
 from hydroservo.cli import main
 from hydroservo.data import example_files
+from hydroservo.system.native import has_compiler
 
 GOLDEN = Path(__file__).with_name("cli_golden")
 
@@ -197,5 +198,7 @@ def test_command_output_keeps_its_shape(name: str, argv: list[str], examples_fol
         GOLDEN.mkdir(exist_ok=True)
         path.write_text(json.dumps(record, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
         return
-    expected = json.loads(path.read_text(encoding="utf-8"))
-    assert record == expected
+    text = path.read_text(encoding="utf-8")
+    if "rodas3" in text and not has_compiler():
+        pytest.skip("recorded with the compiled default method (rodas3); without a C compiler simulate runs CVODES")
+    assert record == json.loads(text)

@@ -47,7 +47,7 @@ def add_parsers(sub: Any) -> None:
                    help="the C identifier that starts every symbol and file (default: from the model's name)")
     p.add_argument("--main", action="store_true",
                    help="also write the standalone simulator main.c: a command that reads parameters, runs a "
-                   "variable-step method (ros23 or dopri5) and writes CSV, no Python needed (built with --build)")
+                   "variable-step method (rodas3, ros23 or dopri5) and writes CSV, no Python needed (built with --build)")
     p.add_argument("--build", action="store_true",
                    help="also compile a shared library into the folder with the system's C compiler (CC or cc)")
     add_output_options(p, "hydroservo-NAME-c")

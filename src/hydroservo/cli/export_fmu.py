@@ -31,9 +31,9 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("model", metavar="NAME_OR_FILE")
     p.add_argument("--step", default="1e-4", metavar="H",
                    help="co-simulation: the fixed step of the stepper inside, e.g. 1e-4 or '0.1 ms' (default 1e-4 s)")
-    p.add_argument("--method", choices=["rk4", "bdf2", "ros23", "dopri5"], default="rk4",
+    p.add_argument("--method", choices=["rk4", "bdf2", "rodas3", "ros23", "dopri5"], default="rk4",
                    help="co-simulation: the fixed-step rk4 (explicit, default) or bdf2 (implicit, for stiff circuits), "
-                   "or a variable-step method with error control, ros23 (stiff circuits) or dopri5, that takes any "
+                   "or a variable-step method with error control, rodas3 or ros23 (stiff circuits) or dopri5, that takes any "
                    "communication step")
     p.add_argument("--accuracy", default=None, metavar="A",
                    help="co-simulation with ros23 or dopri5: the deviation wanted, relative to each signal's range, "

@@ -85,10 +85,11 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--rtol", type=float, default=None, help="relative tolerance instead (atol = rtol/100)")
     p.add_argument(
         "--method",
-        default="cvodes",
+        default="auto",
         metavar="M",
-        help="integration method: cvodes (default, BDF), ros23 (compiled Rosenbrock, stiff circuits) or dopri5 "
-        "(compiled Dormand-Prince, non-stiff); the compiled ones are built once per model and cached",
+        help="integration method: auto (default: rodas3 where a C compiler is found, else cvodes), rodas3 (compiled "
+        "Rosenbrock 3(2), stiff circuits), ros23 (compiled Rosenbrock 2(3)), dopri5 (compiled Dormand-Prince, "
+        "non-stiff) or cvodes (BDF, interpreted); the compiled ones are built once per model and cached",
     )
     p.add_argument(
         "--strict",

@@ -49,6 +49,7 @@ import numpy as np
 from hydroservo.errors import ModelError, ParameterError, SolverError, shorten
 from hydroservo.io.files import OutputFolder
 from hydroservo.system.assembly import assemble
+from hydroservo.system.integration import ACCURACY_PER_RTOL_OF
 from hydroservo.system.model import Model
 from hydroservo.system.native import (
     _C_RESERVED,
@@ -239,8 +240,8 @@ def _readme(export: CExport, system: System, model: Model) -> str:
 
 `main.c` is a command built on this API (`make {cid}`): it reads parameters (`NAME=VALUE` arguments, or
 `--params FILE` of such lines, in the units listed below), runs the model from its initial states with a
-variable-step method with error control (`--method ros23`, the default, a Rosenbrock method for stiff circuits,
-or `dopri5`, Dormand-Prince 5(4)), to `--accuracy` (default 1e-4 of each signal's range) and writes the states
+variable-step method with error control (`--method rodas3`, the default, a Rosenbrock method for stiff circuits;
+`ros23`; or `dopri5`, Dormand-Prince 5(4)), to `--accuracy` (default 1e-4 of each signal's range) and writes the states
 and outputs at `--points` equally spaced times as CSV (`t [s],NAME [unit],...`) to standard output or
 `--output FILE`. `./{cid} --help` lists the options, `./{cid} --list` the parameters with their values. Exit
 status 0 done, 1 the solver stopped (nothing is written, the reason is on standard error), 2 a bad option, value
@@ -468,7 +469,8 @@ def export_c(
         out.file("Makefile").write_text(_makefile(cid, files), encoding="utf-8")
         if main:
             values = {"NAME": cid, "UPPER": cid.upper(), "MODEL": _c_comment(system.name), "VERSION": __version__,
-                      "MODEL_STRING": _c_string(system.name)[1:-1], "T_END": _c_number(system.t_end)}  # fmt: skip
+                      "MODEL_STRING": _c_string(system.name)[1:-1], "T_END": _c_number(system.t_end),
+                      **{f"PER_RTOL_{m.upper()}": _c_number(ACCURACY_PER_RTOL_OF[m]) for m in ADAPTIVE_METHODS}}  # fmt: skip
             out.file("main.c").write_text(fill_template("main.c", values), encoding="utf-8")
         if build:
             library_sources = [f for f in files if f.endswith(".c") and f != "main.c"]
@@ -639,14 +641,14 @@ class CStepper:
         self,
         times: Sequence[float] | np.ndarray,
         *,
-        method: str = "ros23",
+        method: str = "rodas3",
         rtol: float = 1e-6,
         atol: float = 1e-8,
         max_step: float = 0.0,
         max_steps: int = 1_000_000,
         events: bool = True,
     ) -> tuple[np.ndarray, np.ndarray]:
-        """Variable steps with error control (``dopri5`` or ``ros23``, :data:`ADAPTIVE_METHODS`) from the current
+        """Variable steps with error control (``rodas3``, ``ros23`` or ``dopri5``, :data:`ADAPTIVE_METHODS`) from the current
         states, taken to be those at ``times[0]``, through the output ``times`` [s] (increasing), in one call
         into C; the inputs are held. ``max_step`` [s] bounds every step (0: only the span does); ``events``
         ends a step at each kink the model declares.

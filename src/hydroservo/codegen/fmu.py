@@ -28,7 +28,7 @@ integrator steps it, as CVODES does inside hydroservo). **Co-Simulation**
 steps it with the stepper's fixed-step method (``rk4`` by default; ``bdf2``
 for stiff circuits, but not across a right-hand side that jumps, docs/fmu.md)
 at the step chosen at export, a communication step being a whole number of
-those steps; or, with ``method="ros23"`` or ``"dopri5"``, with a variable-step
+those steps; or, with ``method="rodas3"``, ``"ros23"`` or ``"dopri5"``, with a variable-step
 method with error control (docs/engine.md, "Compiled solvers") to the
 accuracy chosen at export, over any communication step. Co-simulation starts at t = 0. The model has no events, no integer or boolean variables.
 
@@ -524,12 +524,12 @@ def export_fmu(
         The folder to write to; a file of the same name is replaced only with ``force``.
     step : float or str
         Co-Simulation: the fixed step [s] of the stepper inside (default 0.1 ms).
-    method : "rk4", "bdf2", "ros23" or "dopri5"
+    method : "rk4", "bdf2", "rodas3", "ros23" or "dopri5"
         Co-Simulation: the fixed-step stepper's method (default ``rk4``; ``bdf2``, implicit, for stiff circuits),
-        or a variable-step method with error control (``ros23`` for stiff circuits, ``dopri5``), which takes any
+        or a variable-step method with error control (``rodas3`` or ``ros23`` for stiff circuits, ``dopri5``), which takes any
         communication step and ignores ``step``.
     accuracy : float
-        ``ros23``, ``dopri5``: the deviation wanted, relative to each signal's range (tolerances as
+        ``rodas3``, ``ros23``, ``dopri5``: the deviation wanted, relative to each signal's range (tolerances as
         :func:`~hydroservo.system.integration.tolerances` sets them for the method; default 1e-4).
     inputs : sequence of str
         Component inputs (``"valve.u"``) the host sets; each is added to what drives it in the system.

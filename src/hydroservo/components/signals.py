@@ -66,6 +66,11 @@ class Pulse(Component):
         on = bk.if_else(t >= p["t_start"], 1.0, 0.0) * bk.if_else(t < p["t_start"] + p["duration"], 1.0, 0.0)
         return {"y": p["offset"] + p["amplitude"] * on}
 
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        return {"start": (t - p["t_start"], 1e-3), "end": (t - p["t_start"] - p["duration"], 1e-3)}
+
 
 @register
 class Ramp(Component):
@@ -85,6 +90,12 @@ class Ramp(Component):
         change = p["slope"] * bk.fmax(t - p["t_start"], 0.0)
         change = bk.fmin(bk.fmax(change, -p["limit"]), p["limit"])
         return {"y": p["offset"] + change}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        # the start, and the change reaching its limit (never, at the default limit)
+        return {"start": (t - p["t_start"], 1e-3), "limit": (bk.fabs(p["slope"]) * (t - p["t_start"]) - p["limit"], 1.0)}
 
 
 @register
@@ -107,6 +118,11 @@ class Sine(Component):
         wave = p["amplitude"] * bk.sin(2 * np.pi * p["frequency"] * tau + p["phase"])
         return {"y": p["offset"] + bk.if_else(tau >= 0, wave, 0.0)}
 
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        return {"start": (t - p["t_start"], 1e-3)}
+
 
 @register
 class Square(Component):
@@ -128,6 +144,12 @@ class Square(Component):
         frac = phase - bk.floor(phase)
         wave = bk.if_else(frac < 0.5, p["amplitude"], -p["amplitude"])
         return {"y": p["offset"] + bk.if_else(tau >= 0, wave, 0.0)}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        # the start, and each edge: the sine of the same frequency changes sign where the square wave jumps
+        return {"start": (t - p["t_start"], 1e-3), "edge": (bk.sin(2 * np.pi * p["frequency"] * (t - p["t_start"])), 1.0)}
 
 
 @register

@@ -23,7 +23,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError
 
-__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "METHODS", "check_method", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
+__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "METHODS", "DEFAULT_METHOD", "AUTO_METHOD", "check_method", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
 
 #: Largest output grid [points]: 100 001 points of 20 signals are 16 MB; a million would be gigabytes.
 MAX_POINTS = 100_001
@@ -63,7 +63,7 @@ RTOL_PER_ATOL = 100.0
 #: step's error as CVODES does, but their global error grows more over a run (ros23 is of order 2, and dopri5
 #: rides its stability bound on stiff circuits); 1000 meets the accuracy on the built-in models where 100 does not
 #: (benchmarks/bench_accuracy.py, docs/engine.md).
-ACCURACY_PER_RTOL_OF = {"cvodes": ACCURACY_PER_RTOL, "ros23": 1000.0, "dopri5": 1000.0}
+ACCURACY_PER_RTOL_OF = {"cvodes": ACCURACY_PER_RTOL, "ros23": 1000.0, "dopri5": 1000.0, "rodas3": 100.0}
 
 
 def tolerances(accuracy: float, method: str = "cvodes") -> tuple[float, float]:
@@ -78,17 +78,24 @@ def tolerances(accuracy: float, method: str = "cvodes") -> tuple[float, float]:
     return rtol, rtol / RTOL_PER_ATOL
 
 
-#: The integration methods of a run: CVODES, and the compiled variable-step methods of
-#: :mod:`hydroservo.system.native` (the same names as its ``ADAPTIVE_METHODS``).
-METHODS = ("cvodes", "ros23", "dopri5")
+#: The integration methods of a run: ``auto`` (the default: :data:`AUTO_METHOD` where a C compiler is found,
+#: else CVODES), CVODES, and the compiled variable-step methods of :mod:`hydroservo.system.native` (the same names
+#: as its ``ADAPTIVE_METHODS``).
+METHODS = ("auto", "cvodes", "rodas3", "ros23", "dopri5")
+DEFAULT_METHOD = "auto"
+#: What ``auto`` runs where the model compiles: the L-stable Rosenbrock 3(2) of Sandu et al. on the exact Jacobian, which
+#: meets the accuracy asked for on every built-in model in 0.2 to 0.4 of CVODES' time at the default accuracy
+#: (docs/engine.md, "Accuracy").
+AUTO_METHOD = "rodas3"
 
 
 def check_method(method: str) -> str:
     """``method`` if it is one of :data:`METHODS`."""
     if method not in METHODS:
         raise ParameterError(
-            f"method = {method!r}: expected one of {', '.join(METHODS)} (cvodes: BDF with error control, the default; "
-            "ros23: compiled Rosenbrock 2(3) for stiff circuits; dopri5: compiled Dormand-Prince 5(4), explicit)"
+            f"method = {method!r}: expected one of {', '.join(METHODS)} (auto: the default, rodas3 where a C compiler "
+            "is found, else cvodes; cvodes: BDF with error control, interpreted; rodas3: compiled Rosenbrock 3(2) for "
+            "stiff circuits; ros23: compiled Rosenbrock 2(3); dopri5: compiled Dormand-Prince 5(4), explicit)"
         )
     return method
 

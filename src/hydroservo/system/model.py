@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import os
+import threading
 import time
 import warnings
 from collections.abc import Callable, Mapping, Sequence
@@ -20,9 +21,11 @@ from typing import TYPE_CHECKING, Any
 import casadi as ca
 import numpy as np
 
-from hydroservo.errors import ImplausibleResultWarning, ParameterError, SolverError, TrimError
+from hydroservo.errors import ImplausibleResultWarning, InterpretedWarning, ParameterError, SolverError, TrimError
 from hydroservo.system.implicit import NEWTON_STEPS, TOLERANCE
 from hydroservo.system.integration import (
+    AUTO_METHOD,
+    DEFAULT_METHOD,
     SolverSettings,
     batch_columns,
     captured,
@@ -39,6 +42,20 @@ if TYPE_CHECKING:
     from hydroservo.system.assembly import Assembly
 
 __all__ = ["Model"]
+
+_INTERPRETED_SAID = threading.Event()
+
+
+def _interpreted_once(why: str) -> None:
+    """Say once a process that ``method="auto"`` runs CVODES in CasADi's interpreter, and why."""
+    if not _INTERPRETED_SAID.is_set():
+        _INTERPRETED_SAID.set()
+        warnings.warn(
+            f"simulating with CVODES in CasADi's interpreter, 2 to 5 times slower than compiled ({why}). "
+            "Install a C compiler (cc, gcc or clang) for the compiled solvers, or pass method='cvodes' to choose it",
+            InterpretedWarning,
+            stacklevel=5,
+        )
 
 #: The largest expression a batch's outputs or plausibility checks are unrolled into over the output times
 #: [instructions]: beyond it (many times, many outputs), the mapped function is kept as it is.
@@ -266,10 +283,10 @@ class Model:
         max_steps: int | None = None,
         initial: str | Mapping[str, float] = "parameters",
         accuracy: float | None = None,
-        method: str = "cvodes",
+        method: str = DEFAULT_METHOD,
         events: bool = True,
     ) -> Result:
-        """Integrate with CVODES (BDF, Newton with the exact Jacobian), or a compiled variable-step method.
+        """Integrate with a compiled variable-step method, or with CVODES (BDF, Newton with the exact Jacobian).
 
         Parameters
         ----------
@@ -296,10 +313,13 @@ class Model:
         initial : "parameters", "trim" or mapping
             Initial state, see :meth:`initial_state`.
         method : str
-            ``"cvodes"`` (default), or one of :data:`~hydroservo.system.native.ADAPTIVE_METHODS` run as compiled
-            C (:mod:`hydroservo.system.native`; built once per model and kept in the user's cache folder):
-            ``"ros23"`` (Rosenbrock 2(3) on the exact Jacobian, for stiff circuits at moderate accuracy) or
-            ``"dopri5"`` (explicit Dormand-Prince 5(4), for circuits that are not stiff). docs/engine.md
+            ``"auto"`` (default): ``"rodas3"`` where the model compiles (a C compiler is found), else ``"cvodes"``
+            (said once per process). The compiled methods (:data:`~hydroservo.system.native.ADAPTIVE_METHODS`,
+            :mod:`hydroservo.system.native`; C built once per model structure and kept in the user's cache
+            folder): ``"rodas3"`` (Sandu et al.'s Rosenbrock 3(2) on the exact Jacobian, L-stable, for stiff circuits: every
+            built-in model), ``"ros23"`` (Rosenbrock 2(3), cheaper steps at loose accuracy) or ``"dopri5"``
+            (explicit Dormand-Prince 5(4), for circuits that are not stiff). ``"cvodes"``: SUNDIALS' BDF through
+            CasADi's interpreter, no compiler needed. ``Result.stats["method"]`` says which ran; docs/engine.md
             compares them.
         events : bool
             Compiled methods: end a step at each kink or jump the components declare (end stops, a chamber at
@@ -314,7 +334,8 @@ class Model:
             reason and the fastest mode of the model there.
         """
         grid = output_grid(t_end, t_eval, n_points)
-        settings = SolverSettings.of(rtol, atol, accuracy, max_steps, method=check_method(method))
+        method = self._resolve(check_method(method))
+        settings = SolverSettings.of(rtol, atol, accuracy, max_steps, method=method)
         p = self._check_parameters(p)
         x0 = self.initial_state(p, initial, t0=float(grid[0]))
         self._check_initial(x0)
@@ -347,12 +368,26 @@ class Model:
         if why is not None:
             raise SolverError(f"integration of {self.name!r}: {why}")
         stats = {k: v for k, v in found.items() if not k.endswith("B") and isinstance(v, (int, float))}
-        stats = {
+        kept: dict[str, Any] = {
             k: stats[k] for k in ("nsteps", "nfevals", "nlinsetups", "netfails", "nniters", "nncfails") if k in stats
         }
-        stats["rtol"], stats["atol"] = settings.rtol, settings.atol
-        stats["wall_time_s"] = wall
+        kept.update({"method": "cvodes", "rtol": settings.rtol, "atol": settings.atol, "wall_time_s": wall})
+        stats = kept
         return self._result(grid, None, p, stats, xf)
+
+    def _resolve(self, method: str) -> str:
+        """The method ``method`` names: ``auto`` is :data:`~hydroservo.system.integration.AUTO_METHOD` if this
+        model compiles, else ``cvodes`` with a :class:`~hydroservo.errors.InterpretedWarning` (once a process)."""
+        if method != "auto":
+            return method
+        from hydroservo.system.native import native
+
+        try:
+            native(self)
+        except ParameterError as exc:
+            _interpreted_once(str(exc))
+            return "cvodes"
+        return AUTO_METHOD
 
     def _compiled_solvers(self, method: str) -> Any:
         """The compiled solvers of this model (:func:`hydroservo.system.native.native`), or why not."""
@@ -840,7 +875,7 @@ class Model:
         failed: Mapping[int, str] | None = None,
         progress: Callable[[int, int], None] | None = None,
         accuracy: float | None = None,
-        method: str = "cvodes",
+        method: str = DEFAULT_METHOD,
         events: bool = True,
     ) -> BatchResult:
         """Run the model once per parameter set, the integrator mapped over the sets.
@@ -859,7 +894,8 @@ class Model:
         each set on a thread of its own, the interpreter's lock released while it integrates.
         """
         grid = output_grid(t_end, t_eval, n_points)
-        settings = SolverSettings.of(rtol, atol, accuracy, max_steps, method=check_method(method))
+        method = self._resolve(check_method(method))
+        settings = SolverSettings.of(rtol, atol, accuracy, max_steps, method=method)
         if threads is not None and (isinstance(threads, bool) or not isinstance(threads, int) or threads < 1):
             raise ParameterError(f"threads = {threads!r}: expected a whole number of threads, at least 1")
         P = self._batch_parameters(self._check_parameters(p_base), sets)

@@ -81,7 +81,7 @@ METHODS = ("rk4", "bdf2")
 #: The variable-step methods with error control of every export (``integrate``), in the order of their C
 #: constants: ``dopri5`` (explicit, Dormand-Prince 5(4)) and ``ros23`` (linearly implicit, Rosenbrock 2(3), for
 #: stiff circuits).
-ADAPTIVE_METHODS = ("dopri5", "ros23")
+ADAPTIVE_METHODS = ("dopri5", "ros23", "rodas3")
 
 
 #: bdf2: a step's Newton iterations have converged when the last correction of every state is at most this
@@ -662,12 +662,16 @@ _LOCK = threading.Lock()
 
 def native(model: Model) -> Native:
     """The compiled solvers of ``model``: built on first use (from the disk cache if it holds them) and kept on
-    the model."""
-    found = getattr(model, "_native_solvers", None)
+    the model, one per cache folder (:func:`cache_folder`, which ``HYDROSERVO_CACHE`` may change)."""
+    folder = cache_folder()
+    kept = getattr(model, "_native_solvers", None)
+    found = None if kept is None else kept.get(folder)
     if found is None:
         with _LOCK:
-            found = getattr(model, "_native_solvers", None)
+            kept = getattr(model, "_native_solvers", None)
+            if kept is None:
+                kept = model._native_solvers = {}  # type: ignore[attr-defined]
+            found = kept.get(folder)
             if found is None:
-                found = Native(model)
-                model._native_solvers = found  # type: ignore[attr-defined]
+                found = kept[folder] = Native(model)
     return found

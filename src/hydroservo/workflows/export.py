@@ -200,7 +200,7 @@ class FmuReport(Report):
             f"parameters {len(e.parameters)} ({sum(e.tunable)} tunable), inputs {len(e.inputs)}, states "
             f"{len(e.states)}, outputs {len(e.outputs)}",
             (f"  co-simulation: {e.method}, variable steps with error control (any communication step)"
-             if e.method in ("ros23", "dopri5")
+             if e.method in ("rodas3", "ros23", "dopri5")
              else f"  co-simulation: {e.method}, fixed step {e.step:g} s (communication steps a whole number of it)"),
         ]
         renamed = [v for v in e.variables if v.name != v.signal and v.kind != "derivative"]
@@ -254,8 +254,8 @@ class ExportFmu(_CodeExport):
         value = accuracy_of(self.accuracy, self.name("accuracy"))
         if value is not None and self.method not in ADAPTIVE_METHODS:
             raise ParameterError(
-                f"{self.name('accuracy')} {self.accuracy}: only for a variable-step co-simulation method (ros23 or "
-                f"dopri5); {self.method} steps at the fixed {self.name('step')}"
+                f"{self.name('accuracy')} {self.accuracy}: only for a variable-step co-simulation method (rodas3, "
+                f"ros23 or dopri5); {self.method} steps at the fixed {self.name('step')}"
             )
         self.accuracy_value = DEFAULT_ACCURACY if value is None else value
         try:

@@ -103,10 +103,11 @@ def solver_table(stats: Mapping[str, Any]) -> Table:
         "nsteps": "steps", "nfevals": "right-hand side evaluations", "nlinsetups": "Jacobians (linear solver setups)",
         "netfails": "error-test failures", "nniters": "Newton iterations", "nncfails": "Newton failures",
         "rtol": "relative tolerance", "atol": "absolute tolerance", "wall_time_s": "integration wall time [s]",
-        "nrejected": "rejected steps", "njevals": "Jacobians",
+        "nrejected": "rejected steps", "njevals": "Jacobians", "nevents": "events (steps ended at a kink)",
     }
     rows = [[labels.get(k, k), v] for k, v in stats.items() if isinstance(v, int | float) and math.isfinite(v)]
     captions = {
+        "rodas3": "rodas3 (compiled): Rosenbrock 3(2) of Sandu et al., L-stable, on the exact Jacobian",
         "ros23": "ros23 (compiled): Rosenbrock 2(3) of Shampine and Reichelt on the exact Jacobian",
         "dopri5": "dopri5 (compiled): Dormand-Prince 5(4), explicit",
     }

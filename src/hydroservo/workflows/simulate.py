@@ -66,7 +66,8 @@ class SimulationReport(Report):
         out = [
             f"simulated {self.system.name!r} for {self.t_end:g} s in {self.wall_time * 1e3:.1f} ms "
             f"(integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps"
-            + (f", {result.stats['method']} compiled" if "method" in result.stats else "")
+            + (f", {result.stats['method']}" + (" compiled" if result.stats["method"] != "cvodes" else "")
+               if "method" in result.stats else "")
             + ")"
         ]
         rows = [(n, s["unit"], s["final"], s["min"], s["max"]) for n, s in result.summary().items()]
@@ -156,8 +157,8 @@ class Simulate(Workflow):
     rtol : float, optional
         Relative tolerance (absolute: rtol/100).
     method : str
-        ``cvodes`` (default), or the compiled ``ros23`` or ``dopri5``
-        (:meth:`~hydroservo.system.model.Model.simulate`).
+        ``auto`` (default: the compiled ``rodas3`` where a C compiler is found, else ``cvodes``), ``cvodes``, or
+        the compiled ``rodas3``, ``ros23`` or ``dopri5`` (:meth:`~hydroservo.system.model.Model.simulate`).
     strict : bool
         Refuse a physically implausible result (:class:`~hydroservo.errors.ImplausibleResultError`).
     write : str or list of str, optional
@@ -175,7 +176,7 @@ class Simulate(Workflow):
     rtol: float | None = None
     strict: bool = False
     write: str | Sequence[str] | None = None
-    method: str = "cvodes"
+    method: str = "auto"
 
     def __post_init__(self) -> None:
         from hydroservo.units import to_si

@@ -33,7 +33,7 @@ except ParameterError:
 
 def _tight(system: hs.System, t_end: float, dt: float, **kwargs: Any) -> hs.Result:
     """CVODES at rtol 1e-10 on a grid of ``dt``."""
-    return system.simulate(t_end, t_eval=np.linspace(0.0, t_end, round(t_end / dt) + 1), rtol=1e-10, atol=1e-12,
+    return system.simulate(t_end, t_eval=np.linspace(0.0, t_end, round(t_end / dt) + 1), rtol=1e-10, atol=1e-12, method="cvodes",
                            **kwargs)  # fmt: skip
 
 
@@ -179,7 +179,7 @@ def test_input_matches_the_perturbed_model_under_cvodes(servo_rk4: CStepper) -> 
     model = Model(assemble(system, perturbed=("valve.u",)))
     assert model.parameter_names[-1] == "d(valve.u)"
     p = np.append(system.parameter_vector(), 0.05)
-    ref = model.simulate(0.2, p, t_eval=np.linspace(0.0, 0.2, 201), rtol=1e-10, atol=1e-12)
+    ref = model.simulate(0.2, p, t_eval=np.linspace(0.0, 0.2, 201), rtol=1e-10, atol=1e-12, method="cvodes")
     servo_rk4.reset()
     servo_rk4.set_input("valve.u", 0.05)
     t, held = servo_rk4.run(0.2)
@@ -474,7 +474,7 @@ def _end_error(stepper: CStepper, method: str, h: float = 0.0, rtol: float = 0.5
     return abs(states[-1, stepper.export.states.index("load.x")] - _driven_spring_position(np.array([1.0]))[0])
 
 
-@pytest.mark.parametrize(("method", "order"), [("dopri5", 5), ("ros23", 2)])
+@pytest.mark.parametrize(("method", "order"), [("dopri5", 5), ("ros23", 2), ("rodas3", 3)])
 def test_observed_order_of_the_variable_step_methods(spring: CStepper, method: str, order: int) -> None:
     """Halving the step divides the error by 2^p, within half an order (a wrong coefficient loses one or more)."""
     coarse, fine = _end_error(spring, method, 0.02), _end_error(spring, method, 0.01)
@@ -482,7 +482,7 @@ def test_observed_order_of_the_variable_step_methods(spring: CStepper, method: s
     assert order - 0.5 < observed < order + 0.7, (coarse, fine, observed)
 
 
-@pytest.mark.parametrize("method", ["dopri5", "ros23"])
+@pytest.mark.parametrize("method", ["dopri5", "ros23", "rodas3"])
 def test_error_control_follows_the_tolerance(spring: CStepper, method: str) -> None:
     """The tolerance sets the steps: the error at 1 s (of a 10 mm swing) stays within 1000 rtol of the amplitude
     (a local tolerance: the global error of three undamped periods adds up over the steps, most for the
@@ -492,17 +492,19 @@ def test_error_control_follows_the_tolerance(spring: CStepper, method: str) -> N
     assert errors[1] < errors[0] / 10
 
 
-@pytest.mark.parametrize("method", ["dopri5", "ros23"])
-def test_dense_output_between_steps(spring: CStepper, method: str) -> None:
-    """Output times inside steps come from the cubic Hermite interpolant: within 1000 rtol of the swing of the
-    closed form (the bound of the steps' own global error, above) at every one of 2001 times."""
+@pytest.mark.parametrize("method", ["dopri5", "ros23", "rodas3"])
+def test_every_output_time_ends_a_step(spring: CStepper, method: str) -> None:
+    """No step passes an output time, so outputs are the steps' own ends (not interpolated) and an input cannot
+    change between two of them unseen: within 1000 rtol of the swing of the closed form (the bound of the
+    steps' own global error, above) at every one of 2001 times, in at least 2000 steps; and a step shortened to
+    land on an output time does not slow the steps after it (few more steps than outputs)."""
     spring.reset()
     times = np.linspace(0.0, 1.0, 2001)
     states, _ = spring.integrate(times, method=method, rtol=1e-6, atol=1e-8)
     x = states[:, spring.export.states.index("load.x")]
     assert np.max(np.abs(x - _driven_spring_position(times))) < 1000 * 1e-6 * 0.01
     stats = spring.integration_statistics()
-    assert stats["steps"] < 2000 and stats["rejected"] < stats["steps"]  # fewer steps than outputs: interpolated
+    assert 2000 <= stats["steps"] < 2300 and stats["rejected"] < stats["steps"]
 
 
 @pytest.fixture(scope="module")
@@ -510,10 +512,10 @@ def flight() -> tuple[CStepper, hs.Result]:
     """The flight simulator's export, and CVODES at rtol 1e-10 on 401 times."""
     system = hs.load_model("flight-simulator")
     grid = np.linspace(0.0, 2.0, 401)
-    return CStepper(system, step=1e-4), system.simulate(t_eval=grid, rtol=1e-10, atol=1e-12)
+    return CStepper(system, step=1e-4), system.simulate(t_eval=grid, rtol=1e-10, atol=1e-12, method="cvodes")
 
 
-@pytest.mark.parametrize("method", ["dopri5", "ros23"])
+@pytest.mark.parametrize("method", ["dopri5", "ros23", "rodas3"])
 def test_flight_simulator_agrees_with_cvodes(flight: tuple[CStepper, hs.Result], method: str) -> None:
     """At rtol 1e-5 (accuracy 1e-3) the states and the main outputs are within 1e-3 of their range of CVODES'."""
     stepper, ref = flight

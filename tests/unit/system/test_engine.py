@@ -8,6 +8,9 @@ import pytest
 import hydroservo as hs
 from hydroservo import components as c
 from hydroservo.errors import SolverError, TrimError
+from hydroservo.system.native import has_compiler
+
+needs_compiler = pytest.mark.skipif(not has_compiler(), reason="no C compiler")
 
 
 def test_undamped_spring_mass_matches_cosine(spring_mass) -> None:
@@ -67,23 +70,28 @@ def test_batch_runs_on_the_threads_asked_for_each_call(spring_mass) -> None:
     # The mapped integrator is cached; a second call with fewer threads must not reuse the first's threads.
     s = spring_mass(B=10.0)
     ks = [400.0, 800.0, 1600.0, 3200.0]
-    s.batch({"load.k_spring": ks}, t_end=0.1, n_points=11, threads=2)
-    s.batch({"load.k_spring": ks}, t_end=0.1, n_points=11, threads=1)
+    s.batch({"load.k_spring": ks}, t_end=0.1, n_points=11, threads=2, method="cvodes")
+    s.batch({"load.k_spring": ks}, t_end=0.1, n_points=11, threads=1, method="cvodes")
     maps = s.build()._batch_maps  # (integrator, runs, threads) -> mapped integrator; the model may be shared
     assert sorted(threads for _, runs, threads in maps if runs == 4) == [1, 2]
 
 
-def test_solver_failure_names_time_and_state() -> None:
+@pytest.mark.parametrize("method", ["cvodes", pytest.param("rodas3", marks=needs_compiler)])
+def test_solver_failure_names_time_and_state(method) -> None:
     s = hs.System("runaway")
     s.add(c.Volume("vol", V=1e-5, beta_e=1e9, p0=1e5))
     s.add(c.Gain("pump", K=1e-6))  # flow proportional to pressure: exponential blow-up
     s.connect("vol.p", "pump.u")
     s.connect("pump.y", "vol.Q1")
     with pytest.raises(SolverError) as info:
-        s.simulate(t_end=1.0, max_steps=200)
+        s.simulate(t_end=1.0, max_steps=200, method=method)
     msg = str(info.value)
-    # where (the output interval and CVODES' own time), what (the state) and why (budget, unstable mode)
-    assert "between t = 0 s and 0.001 s" in msg and "CVODES stopped at t = " in msg
+    # where (CVODES: the output interval and its own time; compiled: the time it stopped), what (the state) and
+    # why (budget, unstable mode)
+    if method == "cvodes":
+        assert "between t = 0 s and 0.001 s" in msg and "CVODES stopped at t = " in msg
+    else:
+        assert "(rodas3, compiled) failed: t = " in msg
     assert "step budget" in msg and "vol.p" in msg and "unstable" in msg
 
 

@@ -40,12 +40,12 @@ def _spring(name: str = "spring") -> hs.System:
     return s
 
 
-@pytest.mark.parametrize("method", ["ros23", "dopri5"])
+@pytest.mark.parametrize("method", ["rodas3", "ros23", "dopri5"])
 def test_simulate_with_a_compiled_method_agrees_with_cvodes(method: str) -> None:
     """servo-solenoid-cylinder at accuracy 1e-4: every plotted signal within 1e-3 of its range of CVODES'
     (ros23 deviates most, 5.9e-5 measured), outputs and plausibility checks read as for CVODES."""
     system = hs.load_model("servo-solenoid-cylinder")
-    ref = system.simulate(rtol=1e-10, atol=1e-12)
+    ref = system.simulate(rtol=1e-10, atol=1e-12, method="cvodes")
     run = system.simulate(method=method)
     assert run.stats["method"] == method and run.stats["nsteps"] > 0
     for name in (n for panel in system.default_panels() for n in panel):
@@ -54,7 +54,7 @@ def test_simulate_with_a_compiled_method_agrees_with_cvodes(method: str) -> None
 
 
 def test_an_unknown_method_is_refused_with_the_choices() -> None:
-    with pytest.raises(ParameterError, match="method = 'euler': expected one of cvodes, ros23, dopri5"):
+    with pytest.raises(ParameterError, match="method = 'euler': expected one of auto, cvodes, rodas3, ros23, dopri5"):
         _spring().simulate(method="euler")
 
 
@@ -107,7 +107,7 @@ def test_hostile_names_reach_c_only_as_strings() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         run = system.simulate(method="ros23", rtol=1e-8)
-    ref = system.simulate(rtol=1e-10, atol=1e-12)
+    ref = system.simulate(rtol=1e-10, atol=1e-12, method="cvodes")
     assert "system(" not in sources.files["hs_hostile.c"] and "*/ #include" not in sources.files["hs_hostile.c"]
     assert np.max(np.abs(run["y"] - ref["load.x"])) < 1000 * 1e-8 * 0.02  # ros23's global error: test_adaptive
 
@@ -136,7 +136,7 @@ def test_without_a_compiler_a_compiled_method_is_refused_with_the_way_out(monkey
     monkeypatch.setattr(native, "compiler", no_compiler)
     with pytest.raises(ParameterError, match=r"method = 'ros23' runs the model compiled to C.*method='cvodes' needs none"):
         _spring("no-compiler").simulate(method="ros23")
-    assert np.isfinite(_spring("no-compiler").simulate()["load.x"]).all()  # CVODES needs none
+    assert np.isfinite(_spring("no-compiler").simulate(method="cvodes")["load.x"]).all()  # CVODES needs none
 
 
 def _stepped_lag() -> hs.System:
@@ -148,7 +148,7 @@ def _stepped_lag() -> hs.System:
     return s
 
 
-@pytest.mark.parametrize("method", ["dopri5", "ros23"])
+@pytest.mark.parametrize("method", ["dopri5", "ros23", "rodas3"])
 def test_an_event_ends_a_step_at_the_kink(method: str) -> None:
     """The step source declares its time as a switch: the solver finds the crossing and ends a step just past
     it, so the solution is the closed form to the tolerance's level right after the step, at a loose tolerance
@@ -162,3 +162,52 @@ def test_an_event_ends_a_step_at_the_kink(method: str) -> None:
     assert np.max(np.abs(run["lag.y"] - exact)) < 1e-4  # measured 1.6e-5 (dopri5), 5.4e-5 (ros23)
     across = system.simulate(t_eval=times, method=method, accuracy=1e-2, events=False)
     assert across.stats["nevents"] == 0 and np.isfinite(across["lag.y"]).all()
+
+
+def test_auto_runs_rodas3_where_the_model_compiles() -> None:
+    run = _spring("auto").simulate()
+    assert run.stats["method"] == "rodas3" == hs.system.integration.AUTO_METHOD
+
+
+def test_without_a_compiler_auto_runs_cvodes_and_says_so_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    from hydroservo.errors import InterpretedWarning
+    from hydroservo.system import model as model_module
+
+    def no_compiler() -> list[str]:
+        raise ParameterError("C compiler: none found (CC is not set, and none of cc, gcc, clang is on PATH)")
+
+    monkeypatch.setattr(native, "compiler", no_compiler)
+    monkeypatch.setattr(model_module, "_INTERPRETED_SAID", model_module.threading.Event())
+    with pytest.warns(InterpretedWarning, match="CVODES in CasADi's interpreter.*none found.*Install a C compiler"):
+        first = _spring("auto-no-compiler").simulate()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", InterpretedWarning)  # said once a process
+        second = _spring("auto-no-compiler-2").simulate()
+    assert first.stats["method"] == second.stats["method"] == "cvodes"
+
+
+@pytest.mark.parametrize("method", ["rodas3", "ros23", "dopri5"])
+def test_a_square_wave_is_not_stepped_over(method: str) -> None:
+    """A 10 Hz square wave into a 5 ms lag, held at its level long enough for the steps to grow past a
+    half-period: each edge is seen (an event) and the lag follows it, as CVODES has it at rtol 1e-10, within
+    1e-3 of the range at accuracy 1e-3. Before the square wave declared its edges and output times ended steps,
+    rodas3 stepped from one level to the same level a period later and missed both edges between (the
+    two-stage servovalve's 25 % square wave, tests/unit/components/valves/test_two_stage.py)."""
+    s = hs.System("square-into-lag", t_end=0.3)
+    s.add(c.Square("u", frequency=10.0))
+    s.add(c.Lag("lag", tau=0.005))
+    s.connect("u.y", "lag.u")
+    ref = s.simulate(n_points=301, rtol=1e-10, atol=1e-12, method="cvodes")
+    run = s.simulate(n_points=301, accuracy=1e-3, method=method)
+    assert run.stats["nevents"] == 5  # the edges at 0.05, 0.1, ..., 0.25 s
+    assert np.max(np.abs(run["lag.y"] - ref["lag.y"])) < 1e-3 * np.ptp(ref["lag.y"])
+
+
+@pytest.mark.parametrize("method", ["rodas3", "dopri5"])
+def test_output_times_a_hair_apart_are_one_step_end(method: str) -> None:
+    """Output times closer than any step can be (a grid merged from two sources: 0.015 and the next float after
+    it) end one step and share its state, rather than asking for a step of 1e-18 s."""
+    t = 0.015
+    grid = [0.0, t, float(np.nextafter(t, 1.0)), 0.03]
+    run = _spring("hair").simulate(t_eval=grid, method=method)
+    assert run["load.x"][1] == run["load.x"][2] and np.isfinite(run["load.x"]).all()

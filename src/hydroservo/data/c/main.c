@@ -19,6 +19,8 @@
 
 #define @UPPER@_MAIN_T_END @T_END@
 #define @UPPER@_MAIN_ACCURACY 1e-4
+/* accuracy per unit of rtol of each method, as in hydroservo (system.integration.ACCURACY_PER_RTOL_OF) */
+static const double @NAME@_per_rtol[4] = {1.0, @PER_RTOL_DOPRI5@, @PER_RTOL_ROS23@, @PER_RTOL_RODAS3@};
 #define @UPPER@_MAIN_MAX_LINE 4096
 
 static const char *@NAME@_usage =
@@ -26,7 +28,8 @@ static const char *@NAME@_usage =
     "Simulates the hydroservo model '@MODEL_STRING@' and writes CSV (time, states, outputs).\n"
     "  --t-end T        duration [s] (default @T_END@)\n"
     "  --points N       output times, equally spaced from 0 (default 1001)\n"
-    "  --method M       ros23 (default: Rosenbrock 2(3), for stiff circuits) or dopri5 (Dormand-Prince 5(4))\n"
+    "  --method M       rodas3 (default: Rosenbrock 3(2), for stiff circuits), ros23 (Rosenbrock 2(3)) or dopri5\n"
+    "                   (Dormand-Prince 5(4), explicit)\n"
     "  --accuracy A     deviation wanted, relative to each signal's range (default 1e-4)\n"
     "  --rtol R         relative tolerance instead (atol = rtol / 100)\n"
     "  --max-steps N    step budget (default 10000000)\n"
@@ -144,7 +147,7 @@ static void @NAME@_cell(FILE *out, const char *name, const char *unit) {
 int main(int argc, char **argv) {
     double t_end = @UPPER@_MAIN_T_END, accuracy = @UPPER@_MAIN_ACCURACY, rtol = 0.0;
     long points = 1001, max_steps = 10000000;
-    int method = @UPPER@_ROS23, events = 1, list = 0, force = 0, ok = 0, status = 0;
+    int method = @UPPER@_RODAS3, events = 1, list = 0, force = 0, ok = 0, status = 0;
     const char *output = NULL;
     @NAME@_instance *m = @NAME@_new();
     if (m == NULL) {
@@ -180,12 +183,14 @@ int main(int argc, char **argv) {
             points = (long)n;
         } else if (strcmp(a, "--method") == 0) {
             ++i;
-            if (strcmp(argv[i], "ros23") == 0) {
+            if (strcmp(argv[i], "rodas3") == 0) {
+                method = @UPPER@_RODAS3;
+            } else if (strcmp(argv[i], "ros23") == 0) {
                 method = @UPPER@_ROS23;
             } else if (strcmp(argv[i], "dopri5") == 0) {
                 method = @UPPER@_DOPRI5;
             } else {
-                status = @NAME@_fail(a, argv[i], "ros23 or dopri5");
+                status = @NAME@_fail(a, argv[i], "rodas3, ros23 or dopri5");
             }
         } else if (strcmp(a, "--accuracy") == 0) {
             accuracy = @NAME@_number(argv[++i], &ok);
@@ -220,8 +225,8 @@ int main(int argc, char **argv) {
         @NAME@_free(m);
         return 0;
     }
-    /* the tolerances of hydroservo's accuracy for these methods: rtol = accuracy / 1000, atol = rtol / 100 */
-    if (rtol == 0.0) rtol = accuracy / 1000.0;
+    /* the tolerances of hydroservo's accuracy for the method: rtol = accuracy / per_rtol, atol = rtol / 100 */
+    if (rtol == 0.0) rtol = accuracy / @NAME@_per_rtol[method];
     double *times = malloc(sizeof(double) * (size_t)points);
     double *states = malloc(sizeof(double) * (size_t)points * (@UPPER@_N_STATES > 0 ? @UPPER@_N_STATES : 1));
     double *outputs = malloc(sizeof(double) * (size_t)points * (@UPPER@_N_OUTPUTS > 0 ? @UPPER@_N_OUTPUTS : 1));

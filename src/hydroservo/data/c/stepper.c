@@ -25,20 +25,24 @@
  * acts from the next step on, as in CVODES' solution.
  *
  * @NAME@_integrate: variable steps with error control, from the instance's time and states through a list of
- * output times (dense output between steps), for either method of the run's choosing:
+ * output times (dense output between steps), with the method of the run's choosing:
  * dopri5: the explicit Runge-Kutta pair of Dormand and Prince, order 5 with an embedded order-4 error
  *     estimate, seven stages of which the last is the next step's first ([Dormand1980]; [Hairer1993],
  *     Table II.5.2);
  * ros23: the linearly implicit Rosenbrock pair of Shampine and Reichelt, order 2 with an order-3 error
  *     estimate, L-stable, on the exact Jacobian and the exact time derivative of the rates
- *     ([Shampine1997] section 3; Rosenbrock methods: [Hairer1996] section IV.7), for stiff circuits.
+ *     ([Shampine1997] section 3; Rosenbrock methods: [Hairer1996] section IV.7), for stiff circuits;
+ * rodas3: the linearly implicit Rosenbrock pair RODAS3 of Sandu et al., order 3 with an order-2 error
+ *     estimate, L-stable and stiffly accurate, on the same Jacobian and time derivative ([Sandu1997]), for
+ *     stiff circuits at the accuracies ros23 needs many steps for.
  * The error of a step is the root mean square over the scaled states of
  *     err_i / (atol + rtol max(|z0_i|, |z1_i|))
  * and a step is accepted when it is at most 1; the next step is h (1/err)^(1/(q+1)) times 0.9, within 0.2
- * and 5 times h (not growing after a rejection), with q + 1 = 5 (dopri5) or 3 (ros23) ([Hairer1993] section
+ * and 5 times h (not growing after a rejection), with q + 1 = 5 (dopri5) or 3 (ros23, rodas3) ([Hairer1993] section
  * II.4). The first step follows [Hairer1993] section II.4, "Starting step size". Between steps the solution is
  * the cubic Hermite interpolant of the states and rates at both ends (third order; [Hairer1993] section II.6).
- * No step is longer than max_step (if given) nor passes the last output time. Events: where a switching
+ * No step is longer than max_step (if given) nor passes an output time (each output time ends a step, so that an
+ * input changing between two of them is not stepped over unseen). Events: where a switching
  * function the components declare (an end stop, a lap edge, a valve cracking, a source's step: the kinks and
  * jumps of the equations) changes side within a step, the crossing is found by bisection on the interpolant
  * and the step taken again to end just past it, before its error is judged, so that no step straddles a kink;
@@ -393,6 +397,44 @@ static int @NAME@_ros23(@NAME@_instance *m, double t, double h, double *err) {
     return 0;
 }
 
+/* rodas3 ([Sandu1997]; Rosenbrock methods: [Hairer1996] section IV.7): 4 stages, order 3 with an embedded
+ * order-2 error estimate, L-stable and stiffly accurate (R(inf) = 0: a stiff transient is damped within the
+ * step, and the estimate sees what the step leaves of it). With W = I/(gamma h) - J, gamma = 1/2, T = df/dt:
+ *     W K1 = f0 + h T / 2,                    W K2 = f0 + 4 K1 / h + 3 h T / 2,
+ *     W K3 = f(t + h, z + 2 K1) + (K1 - K2) / h,
+ *     W K4 = f(t + h, z + 2 K1 + K3) + (K1 - K2 - 8 K3 / 3) / h,
+ *     z1 = z + 2 K1 + K3 + K4,  err = K4;
+ * 2 evaluations of f per step, and f(t + h, z1) for the interpolant and the next step. m->jac and m->dfdt hold
+ * J and T at (t, z). Returns 0, or 1 if W is singular. */
+static int @NAME@_rodas3(@NAME@_instance *m, double t, double h, double *err) {
+    const int n = @UPPER@_N_STATES;
+    double *K1 = m->k[0], *K2 = m->k[1], *K3 = m->k[2], *F = m->k[3], *s = m->z_new;
+    const double *T = m->dfdt;
+    for (int i = 0; i < n * n; ++i) m->lu[i] = -m->jac[i];
+    for (int i = 0; i < n; ++i) m->lu[i + n * i] += 2.0 / h;
+    if (@NAME@_lu(m->lu, m->pivot, n)) return 1;
+    for (int i = 0; i < n; ++i) {
+        K1[i] = m->f0[i] + 0.5 * h * T[i];
+    }
+    @NAME@_lu_solve(m->lu, m->pivot, n, K1);
+    for (int i = 0; i < n; ++i) {
+        K2[i] = m->f0[i] + 4.0 * K1[i] / h + 1.5 * h * T[i];
+        s[i] = m->z[i] + 2.0 * K1[i];
+    }
+    @NAME@_lu_solve(m->lu, m->pivot, n, K2);
+    @NAME@_rates_scaled(m, t + h, s, F);
+    for (int i = 0; i < n; ++i) K3[i] = F[i] + (K1[i] - K2[i]) / h;
+    @NAME@_lu_solve(m->lu, m->pivot, n, K3);
+    for (int i = 0; i < n; ++i) s[i] = m->z[i] + 2.0 * K1[i] + K3[i];
+    @NAME@_rates_scaled(m, t + h, s, F);
+    for (int i = 0; i < n; ++i) err[i] = F[i] + (K1[i] - K2[i] - 8.0 / 3.0 * K3[i]) / h;
+    @NAME@_lu_solve(m->lu, m->pivot, n, err);
+    for (int i = 0; i < n; ++i) s[i] += err[i];
+    @NAME@_rates_scaled(m, t + h, s, m->f1);
+    m->evaluations += 3;
+    return 0;
+}
+
 /* The cubic Hermite interpolant at t in [t0, t0 + h] from the states and rates at both ends, scaled. */
 static void @NAME@_hermite(const @NAME@_instance *m, double t0, double h, double t, double *z) {
     const double s = (t - t0) / h, s2 = s * s, s3 = s2 * s;
@@ -484,10 +526,10 @@ static int @NAME@_crossing(@NAME@_instance *m, double t0, double h, double t1, d
 int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, double atol, double max_step,
                      long max_steps, long n_times, const double *times, double *states, double *outputs) {
     const int n = @UPPER@_N_STATES;
-    if ((method != @UPPER@_DOPRI5 && method != @UPPER@_ROS23) || !(rtol > 0.0 && rtol < 1.0) ||
+    if ((method != @UPPER@_DOPRI5 && method != @UPPER@_ROS23 && method != @UPPER@_RODAS3) || !(rtol > 0.0 && rtol < 1.0) ||
         !(atol > 0.0 && atol <= 1.0) || !(max_step >= 0.0) || max_steps < 1 || n_times < 1 || times == NULL) {
         snprintf(m->message, sizeof m->message,
-                 "integrate: expected method 1 (dopri5) or 2 (ros23), 0 < rtol < 1, 0 < atol <= 1, max_step >= 0, "
+                 "integrate: expected method 1 (dopri5), 2 (ros23) or 3 (rodas3), 0 < rtol < 1, 0 < atol <= 1, max_step >= 0, "
                  "max_steps >= 1 and at least one output time");
         return @UPPER@_BAD_ARGUMENT;
     }
@@ -500,9 +542,12 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
         }
     }
     hmax = times[n_times - 1] - times[0];
+    const double same_time = 1e-12 * hmax;
     if (max_step > 0.0) hmax = fmin(hmax, max_step);
     const int explicit_method = method == @UPPER@_DOPRI5;
-    const double exponent = explicit_method ? 1.0 / 5.0 : 1.0 / 3.0;
+    const int order = method == @UPPER@_DOPRI5 ? 4 : 2; /* of the error estimate */
+    const double exponent = 1.0 / (order + 1);
+    const char *method_name = method == @UPPER@_DOPRI5 ? "dopri5" : (method == @UPPER@_RODAS3 ? "rodas3" : "ros23");
     double t = times[0], t_end = times[n_times - 1], *err = m->k[6];
     long out = 1, taken = 0;
     int rejected_last = 0, status = @UPPER@_OK;
@@ -521,14 +566,15 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
                  @NAME@_state_names[bad], m->f0[bad] * @NAME@_nominal[bad]);
         return @UPPER@_NOT_FINITE;
     }
-    double h = fmin(@NAME@_first_step(m, t, t_end - t, rtol, atol, explicit_method ? 5 : 2), hmax);
+    const int method_order = method == @UPPER@_DOPRI5 ? 5 : (method == @UPPER@_RODAS3 ? 3 : 2);
+    double h = fmin(@NAME@_first_step(m, t, t_end - t, rtol, atol, method_order), hmax);
     int have_jacobian = 0, event_step = 0;
     double h_resume = h;
 #if @UPPER@_N_SWITCHES > 0
     @NAME@_switches(m, t, m->z, m->g1);
     for (int i = 0; i < @UPPER@_N_SWITCHES; ++i) m->side[i] = (signed char)@NAME@_side(m->g1[i], i);
 #endif
-    while (t < t_end) {
+    while (out < n_times) {
         if (taken >= max_steps) {
             snprintf(m->message, sizeof m->message,
                      "t = %.9g s: the step budget of %ld steps was used up (last step %.3g s); the dynamics are too "
@@ -537,12 +583,14 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
             status = @UPPER@_TOO_MUCH_WORK;
             break;
         }
-        const double remaining = t_end - t;
-        if (h >= remaining || t + h >= t_end) h = remaining;
+        /* no step passes the next output time: every output time ends a step, so an input that changes between
+         * two of them (a square wave's edge, a table's corner) cannot be stepped over unseen */
+        const double stop = times[out], remaining = stop - t, h_wanted = h;
+        if (h >= (1.0 - 1e-6) * remaining || t + h >= stop) h = remaining; /* never a sliver short of it */
         if (!(h > 16.0 * DBL_EPSILON * fmax(fabs(t), 1e-3 * hmax))) {
             snprintf(m->message, sizeof m->message,
                      "t = %.9g s: the step fell to %.3g s; the rates are discontinuous or not finite here (%s)", t, h,
-                     explicit_method ? "dopri5" : "ros23");
+                     method_name);
             status = @UPPER@_STEP_TOO_SMALL;
             break;
         }
@@ -555,7 +603,7 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
                 m->jacobians += 1;
                 have_jacobian = 1;
             }
-            if (@NAME@_ros23(m, t, h, err)) {
+            if (method == @UPPER@_RODAS3 ? @NAME@_rodas3(m, t, h, err) : @NAME@_ros23(m, t, h, err)) {
                 h *= 0.25;
                 m->rejected += 1;
                 rejected_last = 1;
@@ -593,7 +641,8 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
             status = @UPPER@_ALGEBRAIC;
             break;
         }
-        const double t1 = (h == remaining) ? t_end : t + h;
+        const int landed = h == remaining;
+        const double t1 = landed ? stop : t + h;
 #if @UPPER@_N_SWITCHES > 0
         @NAME@_switches(m, t1, m->z_new, m->g1);
         for (int i = 0; i < @UPPER@_N_SWITCHES; ++i) {
@@ -601,10 +650,11 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
             if (now != 0) m->side[i] = (signed char)now;
         }
 #endif
-        /* accepted: the outputs inside (t, t + h] from the interpolant, the last exactly */
-        for (; out < n_times && times[out] <= t1; ++out) {
-            if (times[out] == t1) {
-                @NAME@_record(m, out, t1, m->z_new, states, outputs);
+        /* accepted: the outputs inside (t, t + h] from the interpolant, the last exactly, and those a hair after
+         * it (output times closer together than a step can be: 1e-12 of the span) from its end */
+        for (; out < n_times && times[out] <= t1 + same_time; ++out) {
+            if (times[out] >= t1) {
+                @NAME@_record(m, out, times[out], m->z_new, states, outputs);
             } else {
                 @NAME@_hermite(m, t, h, times[out], m->z_host);
                 @NAME@_record(m, out, times[out], m->z_host, states, outputs);
@@ -616,12 +666,15 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
         t = t1;
         have_jacobian = 0;
         double grow = size <= 0.0 ? 5.0 : fmin(5.0, fmax(0.2, 0.9 * pow(size, -exponent)));
+        const int after_rejection = rejected_last;
         if (rejected_last) grow = fmin(grow, 1.0);
         rejected_last = 0;
         if (event_step) { /* past the kink: the dynamics there are new, so control starts from the short step */
             m->events += 1;
             event_step = 0;
             h = fmin(fmin(h * grow, h_resume), hmax);
+        } else if (landed && !after_rejection) { /* shortened to land on an output time: not a reason to slow */
+            h = fmin(fmax(h * grow, h_wanted), hmax);
         } else {
             h = fmin(h * grow, hmax);
         }

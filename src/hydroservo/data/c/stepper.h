@@ -46,6 +46,7 @@ extern "C" {
 /* The adaptive methods of @NAME@_integrate. */
 #define @UPPER@_DOPRI5 1 /* explicit Runge-Kutta pair of Dormand and Prince, order 5(4) */
 #define @UPPER@_ROS23 2  /* linearly implicit Rosenbrock pair of Shampine and Reichelt, order 2(3), for stiff circuits */
+#define @UPPER@_RODAS3 3 /* linearly implicit Rosenbrock pair of Sandu et al., order 3(2), L-stable, for stiff circuits */
 
 /* Opaque: one running copy of the model (its parameters, inputs, states and work space). */
 typedef struct @NAME@_instance @NAME@_instance;
