@@ -58,7 +58,7 @@ def median_time(fn, repeat: int) -> float:
 
 
 def reference(system: hs.System, t_end: float) -> hs.Result:
-    return system.simulate(t_end, t_eval=np.linspace(0.0, t_end, round(t_end / 1e-3) + 1), rtol=1e-10, atol=1e-12)
+    return system.simulate(t_end, t_eval=np.linspace(0.0, t_end, round(t_end / 1e-3) + 1), rtol=1e-10, atol=1e-12, method="cvodes")
 
 
 def deviations(times: np.ndarray, values: np.ndarray, signals: list[str], ref: hs.Result, names) -> dict[str, float]:
@@ -112,8 +112,8 @@ def cvodes_per_step(system: hs.System, h: float, frames: int = 400) -> float:
 def cvodes_with_output_every_step(system: hs.System, t_end: float, h: float) -> float:
     """Microseconds per step of h for one System.simulate run with an output at every step."""
     grid = np.linspace(0.0, t_end, round(t_end / h) + 1)
-    system.simulate(t_end, t_eval=grid)
-    return median_time(lambda: system.simulate(t_end, t_eval=grid), 5) / (grid.size - 1) * 1e6
+    system.simulate(t_end, t_eval=grid, method="cvodes")
+    return median_time(lambda: system.simulate(t_end, t_eval=grid, method="cvodes"), 5) / (grid.size - 1) * 1e6
 
 
 def rk4_stability_limit(

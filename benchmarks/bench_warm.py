@@ -61,7 +61,7 @@ def main(quick: bool = False) -> dict[str, float]:
     system = hs.load_model("flight-simulator")
     model = system.build()
     p = system.parameter_vector()
-    system.simulate()["y"]  # warm: integrator and output functions built once
+    system.simulate(method="cvodes")["y"]  # warm: integrator and output functions built once
     grid = np.linspace(0.0, system.t_end, 1001)
     integ = model._integrator(grid, SolverSettings())
     z0 = np.asarray(model.x0(p), dtype=float).ravel() / model.nominal
@@ -72,9 +72,9 @@ def main(quick: bool = False) -> dict[str, float]:
     bare = median_ms(call, repeat)
     rows = [
         ("bare CVODES call (the baseline)", (bare, 1.0)),
-        ("Model.simulate", paired(lambda: model.simulate(system.t_end, p), call, repeat)),
-        ("System.simulate", paired(system.simulate, call, repeat)),
-        ("System.simulate, then result['y']", paired(lambda: system.simulate()["y"], call, repeat)),
+        ("Model.simulate", paired(lambda: model.simulate(system.t_end, p, method="cvodes"), call, repeat)),
+        ("System.simulate", paired(lambda: system.simulate(method="cvodes"), call, repeat)),
+        ("System.simulate, then result['y']", paired(lambda: system.simulate(method="cvodes")["y"], call, repeat)),
         ("load_model (warm)", paired(lambda: hs.load_model("flight-simulator"), call, repeat)),
         ("load_model + build (warm)", paired(lambda: hs.load_model("flight-simulator").build(), call, repeat)),
     ]
@@ -87,7 +87,7 @@ def main(quick: bool = False) -> dict[str, float]:
     integration, total = [], []
     for _ in range(batch_repeat):
         start = time.perf_counter()
-        batch = system.batch({"load.m": masses}, n_points=1001, threads=2)
+        batch = system.batch({"load.m": masses}, n_points=1001, threads=2, method="cvodes")
         batch["y"]
         total.append(time.perf_counter() - start)
         integration.append(batch.stats["wall_time_s"])

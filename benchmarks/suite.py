@@ -47,7 +47,8 @@ def rows() -> list[tuple[str, str, str]]:
     ))  # fmt: skip
     warm = bench_warm.main()
     out.append((
-        "warm `System.simulate` + reading `y`", f"{warm['simulate_y_ratio']:.2f}x", "the bare CVODES call",
+        "warm `System.simulate(method=\"cvodes\")` + reading `y`", f"{warm['simulate_y_ratio']:.2f}x",
+        "the bare CVODES call",
     ))  # fmt: skip
     out.append((
         f"batch of {warm['batch_runs']:.0f} runs (load varied, 2 threads) with their outputs read",
@@ -55,24 +56,26 @@ def rows() -> list[tuple[str, str, str]]:
     ))  # fmt: skip
     comp = bench_compiled.main(repeat=5)
     for target in (1e-3, 1e-4):
-        (ours, a), (base, b) = comp["best"]["ros23", target], comp["best"]["cvodes", target]
+        best = min(comp["best"][m, target] + (m,) for m in ("rodas3", "ros23", "dopri5"))
+        (ours, a, method), (base, b) = best, comp["best"]["cvodes", target]
         out.append((
-            f"flight-simulator within {target:g} of range: compiled ros23 (accuracy {a:g}) vs CVODES ({b:g}), "
+            f"flight-simulator within {target:g} of range: compiled {method} (accuracy {a:g}) vs CVODES ({b:g}), "
             "each at its cheapest accuracy meeting it",
             f"{base / ours:.2f}x faster", "CVODES (CasADi, interpreted model)",
         ))  # fmt: skip
     out.append((
-        "batch of 64 flight-simulator runs, compiled ros23, 2 threads",
-        f"{comp['batch_speedup']['ros23']:.2f}x faster", "1 thread",
+        "batch of 64 flight-simulator runs, compiled rodas3, 2 threads",
+        f"{comp['batch_speedup']['rodas3']:.2f}x faster", "1 thread",
     ))  # fmt: skip
-    acc = bench_accuracy.main(repeat=3)
-    for model, devs in sorted(acc.items()):
-        if " " in model or 1e-4 not in devs:
+    acc = bench_accuracy.main(repeat=3, methods=("rodas3",))
+    for key, devs in sorted(acc.items()):
+        if 1e-4 not in devs:
             continue
+        model = key.split()[0]
         mark = " (above it: docs/engine.md, \"Accuracy\", says which signals)" if devs[1e-4] > 1e-4 else ""
         out.append((
-            f"default accuracy 1e-4, `{model}`: largest deviation of its plotted signals",
-            f"{devs[1e-4]:.0e}{mark}", "of each signal's range, vs rtol 1e-11",
+            f"default (rodas3 at accuracy 1e-4), `{model}`: largest deviation of its plotted signals",
+            f"{devs[1e-4]:.0e}{mark}", "of each signal's range, vs CVODES at rtol 1e-11",
         ))  # fmt: skip
     growth = bench_growth.main(repeat=3)
     (b1, r1, s1), (b24, r24, s24) = growth[1], growth[24]
@@ -165,14 +168,23 @@ def hopsan(found: dict) -> str:
         f"1e-3) | {f'{theirs:.3f} s' if theirs else '0.015 s (quoted)'} | {ours:.3f} s | "
         f"{f'{theirs / ours:.1f}x faster' if theirs else '–'} |"
     )
-    default = next(s for label, s, _ in found["hydroservo"] if label == "cvodes 1e-04")
-    cli = process["hydroservo simulate --json (CVODES, default accuracy)"]
+    default, default_dev = next((s, d) for label, s, d in found["hydroservo"] if label == "rodas3 1e-04")
+    cvodes = next(s for label, s, _ in found["hydroservo"] if label == "cvodes 1e-04")
+    hopsan_default = found["hopsan"][0] if found["hopsan"] else None
+    if hopsan_default is not None:
+        lines.append(
+            f"| each at its defaults (Hopsan: Ts 1e-4, x within {hopsan_default[2]['x']:.1e}; hydroservo: rodas3 "
+            f"at accuracy 1e-4, x within {default_dev['x']:.0e}) | {hopsan_default[1] * 1e3:.1f} ms | "
+            f"{default * 1e3:.1f} ms | {hopsan_default[1] / default:.2f}x |"
+        )
+    cli = process["hydroservo simulate --json (its defaults: rodas3 compiled, accuracy 1e-4)"]
     head = (
         "Against Hopsan on its own Position Servo example (`python benchmarks/bench_hopsan.py`; Hopsan "
         f"{source}; in-process times of one 3-s run, medians of 5): hydroservo's fastest setting that meets "
-        f"each target (dopri5 and ros23 compiled, or CVODES). Its default, CVODES at accuracy 1e-4, takes "
-        f"{default * 1e3:.0f} ms in process and {cli:.2f} s as a command: it holds every signal to about 1e-4, "
-        "which Hopsan's default does not attempt (docs/engine.md, \"Compiled solvers\").\n\n"
+        f"each target (dopri5, ros23 and rodas3 compiled, or CVODES). Its default, rodas3 at accuracy 1e-4 "
+        f"(CVODES before 0.6: {cvodes * 1e3:.0f} ms), takes {default * 1e3:.0f} ms in process and {cli:.2f} s as a "
+        "command: it holds every signal to about 1e-4, which Hopsan's default does not attempt (docs/engine.md, "
+        "\"Compiled solvers\").\n\n"
     )
     return head + "\n".join(lines) + "\n"
 

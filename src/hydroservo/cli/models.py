@@ -87,7 +87,8 @@ def add_parsers(sub: Any) -> None:
         "--method",
         default="auto",
         metavar="M",
-        help="integration method: auto (default: rodas3 where a C compiler is found, else cvodes), rodas3 (compiled "
+        help="integration method: auto (default: rodas3 for models of up to 20 states where a C compiler is found, "
+        "else cvodes), rodas3 (compiled "
         "Rosenbrock 3(2), stiff circuits), ros23 (compiled Rosenbrock 2(3)), dopri5 (compiled Dormand-Prince, "
         "non-stiff) or cvodes (BDF, interpreted); the compiled ones are built once per model and cached",
     )

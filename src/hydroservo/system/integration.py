@@ -23,7 +23,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError
 
-__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "METHODS", "DEFAULT_METHOD", "AUTO_METHOD", "check_method", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
+__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "METHODS", "DEFAULT_METHOD", "AUTO_METHOD", "AUTO_MAX_STATES", "check_method", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
 
 #: Largest output grid [points]: 100 001 points of 20 signals are 16 MB; a million would be gigabytes.
 MAX_POINTS = 100_001
@@ -78,8 +78,8 @@ def tolerances(accuracy: float, method: str = "cvodes") -> tuple[float, float]:
     return rtol, rtol / RTOL_PER_ATOL
 
 
-#: The integration methods of a run: ``auto`` (the default: :data:`AUTO_METHOD` where a C compiler is found,
-#: else CVODES), CVODES, and the compiled variable-step methods of :mod:`hydroservo.system.native` (the same names
+#: The integration methods of a run: ``auto`` (the default: :data:`AUTO_METHOD` for a model of at most
+#: :data:`AUTO_MAX_STATES` states where a C compiler is found, else CVODES), CVODES, and the compiled variable-step methods of :mod:`hydroservo.system.native` (the same names
 #: as its ``ADAPTIVE_METHODS``).
 METHODS = ("auto", "cvodes", "rodas3", "ros23", "dopri5")
 DEFAULT_METHOD = "auto"
@@ -87,14 +87,20 @@ DEFAULT_METHOD = "auto"
 #: meets the accuracy asked for on every built-in model in 0.2 to 0.4 of CVODES' time at the default accuracy
 #: (docs/engine.md, "Accuracy").
 AUTO_METHOD = "rodas3"
+#: ... for models of at most this many states: a Rosenbrock method evaluates and factorises the dense Jacobian at
+#: every step, where CVODES reuses one over many steps, and the compiled Jacobian's code grows with its entries.
+#: Measured on N flight-simulator loops in one model (benchmarks/bench_growth.py): rodas3 against CVODES 1.14x
+#: faster at 10 states, 1.19x at 20, 0.89x at 30, 0.75x at 40, 0.16x at 240 (and 45 s to compile); larger models
+#: run CVODES.
+AUTO_MAX_STATES = 20
 
 
 def check_method(method: str) -> str:
     """``method`` if it is one of :data:`METHODS`."""
     if method not in METHODS:
         raise ParameterError(
-            f"method = {method!r}: expected one of {', '.join(METHODS)} (auto: the default, rodas3 where a C compiler "
-            "is found, else cvodes; cvodes: BDF with error control, interpreted; rodas3: compiled Rosenbrock 3(2) for "
+            f"method = {method!r}: expected one of {', '.join(METHODS)} (auto: the default, rodas3 for a model of at "
+            f"most {AUTO_MAX_STATES} states where a C compiler is found, else cvodes; cvodes: BDF with error control, interpreted; rodas3: compiled Rosenbrock 3(2) for "
             "stiff circuits; ros23: compiled Rosenbrock 2(3); dopri5: compiled Dormand-Prince 5(4), explicit)"
         )
     return method

@@ -24,6 +24,7 @@ import numpy as np
 from hydroservo.errors import ImplausibleResultWarning, InterpretedWarning, ParameterError, SolverError, TrimError
 from hydroservo.system.implicit import NEWTON_STEPS, TOLERANCE
 from hydroservo.system.integration import (
+    AUTO_MAX_STATES,
     AUTO_METHOD,
     DEFAULT_METHOD,
     SolverSettings,
@@ -313,8 +314,9 @@ class Model:
         initial : "parameters", "trim" or mapping
             Initial state, see :meth:`initial_state`.
         method : str
-            ``"auto"`` (default): ``"rodas3"`` where the model compiles (a C compiler is found), else ``"cvodes"``
-            (said once per process). The compiled methods (:data:`~hydroservo.system.native.ADAPTIVE_METHODS`,
+            ``"auto"`` (default): ``"rodas3"`` for a model of at most 20 states
+            (:data:`~hydroservo.system.integration.AUTO_MAX_STATES`) where it compiles (a C compiler is found),
+            else ``"cvodes"`` (no compiler: said once per process). The compiled methods (:data:`~hydroservo.system.native.ADAPTIVE_METHODS`,
             :mod:`hydroservo.system.native`; C built once per model structure and kept in the user's cache
             folder): ``"rodas3"`` (Sandu et al.'s Rosenbrock 3(2) on the exact Jacobian, L-stable, for stiff circuits: every
             built-in model), ``"ros23"`` (Rosenbrock 2(3), cheaper steps at loose accuracy) or ``"dopri5"``
@@ -377,9 +379,12 @@ class Model:
 
     def _resolve(self, method: str) -> str:
         """The method ``method`` names: ``auto`` is :data:`~hydroservo.system.integration.AUTO_METHOD` if this
-        model compiles, else ``cvodes`` with a :class:`~hydroservo.errors.InterpretedWarning` (once a process)."""
+        model has at most :data:`~hydroservo.system.integration.AUTO_MAX_STATES` states and compiles, else
+        ``cvodes`` (with a :class:`~hydroservo.errors.InterpretedWarning` once a process if it does not compile)."""
         if method != "auto":
             return method
+        if self.nx > AUTO_MAX_STATES:
+            return "cvodes"
         from hydroservo.system.native import native
 
         try:

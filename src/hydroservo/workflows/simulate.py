@@ -157,7 +157,8 @@ class Simulate(Workflow):
     rtol : float, optional
         Relative tolerance (absolute: rtol/100).
     method : str
-        ``auto`` (default: the compiled ``rodas3`` where a C compiler is found, else ``cvodes``), ``cvodes``, or
+        ``auto`` (default: the compiled ``rodas3`` for a model of at most 20 states where a C compiler is found, else
+        ``cvodes``), ``cvodes``, or
         the compiled ``rodas3``, ``ros23`` or ``dopri5`` (:meth:`~hydroservo.system.model.Model.simulate`).
     strict : bool
         Refuse a physically implausible result (:class:`~hydroservo.errors.ImplausibleResultError`).

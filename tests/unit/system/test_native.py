@@ -211,3 +211,17 @@ def test_output_times_a_hair_apart_are_one_step_end(method: str) -> None:
     grid = [0.0, t, float(np.nextafter(t, 1.0)), 0.03]
     run = _spring("hair").simulate(t_eval=grid, method=method)
     assert run["load.x"][1] == run["load.x"][2] and np.isfinite(run["load.x"]).all()
+
+
+def test_auto_runs_cvodes_on_a_large_model() -> None:
+    """Past AUTO_MAX_STATES states a Rosenbrock step (a dense Jacobian evaluated and factorised every step) costs
+    more than CVODES' (bench_growth: 0.89x at 30 states): auto runs CVODES there, and compiles nothing."""
+    from hydroservo.system.integration import AUTO_MAX_STATES
+
+    s = hs.System("many-masses", t_end=0.1)
+    for k in range(AUTO_MAX_STATES // 2 + 1):
+        s.add(c.Mass(f"m{k}", m=1.0 + k, k_spring=800.0, x0=0.01, incline=0.0, B=4.0))
+    assert s.build().nx > AUTO_MAX_STATES
+    assert s.simulate(n_points=11).stats["method"] == "cvodes"
+    built = cache_folder() / "c"
+    assert not built.exists() or not any(built.iterdir())
