@@ -342,9 +342,9 @@ def test_an_fmu_state_goes_back_and_is_serialised(flight) -> None:
     fmu.freeInstance()
 
 
-@pytest.mark.parametrize("method", ["ros23", "dopri5"])
+@pytest.mark.parametrize("method", ["rodas3", "ros23", "dopri5"])
 def test_co_simulation_with_a_variable_step_method(method: str, tmp_path: Path) -> None:
-    """--method ros23/dopri5: Co-Simulation with error control over any communication step (here 7 ms and 3 ms,
+    """--method rodas3/ros23/dopri5: Co-Simulation with error control over any communication step (here 7 ms and 3 ms,
     not multiples of anything), within 1e-3 of range of the engine on the flight simulator's main signals at
     accuracy 1e-4; an unknown method is refused."""
     system = hs.load_model("flight-simulator")
