@@ -7,6 +7,9 @@ was expected.  The CLI prints the message and exits with code 2.
 
 from __future__ import annotations
 
+import difflib
+from collections.abc import Iterable
+
 __all__ = [
     "HydroservoError",
     "UnitError",
@@ -21,6 +24,8 @@ __all__ = [
     "InterpretedWarning",
     "RenamedWarning",
     "shorten",
+    "did_you_mean",
+    "close_names",
 ]
 
 
@@ -75,3 +80,23 @@ class RenamedWarning(UserWarning):
 def shorten(text: str, limit: int = 60) -> str:
     """``text`` as a message shows it: whole, or its first ``limit`` characters and how long it was."""
     return text if len(text) <= limit else f"{text[:limit]}... ({len(text)} characters)"
+
+
+def close_names(name: str, known: Iterable[str], n: int = 3) -> list[str]:
+    """The names of ``known`` closest to ``name`` (difflib's ratio at least 0.62), best first, at most ``n``: the
+    same name in another case first, then by spelling, then by spelling regardless of case."""
+    known = [k for k in dict.fromkeys(known) if isinstance(k, str)]
+    name = str(name)
+    same = [k for k in known if k.lower() == name.lower() and k != name]
+    close = same + [k for k in difflib.get_close_matches(name, known, n=n, cutoff=0.62) if k not in same]
+    if not close:  # case apart: 'cylinder' for Cylinder, 'Flight-Simulatr' for flight-simulator
+        by_lower = {k.lower(): k for k in known}
+        close = [by_lower[k] for k in difflib.get_close_matches(name.lower(), list(by_lower), n=n, cutoff=0.62)]
+    return close[:n]
+
+
+def did_you_mean(name: str, known: Iterable[str]) -> str:
+    """`` (did you mean 'X'?)`` with the names of ``known`` closest to ``name`` (:func:`close_names`), or "" if
+    none is close: for a message that refuses an unknown name."""
+    close = close_names(name, known)
+    return " (did you mean " + " or ".join(repr(k) for k in close) + "?)" if close else ""

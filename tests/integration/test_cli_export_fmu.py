@@ -11,21 +11,25 @@ from hydroservo.system.native import has_compiler
 
 
 @pytest.mark.skipif(not has_compiler(), reason="no C compiler")
-def test_export_fmu_writes_the_fmu_here_and_reports_it(tmp_path, cli, monkeypatch) -> None:
+def test_export_fmu_writes_the_fmu_into_a_folder_of_its_own_and_reports_it(tmp_path, cli, monkeypatch) -> None:
+    # the rule of every command that writes files: a new hydroservo-NAME-KIND[-N] folder unless --out names one
     monkeypatch.chdir(tmp_path)
     code, text, err = cli("export-fmu", "servo-solenoid-cylinder", "--inputs", "valve.u", "--set", "load.m=60 kg",
                           "--method", "bdf2", "--step", "0.2 ms", "--json")  # fmt: skip
     assert code == 0, err
     report = json.loads(text)
-    assert report["fmu"] == "servo_solenoid_cylinder.fmu" and report["platform"] == "linux64"
+    assert report["fmu"] == "hydroservo-servo-solenoid-cylinder-fmu/servo_solenoid_cylinder.fmu"
+    assert report["platform"] == "linux64"
     assert report["co_simulation"] == {"method": "bdf2", "step_s": 2e-4}
     mass = next(v for v in report["variables"] if v["name"] == "load.m")
     assert mass["start"] == 60.0 and mass["unit"] == "kg" and mass["variability"] == "tunable"
     valve = next(v for v in report["variables"] if v["name"] == "valve.u")
     assert valve["kind"] == "input" and valve["value_reference"] == len([v for v in report["variables"]
                                                                          if v["kind"] == "parameter"])  # fmt: skip
-    assert [p.name for p in tmp_path.iterdir()] == ["servo_solenoid_cylinder.fmu"]
-    with zipfile.ZipFile(tmp_path / "servo_solenoid_cylinder.fmu") as archive:
+    folder = tmp_path / "hydroservo-servo-solenoid-cylinder-fmu"
+    assert [p.name for p in tmp_path.iterdir()] == [folder.name]
+    assert [p.name for p in folder.iterdir()] == ["servo_solenoid_cylinder.fmu"]
+    with zipfile.ZipFile(folder / "servo_solenoid_cylinder.fmu") as archive:
         assert sorted(archive.namelist()) == sorted(report["files"])
         assert "binaries/linux64/servo_solenoid_cylinder.so" in archive.namelist()
 

@@ -49,7 +49,7 @@ import casadi as ca
 import numpy as np
 
 from hydroservo.components.signals import Sine
-from hydroservo.errors import ModelError, ParameterError, SolverError
+from hydroservo.errors import ModelError, ParameterError, SolverError, did_you_mean
 from hydroservo.system.system import System
 from hydroservo.units import to_si
 
@@ -196,7 +196,8 @@ class PeriodicResponse:
                 return model.outputs(t, z * nominal, p)[idx]
         else:
             known = ", ".join(model.state_names + model.output_names)
-            raise ModelError(f"frequency response: no signal {output!r}; signals: {known}")
+            hint = did_you_mean(output, model.state_names + model.output_names)
+            raise ModelError(f"frequency response: no signal {output!r}{hint}; signals: {known}")
         self.unit = model.units.get(output, "")
         T = 1.0 / p[self.i_freq]
         h = 1.0 / self.M

@@ -43,7 +43,7 @@ import numpy as np
 
 from hydroservo.analysis.linear import input_values, operating_point
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
-from hydroservo.errors import ModelError, ParameterError
+from hydroservo.errors import ModelError, ParameterError, did_you_mean
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -245,7 +245,8 @@ def ladder_table(
     for rung in rungs:
         sys_ = rung.system
         if output not in sys_.build().units:
-            raise ParameterError(f"ladder: output {output!r} is not a signal of {sys_.name!r}")
+            hint = did_you_mean(output, sys_.build().units)
+            raise ParameterError(f"ladder: output {output!r} is not a signal of {sys_.name!r}{hint}")
         batch = sys_.batch({parameter: steps}, t_end, n_points=n_points)
         y = batch[output]
         finals[rung.name] = np.array([y[k, -1] - y[k, 0] if k not in batch.failed else np.nan for k in range(len(steps))])

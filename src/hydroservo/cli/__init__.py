@@ -29,10 +29,11 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 import warnings
 from collections.abc import Sequence
-from typing import NoReturn
+from typing import Any, NoReturn
 
 from hydroservo.cli import (
     calibrate,
@@ -50,7 +51,14 @@ from hydroservo.cli import (
     validate,
     valve,
 )
-from hydroservo.errors import FluidRangeWarning, HydroservoError, ImplausibleResultWarning, RenamedWarning
+from hydroservo.errors import (
+    FluidRangeWarning,
+    HydroservoError,
+    ImplausibleResultWarning,
+    RenamedWarning,
+    close_names,
+    did_you_mean,
+)
 from hydroservo.version import __version__
 
 __all__ = ["main", "build_parser"]
@@ -60,7 +68,37 @@ class _Parser(argparse.ArgumentParser):
     """An argument parser whose errors look like every other error: one line, exit code 2."""
 
     def error(self, message: str) -> NoReturn:
-        self.exit(2, f"hydroservo: error: {self.prog}: {message} (see {self.prog} --help)\n")
+        where = self.prog.removeprefix("hydroservo").strip()  # the subcommand, if any
+        meant = self._meant()
+        see = meant.prog if meant is not None and not where else self.prog
+        self.exit(2, f"hydroservo: error: {where + ': ' if where else ''}{message}{self._hint(message, meant)} "
+                     f"(see {see} --help)\n")  # fmt: skip
+
+    def parse_args(self, args: Sequence[str] | None = None, namespace: Any = None) -> Any:  # type: ignore[override]
+        self._argv = list(sys.argv[1:] if args is None else args)  # for the hints: which subcommand was meant
+        return super().parse_args(args, namespace)
+
+    def _meant(self) -> argparse.ArgumentParser | None:
+        """The subcommand's parser, if the arguments given name one (the top-level parser reports unknown
+        options of a subcommand)."""
+        commands = {name: sub for action in self._actions if isinstance(action, argparse._SubParsersAction)
+                    for name, sub in action.choices.items()}  # fmt: skip
+        return next((commands[a] for a in getattr(self, "_argv", []) if a in commands), None)
+
+    def _hint(self, message: str, meant: argparse.ArgumentParser | None) -> str:
+        """The closest commands, choices or options to a mistyped one (argparse's messages name them)."""
+        choice = re.search(r"invalid choice: '([^']*)' \(choose from (.*)\)", message)
+        if choice:
+            return did_you_mean(choice.group(1), re.findall(r"'([^']*)'", choice.group(2)))
+        unknown = re.search(r"unrecognized arguments: (.*)", message)
+        if unknown:
+            parsers = [self] if meant is None else [self, meant]
+            options = [o[2:] for parser in parsers for o in parser._option_string_actions if o.startswith("--")]
+            for token in unknown.group(1).split():
+                close = close_names(token.split("=", 1)[0].lstrip("-"), options, n=2) if token.startswith("-") else []
+                if close:  # matched without the dashes, which every option shares
+                    return " (did you mean " + " or ".join(repr("--" + o) for o in close) + "?)"
+        return ""
 
 
 def build_parser() -> argparse.ArgumentParser:

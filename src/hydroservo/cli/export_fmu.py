@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import execute
+from hydroservo.cli.common import add_output_options, execute
 from hydroservo.cli.export_c import export_arguments
 
 __all__ = ["add_parsers"]
@@ -46,8 +46,7 @@ def add_parsers(sub: Any) -> None:
                    help="the model identifier, a C identifier (default: from the model's name)")
     p.add_argument("--sources-only", action="store_true",
                    help="no binary: the FMU holds the C sources only (for a host that builds FMUs itself)")
-    p.add_argument("--out", default=".", metavar="DIR", help="folder to write NAME.fmu into (default: this folder)")
-    p.add_argument("--force", action="store_true", help="replace a file NAME.fmu already there")
+    add_output_options(p, "hydroservo-NAME-fmu")
     p.add_argument("--json", action="store_true",
                    help="print the file, GUID and every variable with its value reference and unit as JSON")
     p.set_defaults(func=cmd_export_fmu)

@@ -54,7 +54,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any, ClassVar, Self
 
 from hydroservo.data import parameter_set
-from hydroservo.errors import ParameterError, RenamedWarning, UnitError
+from hydroservo.errors import ParameterError, RenamedWarning, UnitError, did_you_mean
 from hydroservo.units import check_unit, coherent_unit, is_absolute_pressure, is_bare_number, si_unit, to_si
 
 __all__ = [
@@ -357,7 +357,9 @@ class Component:
         new.explicit = self.explicit | set(values)
         for key, value in values.items():
             if key not in self.PARAMETERS:
-                raise ParameterError(f"{self.name}.{key}: unknown parameter of {type(self).__name__}")
+                raise ParameterError(
+                    f"{self.name}.{key}: unknown parameter of {type(self).__name__}{did_you_mean(key, self.PARAMETERS)}"
+                )
             value = float(value)
             new.values[key] = self.PARAMETERS[key].check(value, f"{self.name}.{key}") if check else value
         return new
@@ -368,7 +370,8 @@ class Component:
         what = f"{self.name}.{key}"
         if key not in self.PARAMETERS:
             known = ", ".join(sorted(self.PARAMETERS) + sorted(self.OPTIONS))
-            raise ParameterError(f"{what}: unknown parameter of {type(self).__name__}; known: {known}")
+            hint = did_you_mean(key, [*self.PARAMETERS, *self.OPTIONS])
+            raise ParameterError(f"{what}: unknown parameter of {type(self).__name__}{hint}; known: {known}")
         spec = self.PARAMETERS[key]
         try:
             si = to_si(value, spec.unit, what=what)

@@ -13,7 +13,7 @@ from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
 from hydroservo.components.base import REGISTRY, SIGNAL, Component, FromSet
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, did_you_mean
 from hydroservo.references import cited_in, keys
 from hydroservo.units import si_unit
 
@@ -87,7 +87,8 @@ def reference(type_name: str | type[Component]) -> Reference:
         cls = REGISTRY.resolve(type_name)
         if cls is None:
             raise ParameterError(
-                f"component type {type_name!r}: unknown; known: {', '.join(sorted(REGISTRY.types))}"
+                f"component type {type_name!r}: unknown{did_you_mean(type_name, REGISTRY.types)}; known: "
+                f"{', '.join(sorted(REGISTRY.types))}"
             )
     else:
         cls = type_name

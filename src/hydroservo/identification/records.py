@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from hydroservo.errors import ParameterError, UnitError
+from hydroservo.errors import ParameterError, UnitError, did_you_mean
 from hydroservo.units import check_unit, coherent_unit, same_dimension, si_definition, si_unit
 
 __all__ = ["Channel", "Record", "derivatives"]
@@ -115,7 +115,8 @@ class Record:
             return self.channels[name]
         except KeyError:
             raise ParameterError(
-                f"record {self.name!r}: no signal {name!r}; it has {', '.join(self.channels)}"
+                f"record {self.name!r}: no signal {name!r}{did_you_mean(name, self.channels)}; it has "
+                f"{', '.join(self.channels)}"
             ) from None
 
     def __contains__(self, name: object) -> bool:

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, did_you_mean
 from hydroservo.identification.records import Channel, Record
 from hydroservo.units import same_dimension, si_unit, to_si
 
@@ -125,7 +125,7 @@ def virtual_rig(
     channels = {}
     for sig, sensor in sensors.items():
         if sig not in result.units:
-            raise ParameterError(f"virtual rig: {sig!r} is not a signal of {system.name!r}")
+            raise ParameterError(f"virtual rig: {sig!r} is not a signal of {system.name!r}{did_you_mean(sig, result.units)}")
         model_unit = result.units[sig]
         unit = model_unit if sensor.unit is None else sensor.unit
         if not same_dimension(unit, model_unit):

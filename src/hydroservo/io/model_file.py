@@ -56,7 +56,7 @@ from typing import Any
 from hydroservo.components.base import REGISTRY, Component
 from hydroservo.components.signals import Table
 from hydroservo.data import model_names, model_text
-from hydroservo.errors import HydroservoError, ModelFileError
+from hydroservo.errors import HydroservoError, ModelFileError, did_you_mean
 from hydroservo.io.component_file import read_component_file
 from hydroservo.io.tables import read_time_table
 from hydroservo.io.toml import read_toml, toml_key, toml_quantity, toml_string, toml_value
@@ -223,7 +223,8 @@ def load_model(name_or_path: str | Path) -> System:
     if path.suffix.lower() == ".toml" or path.exists():
         return read_model(path)
     raise ModelFileError(
-        f"{key!r} is neither a built-in model ({', '.join(model_names())}) nor a model file (.toml)"
+        f"{key!r} is neither a built-in model{did_you_mean(key, model_names())} ({', '.join(model_names())}) nor a "
+        "model file (.toml)"
     )
 
 
@@ -260,7 +261,10 @@ def _add_components(system: System, comps: Any, where: str, base: Path | None) -
         kind = spec["type"]
         cls = REGISTRY.resolve(kind)
         if cls is None:
-            raise ModelFileError(f"{ctx}: unknown component type {kind!r}; known: {', '.join(sorted(REGISTRY.types))}")
+            raise ModelFileError(
+                f"{ctx}: unknown component type {kind!r}{did_you_mean(kind, REGISTRY.types)}; known: "
+                f"{', '.join(sorted(REGISTRY.types))}"
+            )
         kwargs = {k: v for k, v in spec.items() if k != "type"}
         if "source" in kwargs and cls is not Table:
             raise ModelFileError(f"{ctx}: file {kwargs['source']['file']!r}: expected a component file (.toml)")

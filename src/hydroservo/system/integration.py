@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, did_you_mean
 
 __all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "METHODS", "DEFAULT_METHOD", "AUTO_METHOD", "AUTO_MAX_STATES", "check_method", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
 
@@ -102,6 +102,7 @@ def check_method(method: str) -> str:
             f"method = {method!r}: expected one of {', '.join(METHODS)} (auto: the default, rodas3 for a model of at "
             f"most {AUTO_MAX_STATES} states where a C compiler is found, else cvodes; cvodes: BDF with error control, interpreted; rodas3: compiled Rosenbrock 3(2) for "
             "stiff circuits; ros23: compiled Rosenbrock 2(3); dopri5: compiled Dormand-Prince 5(4), explicit)"
+            + did_you_mean(str(method), METHODS)
         )
     return method
 

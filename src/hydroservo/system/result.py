@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from hydroservo.errors import ParameterError, SolverError, UnitError
+from hydroservo.errors import ParameterError, SolverError, UnitError, did_you_mean
 from hydroservo.units import from_si, si_unit
 
 if TYPE_CHECKING:
@@ -67,7 +67,8 @@ class _Signals:
             return data[name]
         except KeyError:
             raise ParameterError(
-                f"no signal {name!r} in the result of {self.model!r}; signals: {', '.join(self.data)}"
+                f"no signal {name!r} in the result of {self.model!r}{did_you_mean(name, self.data)}; signals: "
+                f"{', '.join(self.data)}"
             ) from None
 
     def get(self, name: str, unit: str | None = None) -> np.ndarray:

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from hydroservo.components.base import Component
-from hydroservo.errors import HydroservoError, ModelError, ParameterError, UnitError
+from hydroservo.errors import HydroservoError, ModelError, ParameterError, UnitError, did_you_mean
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import batch_columns
 from hydroservo.system.model import Model
@@ -244,7 +244,8 @@ class System:
             return self.components[name]
         except KeyError:
             raise ModelError(
-                f"no component {name!r} in system {self.name!r}; components: {', '.join(self.components)}"
+                f"no component {name!r} in system {self.name!r}{did_you_mean(name, self.components)}; components: "
+                f"{', '.join(self.components)}"
             ) from None
 
     def connect(self, source: str, *targets: str) -> None:

@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
 
-from hydroservo.errors import HydroservoError, ParameterError, shorten
+from hydroservo.errors import HydroservoError, ParameterError, did_you_mean, shorten
 
 if TYPE_CHECKING:
     from hydroservo.io.files import OutputFolder
@@ -262,12 +262,17 @@ def load_with_sets(
             raise ParameterError(f"{shown}: expected COMPONENT.PARAMETER, e.g. load.W")
         cname, pname = key.split(".")
         if cname not in system.components:
-            raise ParameterError(f"{shown}: no component {cname!r}; components: {', '.join(system.components)}")
+            raise ParameterError(
+                f"{shown}: no component {cname!r}{did_you_mean(cname, system.components)}; components: "
+                f"{', '.join(system.components)}"
+            )
         comp = system.components[cname]
         known = set(comp.PARAMETERS) | set(comp.OPTIONS) | set(comp.RENAMED)
         if pname not in known:
             names = ", ".join(list(comp.PARAMETERS) + list(comp.OPTIONS))
-            raise ParameterError(f"{shown}: {cname!r} has no parameter {pname!r}; parameters: {names}")
+            raise ParameterError(
+                f"{shown}: {cname!r} has no parameter {pname!r}{did_you_mean(pname, known)}; parameters: {names}"
+            )
         try:
             system.set(key, val)
         except HydroservoError as exc:

@@ -15,7 +15,7 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from hydroservo.errors import ParameterError, shorten
+from hydroservo.errors import ParameterError, did_you_mean, shorten
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
 
 if TYPE_CHECKING:
@@ -382,10 +382,7 @@ class VirtualRig(Workflow):
         known = set(self.system.build().units)
         for s in self._sensors:
             if s not in known:
-                import difflib
-
-                close = difflib.get_close_matches(s, sorted(known), n=3)
-                hint = f"; did you mean {', '.join(close)}?" if close else ""
+                hint = did_you_mean(s, sorted(known))
                 raise ParameterError(f"{self.name('sensors')} {s}: not a signal of {self.system.name!r}{hint}")
 
     def folder(self) -> str:

@@ -265,7 +265,7 @@ class ExportFmu(_CodeExport):
         super().__post_init__()
 
     def folder(self) -> str:
-        return "."
+        return f"hydroservo-{safe_name(self.system.name)}-fmu"
 
     def planned(self) -> list[str]:
         from hydroservo.codegen.c import c_identifier

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from hydroservo.errors import HydroservoError, ImplausibleResultError, ParameterError, shorten
+from hydroservo.errors import HydroservoError, ImplausibleResultError, ParameterError, did_you_mean, shorten
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
 
 if TYPE_CHECKING:
@@ -253,10 +253,13 @@ class Simulate(Workflow):
         where = system.source or system.name
         for name in (n for panel in system.plots for n in panel):
             if name not in signals:
-                raise ParameterError(f"{where}: [model] plots: no signal {name!r}; signals: {', '.join(sorted(signals))}")
+                raise ParameterError(
+                    f"{where}: [model] plots: no signal {name!r}{did_you_mean(name, signals)}; signals: "
+                    f"{', '.join(sorted(signals))}"
+                )
         for name, unit in system.plot_units.items():
             if name not in signals:
-                raise ParameterError(f"{where}: [model] plot_units: no signal {name!r}")
+                raise ParameterError(f"{where}: [model] plot_units: no signal {name!r}{did_you_mean(name, signals)}")
             try:
                 from_si(1.0, model.units.get(name, ""), unit)
             except HydroservoError as exc:
