@@ -627,6 +627,8 @@ def frequency_test(
                 H[a, j] = np.nan  # two frequencies in a row without a periodic response: none above either
                 unsettled.append((float(amp), float(f), "not tried: no periodic response at the two frequencies below"))
                 done += 1
+                if progress is not None:
+                    progress(done, amps.size * freqs.size)
                 continue
             p = base.copy()
             p[k_amp], p[k_freq] = amp * i_rated, f
@@ -636,6 +638,8 @@ def frequency_test(
                 unsettled.append((float(amp), float(f), str(exc)))
                 H[a, j] = np.nan
                 done += 1
+                if progress is not None:
+                    progress(done, amps.size * freqs.size)
                 continue
             guess = X[:, 0]
             worst = max(worst, mismatch)
@@ -714,7 +718,8 @@ def bench_report(
     points: int = 41,
 ) -> Report:
     """The chosen ``tests`` of :data:`TESTS` on one valve (``points`` currents in the static characteristic);
-    ``progress(name)`` is called as each starts."""
+    ``progress(name)`` is called as each starts, and ``progress.count(done, total)``, if it has one, as the
+    frequency test's periodic orbits are found."""
     bench = _conditions(bench)
     valve, p_s, i_rated = bench.valve, bench.p_s, bench.i_rated
     unknown = [t for t in tests if t not in TESTS]
@@ -727,7 +732,7 @@ def bench_report(
         "steps": lambda: step_tests(bench),
         "hysteresis": lambda: hysteresis_test(bench),
         "threshold": lambda: threshold_test(bench),
-        "bode": lambda: frequency_test(bench),
+        "bode": lambda: frequency_test(bench, progress=getattr(progress, "count", None)),
     }
     for name in TESTS:
         if name in tests:

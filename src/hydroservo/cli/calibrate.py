@@ -6,7 +6,8 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, execute, stage_printer
+from hydroservo.cli.common import add_output_options, execute
+from hydroservo.cli.progress import progress_bars
 
 __all__ = ["add_parsers"]
 
@@ -19,7 +20,7 @@ def cmd_calibrate(args: argparse.Namespace) -> int:
     job = Calibrate(args.model, args.record, args.fit, inputs=args.input, noise=args.noise, validate=args.validate,
                     starts=args.starts, initial=args.initial, sets=args.set, plan=args.plan,
                     max_evaluations=args.max_evaluations, cli=True)
-    return execute(job, args, stage_printer(args))
+    return execute(job, args, progress_bars(args))
 
 
 def cmd_rig(args: argparse.Namespace) -> int:

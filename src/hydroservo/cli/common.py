@@ -22,7 +22,6 @@ if TYPE_CHECKING:
 
 __all__ = [
     "numbers", "frequencies", "component_inputs", "add_output_options", "output_folder", "print_json", "execute",
-    "stage_printer",
 ]
 
 
@@ -79,19 +78,6 @@ def output_folder(args: Any, default: str) -> OutputFolder:
     return folder(args.out, default, force=args.force)
 
 
-def stage_printer(args: Any) -> Any:
-    """A progress callback printing each stage on stderr (``  running ... ...``), or None with ``--json``."""
-    import sys
-
-    if getattr(args, "json", False):
-        return None
-
-    def progress(text: str) -> None:
-        print(f"  {text} ...", file=sys.stderr, flush=True)
-
-    return progress
-
-
 def execute(job: Workflow, args: Any, progress: Any = None) -> int:
     """Run a command's workflow: the folder first (nothing there replaced unasked, refused before the work),
     then the run, its warnings on stderr, its files, and its report on stdout (JSON with ``--json``)."""
@@ -101,7 +87,11 @@ def execute(job: Workflow, args: Any, progress: Any = None) -> int:
     out = output_folder(args, job.folder()) if names or job.WRITES_ITSELF else None
     if out is not None:
         out.expect(names)
-    report = job.run(progress=progress, folder=None if out is None else out.target)
+    try:
+        report = job.run(progress=progress, folder=None if out is None else out.target)
+    finally:
+        if hasattr(progress, "close"):
+            progress.close()  # the last stage's line ends before the report or the error is printed
     for text in report.warnings:
         print(f"hydroservo: warning: {text}", file=sys.stderr)
     if out is not None and report.artifacts():

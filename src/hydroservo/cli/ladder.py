@@ -7,6 +7,7 @@ import argparse
 from typing import Any
 
 from hydroservo.cli.common import add_output_options, execute, numbers
+from hydroservo.cli.progress import progress_bars
 from hydroservo.errors import ParameterError, shorten
 
 __all__ = ["add_parsers"]
@@ -41,7 +42,7 @@ def cmd_ladder(args: argparse.Namespace) -> int:
         if args.free is not None else None, models=[k.strip() for k in args.models.split(",")] if args.models
         else None, measured=_measured(args.measured), points=args.points, cli=True,
     )
-    return execute(job, args)
+    return execute(job, args, progress_bars(args))
 
 
 def add_parsers(sub: Any) -> None:

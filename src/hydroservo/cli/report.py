@@ -6,7 +6,8 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, execute, stage_printer
+from hydroservo.cli.common import add_output_options, execute
+from hydroservo.cli.progress import progress_bars
 
 __all__ = ["add_parsers"]
 
@@ -16,7 +17,7 @@ def cmd_report(args: argparse.Namespace) -> int:
 
     job = ReportOf(args.source, args.set, t_end=args.t_end, accuracy=args.accuracy,
                    validation=not args.no_validation, cli=True)
-    return execute(job, args, stage_printer(args))
+    return execute(job, args, progress_bars(args))
 
 
 def cmd_draw(args: argparse.Namespace) -> int:

@@ -4,41 +4,25 @@
 from __future__ import annotations
 
 import argparse
-import sys
 from typing import Any
 
 from hydroservo.cli.common import add_output_options, execute
+from hydroservo.cli.progress import progress_bars
 
 __all__ = ["add_parsers"]
-
-
-class _Progress:
-    """Runs done, failures and time left, on stderr: one updating line on a terminal, else a line per tenth."""
-
-    def __init__(self) -> None:
-        self.tty = sys.stderr.isatty()
-        self.shown = -1
-
-    def __call__(self, done: int, failed: int, total: int, elapsed: float) -> None:
-        left = elapsed / done * (total - done) if done else float("nan")
-        text = f"runs {done}/{total}, {failed} failed, {elapsed:.0f} s, about {left:.0f} s left"
-        if self.tty:
-            print("\r" + text + " " * 8, end="" if done < total else "\n", file=sys.stderr, flush=True)
-        elif done * 10 // total != self.shown:
-            self.shown = done * 10 // total
-            print(text, file=sys.stderr, flush=True)
 
 
 def cmd_sensitivity(args: argparse.Namespace) -> int:
     from hydroservo.workflows.sensitivity import Sensitivity
 
+    bars = progress_bars(args)
     job = Sensitivity(
         args.model, args.vary, method=args.method, sets=args.set, n=args.n, levels=args.levels,
         metrics=args.metric or None, signals=args.signals.split(",") if args.signals else None, t_end=args.t_end,
         points=args.points, seed=args.seed, threads=args.threads, chunk=args.chunk, scheduler=args.scheduler,
-        force=args.force, runs_progress=_Progress(), cli=True,
+        force=args.force, runs_progress=bars.runs, cli=True,
     )
-    return execute(job, args)
+    return execute(job, args, bars)
 
 
 def add_parsers(sub: Any) -> None:

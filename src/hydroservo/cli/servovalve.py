@@ -6,7 +6,8 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import execute, stage_printer
+from hydroservo.cli.common import execute
+from hydroservo.cli.progress import progress_bars
 
 __all__ = ["add_parsers"]
 
@@ -33,7 +34,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from hydroservo.workflows.servovalve import Bench
 
     job = Bench(**_design_point(args), tests=args.tests, points=args.points)
-    return execute(job, args, stage_printer(args))
+    return execute(job, args, progress_bars(args))
 
 
 def cmd_fit_catalogue(args: argparse.Namespace) -> int:
@@ -47,7 +48,7 @@ def cmd_design(args: argparse.Namespace) -> int:
     from hydroservo.workflows.servovalve import Design
 
     job = Design(**_design_point(args), top=args.top, figures=args.figures)
-    return execute(job, args, stage_printer(args))
+    return execute(job, args, progress_bars(args))
 
 
 def add_parsers(sub: Any) -> None:

@@ -47,6 +47,24 @@ __all__ = ["Model"]
 _INTERPRETED_SAID = threading.Event()
 
 
+def _progress_of(
+    progress: Callable[[int, int], None] | bool | None, total: int, name: str
+) -> tuple[Callable[[int, int], None] | None, Any]:
+    """A batch's ``progress``: the callable to report to, and the bar to close (``progress=True``: tqdm's, in
+    a terminal or a notebook)."""
+    if progress is not True:
+        return (progress or None), None
+    from tqdm.auto import tqdm
+
+    bar = tqdm(total=total, desc=f"{name}: runs", unit="run")
+
+    def report(done: int, _total: int) -> None:
+        bar.n = done
+        bar.refresh()
+
+    return report, bar
+
+
 def _interpreted_once(why: str) -> None:
     """Say once a process that ``method="auto"`` runs CVODES in CasADi's interpreter, and why."""
     if not _INTERPRETED_SAID.is_set():
@@ -878,7 +896,7 @@ class Model:
         max_steps: int | None = None,
         threads: int | None = None,
         failed: Mapping[int, str] | None = None,
-        progress: Callable[[int, int], None] | None = None,
+        progress: Callable[[int, int], None] | bool | None = None,
         accuracy: float | None = None,
         method: str = DEFAULT_METHOD,
         events: bool = True,
@@ -894,7 +912,8 @@ class Model:
         ``failed`` already marks as invalid, index -> reason) has NaN signals
         and its reason in :attr:`BatchResult.failed`; the others keep their
         results. Runs go in chunks; a chunk in which a run fails is split until
-        the failing runs are isolated. ``progress(done, total)`` is called after
+        the failing runs are isolated. ``progress=True`` shows a progress bar (tqdm: a terminal's or a
+        notebook's); a callable ``progress(done, total)`` is called after
         every chunk. Tolerances, ``accuracy``, ``method`` and ``events`` as in :meth:`simulate`; a compiled method runs
         each set on a thread of its own, the interpreter's lock released while it integrates.
         """
@@ -940,12 +959,17 @@ class Model:
 
                 chunk = max(4 * nthreads, min(64, len(todo)))
             done = len(failures)
-            for c0 in range(0, len(todo), chunk):
-                part = todo[c0 : c0 + chunk]
-                solve(part)
-                done += len(part)
-                if progress is not None:
-                    progress(done, n)
+            report, bar = _progress_of(progress, n, self.name)
+            try:
+                for c0 in range(0, len(todo), chunk):
+                    part = todo[c0 : c0 + chunk]
+                    solve(part)
+                    done += len(part)
+                    if report is not None:
+                        report(done, n)
+            finally:
+                if bar is not None:
+                    bar.close()
         wall = time.perf_counter() - start
         for i in todo:
             if i not in failures and not np.all(np.isfinite(X[:, i])):

@@ -204,7 +204,11 @@ class Ladder(Workflow):
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> LadderReport:
         from hydroservo.analysis.ladder import build_ladder, ladder_table
 
+        if progress is not None:
+            progress("building the rungs (trim, linearisation, simplified models)")
         rungs = build_ladder(self.system, "trim", t=self.time, free=self.free_states, kinds=self.kinds)
+        if progress is not None:
+            progress(f"running {len(rungs)} rungs at {len(self.step_values)} steps each")
         table = ladder_table(rungs, self.step_values, parameter=self.stepped, output=self.compared,
                              n_points=self.points, reference=self.reference)
         unit = self.system.build().units.get(self.compared, "")

@@ -232,12 +232,26 @@ class Bench(DesignPoint):
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> BenchTestsReport:
         from hydroservo.analysis.servovalve_bench import bench_report
 
-        def stage(name: str) -> None:
-            if progress is not None:
-                progress(f"running the {name} tests")
-
-        report = bench_report(self.conditions, tests=self.chosen, label=self.label(), progress=stage, points=self.points)
+        report = bench_report(self.conditions, tests=self.chosen, label=self.label(), progress=_TestStages(progress),
+                              points=self.points)  # fmt: skip
         return BenchTestsReport(self, report)
+
+
+class _TestStages:
+    """The bench's progress as the command shows it: each test by name, and the orbits of the frequency test
+    counted where the command's progress counts (``progress.count``, :class:`hydroservo.cli.progress.Bars`)."""
+
+    def __init__(self, progress: Progress | None) -> None:
+        self.progress = progress
+
+    def __call__(self, name: str) -> None:
+        if self.progress is not None:
+            self.progress(f"running the {name} tests")
+
+    def count(self, done: int, total: int) -> None:
+        count = getattr(self.progress, "count", None)
+        if count is not None:
+            count(done, total)
 
 
 # -- the design study ------------------------------------------------------------------------
