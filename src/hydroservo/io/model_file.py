@@ -129,6 +129,8 @@ def model_to_toml(system: System) -> str:
         lines.append(f"plot_units = {toml_value(system.plot_units)}")
     if system.metrics:
         lines.append(f"metrics = {toml_value(system.metrics)}  # what a study measures of each run")
+    if system.notes:
+        lines.append(f"notes = {toml_value(system.notes)}  # printed with every run")
     if system.fluid is not None:
         given = dict(system.fluid.given)
         lines += ["", "[fluid]", f"name = {toml_string(system.fluid.name)}"]
@@ -348,6 +350,13 @@ def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | No
             f'{where}: [model] metrics = {metrics!r}: expected a list of metrics, e.g. ["final(x_mm)", "peak(cyl.pA)"]'
         )
     system.metrics = list(metrics)
+    notes = meta.get("notes", [])
+    if not (isinstance(notes, list) and all(isinstance(n, str) for n in notes)):
+        raise ModelFileError(
+            f'{where}: [model] notes = {notes!r}: expected a list of texts, e.g. ["the 86 MPa peak is in the '
+            "source's result too (docs/hopsan.md)\"]"
+        )
+    system.notes = [" ".join(n.split()) for n in notes]
     _set_fluid(system, data.get("fluid"), where)
     _add_components(system, data.get("components"), where, base)
     for target, source in data.get("connections", {}).items():

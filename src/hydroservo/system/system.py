@@ -147,6 +147,9 @@ class System:
         self.plot_units: dict[str, str] = {}
         #: what a study measures of each run by default (:mod:`hydroservo.analysis.metrics`), e.g. "final(x_mm)"
         self.metrics: list[str] = []
+        #: what a user should know when reading a run of this model (a known discrepancy with its source, a
+        #: flagged peak that the source has too), each with where it is explained; printed with every run
+        self.notes: list[str] = []
         #: the circuit's fluid (:meth:`set_fluid`), or None: each component keeps its own values
         self.fluid: CircuitFluid | None = None
         self._model: Model | None = None

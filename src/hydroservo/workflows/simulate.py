@@ -5,7 +5,7 @@
 >>> report.lines()[0].startswith("simulated 'flight-simulator' for 0.2 s")
 True
 >>> sorted(report.to_dict())
-['files', 'model', 'signals', 'solver', 't_end_s', 'wall_time_s', 'warnings']
+['files', 'model', 'notes', 'signals', 'solver', 't_end_s', 'wall_time_s', 'warnings']
 """
 
 from __future__ import annotations
@@ -75,6 +75,7 @@ class SimulationReport(Report):
         out.append(f"{'signal'.ljust(w)}  {'unit':>8}  {'final':>12}  {'min':>12}  {'max':>12}")
         for n, unit, fin, lo, hi in rows:
             out.append(f"{n.ljust(w)}  {unit:>8}  {fin:>12.5g}  {lo:>12.5g}  {hi:>12.5g}")
+        out += [f"note: {text}" for text in self.system.notes]
         if self.files:
             out.append(f"wrote {' and '.join(self.files.values())}")
         return out
@@ -92,6 +93,7 @@ class SimulationReport(Report):
             "wall_time_s": self.wall_time,
             "warnings": [w.to_dict() for w in result.warnings]
             + [{"message": text} for text in self.warnings if text not in own],
+            "notes": list(self.system.notes),
             "files": self.files,
         }
 

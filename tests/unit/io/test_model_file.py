@@ -31,3 +31,23 @@ def test_bad_model_files(tmp_path, edit, message) -> None:
     path.write_text(edit(VALVE_CYLINDER))
     with pytest.raises(ModelFileError, match=message):
         read_model(path)
+
+
+def test_notes_are_read_written_and_printed_with_every_run(tmp_path) -> None:
+    """A model file's [model] notes (a known discrepancy, a flagged peak its source has too) survive export and
+    reload, and the simulate report prints them (text and JSON); anything but a list of texts is refused."""
+    import hydroservo as hs
+    from hydroservo.io import model_to_toml
+    from hydroservo.workflows import simulate
+
+    system = hs.load_model("position-servo")
+    assert system.notes and "Hopsan's own result" in system.notes[0]
+    path = tmp_path / "servo.toml"
+    path.write_text(model_to_toml(system), encoding="utf-8")
+    assert read_model(path).notes == system.notes
+    report = simulate.run(path, t_end="0.01 s", points=11, write="none")
+    assert f"note: {system.notes[0]}" in report.lines() and report.to_dict()["notes"] == system.notes
+    bad = tmp_path / "bad.toml"
+    bad.write_text(path.read_text(encoding="utf-8").replace("notes = [", "notes = 3 # [", 1), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"\[model\] notes = 3: expected a list of texts"):
+        read_model(bad)
