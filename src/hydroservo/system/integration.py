@@ -60,9 +60,9 @@ RTOL_PER_ATOL = 100.0
 
 
 #: The same per method: the compiled variable-step methods of :mod:`hydroservo.system.native` control each
-#: step's error as CVODES does, but their global error grows more over a run (ros23 is of order 2, and dopri5
-#: rides its stability bound on stiff circuits); 1000 meets the accuracy on the built-in models where 100 does not
-#: (benchmarks/bench_accuracy.py, docs/engine.md).
+#: step's error as CVODES does; the global error of ros23 (of order 2) and dopri5 (riding its stability bound on
+#: stiff circuits) grows more over a run, and 1000 meets the accuracy on the built-in models where 100 does not;
+#: rodas3's meets it at 100, as CVODES's (benchmarks/bench_accuracy.py, docs/engine.md).
 ACCURACY_PER_RTOL_OF = {"cvodes": ACCURACY_PER_RTOL, "ros23": 1000.0, "dopri5": 1000.0, "rodas3": 100.0}
 
 
@@ -79,13 +79,13 @@ def tolerances(accuracy: float, method: str = "cvodes") -> tuple[float, float]:
 
 
 #: The integration methods of a run: ``auto`` (the default: :data:`AUTO_METHOD` for a model of at most
-#: :data:`AUTO_MAX_STATES` states where a C compiler is found, else CVODES), CVODES, and the compiled variable-step methods of :mod:`hydroservo.system.native` (the same names
-#: as its ``ADAPTIVE_METHODS``).
+#: :data:`AUTO_MAX_STATES` states where a C compiler is found, else CVODES), CVODES, and the compiled
+#: variable-step methods of :mod:`hydroservo.system.native` (the same names as its ``ADAPTIVE_METHODS``).
 METHODS = ("auto", "cvodes", "rodas3", "ros23", "dopri5")
 DEFAULT_METHOD = "auto"
-#: What ``auto`` runs where the model compiles: the L-stable Rosenbrock 3(2) of Sandu et al. on the exact Jacobian, which
-#: meets the accuracy asked for on every built-in model in 0.2 to 0.4 of CVODES' time at the default accuracy
-#: (docs/engine.md, "Accuracy").
+#: What ``auto`` runs where the model compiles: the L-stable Rosenbrock 3(2) of Sandu et al. on the exact
+#: Jacobian, within the accuracy asked for on the built-in models (position-servo's relief flow apart) in 0.35 to
+#: 0.8 of CVODES' time at the default accuracy (docs/engine.md, "Accuracy").
 AUTO_METHOD = "rodas3"
 #: ... for models of at most this many states: a Rosenbrock method evaluates and factorises the dense Jacobian at
 #: every step, where CVODES reuses one over many steps, and the compiled Jacobian's code grows with its entries.
@@ -100,8 +100,9 @@ def check_method(method: str) -> str:
     if method not in METHODS:
         raise ParameterError(
             f"method = {method!r}: expected one of {', '.join(METHODS)} (auto: the default, rodas3 for a model of at "
-            f"most {AUTO_MAX_STATES} states where a C compiler is found, else cvodes; cvodes: BDF with error control, interpreted; rodas3: compiled Rosenbrock 3(2) for "
-            "stiff circuits; ros23: compiled Rosenbrock 2(3); dopri5: compiled Dormand-Prince 5(4), explicit)"
+            f"most {AUTO_MAX_STATES} states where a C compiler is found, else cvodes; cvodes: BDF with error "
+            "control, interpreted; rodas3: compiled Rosenbrock 3(2) for stiff circuits; ros23: compiled Rosenbrock "
+            "2(3); dopri5: compiled Dormand-Prince 5(4), explicit)"
             + did_you_mean(str(method), METHODS)
         )
     return method

@@ -334,10 +334,10 @@ class Model:
         method : str
             ``"auto"`` (default): ``"rodas3"`` for a model of at most 20 states
             (:data:`~hydroservo.system.integration.AUTO_MAX_STATES`) where it compiles (a C compiler is found),
-            else ``"cvodes"`` (no compiler: said once per process). The compiled methods (:data:`~hydroservo.system.native.ADAPTIVE_METHODS`,
-            :mod:`hydroservo.system.native`; C built once per model structure and kept in the user's cache
-            folder): ``"rodas3"`` (Sandu et al.'s Rosenbrock 3(2) on the exact Jacobian, L-stable, for stiff circuits: every
-            built-in model), ``"ros23"`` (Rosenbrock 2(3), cheaper steps at loose accuracy) or ``"dopri5"``
+            else ``"cvodes"`` (no compiler: said once per process). The compiled methods
+            (:data:`~hydroservo.system.native.ADAPTIVE_METHODS`, :mod:`hydroservo.system.native`; C built once per
+            model structure and kept in the user's cache folder): ``"rodas3"`` (Sandu et al.'s Rosenbrock 3(2) on
+            the exact Jacobian, L-stable, for stiff circuits: every built-in model), ``"ros23"`` (Rosenbrock 2(3), cheaper steps at loose accuracy) or ``"dopri5"``
             (explicit Dormand-Prince 5(4), for circuits that are not stiff). ``"cvodes"``: SUNDIALS' BDF through
             CasADi's interpreter, no compiler needed. ``Result.stats["method"]`` says which ran; docs/engine.md
             compares them.
@@ -387,12 +387,9 @@ class Model:
         why = self.unconverged(grid, xf, p)
         if why is not None:
             raise SolverError(f"integration of {self.name!r}: {why}")
-        stats = {k: v for k, v in found.items() if not k.endswith("B") and isinstance(v, (int, float))}
-        kept: dict[str, Any] = {
-            k: stats[k] for k in ("nsteps", "nfevals", "nlinsetups", "netfails", "nniters", "nncfails") if k in stats
-        }
-        kept.update({"method": "cvodes", "rtol": settings.rtol, "atol": settings.atol, "wall_time_s": wall})
-        stats = kept
+        kept = ("nsteps", "nfevals", "nlinsetups", "netfails", "nniters", "nncfails")
+        stats: dict[str, Any] = {k: found[k] for k in kept if isinstance(found.get(k), (int, float))}
+        stats.update({"method": "cvodes", "rtol": settings.rtol, "atol": settings.atol, "wall_time_s": wall})
         return self._result(grid, None, p, stats, xf)
 
     def _resolve(self, method: str) -> str:

@@ -79,8 +79,8 @@ METHODS = ("rk4", "bdf2")
 
 
 #: The variable-step methods with error control of every export (``integrate``), in the order of their C
-#: constants: ``dopri5`` (explicit, Dormand-Prince 5(4)) and ``ros23`` (linearly implicit, Rosenbrock 2(3), for
-#: stiff circuits).
+#: constants: ``dopri5`` (explicit, Dormand-Prince 5(4)), ``ros23`` and ``rodas3`` (linearly implicit,
+#: Rosenbrock 2(3) and Sandu et al.'s L-stable 3(2), for stiff circuits).
 ADAPTIVE_METHODS = ("dopri5", "ros23", "rodas3")
 
 

@@ -25,7 +25,7 @@
  * acts from the next step on, as in CVODES' solution.
  *
  * @NAME@_integrate: variable steps with error control, from the instance's time and states through a list of
- * output times (dense output between steps), with the method of the run's choosing:
+ * output times (each of them the end of a step), with the method of the run's choosing:
  * dopri5: the explicit Runge-Kutta pair of Dormand and Prince, order 5 with an embedded order-4 error
  *     estimate, seven stages of which the last is the next step's first ([Dormand1980]; [Hairer1993],
  *     Table II.5.2);
@@ -39,10 +39,11 @@
  *     err_i / (atol + rtol max(|z0_i|, |z1_i|))
  * and a step is accepted when it is at most 1; the next step is h (1/err)^(1/(q+1)) times 0.9, within 0.2
  * and 5 times h (not growing after a rejection), with q + 1 = 5 (dopri5) or 3 (ros23, rodas3) ([Hairer1993] section
- * II.4). The first step follows [Hairer1993] section II.4, "Starting step size". Between steps the solution is
- * the cubic Hermite interpolant of the states and rates at both ends (third order; [Hairer1993] section II.6).
- * No step is longer than max_step (if given) nor passes an output time (each output time ends a step, so that an
- * input changing between two of them is not stepped over unseen). Events: where a switching
+ * II.4). The first step follows [Hairer1993] section II.4, "Starting step size". No step is longer than
+ * max_step (if given) nor passes an output time: each output time ends a step (so that an input changing
+ * between two of them is not stepped over unseen), and output times closer together than a step can be share
+ * one. Within a step the solution is the cubic Hermite interpolant of the states and rates at both ends (third
+ * order; [Hairer1993] section II.6), on which events are located. Events: where a switching
  * function the components declare (an end stop, a lap edge, a valve cracking, a source's step: the kinks and
  * jumps of the equations) changes side within a step, the crossing is found by bisection on the interpolant
  * and the step taken again to end just past it, before its error is judged, so that no step straddles a kink;
@@ -650,15 +651,10 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
             if (now != 0) m->side[i] = (signed char)now;
         }
 #endif
-        /* accepted: the outputs inside (t, t + h] from the interpolant, the last exactly, and those a hair after
-         * it (output times closer together than a step can be: 1e-12 of the span) from its end */
+        /* accepted: the step ends at the next output time (or short of it), so what it records is its end: that
+         * output time and those a hair after it (closer together than a step can be: 1e-12 of the span) */
         for (; out < n_times && times[out] <= t1 + same_time; ++out) {
-            if (times[out] >= t1) {
-                @NAME@_record(m, out, times[out], m->z_new, states, outputs);
-            } else {
-                @NAME@_hermite(m, t, h, times[out], m->z_host);
-                @NAME@_record(m, out, times[out], m->z_host, states, outputs);
-            }
+            @NAME@_record(m, out, times[out], m->z_new, states, outputs);
         }
         m->accepted += 1;
         memcpy(m->z, m->z_new, sizeof(double) * (size_t)n);

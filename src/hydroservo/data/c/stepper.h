@@ -90,7 +90,8 @@ int @NAME@_step(@NAME@_instance *m);
 int @NAME@_run(@NAME@_instance *m, long n, const double *inputs, double *states, double *outputs);
 
 /* Variable steps with error control: from the instance's time and states, which must be those at times[0],
- * through the n_times output times (increasing), with `method` (@UPPER@_DOPRI5 or @UPPER@_ROS23), events at
+ * through the n_times output times (increasing), each the end of a step, with `method` (@UPPER@_DOPRI5,
+ * @UPPER@_ROS23 or @UPPER@_RODAS3), events at
  * the kinks the model declares if `events` is nonzero (a step ends just past each: @NAME@.c says how), the
  * relative tolerance rtol and the absolute tolerance atol on the states scaled by their nominal magnitudes
  * (@NAME@_state_nominal), steps of at most max_step seconds (0: no limit) and at most max_steps steps. states, outputs: NULL or room for n_times rows of
