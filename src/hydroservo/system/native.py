@@ -484,7 +484,8 @@ def model_sources(
 # -- the cache -------------------------------------------------------------------------------------------------
 
 #: Flags every cached library is compiled with: -O2 runs ros23 on the flight simulator 7 % faster than -O1 and
-#: builds in 0.56 s against 0.38 s (benchmarks/bench_compiled.py): a build is paid once per model, a run often.
+#: builds in 0.37 s against 0.27 s (benchmarks/bench_compiled.py, two cores): a build is paid once per model, a
+#: run often.
 CACHE_FLAGS = ("-O2",)
 
 #: The file beside a cached library holding its SHA-256, checked at every load.
