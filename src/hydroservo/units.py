@@ -61,6 +61,9 @@ __all__ = [
     "Dimension",
     "dimension",
     "pint_entry",
+    "QUANTITIES",
+    "UnitChoice",
+    "inferred_units",
 ]
 
 #: Gauge pressure of a perfect vacuum [Pa]: pressures are gauge inside hydroservo, and none lies below this.
@@ -539,9 +542,10 @@ def si_unit(unit: str) -> str:
 
 
 def _printed_pint(unit: str) -> str:
+    """pint's short printed form, with the litre written ``L`` as engineers write it (pint prints ``l``)."""
     if unit == "":
         return "-"
-    return f"{_unit(unit):~P}"
+    return re.sub(r"(?<![\w°µΩ])l(?![\w°µΩ])", "L", f"{_unit(unit):~P}")
 
 
 def format_quantity(value: float, unit: str) -> str:
@@ -549,3 +553,185 @@ def format_quantity(value: float, unit: str) -> str:
     if unit == "":
         return repr(float(value))
     return f"{float(value)!r} {unit}"
+
+
+# -- display units ---------------------------------------------------------------------------------------------
+
+#: Names of quantities a unit choice may key a unit by (``"p=bar"``), each standing for the dimension of its
+#: SI unit: every signal of that dimension is shown in the unit given.
+QUANTITIES = {
+    "p": "Pa", "pressure": "Pa",
+    "x": "m", "length": "m", "position": "m",
+    "v": "m/s", "velocity": "m/s",
+    "a": "m/s^2", "acceleration": "m/s^2",
+    "Q": "m^3/s", "flow": "m^3/s",
+    "F": "N", "force": "N",
+    "volume": "m^3", "area": "m^2", "mass": "kg", "torque": "N*m",
+    "angle": "rad", "speed": "rad/s", "current": "A", "voltage": "V", "power": "W",
+}
+
+
+def _dimension_key(unit: str) -> tuple[tuple[str, float], ...]:
+    """The dimension of ``unit`` as a hashable key (exponents of the SI base units)."""
+    return tuple(sorted(si_definition(unit)[2].items()))
+
+
+class UnitChoice:
+    """Units to show signals in: by signal name, and by dimension (every pressure in ``psi``).
+
+    Read from text as the ``--units`` option takes it: items separated by commas, each a unit that applies to
+    every signal of its dimension (``"bar"``), a quantity and its unit (``"p=bar"``, ``"Q=L/min"``; the names
+    of :data:`QUANTITIES`), or a signal and its unit (``"cyl.pA=psi"``). A signal's own unit wins over its
+    dimension's; :meth:`over` puts one choice before another (the user's before the model's). ``si`` shows
+    every signal in SI. Signals with no unit chosen are shown in SI, as hydroservo carries them.
+
+    Examples
+    --------
+    >>> choice = UnitChoice.parse("p=bar, mm, cyl.pA=psi")
+    >>> choice.unit("cyl.pA", "Pa"), choice.unit("cyl.pB", "Pa"), choice.unit("load.x", "m"), choice.unit("load.v", "m/s")
+    ('psi', 'bar', 'mm', 'm/s')
+    >>> UnitChoice.parse("L/min").over(UnitChoice.parse("Q=gal/min, bar")).unit("valve.QA", "m^3/s")
+    'L/min'
+    """
+
+    def __init__(
+        self,
+        signals: dict[str, str] | None = None,
+        dimensions: dict[tuple[tuple[str, float], ...], str] | None = None,
+        si: bool = False,
+    ) -> None:
+        self.signals: dict[str, str] = dict(signals or {})
+        self.dimensions: dict[tuple[tuple[str, float], ...], str] = dict(dimensions or {})
+        self.si = si
+
+    SI: UnitChoice  # every signal in SI (set below)
+
+    @classmethod
+    def parse(cls, spec: Any, *, what: str = "--units") -> UnitChoice:
+        """A choice from ``spec``: None (none), ``"si"``, text as above, a mapping of names (signals or
+        quantities) to units, a list of items, or a :class:`UnitChoice` (returned as it is)."""
+        if spec is None:
+            return cls()
+        if isinstance(spec, UnitChoice):
+            return spec
+        if isinstance(spec, str):
+            if spec.strip().lower() == "si":
+                return cls.SI
+            items: list[tuple[str | None, str]] = []
+            for item in (part.strip() for part in spec.split(",")):
+                if not item:
+                    continue
+                left, sep, right = item.partition("=")
+                items.append((left.strip(), right.strip()) if sep else (None, item))
+        elif isinstance(spec, dict) or hasattr(spec, "items"):
+            items = [(str(k), str(v)) for k, v in spec.items()]
+        elif isinstance(spec, (list, tuple)):
+            return functools.reduce(lambda a, b: a.over(b), (cls.parse(s, what=what) for s in spec), cls()) if spec else cls()
+        else:
+            raise UnitError(f"{what}: {spec!r}: expected units such as 'p=bar, mm, cyl.pA=psi', or 'si'")
+        choice = cls()
+        for key, unit in items:
+            if not unit:
+                raise UnitError(f"{what}: {shorten(str(spec))!r}: {key!r} has no unit; expected NAME=UNIT, e.g. 'p=bar'")
+            try:
+                check_unit(unit)
+                dims = _dimension_key(unit)
+            except UnitError as exc:
+                raise UnitError(f"{what}: {exc}") from None
+            if key is None:
+                choice.dimensions.setdefault(dims, unit)  # the first unit given for a dimension holds
+            elif key in QUANTITIES:
+                if dims != _dimension_key(QUANTITIES[key]):
+                    raise UnitError(
+                        f"{what}: {key}={unit}: {unit!r} is not a unit of {key} (expected one like {QUANTITIES[key]!r})"
+                    )
+                choice.dimensions[dims] = unit
+            else:
+                choice.signals[key] = unit
+        return choice
+
+    def over(self, other: UnitChoice) -> UnitChoice:
+        """This choice, completed by ``other`` where it chooses nothing: for each signal, this choice's unit of
+        the signal, else of its dimension, else ``other``'s. If either is :attr:`SI`, the result is."""
+        if self.si or other.si:
+            return UnitChoice.SI
+        merged = UnitChoice(other.signals, other.dimensions)
+        for name in list(merged.signals):  # a dimension chosen here beats a signal's unit there
+            if _dimension_key(merged.signals[name]) in self.dimensions:
+                del merged.signals[name]
+        merged.signals.update(self.signals)
+        merged.dimensions.update(self.dimensions)
+        return merged
+
+    def unit(self, name: str, unit: str) -> str:
+        """The unit signal ``name``, carried in SI ``unit``, is shown in (``unit`` itself if none is chosen)."""
+        if self.si:
+            return unit
+        chosen = self.signals.get(name)
+        if chosen is not None and same_dimension(chosen, unit):
+            return chosen
+        return self.dimensions.get(_dimension_key(unit), unit) if unit else unit
+
+    def units(self, signal_units: dict[str, str]) -> dict[str, str]:
+        """The unit each signal is shown in: ``signal_units`` maps signal names to their SI units."""
+        return {name: self.unit(name, unit) for name, unit in signal_units.items()}
+
+    def unknown(self, names: Any) -> list[str]:
+        """The signals this choice names that are not among ``names``."""
+        known = set(names)
+        return [n for n in self.signals if n not in known]
+
+    def items(self) -> list[str]:
+        """The choice as the items of its text (``["cyl.pA=psi", "bar"]``)."""
+        if self.si:
+            return ["si"]
+        return [f"{name}={unit}" for name, unit in self.signals.items()] + list(self.dimensions.values())
+
+    def __bool__(self) -> bool:
+        return self.si or bool(self.signals or self.dimensions)
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, UnitChoice) and (self.si, self.signals, self.dimensions) == (
+            other.si, other.signals, other.dimensions)
+
+    def __repr__(self) -> str:
+        return f"UnitChoice({', '.join(self.items())!r})"
+
+
+UnitChoice.SI = UnitChoice(si=True)
+
+
+def inferred_units(texts: Any) -> UnitChoice:
+    """The units a set of quantities (``["1500 psi", "2 in", "0.5 in"]``) were written in: for each dimension,
+    the unit used most often (the first of equals). Only plain units count (at most two names, none twice:
+    ``in*lbf/in`` is a force but no unit to show one in); absolute pressures, temperatures, times and bare
+    numbers are left aside. Velocities and accelerations follow the length unit per second (squared) when none
+    was written.
+
+    >>> choice = inferred_units(["1500 psi", "2 in", "0.5 in", "1 mm", "25 degC", "0.3", "1 in*lbf/in", "2 in*lbf/in"])
+    >>> choice.unit("cyl.pA", "Pa"), choice.unit("load.x", "m"), choice.unit("load.v", "m/s"), choice.unit("cyl.F", "N")
+    ('psi', 'in', 'in/s', 'N')
+    """
+    counts: dict[tuple[tuple[str, float], ...], dict[str, int]] = {}
+    for text in texts:
+        try:
+            _, unit = split_quantity(str(text))
+            if not unit or unit in TEMPERATURE_UNITS or is_absolute_pressure(unit) or "%" in unit:
+                continue
+            names = re.findall(r"[^\W\d][\w°µΩ]*", unit)
+            if len(names) > 2 or len(set(names)) < len(names):
+                continue
+            check_unit(unit)
+            key = _dimension_key(unit)
+        except (UnitError, ValueError):
+            continue
+        if not key or key == _dimension_key("s"):
+            continue
+        found = counts.setdefault(key, {})
+        found[unit] = found.get(unit, 0) + 1
+    chosen = {key: max(units, key=lambda u: units[u]) for key, units in counts.items()}  # first of equals
+    length = chosen.get(_dimension_key("m"))
+    if length is not None and length != "m":
+        chosen.setdefault(_dimension_key("m/s"), f"{length}/s")
+        chosen.setdefault(_dimension_key("m/s^2"), f"{length}/s^2")
+    return UnitChoice(dimensions={k: u for k, u in chosen.items() if u != coherent_unit(u)})

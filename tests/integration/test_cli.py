@@ -13,12 +13,13 @@ def test_cli_simulate_json(tmp_path, cli) -> None:
     )
     assert code == 0
     data = json.loads(out)
-    assert data["signals"]["p2"]["unit"] == "Pa"
-    assert data["signals"]["p2"]["max"] > 0
+    # the model file speaks psi and in ([model] units): so do the JSON and the CSV
+    assert data["signals"]["p2"]["unit"] == "psi" and data["signals"]["y"]["unit"] == "in"
+    assert 1000 < data["signals"]["p2"]["max"] < 2000  # psi, not Pa
     assert "nsteps" in data["solver"] and data["wall_time_s"] > 0
     assert (tmp_path / "flight-simulator.csv").exists() and (tmp_path / "flight-simulator.png").exists()
-    first = (tmp_path / "flight-simulator.csv").read_text().splitlines()[0]
-    assert "y [m]" in first and "p2 [Pa]" in first
+    first = (tmp_path / "flight-simulator.csv").read_text(encoding="utf-8-sig").splitlines()[0]
+    assert "y [in]" in first and "p2 [psi]" in first and "valve.QA [in³/s]" in first
 
 
 def test_cli_simulate_json_alone_writes_nothing_and_write_picks_the_files(tmp_path, cli, monkeypatch) -> None:
@@ -37,15 +38,56 @@ def test_cli_simulate_csv_reads_back_as_the_result(tmp_path, cli) -> None:
     import pandas as pd
 
     import hydroservo as hs
+    from hydroservo.io.results import read_csv
 
     code, _, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--points", "51", "--write", "csv", "--out", str(tmp_path))
     assert code == 0
-    table = pd.read_csv(tmp_path / "flight-simulator.csv")
+    path = tmp_path / "flight-simulator.csv"
+    assert path.read_bytes().startswith(b"\xef\xbb\xbf")  # the mark by which spreadsheets read in³/s right
+    table = pd.read_csv(path)  # pandas drops the mark
     result = hs.load_model("flight-simulator").simulate(t_end=0.2, n_points=51)
-    assert list(table.columns) == ["t [s]", *(f"{n} [{hs.units.si_unit(result.units[n])}]" for n in result.data)]
-    for name in ("y", "p2", "spool.xv"):  # ten significant digits
+    shown = result.shown_units()
+    assert shown["p2"] == "psi" and shown["valve.QA"] == "in^3/s" and shown["amp.i"] == "mA"
+    assert list(table.columns) == ["t [s]", *(f"{n} [{hs.units.si_unit(u)}]" for n, u in shown.items())]
+    back = read_csv(path)  # in SI again, whatever units the file is in
+    for name in ("y", "p2", "spool.xv", "valve.QA"):  # ten significant digits
         column = next(c for c in table.columns if c.startswith(f"{name} ["))
-        assert table[column].to_numpy() == pytest.approx(result[name], rel=1e-9, abs=1e-300)
+        assert table[column].to_numpy() == pytest.approx(result.shown(name, shown[name]), rel=1e-9, abs=1e-300)
+        assert back[name] == pytest.approx(result[name], rel=1e-9, abs=1e-300)
+    assert back.shown_units()["p2"] == "psi"  # and shown in the file's units
+
+
+def test_cli_simulate_units_si_and_ascii(tmp_path, cli) -> None:
+    code, out, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--json", "--units", "p=bar, Q=L/min, y=mm")
+    signals = json.loads(out)["signals"]
+    assert (signals["p2"]["unit"], signals["cyl.pB"]["unit"], signals["valve.QA"]["unit"]) == ("bar", "bar", "L/min")
+    assert (signals["y"]["unit"], signals["load.x"]["unit"]) == ("mm", "in")  # y alone; the other lengths stay in
+    code, out, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--json", "--si")
+    assert json.loads(out)["signals"]["p2"]["unit"] == "Pa"
+    code, out, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--write", "csv", "--ascii", "--out", str(tmp_path))
+    raw = (tmp_path / "flight-simulator.csv").read_bytes()
+    assert raw.isascii() and b"valve.QA [in^3/s]" in raw and b"cyl.pA [psi]" in raw
+    text = out.splitlines()
+    assert text[1].split() == ["signal", "unit", "final", "min", "max"] and len(text) < 14  # the main signals
+    assert "more signals in the CSV" in out
+    code, out, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--write", "none", "--all")
+    assert "cyl.m_oil" in out and "more signals" not in out
+    for units, expected in [("p=mm", "'mm' is not a unit of p"), ("cyl.pX=bar", "did you mean 'cyl.pB'"),
+                            ("cyl.pA=mm", "cyl.pA is in Pa"), ("blorps", "unknown unit 'blorps'")]:
+        code, _, err = cli("simulate", "flight-simulator", "--units", units, "--out", str(tmp_path / "x"))
+        assert code == 2 and "--units" in err and expected in err and not (tmp_path / "x").exists(), err
+    code, _, err = cli("simulate", "flight-simulator", "--units", "bar", "--si")
+    assert code == 2 and "give one of them" in err
+
+
+def test_cli_set_refuses_a_bare_number_the_model_gives_in_other_units(cli) -> None:
+    # the file gives load.W in lbf: 3000 alone would be taken as 3000 N, a fifth of what was meant
+    code, _, err = cli("simulate", "flight-simulator", "--set", "load.W=3000", "--write", "none")
+    assert code == 2 and "in lbf ('6400 lbf')" in err and '--set "load.W=3000 lbf"' in err
+    code, _, _ = cli("simulate", "flight-simulator", "--set", "cyl.k_stop=0", "--t-end", "0.1", "--write", "none")
+    assert code == 0  # zero is zero in any unit
+    code, _, _ = cli("simulate", "robot-arm", "--set", "load.m=30", "--t-end", "0.1", "--write", "none")
+    assert code == 0  # robot-arm gives load.m in kg, SI: a bare number is unambiguous
 
 
 def test_cli_simulate_accuracy_sets_the_tolerances(cli) -> None:
@@ -139,7 +181,9 @@ def test_result_plot_without_arguments_shows_the_main_signals(tmp_path) -> None:
     assert result.panels == [["vi", "eo"], ["xv"], ["ydot"], ["y"], ["p1", "p2"]]  # the model file's plots
     fig = result.plot(file=tmp_path / "r.png")
     labels = [ax.get_ylabel() for ax in fig.axes]
-    assert labels == ["vi, eo [V]", "xv [m]", "ydot [m/s]", "y [m]", "p1, p2 [Pa]"]
+    assert labels == ["vi, eo [V]", "xv [in]", "ydot [in/s]", "y [in]", "p1, p2 [psi]"]  # the model's units
+    si = result.plot(units="si", file=tmp_path / "si.png")
+    assert [ax.get_ylabel() for ax in si.axes] == ["vi, eo [V]", "xv [m]", "ydot [m/s]", "y [m]", "p1, p2 [Pa]"]
     legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
     assert legend == ["vi: command voltage", "eo: error voltage at the RC network output"]
 

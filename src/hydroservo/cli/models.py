@@ -7,7 +7,7 @@ import argparse
 import sys
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, execute
+from hydroservo.cli.common import add_output_options, add_unit_options, execute
 
 __all__ = ["add_parsers"]
 
@@ -25,7 +25,8 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     write = "none" if args.write is None and args.json and args.out is None else args.write
     job = Simulate(
         args.model, args.set, t_end=args.t_end, points=args.points, initial=args.initial, accuracy=args.accuracy,
-        rtol=args.rtol, strict=args.strict, write=write, method=args.method, cli=True,
+        rtol=args.rtol, strict=args.strict, write=write, method=args.method, units=args.units, si=args.si,
+        ascii=args.ascii, all_signals=args.all, cli=True,
     )
     return execute(job, args)
 
@@ -97,6 +98,8 @@ def add_parsers(sub: Any) -> None:
         action="store_true",
         help="refuse a physically implausible result (exit 2, nothing written) instead of warning",
     )
+    add_unit_options(p)
+    p.add_argument("--all", action="store_true", help="list every signal in the table, not only the main ones")
     add_output_options(p, "hydroservo-NAME")
     p.add_argument(
         "--write",

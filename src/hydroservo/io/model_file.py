@@ -62,7 +62,7 @@ from hydroservo.io.tables import read_time_table
 from hydroservo.io.toml import read_toml, toml_key, toml_quantity, toml_string, toml_value
 from hydroservo.system import System
 from hydroservo.system.nodes import port_of
-from hydroservo.units import format_quantity, to_si
+from hydroservo.units import UnitChoice, format_quantity, to_si
 
 __all__ = [
     "read_model",
@@ -127,6 +127,8 @@ def model_to_toml(system: System) -> str:
         lines.append(f"plots = {toml_value(system.plots)}  # panels of signals for plots")
     if system.plot_units:
         lines.append(f"plot_units = {toml_value(system.plot_units)}")
+    if system.display_units:
+        lines.append(f"units = {toml_value(system.display_units)}  # what results are shown in")
     if system.metrics:
         lines.append(f"metrics = {toml_value(system.metrics)}  # what a study measures of each run")
     if system.notes:
@@ -344,6 +346,19 @@ def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | No
             f'{where}: [model] plot_units = {units!r}: expected a table of signal = "unit", e.g. {{ p1 = "psi" }}'
         )
     system.plot_units = {str(k): v for k, v in units.items()}
+    shown = meta.get("units", [])
+    if isinstance(shown, str):
+        shown = [shown]
+    if not (isinstance(shown, list) and all(isinstance(u, str) for u in shown)):
+        raise ModelFileError(
+            f'{where}: [model] units = {shown!r}: expected a list of units to show results in, e.g. ["psi", "in", '
+            '"Q=in^3/s"]'
+        )
+    try:
+        UnitChoice.parse(shown, what="[model] units")
+    except HydroservoError as exc:
+        raise ModelFileError(f"{where}: {exc}") from None
+    system.display_units = list(shown)
     metrics = meta.get("metrics", [])
     if not (isinstance(metrics, list) and all(isinstance(m, str) for m in metrics)):
         raise ModelFileError(

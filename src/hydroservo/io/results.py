@@ -10,7 +10,7 @@ from hydroservo.units import si_unit
 if TYPE_CHECKING:
     import numpy as np
 
-__all__ = ["write_csv", "write_mat", "read_csv"]
+__all__ = ["write_csv", "write_mat", "read_csv", "csv_header"]
 
 
 class Result(Protocol):
@@ -22,23 +22,43 @@ class Result(Protocol):
     @property
     def data(self) -> dict[str, np.ndarray]: ...
 
+    def shown_units(self, units: Any = None) -> dict[str, str]: ...
 
-def write_csv(result: Result, path: str | Path) -> Path:
-    """Write ``result`` as CSV: a time column ``t [s]``, then one column ``signal [unit]`` per signal (SI).
+    def shown(self, name: str, unit: str) -> np.ndarray: ...
 
-    Ten significant digits; written by NumPy, so that a command-line run does
-    not load pandas (``pandas.read_csv`` reads it back, ``nan`` as NaN).
+
+def csv_header(name: str, unit: str, ascii: bool = False) -> str:
+    """A column's header, ``name [unit]``: the unit printed (``m³/s``), or as unit text (``m^3/s``) with
+    ``ascii``; every CSV hydroservo writes names its columns so.
+
+    >>> csv_header("valve.QA", "m^3/s"), csv_header("valve.QA", "m^3/s", ascii=True), csv_header("eps", "")
+    ('valve.QA [m³/s]', 'valve.QA [m^3/s]', 'eps [-]')
+    """
+    printed = si_unit(unit)
+    return f"{name} [{(parseable_unit(printed) or '-') if ascii else printed}]"
+
+
+def write_csv(result: Result, path: str | Path, units: Any = None, ascii: bool = False) -> Path:
+    """Write ``result`` as CSV: a time column ``t [s]``, then one column ``signal [unit]`` per signal, in the
+    units the result shows (:meth:`~hydroservo.system.result.Result.shown_units`: the model's, ``units``
+    over them, ``"si"`` for SI).
+
+    UTF-8 with a byte-order mark, so that spreadsheet programs read ``m³/s`` right; with ``ascii``, unit names
+    in ASCII (``m^3/s``) and no mark. Ten significant digits; written by NumPy, so that a command-line run does
+    not load pandas (``pandas.read_csv`` and :func:`read_csv` read it back, ``nan`` as NaN).
     """
     import csv
 
     import numpy as np
 
     path = Path(path)
-    data = result.data
-    header = ["t [s]", *(f"{n} [{si_unit(result.units.get(n, ''))}]" for n in data)]
-    with path.open("w", encoding="utf-8", newline="") as f:
+    shown = result.shown_units(units)
+    header = ["t [s]", *(csv_header(n, u, ascii) for n, u in shown.items())]
+    encoding = "ascii" if ascii else "utf-8-sig"
+    columns = [result.t, *(result.shown(n, u) for n, u in shown.items())]
+    with path.open("w", encoding=encoding, errors="replace", newline="") as f:
         csv.writer(f, lineterminator="\n").writerow(header)
-        np.savetxt(f, np.column_stack([result.t, *data.values()]), fmt="%.10g", delimiter=",")
+        np.savetxt(f, np.column_stack(columns), fmt="%.10g", delimiter=",")
     return path
 
 
@@ -78,8 +98,10 @@ def parseable_unit(printed: str) -> str:
 
 
 def read_csv(path: str | Path, model: str | None = None) -> Any:
-    """A result read back from a CSV with a time column ``t [s]`` and columns ``signal [unit]`` (SI), as
-    :func:`write_csv` writes it (or a rig's record in that form): a :class:`hydroservo.system.result.Result`.
+    """A result read back from a CSV with a time column ``t [s]`` and columns ``signal [unit]``, as
+    :func:`write_csv` writes it (or a rig's record in that form): a :class:`hydroservo.system.result.Result`,
+    in SI as every result is inside (each column converted from its unit; the units it was written in are kept
+    as the result's :attr:`~hydroservo.system.result.Result.unit_choice`).
 
     Empty cells and ``nan`` are NaN. ``model`` names the result (default: the file's name).
     """
@@ -88,7 +110,7 @@ def read_csv(path: str | Path, model: str | None = None) -> Any:
 
     import numpy as np
 
-    from hydroservo.errors import ParameterError
+    from hydroservo.errors import HydroservoError, ParameterError
     from hydroservo.io.files import read_text
     from hydroservo.system.result import Result as RunResult
 
@@ -117,5 +139,21 @@ def read_csv(path: str | Path, model: str | None = None) -> Any:
     t = values[:, 0]
     if not np.all(np.diff(t) > 0):
         raise ParameterError(f"result file {str(path)!r}: the time column must increase from row to row")
-    data = {n: values[:, i] for i, n in enumerate(names) if i}
-    return RunResult(t, data, dict(zip(names[1:], units[1:])), {}, {}, {}, model or path.stem)
+    from hydroservo.units import UnitChoice, coherent_unit, from_si
+
+    data, si_units, written = {}, {}, {}
+    for i, (name, unit) in enumerate(zip(names, units)):
+        if not i:
+            continue
+        try:
+            si = coherent_unit(unit)
+            scale, offset = from_si(1.0, si, unit), from_si(0.0, si, unit)
+        except HydroservoError as exc:
+            raise ParameterError(f"result file {str(path)!r}: column {header[i]!r}: {exc}") from None
+        data[name] = (values[:, i] - offset) / (scale - offset)
+        si_units[name] = si
+        if unit != si:
+            written[name] = unit
+    result = RunResult(t, data, si_units, {}, {}, {}, model or path.stem)
+    result.unit_choice = UnitChoice(written)
+    return result

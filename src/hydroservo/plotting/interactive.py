@@ -116,7 +116,7 @@ def result_figure(
         shown_units = []
         for name in panel:
             own = result.units.get(name, "")
-            unit = units.get(name) or si_unit(own)
+            unit = si_unit(units.get(name) or own)
             factor = from_si(1.0, own, units[name]) if name in units else 1.0
             shown_units.append(unit)
             x, y = _thin(t, np.asarray(result[name], dtype=float) * factor)

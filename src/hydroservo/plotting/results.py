@@ -54,7 +54,7 @@ def plot_result(
         shown = []
         for n in panel:
             unit = (units or {}).get(n)
-            shown.append(unit if unit else si_unit(result.units.get(n, "")))
+            shown.append(si_unit(unit if unit else result.units.get(n, "")))
             described = result.descriptions.get(n, "")
             ax.plot(result.t, result.get(n, unit), label=f"{n}: {described}" if described and described != n else n)
         ax.set_ylabel(f"{', '.join(panel)} [{shown[0]}]")

@@ -63,7 +63,7 @@ def plot_family(
     if key is not None and norm is not None:
         bar = fig.colorbar(plt.cm.ScalarMappable(norm=norm, cmap=cmap), ax=ax)
         bar.set_label(f"{key} [{si_unit(batch.param_units.get(key, ''))}]")
-    shown = unit or si_unit(batch.units.get(signal, ""))
+    shown = si_unit(unit or batch.units.get(signal, ""))
     ax.set_xlabel("t [s]")
     ax.set_ylabel(f"{signal} [{shown}]")
     ax.grid(True, alpha=0.3)

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from hydroservo.errors import ParameterError, SolverError, UnitError, did_you_mean
-from hydroservo.units import from_si, si_unit
+from hydroservo.units import UnitChoice, from_si, si_unit
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -71,6 +71,36 @@ class _Signals:
                 f"{', '.join(self.data)}"
             ) from None
 
+    #: The units the model shows its signals in (:meth:`hydroservo.system.System.unit_choice`); SI if none.
+    unit_choice: UnitChoice = UnitChoice()
+
+    def shown_units(self, units: Any = None) -> dict[str, str]:
+        """The unit each signal is shown in: ``units`` (``"p=bar, mm"``, a mapping, ``"si"``;
+        :class:`~hydroservo.units.UnitChoice`) over the model's own choice (:attr:`unit_choice`), else SI.
+
+        Raises
+        ------
+        ParameterError
+            If ``units`` names a signal the result does not have.
+        """
+        choice = UnitChoice.parse(units, what="units").over(self.unit_choice)
+        unknown = UnitChoice.parse(units, what="units").unknown(self.names)
+        if unknown:
+            raise ParameterError(
+                f"units: no signal {unknown[0]!r} in the result of {self.model!r}{did_you_mean(unknown[0], self.names)}"
+            )
+        return {name: choice.unit(name, self.units.get(name, "")) for name in self.names}
+
+    def shown(self, name: str, unit: str) -> np.ndarray:
+        """Signal ``name`` in ``unit`` (temperatures and absolute pressures with their offsets)."""
+        own = self.units.get(name, "")
+        values = self[name]
+        if unit == own:
+            return values
+        scale = from_si(1.0, own, unit)
+        offset = from_si(0.0, own, unit)
+        return np.asarray((scale - offset) * values + offset)
+
     def get(self, name: str, unit: str | None = None) -> np.ndarray:
         """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``)."""
         values = self[name]
@@ -119,31 +149,41 @@ class Result(_Signals):
         #: The main signals, panel by panel, that :meth:`plot` shows without arguments (set by the system).
         self.panels: list[list[str]] = []
 
-    def summary(self) -> dict[str, dict[str, Any]]:
-        """Unit, final, minimum and maximum value of every signal."""
-        return {
-            n: {
-                "unit": si_unit(self.units.get(n, "")),
-                "final": float(v[-1]),
-                "min": float(np.min(v)),
-                "max": float(np.max(v)),
-            }
-            for n, v in self.data.items()
-        }
+    def summary(self, units: Any = None) -> dict[str, dict[str, Any]]:
+        """Unit, final, minimum and maximum value of every signal, in the units shown (:meth:`shown_units`:
+        the model's, ``units`` over them, ``"si"`` for SI)."""
+        out = {}
+        for n, unit in self.shown_units(units).items():
+            v = self.shown(n, unit)
+            out[n] = {"unit": si_unit(unit), "final": float(v[-1]), "min": float(np.min(v)), "max": float(np.max(v))}
+        return out
 
-    def to_pandas(self) -> pd.DataFrame:
-        """A DataFrame indexed by time, columns named ``"signal [unit]"``."""
+    def to_pandas(self, units: Any = None) -> pd.DataFrame:
+        """A DataFrame indexed by time ``t`` [s], one column per signal named by the signal (``df["cyl.pA"]``),
+        in the units shown (:meth:`shown_units`: the model's, ``units`` over them, ``"si"`` for SI); the unit of
+        each column is in ``df.attrs["units"]``.
+
+        Examples
+        --------
+        >>> import hydroservo as hs
+        >>> r = hs.load_model("flight-simulator").simulate(t_end=0.05, n_points=6)
+        >>> df = r.to_pandas(units="p=bar")
+        >>> df.attrs["units"]["cyl.pA"], df.attrs["units"]["load.x"], round(float(df["cyl.pA"].iloc[0]), 1)
+        ('bar', 'in', 53.2)
+        """
         import pandas as pd
 
-        cols = {f"{n} [{si_unit(self.units.get(n, ''))}]": v for n, v in self.data.items()}
-        df = pd.DataFrame(cols, index=pd.Index(self.t, name="t [s]"))
+        shown = self.shown_units(units)
+        df = pd.DataFrame({n: self.shown(n, u) for n, u in shown.items()}, index=pd.Index(self.t, name="t"))
+        df.attrs["units"] = {"t": "s", **{n: si_unit(u) for n, u in shown.items()}}
         return df
 
-    def to_csv(self, path: str | Path) -> Path:
-        """Write a CSV with the units in the column headers (:func:`hydroservo.io.results.write_csv`)."""
+    def to_csv(self, path: str | Path, units: Any = None, ascii: bool = False) -> Path:
+        """Write a CSV, one column ``signal [unit]`` per signal in the units shown (:meth:`shown_units`), UTF-8
+        with a byte-order mark, or ASCII unit names (``m^3/s``) with ``ascii`` (:func:`hydroservo.io.results.write_csv`)."""
         from hydroservo.io.results import write_csv
 
-        return write_csv(self, path)
+        return write_csv(self, path, units=units, ascii=ascii)
 
     def to_mat(self, path: str | Path) -> Path:
         """Write a MATLAB .mat file (:func:`hydroservo.io.results.write_mat`)."""
@@ -154,19 +194,20 @@ class Result(_Signals):
     def plot(
         self,
         *names: str | Sequence[str],
-        units: dict[str, str] | None = None,
+        units: Any = None,
         title: str | None = None,
         file: str | Path | None = None,
     ) -> Figure:
         """Plot signals against time, one panel per argument (:func:`hydroservo.plotting.results.plot_result`).
 
         Without arguments, the main signals (:attr:`panels`). An argument may be
-        a name or a list of names sharing a panel (same unit).
-        ``units`` maps names to display units, e.g. ``{"y": "in"}``.
+        a name or a list of names sharing a panel (same unit). Signals are shown
+        in the model's units, ``units`` over them (``"p=bar, mm"``,
+        ``{"y": "in"}``, ``"si"``; :meth:`shown_units`).
         """
         from hydroservo.plotting.results import plot_result
 
-        return plot_result(self, *names, units=units, title=title, file=file)
+        return plot_result(self, *names, units=self.shown_units(units), title=title, file=file)
 
 
 class BatchResult(_Signals):
@@ -241,8 +282,12 @@ class BatchResult(_Signals):
         file: str | Path | None = None,
     ) -> Figure:
         """The family of curves of ``signal``, one per run that did not fail, coloured by the value of
-        ``color_by`` (default: the first varied parameter) (:func:`hydroservo.plotting.study.plot_family`)."""
+        ``color_by`` (default: the first varied parameter) (:func:`hydroservo.plotting.study.plot_family`), in
+        ``unit`` (default: the model's unit for it, :meth:`shown_units`)."""
         from hydroservo.plotting.study import plot_family
+
+        if unit is None and signal in self.units:
+            unit = self.shown_units().get(signal)
 
         return plot_family(self, signal, unit=unit, color_by=color_by, title=title, file=file)
 
@@ -286,4 +331,5 @@ class BatchResult(_Signals):
             self.model,
         )
         result.warnings = list(self.warnings.get(k, []))
+        result.unit_choice = self.unit_choice
         return result

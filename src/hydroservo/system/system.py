@@ -25,7 +25,7 @@ from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import batch_columns
 from hydroservo.system.model import Model
 from hydroservo.system.nodes import Node, nodes, port_of, resolve
-from hydroservo.units import check_unit, same_dimension, to_si
+from hydroservo.units import UnitChoice, check_unit, inferred_units, same_dimension, to_si
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -145,6 +145,9 @@ class System:
         #: panels for plots of a run (lists of signal names) and the units to show them in
         self.plots: list[list[str]] = []
         self.plot_units: dict[str, str] = {}
+        #: the units a person reads this model's results in (``[model] units``, ``["psi", "in", "Q=in^3/s"]``;
+        #: :class:`~hydroservo.units.UnitChoice`'s items); if empty, the units its parameters were given in
+        self.display_units: list[str] = []
         #: what a study measures of each run by default (:mod:`hydroservo.analysis.metrics`), e.g. "final(x_mm)"
         self.metrics: list[str] = []
         #: what a user should know when reading a run of this model (a known discrepancy with its source, a
@@ -531,7 +534,36 @@ class System:
         t = self.t_end if t_end is None else to_si(t_end, "s", what="t_end")
         result = model.simulate(t, self._vector(model, params), **kwargs)
         result.panels = self.default_panels()
+        result.unit_choice = self.unit_choice()
         return result
+
+    def unit_choice(self, units: Any = None) -> UnitChoice:
+        """The units results of this model are shown in: ``units`` (``"p=bar, mm"``, ``"si"``; the user's) over
+        the model's own (:meth:`model_units`).
+
+        Examples
+        --------
+        >>> import hydroservo as hs
+        >>> fs = hs.load_model("flight-simulator")
+        >>> choice = fs.unit_choice("Q=L/min")
+        >>> choice.unit("cyl.pA", "Pa"), choice.unit("valve.QA", "m^3/s"), choice.unit("load.v", "m/s")
+        ('psi', 'L/min', 'in/s')
+        """
+        return UnitChoice.parse(units).over(self.model_units())
+
+    def model_units(self) -> UnitChoice:
+        """The model's own display units: its plot units by signal, over its declared :attr:`display_units`;
+        without those, the unit its parameters, fluid and initial values were most often given in for each
+        dimension (absolute pressures and temperatures aside), velocities and accelerations in the length unit
+        per second (squared) if none was given."""
+        per_signal = UnitChoice(dict(self.plot_units))
+        if self.display_units:
+            return per_signal.over(UnitChoice.parse(self.display_units, what=f"{self.source or self.name}: [model] units"))
+        texts = [t for comp in self.components.values() for t in comp.given.values()]
+        texts += list(self.initial_given.values())
+        if self.fluid is not None:
+            texts += [t for k, t in self.fluid.given if k != "temperature"]
+        return per_signal.over(inferred_units(texts))
 
     def default_panels(self) -> list[list[str]]:
         """The main signals to plot, panel by panel: the model file's ``plots``, else one panel per alias,
@@ -601,7 +633,9 @@ class System:
                     self.check_components({key: float(col[i]) for key, col in si.items()}, only_changed=True)
                 except HydroservoError as exc:
                     invalid[i] = str(exc)
-        return model.batch(t, self._vector(model, None), si, failed=invalid, **kwargs)
+        found = model.batch(t, self._vector(model, None), si, failed=invalid, **kwargs)
+        found.unit_choice = self.unit_choice()
+        return found
 
     def calibrate(self, records: Any, fit: Any, **options: Any) -> Any:
         """Fit parameters of this system to rig records, with exact gradients and Fisher-information intervals;

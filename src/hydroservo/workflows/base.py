@@ -273,6 +273,7 @@ def load_with_sets(
             raise ParameterError(
                 f"{shown}: {cname!r} has no parameter {pname!r}{did_you_mean(pname, known)}; parameters: {names}"
             )
+        _refuse_ambiguous_number(comp, pname, val, shown, what)
         try:
             system.set(key, val)
         except HydroservoError as exc:
@@ -284,6 +285,26 @@ def load_with_sets(
         except HydroservoError as exc:
             raise ParameterError(f"{what} {', '.join(items)}: {exc}") from None
     return system
+
+
+def _refuse_ambiguous_number(comp: Any, pname: str, val: Any, shown: str, what: str) -> None:
+    """Refuse a bare number given as text (``--set load.W=3000``) for a dimensional parameter that the model
+    gives in a unit other than SI (``"6400 lbf"``): it would be taken in SI (N), not in the model's unit.
+    A number in a model that gives the parameter in SI, or without a unit, is SI as everywhere; zero is zero."""
+    from hydroservo.units import coherent_unit, is_bare_number, split_quantity
+
+    spec = comp.PARAMETERS.get(pname)
+    given = comp.given.get(pname)
+    if spec is None or not spec.unit or given is None or not isinstance(val, str) or not is_bare_number(val):
+        return
+    if float(val) == 0.0 and spec.unit not in ("degC",):  # nothing, in any unit without an offset
+        return
+    unit = split_quantity(given)[1]
+    if unit and unit != coherent_unit(unit):
+        raise ParameterError(
+            f"{shown}: the model gives {comp.name}.{pname} in {unit} ({given!r}), and a bare number would be taken "
+            f"in SI ({coherent_unit(spec.unit)}); give the unit: {what} \"{comp.name}.{pname}={val.strip()} {unit}\""
+        )
 
 
 # -- output folders -------------------------------------------------------------------

@@ -73,7 +73,7 @@ def _unit_of(result: Result, name: str, units: Mapping[str, str]) -> tuple[float
     own = result.units.get(name, "")
     if name in units:
         try:
-            return float(from_si(1.0, own, units[name])), units[name]
+            return float(from_si(1.0, own, units[name])), si_unit(units[name])
         except Exception:  # noqa: BLE001 - a plot unit the model file got wrong is refused elsewhere; show SI
             pass
     return 1.0, si_unit(own)

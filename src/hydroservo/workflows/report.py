@@ -100,8 +100,9 @@ class ModelReport(Report):
         if warned is not None:
             sections.append(warned)
         sections.append(pages.circuit_section(system))
-        sections.append(_response(sim.result, panels, system.plot_units, sim.title()))
-        sections.append(Section("Signals", [pages.signal_table(sim.result, system.plot_units, shown)]))
+        units = sim.result.shown_units(sim.units)
+        sections.append(_response(sim.result, panels, units, sim.title()))
+        sections.append(Section("Signals", [pages.signal_table(sim.result, units, shown)]))
         sections.append(Section("Parameters", [pages.parameter_table(system)]))
         if self.validation is not None:
             sections += self.validation.document().sections

@@ -61,7 +61,7 @@ class OneAtATimeReport(Report):
         study = self.study
         out = [Artifact("oat.csv", "oat.csv", lambda p: study.table.to_csv(p, index=False))]
         def family(factor: str) -> Any:
-            return lambda path: study.plot(factor, self.signals, units=self.system.plot_units, file=path)
+            return lambda path: study.plot(factor, self.signals, units=self.system.unit_choice().units(study.units), file=path)
 
         for f in study.levels:
             name = f"oat-{safe_name(f)}.png"
@@ -93,7 +93,8 @@ class OneAtATimeReport(Report):
         from hydroservo.units import from_si, si_unit
         from hydroservo.workflows import pages
 
-        study, units = self.study, self.system.plot_units
+        study = self.study
+        units = self.system.unit_choice().units(study.units)
         figures = []
         for factor, levels in study.levels.items():
             for signal in (self.signals or [n for p in (self.system.plots or self.system.default_panels()) for n in p])[:4]:

@@ -57,6 +57,12 @@ class SimulationReport(Report):
     kinds: list[str] = field(default_factory=lambda: ["csv", "png"])
     #: the changes made to the model (``COMPONENT.PARAMETER=VALUE``), for the plot's title
     changes: list[str] = field(default_factory=list)
+    #: the units results are shown in, over the model's (``"p=bar, mm"``, ``"si"``; :class:`~hydroservo.units.UnitChoice`)
+    units: Any = None
+    #: CSV unit names in ASCII (``m^3/s``), no byte-order mark
+    ascii: bool = False
+    #: the table lists every signal, not only the model's main ones
+    all_signals: bool = False
 
     def title(self) -> str:
         return f"{self.system.name}: simulated response" + (f" ({', '.join(self.changes)})" if self.changes else "")
@@ -70,15 +76,24 @@ class SimulationReport(Report):
                if "method" in result.stats else "")
             + ")"
         ]
-        rows = [(n, s["unit"], s["final"], s["min"], s["max"]) for n, s in result.summary().items()]
+        summary = result.summary(self.units)
+        shown = list(summary) if self.all_signals else self.main_signals()
+        rows = [(n, summary[n]["unit"], summary[n]["final"], summary[n]["min"], summary[n]["max"]) for n in shown]
         w = max(len(r[0]) for r in rows)
         out.append(f"{'signal'.ljust(w)}  {'unit':>8}  {'final':>12}  {'min':>12}  {'max':>12}")
         for n, unit, fin, lo, hi in rows:
             out.append(f"{n.ljust(w)}  {unit:>8}  {fin:>12.5g}  {lo:>12.5g}  {hi:>12.5g}")
+        if len(shown) < len(summary):
+            out.append(f"({len(summary) - len(shown)} more signals in the CSV and --json; --all lists them here)")
         out += [f"note: {text}" for text in self.system.notes]
         if self.files:
             out.append(f"wrote {' and '.join(self.files.values())}")
         return out
+
+    def main_signals(self) -> list[str]:
+        """The signals the table shows: those of the model's plot panels, else its states."""
+        names = list(dict.fromkeys(n for panel in self.result.panels for n in panel if n in self.result.units))
+        return names or list(self.result.names)
 
     def to_dict(self) -> dict[str, Any]:
         result = self.result
@@ -88,7 +103,7 @@ class SimulationReport(Report):
         return {
             "model": self.system.name,
             "t_end_s": self.t_end,
-            "signals": result.summary(),
+            "signals": result.summary(self.units),
             "solver": solver,
             "wall_time_s": self.wall_time,
             "warnings": [w.to_dict() for w in result.warnings]
@@ -100,9 +115,9 @@ class SimulationReport(Report):
     def artifacts(self) -> list[Artifact]:
         name = safe_name(self.system.name)
         writers = {
-            "csv": self.result.to_csv,
+            "csv": lambda path: self.result.to_csv(path, units=self.units, ascii=self.ascii),
             "mat": self.result.to_mat,
-            "png": lambda path: self.result.plot(units=self.system.plot_units, file=path, title=self.title()),
+            "png": lambda path: self.result.plot(units=self.units, file=path, title=self.title()),
         }
         return [Artifact(kind, f"{name}.{kind}", writers[kind]) for kind in self.kinds]
 
@@ -117,8 +132,8 @@ class SimulationReport(Report):
         return pages.page(self.title(), f"simulated for {self.t_end:g} s", [
             Section("Model", pages.system_summary(system)) if pages.system_summary(system) else None,
             pages.circuit_section(system),
-            Section("Response", [Figure(result_figure(result, panels, system.plot_units, title=self.title()))]),
-            Section("Signals", [pages.signal_table(result, system.plot_units)]),
+            Section("Response", [Figure(result_figure(result, panels, result.shown_units(self.units), title=self.title()))]),
+            Section("Signals", [pages.signal_table(result, result.shown_units(self.units))]),
             Section("Parameters", [pages.parameter_table(system)]),
             Section("Solver", [pages.solver_table(result.stats)]),
             pages.references_section(system.references()),
@@ -166,9 +181,18 @@ class Simulate(Workflow):
         Refuse a physically implausible result (:class:`~hydroservo.errors.ImplausibleResultError`).
     write : str or list of str, optional
         Files the report writes: some of ``csv``, ``png``, ``mat``, or ``"none"`` (default csv and png).
+    units : str or dict, optional
+        Units to show results in, over the model's own (``"p=bar, mm, cyl.pA=psi"``;
+        :class:`~hydroservo.units.UnitChoice`): the table, the JSON, the CSV and the plot.
+    si : bool
+        Show every result in SI instead.
+    ascii : bool
+        CSV unit names in ASCII (``m^3/s``) without a byte-order mark.
+    all_signals : bool
+        The table lists every signal, not only the model's main ones (the JSON and the CSV always hold all).
     """
 
-    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
+    OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "all_signals": "--all"}
 
     model: str | Path | System
     sets: Sequence[str] | Mapping[str, Any] | None = None
@@ -180,6 +204,10 @@ class Simulate(Workflow):
     strict: bool = False
     write: str | Sequence[str] | None = None
     method: str = "auto"
+    units: str | Mapping[str, str] | None = None
+    si: bool = False
+    ascii: bool = False
+    all_signals: bool = False
 
     def __post_init__(self) -> None:
         from hydroservo.units import to_si
@@ -195,6 +223,37 @@ class Simulate(Workflow):
                 raise ParameterError(f"{self.name('t_end')} {self.t_end}: expected a positive, finite duration")
         if self.initial not in ("parameters", "trim"):
             raise ParameterError(f"{self.name('initial')} {self.initial!r}: expected 'parameters' or 'trim'")
+        self.unit_choice = self._unit_choice()
+
+    def _unit_choice(self) -> Any:
+        """The units asked for (``units``, ``si``), checked against the model's signals before the run."""
+        from hydroservo.units import UnitChoice
+
+        if self.si and self.units:
+            raise ParameterError(f"{self.name('si')} and {self.name('units')} {shorten(str(self.units))!r}: give one of them")
+        if self.si:
+            return UnitChoice.SI
+        try:
+            choice = UnitChoice.parse(self.units, what=self.name("units"))
+        except HydroservoError as exc:
+            raise ParameterError(str(exc)) from None
+        if choice.signals:
+            model = self.system.build()
+            signals = [*model.state_names, *model.output_names]
+            for name in choice.unknown(signals):
+                raise ParameterError(
+                    f"{self.name('units')} {name}={choice.signals[name]}: no signal {name!r}"
+                    f"{did_you_mean(name, signals)}"
+                )
+            for name, unit in choice.signals.items():
+                from hydroservo.units import same_dimension, si_unit
+
+                own = model.units.get(name, "")
+                if not same_dimension(unit, own):
+                    raise ParameterError(
+                        f"{self.name('units')} {name}={unit}: {name} is in {si_unit(own)}; expected a unit of that dimension"
+                    )
+        return choice
 
     def _check_solver_options(self) -> None:
         """Refuse rtol, accuracy, method and points before anything is loaded or built."""
@@ -285,7 +344,8 @@ class Simulate(Workflow):
             )
         changes = _shown_sets(self.sets)
         return SimulationReport(
-            self.system, result, self.duration, wall, list(self.kinds), changes, warnings=found
+            self.system, result, self.duration, wall, list(self.kinds), changes, self.unit_choice, self.ascii,
+            self.all_signals, warnings=found,
         )
 
 

@@ -9,8 +9,8 @@ import pytest
 def test_result_exports(tmp_path, spring_mass) -> None:
     r = spring_mass().simulate(t_end=0.1, n_points=11)
     csv = r.to_csv(tmp_path / "r.csv")
-    header = csv.read_text().splitlines()[0]
-    assert header.startswith("t [s],load.x [m],load.v [m/s]")
+    header = csv.read_text(encoding="utf-8-sig").splitlines()[0]
+    assert header.startswith("t [s],load.x [m],load.v [m/s]")  # no units given: SI
     import scipy.io
 
     r.to_mat(tmp_path / "r.mat")
