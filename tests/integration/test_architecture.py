@@ -43,8 +43,9 @@ LAYERS = {
 
 #: Upward imports allowed inside functions: (importing module, imported top-level package).
 DELEGATIONS = {
-    ("hydroservo.system.result", "io"),  # Result.to_csv / to_mat
-    ("hydroservo.system.system", "plotting"),  # System.diagram, a notebook's display of a system
+    ("hydroservo.system.result", "io"),  # Result.to_csv / to_mat, a notebook's display of a result (io.notebook)
+    ("hydroservo.system.system", "plotting"),  # System.diagram
+    ("hydroservo.system.system", "io"),  # a notebook's display of a system (io.notebook)
     ("hydroservo.system.result", "plotting"),  # Result.plot, BatchResult.plot
     ("hydroservo.system.result", "analysis"),  # BatchResult.table
     ("hydroservo.analysis.frequency", "plotting"),  # FrequencyResponse.plot

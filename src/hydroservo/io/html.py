@@ -24,7 +24,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
 
-__all__ = ["Page", "Section", "Text", "Table", "Figure", "Drawing", "Notice", "Item", "render_html", "write_html"]
+__all__ = [
+    "Page", "Section", "Text", "Table", "Figure", "Drawing", "Picture", "Notice", "Item", "render_html", "write_html",
+    "fragment",
+]
 
 
 @dataclass
@@ -63,6 +66,14 @@ class Drawing:
 
 
 @dataclass
+class Picture:
+    """A raster image (PNG bytes, a static plot) put inside the page, with a caption."""
+
+    png: bytes
+    caption: str = ""
+
+
+@dataclass
 class Notice:
     """A line that must be seen: a warning, an error, or a verdict that holds (``ok``)."""
 
@@ -70,7 +81,7 @@ class Notice:
     level: Literal["info", "ok", "warning", "error"] = "warning"
 
 
-Item = Text | Table | Figure | Drawing | Notice
+Item = Text | Table | Figure | Drawing | Picture | Notice
 
 
 @dataclass
@@ -192,10 +203,43 @@ def _item(item: Item, figures: list[tuple[str, Figure]]) -> str:
     if isinstance(item, Drawing):
         caption = f"<figcaption>{html.escape(item.caption)}</figcaption>" if item.caption else ""
         return f'<figure><div class="drawing">{_svg(item.svg)}</div>{caption}</figure>'
+    if isinstance(item, Picture):
+        import base64
+
+        caption = f"<figcaption>{html.escape(item.caption)}</figcaption>" if item.caption else ""
+        data = base64.b64encode(item.png).decode("ascii")
+        return f'<figure><img alt="{html.escape(item.caption)}" style="max-width: 100%" src="data:image/png;base64,{data}">{caption}</figure>'
     if isinstance(item, Notice):
         level = item.level if item.level in ("info", "ok", "warning", "error") else "warning"
         return f'<div class="notice {level}">{html.escape(item.text)}</div>'
     raise TypeError(f"a page item: {type(item).__name__}")
+
+
+#: The styles of a notebook fragment: the page's tables and notices, scoped to the fragment.
+_FRAGMENT_CSS = """
+.hydroservo table { border-collapse: collapse; font-size: 12px; margin: 4px 0 8px; }
+.hydroservo th, .hydroservo td { padding: 2px 8px; border-bottom: 1px solid #d9dee4; text-align: left; }
+.hydroservo td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+.hydroservo .scroll { max-height: 320px; overflow: auto; }
+.hydroservo .notice { padding: 4px 10px; margin: 4px 0; border-left: 4px solid #0b5cad; background: #eaf2fb; }
+.hydroservo .notice.warning { background: #fff6e5; border-color: #e69f00; }
+.hydroservo .drawing svg { max-width: 100%; height: auto; }
+.hydroservo figure { margin: 4px 0; }
+.hydroservo figcaption, .hydroservo caption { color: #5b6470; font-size: 11px; }
+.hydroservo summary { cursor: pointer; color: #0b5cad; }
+"""
+
+
+def fragment(title: str, items: Sequence[Item], more: Sequence[tuple[str, Sequence[Item]]] = ()) -> str:
+    """HTML to show inside a notebook (``_repr_html_``): a title line, ``items``, and each of ``more`` as a
+    part folded under its heading; no scripts, so interactive figures are left out."""
+    figures: list[tuple[str, Figure]] = []
+    body = "".join(_item(i, figures) for i in items if not isinstance(i, Figure))
+    folded = "".join(
+        f"<details><summary>{html.escape(head)}</summary>{''.join(_item(i, figures) for i in part if not isinstance(i, Figure))}</details>"
+        for head, part in more
+    )
+    return f'<div class="hydroservo"><style>{_FRAGMENT_CSS}</style><strong>{html.escape(title)}</strong>{body}{folded}</div>'
 
 
 def _anchor(k: int, title: str) -> str:

@@ -22,7 +22,6 @@ module                 plots
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -30,24 +29,51 @@ import numpy as np
 __all__ = ["pyplot", "finish", "lpm"]
 
 
-def pyplot(file: str | Path | None) -> Any:
-    """``matplotlib.pyplot``, with a file backend when the figure goes to ``file``."""
+def pyplot(file: Any) -> Any:
+    """``matplotlib.pyplot``, with the file backend (Agg) when the figure goes to ``file`` and pyplot is not in use
+    yet (a command-line run); a notebook's or a window's backend is kept, so later plots still show there."""
+    import sys
+
     import matplotlib
 
-    if file is not None:
+    if file is not None and "matplotlib.pyplot" not in sys.modules:
         matplotlib.use("Agg", force=False)
     import matplotlib.pyplot as plt
 
     return plt
 
 
-def finish(fig: Any, file: str | Path | None, plt: Any) -> Any:
-    """Lay out ``fig``, save it to ``file`` (and close it) when given; return it."""
+def finish(fig: Any, file: Any, plt: Any, show: bool | None = False) -> Any:
+    """Lay out ``fig``, save it to ``file`` (a path or a binary file; and close it) when given; return it.
+
+    ``show=None`` (what :meth:`Result.plot <hydroservo.system.result.Result.plot>` passes) shows a figure that
+    goes to no file where it can be seen: a notebook shows it by itself, a window backend (a script run with a
+    display) opens it with ``plt.show()``; with neither (Agg, no display), a warning says to give ``file``."""
     fig.tight_layout()
     if file is not None:
         fig.savefig(file, dpi=110)
         plt.close(fig)
+    elif show is None:
+        _show(plt)
     return fig
+
+
+def _show(plt: Any) -> None:
+    import warnings
+
+    import matplotlib
+
+    backend = matplotlib.get_backend().lower()
+    if "inline" in backend or "ipympl" in backend or "widget" in backend or "nbagg" in backend:
+        return  # the notebook shows the figure itself
+    if backend in ("agg", "pdf", "ps", "svg", "cairo", "template", "pgf"):
+        warnings.warn(
+            f"the figure is not shown: matplotlib's backend {backend!r} has no display; give file='plot.png' to "
+            "write it, or run where a display is",
+            UserWarning, stacklevel=4,
+        )
+        return
+    plt.show()
 
 
 def lpm(q: Any) -> Any:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, BinaryIO, Protocol
 
 from hydroservo.plotting import finish, pyplot
 from hydroservo.units import si_unit
@@ -36,7 +36,8 @@ def plot_result(
     *names: str | Sequence[str],
     units: dict[str, str] | None = None,
     title: str | None = None,
-    file: str | Path | None = None,
+    file: str | Path | BinaryIO | None = None,
+    show: bool | None = False,
 ) -> Figure:
     """Plot signals of ``result`` against time, one panel per argument.
 
@@ -44,7 +45,8 @@ def plot_result(
     Without arguments, the result's main signals (:attr:`Result.panels`: the
     model file's plots, else its aliases, else its states). ``units`` maps names
     to display units, e.g. ``{"y": "in"}``. Each curve is labelled with its
-    name and description, each axis with the names and the unit.
+    name and description, each axis with the names and the unit. ``show``: as
+    :func:`hydroservo.plotting.finish` (``None`` shows a figure that goes to no file).
     """
     plt = pyplot(file)
     chosen = names or result.panels or [[n] for n in result.names[:6]]
@@ -62,4 +64,4 @@ def plot_result(
         ax.grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel("t [s]")
     fig.suptitle(title or result.model)
-    return finish(fig, file, plt)
+    return finish(fig, file, plt, show)

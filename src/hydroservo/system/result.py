@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 import numpy as np
 
@@ -149,6 +149,17 @@ class Result(_Signals):
         #: The main signals, panel by panel, that :meth:`plot` shows without arguments (set by the system).
         self.panels: list[list[str]] = []
 
+    def __repr__(self) -> str:
+        from hydroservo.io.notebook import result_title
+
+        return f"<{result_title(self)}>"
+
+    def _repr_html_(self) -> str:
+        """In a notebook: the run, its warnings, its main signals in the model's units, a plot, every signal."""
+        from hydroservo.io.notebook import result_html
+
+        return result_html(self)
+
     def summary(self, units: Any = None) -> dict[str, dict[str, Any]]:
         """Unit, final, minimum and maximum value of every signal, in the units shown (:meth:`shown_units`:
         the model's, ``units`` over them, ``"si"`` for SI)."""
@@ -196,7 +207,7 @@ class Result(_Signals):
         *names: str | Sequence[str],
         units: Any = None,
         title: str | None = None,
-        file: str | Path | None = None,
+        file: str | Path | BinaryIO | None = None,
     ) -> Figure:
         """Plot signals against time, one panel per argument (:func:`hydroservo.plotting.results.plot_result`).
 
@@ -204,10 +215,17 @@ class Result(_Signals):
         a name or a list of names sharing a panel (same unit). Signals are shown
         in the model's units, ``units`` over them (``"p=bar, mm"``,
         ``{"y": "in"}``, ``"si"``; :meth:`shown_units`).
+
+        Returns the figure. With ``file`` (``.png``, ``.svg``, ``.pdf``) it is
+        written there and closed; without, it is shown where it can be: a
+        notebook shows it, a script with a display opens it in a window
+        (``plt.show()``), and where there is no display a warning says to give
+        ``file``.
         """
         from hydroservo.plotting.results import plot_result
 
-        return plot_result(self, *names, units=self.shown_units(units), title=title, file=file)
+        return plot_result(self, *names, units=self.shown_units(units), title=title, file=file,
+                           show=None if file is None else False)
 
 
 class BatchResult(_Signals):

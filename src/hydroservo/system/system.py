@@ -373,8 +373,19 @@ class System:
             drawing.save(file)
         return drawing
 
-    def _repr_svg_(self) -> str:  # Jupyter shows a system as its circuit
+    def _repr_svg_(self) -> str:  # where HTML is not shown: the circuit
         return self.diagram().svg
+
+    def _repr_html_(self) -> str:
+        """In a notebook: name, description, source, notes, the circuit and (folded) the parameters."""
+        from hydroservo.io.notebook import system_html
+
+        return system_html(self)
+
+    def __repr__(self) -> str:
+        source = f", from {self.source}" if self.source else ""
+        about = f": {self.description}" if self.description else ""
+        return f"<System {self.name!r}{about} ({len(self.components)} components{source})>"
 
     def hydraulic_inputs(self) -> dict[str, list[tuple[float, str]]]:
         """The inputs the hydraulic nodes feed: "comp.input" -> terms (coefficient, "comp.output")

@@ -11,9 +11,10 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
+from hydroservo.io.notebook import parameter_table, signal_table
+
 if TYPE_CHECKING:
     from hydroservo.io.html import Item, Section, Table
-    from hydroservo.system.result import Result
     from hydroservo.system.system import System
 
 __all__ = [
@@ -28,71 +29,6 @@ __all__ = [
     "files_section",
     "page",
 ]
-
-
-def _value(value: float, unit: str) -> str:
-    from hydroservo.units import si_unit
-
-    shown = f"{value:.6g}"
-    unit = si_unit(unit)
-    return f"{shown} {unit}".strip() if unit not in ("", "-") else shown
-
-
-def parameter_table(system: System) -> Table:
-    """Every parameter and option of every component: its value as given (the user's unit) or in SI, what it
-    is, and where the value comes from (the model, a parameter set, the circuit's fluid, the default)."""
-    from hydroservo.components.base import FromSet
-    from hydroservo.io.html import Table
-
-    rows: list[list[Any]] = []
-    fluid = system.fluid
-    for cname, comp in system.components.items():
-        kind = type(comp).__name__
-        for key, option in comp.OPTIONS.items():
-            value = comp.option_values[key]
-            rows.append([cname, kind, key, value, option.description, "set" if value != option.default else "default"])
-        for key, spec in comp.PARAMETERS.items():
-            shown = comp.given.get(key) or _value(comp.values[key], spec.unit)
-            if key in comp.explicit:
-                source = "set"
-            elif spec.fluid and fluid is not None:
-                source = f"fluid: {fluid.describe()}"
-            elif isinstance(spec.default, FromSet):
-                source = f"parameter set {spec.default.set_name}"
-            else:
-                source = "default"
-            rows.append([cname, kind, key, shown, spec.description, source])
-    return Table(["component", "type", "parameter", "value", "meaning", "from"], rows,
-                 caption="Values as given, in their units; SI where no unit was given.")
-
-
-def _unit_of(result: Result, name: str, units: Mapping[str, str]) -> tuple[float, str]:
-    """The factor from SI and the unit a signal is shown in: its plot unit, else SI."""
-    from hydroservo.units import from_si, si_unit
-
-    own = result.units.get(name, "")
-    if name in units:
-        try:
-            return float(from_si(1.0, own, units[name])), si_unit(units[name])
-        except Exception:  # noqa: BLE001 - a plot unit the model file got wrong is refused elsewhere; show SI
-            pass
-    return 1.0, si_unit(own)
-
-
-def signal_table(result: Result, units: Mapping[str, str] | None = None, names: Sequence[str] | None = None) -> Table:
-    """Final, minimum and maximum of each signal (``names``, default all), in its plot unit where ``units`` has one."""
-    import numpy as np
-
-    from hydroservo.io.html import Table
-
-    units = units or {}
-    rows = []
-    for name in names if names is not None else list(result.data):
-        factor, unit = _unit_of(result, name, units)
-        values = np.asarray(result[name], dtype=float) * factor
-        description = result.descriptions.get(name, "")
-        rows.append([name, unit, float(values[-1]), float(np.min(values)), float(np.max(values)), description])
-    return Table(["signal", "unit", "final", "min", "max", "meaning"], rows)
 
 
 def solver_table(stats: Mapping[str, Any]) -> Table:

@@ -1,0 +1,130 @@
+"""A system and a result as a notebook shows them (``_repr_html_``), and the tables they share with the reports'
+pages (:mod:`hydroservo.workflows.pages`): a system's parameters, a run's signals.
+
+In Jupyter a :class:`~hydroservo.system.System` shows its name, what it is and where it comes from, its notes,
+its circuit and (folded) its parameters; a :class:`~hydroservo.system.result.Result` its run, its warnings, its
+main signals in the model's units, a plot of them and (folded) every signal. Both are HTML without scripts, so
+they also show where a notebook is not trusted and in exported notebooks.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from hydroservo.io.html import Table
+    from hydroservo.system.result import Result
+    from hydroservo.system.system import System
+
+__all__ = ["parameter_table", "signal_table", "system_html", "result_html"]
+
+
+def _value(value: float, unit: str) -> str:
+    from hydroservo.units import si_unit
+
+    shown = f"{value:.6g}"
+    unit = si_unit(unit)
+    return f"{shown} {unit}".strip() if unit not in ("", "-") else shown
+
+
+def parameter_table(system: System) -> Table:
+    """Every parameter and option of every component: its value as given (the user's unit) or in SI, what it
+    is, and where the value comes from (the model, a parameter set, the circuit's fluid, the default)."""
+    from hydroservo.components.base import FromSet
+    from hydroservo.io.html import Table
+
+    rows: list[list[Any]] = []
+    fluid = system.fluid
+    for cname, comp in system.components.items():
+        kind = type(comp).__name__
+        for key, option in comp.OPTIONS.items():
+            value = comp.option_values[key]
+            rows.append([cname, kind, key, value, option.description, "set" if value != option.default else "default"])
+        for key, spec in comp.PARAMETERS.items():
+            shown = comp.given.get(key) or _value(comp.values[key], spec.unit)
+            if key in comp.explicit:
+                source = "set"
+            elif spec.fluid and fluid is not None:
+                source = f"fluid: {fluid.describe()}"
+            elif isinstance(spec.default, FromSet):
+                source = f"parameter set {spec.default.set_name}"
+            else:
+                source = "default"
+            rows.append([cname, kind, key, shown, spec.description, source])
+    return Table(["component", "type", "parameter", "value", "meaning", "from"], rows,
+                 caption="Values as given, in their units; SI where no unit was given.")
+
+
+def _unit_of(result: Result, name: str, units: Mapping[str, str]) -> tuple[float, str]:
+    """The factor from SI and the unit a signal is shown in: its plot unit, else SI."""
+    from hydroservo.units import from_si, si_unit
+
+    own = result.units.get(name, "")
+    if name in units:
+        try:
+            return float(from_si(1.0, own, units[name])), si_unit(units[name])
+        except Exception:  # noqa: BLE001 - a plot unit the model file got wrong is refused elsewhere; show SI
+            pass
+    return 1.0, si_unit(own)
+
+
+def signal_table(result: Result, units: Mapping[str, str] | None = None, names: Sequence[str] | None = None) -> Table:
+    """Final, minimum and maximum of each signal (``names``, default all), in its plot unit where ``units`` has one."""
+    import numpy as np
+
+    from hydroservo.io.html import Table
+
+    units = units or {}
+    rows = []
+    for name in names if names is not None else list(result.data):
+        factor, unit = _unit_of(result, name, units)
+        values = np.asarray(result[name], dtype=float) * factor
+        description = result.descriptions.get(name, "")
+        rows.append([name, unit, float(values[-1]), float(np.min(values)), float(np.max(values)), description])
+    return Table(["signal", "unit", "final", "min", "max", "meaning"], rows)
+
+
+def system_html(system: System) -> str:
+    """The notebook's display of ``system``: name and description, source, notes, circuit, parameters (folded)."""
+    from hydroservo.io.html import Drawing, Notice, Text, fragment
+
+    head = f"System {system.name!r}" + (f": {system.description}" if system.description else "")
+    about = [f"{len(system.components)} components"]
+    if system.meta.get("citation"):
+        about.append(f"source {system.meta['citation']} ({system.meta.get('status', '')})")
+    if system.meta.get("validation"):
+        about.append(f"validation: {system.meta['validation']}")
+    items: list[Any] = [Text("; ".join(about) + ".")]
+    items += [Notice(note, "info") for note in system.notes]
+    try:
+        items.append(Drawing(system.diagram().svg))
+    except Exception as exc:  # noqa: BLE001 - a circuit that cannot be drawn still shows the rest
+        items.append(Notice(f"circuit not drawn: {exc}"))
+    return fragment(head, items, [("Parameters", [parameter_table(system)])])
+
+
+def result_html(result: Result) -> str:
+    """The notebook's display of ``result``: the run, its warnings, its main signals in the model's units with
+    a plot of them, and (folded) every signal."""
+    import io
+
+    from hydroservo.io.html import Notice, Picture, fragment
+
+    shown = result.shown_units()
+    main = list(dict.fromkeys(n for panel in result.panels for n in panel if n in shown)) or list(shown)[:8]
+    items: list[Any] = [Notice(str(w)) for w in result.warnings]
+    items.append(signal_table(result, shown, main))
+    buffer = io.BytesIO()
+    result.plot(file=buffer)
+    items.append(Picture(buffer.getvalue(), "the main signals, in the model's units (Result.plot)"))
+    return fragment(result_title(result), items, [(f"All {len(shown)} signals", [signal_table(result, shown)])])
+
+
+def result_title(result: Result) -> str:
+    """One line: the model, the time span, the number of signals and how the run was integrated."""
+    stats = result.stats
+    run = f"{stats['method']}, {stats['nsteps']} steps" if "method" in stats and "nsteps" in stats else ""
+    return (f"Result of {result.model!r}: {result.t[0]:g} to {result.t[-1]:g} s, {result.t.size} times, "
+            f"{len(result.names)} signals" + (f" ({run})" if run else "")
+            + (f"; {len(result.warnings)} warning(s)" if result.warnings else ""))

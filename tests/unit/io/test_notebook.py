@@ -1,0 +1,81 @@
+"""How a notebook shows a system and a result (hydroservo.io.notebook), their text reprs, and what plot() does
+where nothing would show it."""
+
+from __future__ import annotations
+
+import base64
+import re
+import warnings
+
+import pytest
+
+import hydroservo as hs
+
+
+@pytest.fixture(scope="module")
+def flight() -> tuple[hs.System, hs.Result]:
+    system = hs.load_model("flight-simulator")
+    return system, system.simulate(t_end=0.3, n_points=61)
+
+
+def test_a_system_shows_what_it_is_its_source_notes_circuit_and_parameters(flight) -> None:
+    system, _ = flight
+    text = repr(system)
+    assert text.startswith("<System 'flight-simulator': Closed-loop") and "12 components" in text
+    assert "object at 0x" not in text
+    page = system._repr_html_()
+    assert "FlightSimulatorND (published)" in page and "loop gain is about four times" in page  # source, note
+    assert "<svg" in page and 'id="component:cyl"' in page  # the circuit
+    folded = page[page.index("<summary>Parameters</summary>"):]
+    assert "6400 lbf" in folded and "1500 psi" in folded  # parameters as the file gives them
+    assert "<script" not in page  # shows in untrusted and exported notebooks too
+
+
+def test_a_result_shows_its_run_main_signals_in_the_model_units_and_a_plot(flight) -> None:
+    _, result = flight
+    text = repr(result)
+    assert re.fullmatch(r"<Result of 'flight-simulator': 0 to 0\.3 s, 61 times, 36 signals \(rodas3, \d+ steps\)>", text)
+    page = result._repr_html_()
+    main = page[: page.index("<details>")]
+    rows = re.findall(r"<tr><td>([^<]+)</td><td>([^<]+)</td>", main)
+    assert rows == [("vi", "V"), ("eo", "V"), ("xv", "in"), ("ydot", "in/s"), ("y", "in"), ("p1", "psi"), ("p2", "psi")]
+    png = base64.b64decode(re.search(r'src="data:image/png;base64,([^"]+)"', page).group(1))
+    assert png.startswith(b"\x89PNG") and len(png) > 20_000
+    every = page[page.index("<details>"):]
+    assert "All 36 signals" in every and "<td>cyl.m_oil</td>" in every
+
+
+def test_a_result_with_warnings_says_so_first(tmp_path) -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        result = hs.load_model("position-servo").simulate(t_end=1.2, n_points=1201)
+    assert "2 warning(s)" in repr(result)
+    page = result._repr_html_()
+    flagged = re.search(r"cyl\.pB = 8\d\.\d+ MPa", page)
+    assert flagged and flagged.start() < page.index("<table>")
+
+
+def test_plot_without_a_file_warns_where_nothing_can_show_it(flight, tmp_path) -> None:
+    import matplotlib
+    import matplotlib.pyplot as plt
+
+    _, result = flight
+    assert matplotlib.get_backend().lower() == "agg"  # the tests run headless
+    with pytest.warns(UserWarning, match="the figure is not shown.*give file="):
+        fig = result.plot("y")
+    plt.close(fig)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # written to a file: nothing to warn of
+        fig = result.plot("y", file=tmp_path / "y.png")
+    assert fig.axes[0].get_ylabel() == "y [in]" and (tmp_path / "y.png").stat().st_size > 5000
+
+
+def test_writing_a_plot_keeps_the_backend_a_notebook_chose(flight, tmp_path, monkeypatch) -> None:
+    import matplotlib
+
+    from hydroservo.plotting import pyplot
+
+    chosen = []
+    monkeypatch.setattr(matplotlib, "use", lambda *a, **k: chosen.append(a))
+    pyplot(tmp_path / "x.png")  # pyplot is in use (imported by the test above): its backend stays
+    assert chosen == []
