@@ -1,9 +1,13 @@
-"""The calibration guide's figures (docs/calibration.md), made by the workflows the commands run.
+"""Calibrating the robot arm against rig records
+=============================================
+
+The calibration guide's figures (docs/calibration.md), made by the workflows the commands run.
 
 Run: ``python docs/examples/plot_calibration.py`` (writes docs/img/calibration_*.png). The records are the
 example files (``hydroservo examples``): the robot arm on the virtual rig with known values.
 """
 
+import os
 import shutil
 import tempfile
 import warnings
@@ -13,7 +17,7 @@ from hydroservo.data import example_files
 from hydroservo.workflows.calibrate import Calibrate
 from hydroservo.workflows.identify import IdentifyFlowCoefficient, IdentifyFriction
 
-IMG = Path(__file__).resolve().parents[1] / "img"
+IMG = Path(os.environ.get("HYDROSERVO_DOCS_IMG") or Path(__file__).resolve().parents[1] / "img")
 warnings.simplefilter("ignore")
 
 work = Path(tempfile.mkdtemp(prefix="hydroservo-docs-"))

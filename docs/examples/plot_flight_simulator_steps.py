@@ -1,8 +1,12 @@
-"""Step responses of the [FlightSimulatorND] flight-simulator actuator, +2 V (retraction) and -2 V (extension).
+"""Flight-simulator actuator: step responses
+=========================================
+
+Step responses of the [FlightSimulatorND] flight-simulator actuator, +2 V (retraction) and -2 V (extension).
 
 Run: ``python docs/examples/plot_flight_simulator_steps.py`` (writes docs/img/flight_simulator_steps.png).
 """
 
+import os
 from pathlib import Path
 
 import matplotlib
@@ -31,6 +35,6 @@ axes[3].legend(loc="upper right", fontsize="x-small", ncol=3)
 axes[-1].set_xlabel("t [s]")
 fig.suptitle("FlightSimulatorND flight-simulator actuator: command steps of ±2 V (positive retracts)")
 fig.tight_layout()
-out = Path(__file__).resolve().parents[1] / "img" / "flight_simulator_steps.png"
+out = Path(os.environ.get("HYDROSERVO_DOCS_IMG") or Path(__file__).resolve().parents[1] / "img") / "flight_simulator_steps.png"
 fig.savefig(out, dpi=100)
 print(out)

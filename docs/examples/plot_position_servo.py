@@ -1,4 +1,7 @@
-"""hydroservo's ``position-servo`` beside Hopsan's result of its Position Servo example.
+"""Position servo beside Hopsan
+============================
+
+hydroservo's ``position-servo`` beside Hopsan's result of its Position Servo example.
 
 Run: ``python docs/examples/plot_position_servo.py`` (writes docs/img/position_servo_hopsan.png).
 Top: piston position, hydroservo (Hopsan's laws), Hopsan converged and at its default step,
@@ -8,6 +11,7 @@ cavitation after the step.
 """
 
 import io
+import os
 import warnings
 from pathlib import Path
 
@@ -68,6 +72,6 @@ ax2.set_xlabel("time [s]")
 ax2.legend(loc="upper right", fontsize="small")
 ax2.grid(True, alpha=0.3)
 fig.tight_layout()
-out = Path(__file__).resolve().parents[1] / "img" / "position_servo_hopsan.png"
+out = Path(os.environ.get("HYDROSERVO_DOCS_IMG") or Path(__file__).resolve().parents[1] / "img") / "position_servo_hopsan.png"
 fig.savefig(out, dpi=110)
 print(f"wrote {out}")

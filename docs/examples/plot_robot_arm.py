@@ -1,10 +1,14 @@
-"""The robot-arm study's figures: the fidelity ladder's error map, and the Sobol indices of six parameters.
+"""Robot arm: fidelity ladder and Sobol indices
+============================================
+
+The robot-arm study's figures: the fidelity ladder's error map, and the Sobol indices of six parameters.
 
 Run: ``python docs/examples/plot_robot_arm.py`` (writes docs/img/robot_arm_ladder.png and
 docs/img/robot_arm_sobol.png, through the same plotting functions the commands ``hydroservo ladder`` and
 ``hydroservo sensitivity --method sobol`` use).
 """
 
+import os
 import warnings
 from pathlib import Path
 
@@ -13,7 +17,7 @@ from hydroservo.analysis.ladder import STEPS, build_ladder, ladder_defaults, lad
 from hydroservo.analysis.sensitivity import sobol
 from hydroservo.plotting.ladder import plot_ladder_classes
 
-IMG = Path(__file__).resolve().parents[1] / "img"
+IMG = Path(os.environ.get("HYDROSERVO_DOCS_IMG") or Path(__file__).resolve().parents[1] / "img")
 warnings.simplefilter("ignore")  # a linear model driving a chamber below vacuum is flagged in the map, not here
 
 arm = hs.load_model("robot-arm")

@@ -1,10 +1,14 @@
-"""Figures of the servo-solenoid valve of FerreiraND for the docs (analogues of the paper's Figs. 2-9 and 12).
+"""Servo-solenoid valve: characteristics from a datasheet
+======================================================
+
+Figures of the servo-solenoid valve of FerreiraND for the docs (analogues of the paper's Figs. 2-9 and 12).
 
 Run: ``python docs/examples/plot_servo_solenoid_valve.py``; writes ``docs/img/ferreira_*.png``.
 """
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from hydroservo import load_model
@@ -13,7 +17,7 @@ from hydroservo.identification import fit_datasheet, fit_spool_dynamics, spool_r
 from hydroservo.plotting import pseudo_section as plotting
 from hydroservo.validation.ferreira import bode_grid, published_dynamics
 
-IMG = Path(__file__).resolve().parents[1] / "img"
+IMG = Path(os.environ.get("HYDROSERVO_DOCS_IMG") or Path(__file__).resolve().parents[1] / "img")
 
 
 def main() -> None:

@@ -8,25 +8,25 @@
 
 The public namespaces, by layer (each imports only from the ones above it):
 
-==========================  ===================================================
-namespace                   what
-==========================  ===================================================
+===========================  ======================================================
+namespace                    what
+===========================  ======================================================
 ``hs.units``, ``hs.errors``  units at the edges, SI inside; exceptions
-``hs.references``           the bibliography every docstring cites
-``hs.laws``                 published laws, pure functions (NumPy and CasADi)
-``hs.fluids``               hydraulic fluids as property sets
-``hs.components``           parts with parameters, states, ports, equations
-``hs.System``, ``Model``    components connected into one ODE; its solvers
-``hs.analysis``             frequency responses, static test benches
-``hs.identification``       parameters from datasheets, curves and Bode data
-``hs.io``                   every reader and writer; ``hs.load_model``
-``hs.data``                 published and example parameter sets, models
-``hs.validation``           published figures beside computed ones
-``hs.plotting``             the plots; circuit diagrams (``System.diagram``)
-``hs.codegen``              a model as C code with a real-time stepper, or an FMU
-``hs.workflows``            whole tasks as the commands run them, each returning a
-                            report that prints, writes its files and shows itself
-==========================  ===================================================
+``hs.references``            the bibliography every docstring cites
+``hs.laws``                  published laws, pure functions (NumPy and CasADi)
+``hs.fluids``                hydraulic fluids as property sets
+``hs.components``            parts with parameters, states, ports, equations
+``hs.System``, ``Model``     components connected into one ODE; its solvers
+``hs.analysis``              frequency responses, static test benches
+``hs.identification``        parameters from datasheets, curves and Bode data
+``hs.io``                    every reader and writer; ``hs.load_model``
+``hs.data``                  published and example parameter sets, models
+``hs.validation``            published figures beside computed ones
+``hs.plotting``              the plots; circuit diagrams (``System.diagram``)
+``hs.codegen``               a model as C code with a real-time stepper, or an FMU
+``hs.workflows``             whole tasks as the commands run them, each returning a
+                             report that prints, writes its files and shows itself
+===========================  ======================================================
 
 Names are imported on first use, so that ``import hydroservo`` and the command
 line's ``--help`` stay fast (``docs/architecture.md``).

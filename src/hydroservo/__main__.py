@@ -4,4 +4,5 @@ import sys
 
 from hydroservo.cli import main
 
-sys.exit(main())
+if __name__ == "__main__":  # run, not imported (the API reference imports every module)
+    sys.exit(main())

@@ -59,8 +59,8 @@ def cite(key: str) -> str:
 
 
 def cited_in(text: str) -> list[str]:
-    """The keys of the bibliography a text cites in brackets (``[Efe2014] eq. (3.47)``, ``[GordicND, Table 1]``),
-    in the order they first appear.
+    """The keys of the bibliography a text cites in brackets, in the order they first appear: ``[Efe2014]``
+    followed by an equation, ``[GordicND, Table 1]``.
 
     >>> cited_in("the flow of [Efe2014] eq. 3.5, after [Merritt1967] and [Efe2014]; not [Fig3]")
     ['Efe2014', 'Merritt1967']

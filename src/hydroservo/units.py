@@ -80,7 +80,6 @@ def registry() -> pint.UnitRegistry:
     reg: pint.UnitRegistry[Any] = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     # Hydraulic shorthands that pint does not define under these names.
     reg.define("lpm = liter / minute = L_min")
-    reg.define("cps = hertz")
     reg.define("rev = revolution")
     # Absolute pressures (hydroservo's pressures are gauge): the atmosphere is 101325 Pa.
     reg.define("Pa_abs = Pa; offset: -101325")

@@ -3,17 +3,17 @@ r"""Scalar metrics of a run: what a study measures of each response.
 A metric is written ``KIND(SIGNAL[, T0[, T1]])``, times with units or in
 seconds:
 
-==================  ==========================================================
-``final(x)``        the last sample
-``at(x, T)``        the value at time T (interpolated)
-``peak(x[, T0, T1])``  the sample furthest from zero (signed) in the window
-``max``, ``min``    the largest, smallest sample in the window
-``mean(x, T0, T1)`` the time average over the window: a steady level
-``rise_time(x[, T0[, T1]])``       10-90 % of the change from T0 (the step) to T1 (the end)
-``settling_time(x[, T0[, T1]])``   to within 2 % of the final change, from T0
-``overshoot(x[, T0[, T1]])``       beyond the final value, in % of the change
-``peak_time(x[, T0[, T1]])``       when the response is furthest in the step's direction, from T0
-==================  ==========================================================
+================================  ==============================================================
+``final(x)``                      the last sample
+``at(x, T)``                      the value at time T (interpolated)
+``peak(x[, T0, T1])``             the sample furthest from zero (signed) in the window
+``max``, ``min``                  the largest, smallest sample in the window
+``mean(x, T0, T1)``               the time average over the window: a steady level
+``rise_time(x[, T0[, T1]])``      10-90 % of the change from T0 (the step) to T1 (the end)
+``settling_time(x[, T0[, T1]])``  to within 2 % of the final change, from T0
+``overshoot(x[, T0[, T1]])``      beyond the final value, in % of the change
+``peak_time(x[, T0[, T1]])``      when the response is furthest in the step's direction, from T0
+================================  ==============================================================
 
 The step metrics are those of :func:`hydroservo.analysis.step.step_metrics`.
 A user's own metric is any function ``f(t, signals) -> float`` given to

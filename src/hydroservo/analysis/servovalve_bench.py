@@ -231,7 +231,7 @@ class StaticTests:
     supply_flows: np.ndarray  #: flow drawn from supply [m^3/s]
     rated_flow: float  #: at +rated current [m^3/s]
     rated_flow_negative: float  #: at -rated current [m^3/s]
-    symmetry: float  #: (|Q+| - |Q-|)/max [-]
+    symmetry: float  #: (``|Q+| - |Q-|``)/max [-]
     linearity: float  #: largest deviation from the rated line over the rated flow [-]
     flow_gain_null: float  #: dQ/di between -5 and +5 % of rated current [m^3/s/A]
     internal_leakage_null: float  #: flow from supply at zero current [m^3/s]
@@ -393,8 +393,8 @@ class StepTest:
     rise_time: float  #: 10-90 % of the flow change [s]
     overshoot: float  #: [%]
     settling_time: float  #: to 2 % [s]
-    flapper_peak: float  #: largest |x| [m]
-    reaches_nozzle: bool  #: |x| reached the null gap x_0
+    flapper_peak: float  #: largest ``|x|`` [m]
+    reaches_nozzle: bool  #: ``|x|`` reached the null gap x_0
     x_0: float  #: the null gap [m] (NaN if the model has none)
 
 

@@ -7,6 +7,7 @@ the reference cannot drift from the code.
 
 from __future__ import annotations
 
+import functools
 import inspect
 import re
 from dataclasses import asdict, dataclass, field, replace
@@ -40,7 +41,8 @@ class Reference:
     name: str
     kind: str  #: its module under hydroservo.components, e.g. "valves.four_way"
     summary: str  #: the first sentence of its docstring
-    notes: str  #: the docstring: equations, sources, conventions
+    notes: str  #: the docstring: equations (in Unicode), sources, conventions
+    source: str = ""  #: the docstring as written (reStructuredText, equations in LaTeX)
     arguments: dict[str, str] = field(default_factory=dict)
     parameters: list[dict[str, Any]] = field(default_factory=list)
     options: list[dict[str, Any]] = field(default_factory=list)
@@ -62,12 +64,100 @@ def _unit(unit: str) -> str:
     return si_unit(unit)
 
 
+_ROLE = re.compile(r":(?:class|func|mod|meth|attr|data):`~?(?:[\w.]+\.)?([\w]+)`")
+_MATH_ROLE = re.compile(r":math:`([^`]*)`")
+
+
+def _math_blocks(doc: str) -> list[tuple[str, str]]:
+    """``doc`` cut into prose and math directives' blocks: (kind, text) with kind "text" or "math" (LaTeX, its
+    lines joined, the block's indentation removed)."""
+    parts: list[tuple[str, str]] = []
+    lines, k = doc.splitlines(), 0
+    prose: list[str] = []
+    while k < len(lines):
+        line = lines[k]
+        found = re.match(r"(\s*)\.\. math::\s*(.*)$", line)
+        if not found:
+            prose.append(line)
+            k += 1
+            continue
+        if prose:
+            parts.append(("text", "\n".join(prose)))
+            prose = []
+        indent = len(found.group(1))
+        body = [found.group(2)] if found.group(2).strip() else []
+        k += 1
+        while k < len(lines) and (not lines[k].strip() or len(lines[k]) - len(lines[k].lstrip()) > indent):
+            body.append(lines[k].strip())
+            k += 1
+        parts.append(("math", "\n".join(b for b in body if b)))
+    if prose:
+        parts.append(("text", "\n".join(prose)))
+    return parts
+
+
+@functools.cache
+def _latex_to_text() -> Any:
+    """pylatexenc's LaTeX-to-Unicode converter, with fractions grouped as ``(a + b)/(c d)``, ``\\sin`` spaced, and
+    the layout macros (``\\qquad``, ``\\left``, ``\\right``) reduced to spacing."""
+    from pylatexenc.latex2text import LatexNodes2Text, MacroTextSpec, get_default_latex_context_db
+
+    def group(text: str) -> str:
+        text = text.strip()
+        return text if re.fullmatch(r"[\w.'′]+(\([^()]*\))?|\([^()]*\)", text) else f"({text})"
+
+    def frac(node: Any, l2tobj: Any) -> str:
+        top, bottom = (l2tobj.nodelist_to_text([arg]) for arg in node.nodeargd.argnlist[-2:])
+        return f"{group(top)}/{group(bottom)}"
+
+    db = get_default_latex_context_db().filter_context(keep_categories=None)
+    macros = [MacroTextSpec("frac", simplify_repl=frac), MacroTextSpec("dfrac", simplify_repl=frac),
+              MacroTextSpec("qquad", "    "), MacroTextSpec("quad", "  "), MacroTextSpec("left", ""),
+              MacroTextSpec("right", ""), MacroTextSpec("mathrm", "%s"), MacroTextSpec("text", "%s")]
+    macros += [MacroTextSpec(f, f"{f} ") for f in ("sin", "cos", "tan", "tanh", "exp", "ln", "log", "max", "min", "sign")]
+    db.add_context_category("hydroservo", macros=macros, prepend=True)
+    return LatexNodes2Text(math_mode="text", latex_context=db, strict_latex_spaces="based-on-source")
+
+
+def equation_text(latex: str) -> str:
+    """LaTeX as a terminal shows it: Greek letters, dots and roots in Unicode, fractions as ``a/(b c)``, one line
+    per line of an aligned block.
+
+    >>> equation_text(r"\\dot p = \\frac{Q}{C(p)}, \\qquad C(p) = \\frac{V_{dead}}{\\beta_e} + \\frac{V_g}{\\kappa\\,p_{abs}}")
+    'ṗ = Q/C(p),      C(p) = V_dead/β_e + V_g/(κ p_abs)'
+    """
+    lines = [line.replace("&", "").replace("\n", " ") for line in re.split(r"\\\\", latex)]
+    shown = [" ".join(_latex_to_text().latex_to_text(line).split(" \n")).strip() for line in lines]
+    return "\n".join(line for line in shown if line)
+
+
 def plain(doc: str) -> str:
-    """A docstring with its reStructuredText roles reduced to plain text with backquotes."""
-    doc = re.sub(r":(?:class|func|mod|meth|attr|data):`~?(?:[\w.]+\.)?([\w]+)`", r"`\1`", doc)
-    doc = re.sub(r":math:`([^`]*)`", r"`\1`", doc)
-    doc = doc.replace("``", "`").replace(".. math::", "Equations:")
-    return doc
+    """A docstring for a terminal: its roles reduced to names in backquotes, its equations in Unicode
+    (:func:`equation_text`; the math directive's blocks indented under the prose, the math role's inline)."""
+    out = []
+    for kind, part in _math_blocks(doc):
+        if kind == "math":
+            out.append("\n".join("    " + line for line in equation_text(part).splitlines()) + "\n")
+            continue
+        part = _ROLE.sub(r"`\1`", part)
+        part = _MATH_ROLE.sub(lambda m: equation_text(m.group(1)), part)
+        out.append(part.replace("``", "`"))
+    return "\n".join(out)
+
+
+def markdown_prose(doc: str) -> str:
+    """A docstring for MyST Markdown: equations as ``$$`` blocks and ``$...$``, roles as names in backquotes."""
+    out = []
+    for kind, part in _math_blocks(doc):
+        if kind == "math":
+            body = part.replace("\n", " ")
+            aligned = "&" in body or "\\\\" in body
+            out += ["", "$$", f"\\begin{{aligned}}{body}\\end{{aligned}}" if aligned else body, "$$", ""]
+            continue
+        part = _ROLE.sub(r"`\1`", part)
+        part = _MATH_ROLE.sub(lambda m: f"${m.group(1)}$", part)
+        out.append(part.replace("``", "`"))
+    return "\n".join(out)
 
 
 def _declarations(cls: type[Component]) -> Any:
@@ -123,6 +213,7 @@ def reference(type_name: str | type[Component]) -> Reference:
         kind=cls.__module__.removeprefix("hydroservo.components."),
         summary=summary,
         notes=plain(doc),
+        source=doc,
         arguments=arguments,
         parameters=parameters,
         options=[
@@ -232,9 +323,9 @@ def _limit(lim: dict[str, Any]) -> str:
 def markdown(ref: Reference) -> str:
     """The reference as a Markdown section (docs/components.md)."""
     out = [f"### {ref.name}", "", f"`hydroservo.components.{ref.kind}` — {ref.summary}", ""]
-    rest = ref.notes.split("\n\n", 1)[1] if "\n\n" in ref.notes else ""
+    rest = ref.source.split("\n\n", 1)[1] if "\n\n" in ref.source else ""
     if rest:
-        out += [_md_block(rest), ""]
+        out += [_md_block(markdown_prose(rest)), ""]
     if ref.arguments:
         out += ["Arguments besides the name: " + "; ".join(f"`{k}`, {v}" for k, v in ref.arguments.items()), ""]
     if ref.parameters:

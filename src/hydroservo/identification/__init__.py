@@ -1,24 +1,24 @@
 """Identification: model parameters from datasheets, measured curves and frequency responses.
 
-=======================  ========================================================
-module                   fits
-=======================  ========================================================
-:mod:`.datasheet`        pseudo-sections from a datasheet's null
-                         characteristics ([FerreiraND] sections 3-5)
-:mod:`.curves`           pseudo-sections from measured static curves
-:mod:`.spool_dynamics`   spool dynamics (rate-limited, second, first order) from
-                         amplitude-dependent Bode data ([FerreiraND] eq. 43)
-:mod:`.staged_slot`      the staged-slot valve from test-bench curves, two steps
-                         ([MareAttarND] eqs. 21-24)
-:mod:`.servovalve_...`   catalogue servovalves (first to third order) from a
-``catalogue``            small-signal frequency response and the static bench
-:mod:`.calibration`      any system's parameters from rig records: weighted least
-                         squares with exact gradients, intervals, identifiability
-:mod:`.friction`         friction from a rig record and the Stribeck law
-                         ([Efe2014] eqs. 4.24-4.25, 3.47)
-:mod:`.leakage`          internal leakage from a locked piston ([Efe2014] 4.5.5)
-:mod:`.flow_coefficient` the valve's K(x_v) and H(x_v, d_f) ([Efe2014] 5.1.2-3)
-=======================  ========================================================
+========================  ========================================================
+module                    fits
+========================  ========================================================
+:mod:`.datasheet`         pseudo-sections from a datasheet's null
+                          characteristics ([FerreiraND] sections 3-5)
+:mod:`.curves`            pseudo-sections from measured static curves
+:mod:`.spool_dynamics`    spool dynamics (rate-limited, second, first order) from
+                          amplitude-dependent Bode data ([FerreiraND] eq. 43)
+:mod:`.staged_slot`       the staged-slot valve from test-bench curves, two steps
+                          ([MareAttarND] eqs. 21-24)
+:mod:`.servovalve_...`    catalogue servovalves (first to third order) from a
+``catalogue``             small-signal frequency response and the static bench
+:mod:`.calibration`       any system's parameters from rig records: weighted least
+                          squares with exact gradients, intervals, identifiability
+:mod:`.friction`          friction from a rig record and the Stribeck law
+                          ([Efe2014] eqs. 4.24-4.25, 3.47)
+:mod:`.leakage`           internal leakage from a locked piston ([Efe2014] 4.5.5)
+:mod:`.flow_coefficient`  the valve's K(x_v) and H(x_v, d_f) ([Efe2014] 5.1.2-3)
+========================  ========================================================
 
 Rig records (one experiment each, channels at their own rates) are
 :mod:`.records`; :mod:`.rig` makes them from any model (a virtual rig);

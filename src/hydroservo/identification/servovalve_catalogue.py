@@ -61,7 +61,7 @@ class CatalogueFit:
     frequencies: np.ndarray  #: of the data [Hz]
     gain_db: np.ndarray  #: the model's, relative to the lowest frequency [dB]
     phase_deg: np.ndarray  #: [deg]
-    gain_error_db: float  #: largest |model - data| over the data [dB]
+    gain_error_db: float  #: largest ``|model - data|`` over the data [dB]
     phase_error_deg: float  #: [deg]
 
 

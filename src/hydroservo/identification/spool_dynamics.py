@@ -8,13 +8,13 @@ parameters; then the pure delay from the phase (section 6.2).
 Three model fidelities share the routine, so they can be compared on the same
 data:
 
-=================  =========================================  ===========================
-``model``          component                                  fitted parameters
-=================  =========================================  ===========================
-``rate-limited``   :class:`~hydroservo.components.SpoolRateLimited` (Fig. 11)  omega_n, zeta, L_v, L_a
-``second-order``   :class:`~hydroservo.components.SpoolSecondOrder`            omega_n, zeta
-``first-order``    :class:`~hydroservo.components.SpoolFirstOrder`             tau
-=================  =========================================  ===========================
+================  ==========================================================  =======================
+``model``         component                                                   fitted parameters
+================  ==========================================================  =======================
+``rate-limited``  :class:`~hydroservo.components.SpoolRateLimited` (Fig. 11)  omega_n, zeta, L_v, L_a
+``second-order``  :class:`~hydroservo.components.SpoolSecondOrder`            omega_n, zeta
+``first-order``   :class:`~hydroservo.components.SpoolFirstOrder`             tau
+================  ==========================================================  =======================
 
 The gains are simulated (:mod:`hydroservo.analysis.frequency`) with exact
 sensitivities, and the parameters are optimised in logarithmic coordinates
@@ -214,7 +214,7 @@ class SpoolFit:
     info: dict[str, Any] = field(default_factory=dict)
 
     def max_gain_error(self, f_max: float | None = None) -> float:
-        """Largest |gain error| [dB] up to ``f_max`` [Hz] (all frequencies when None)."""
+        """Largest ``|gain error|`` [dB] up to ``f_max`` [Hz] (all frequencies when None)."""
         sel = np.ones(self.data.frequencies.size, bool) if f_max is None else self.data.frequencies <= f_max
         return float(np.max(np.abs(self.gain_error_db[:, sel])))
 

@@ -5,41 +5,41 @@ numbers; it knows nothing of components, systems or files. Components call
 the laws in their equations; test benches and identification call the same
 laws on arrays. A new law goes into the module of its physical kind:
 
-=====================  ======================================================
-module                 laws
-=====================  ======================================================
-:mod:`.fluid`          bulk modulus (Lee & Lee, Eggerth), density, wave speed,
-                       line length; fluid properties against pressure and
-                       temperature (Maré & Attar eqs. 1-2, Walther)
-:mod:`.orifice`        the turbulent orifice law and its one regularisation at
-                       null; flow number, transition pressure; catalogue flow
-                       coefficient
-:mod:`.four_way`       the four-way bridge assembly; the sharp-edged spool
-                       valve with per-edge laps (Efe)
-:mod:`.pseudo_section` pseudo-section valve (Ferreira et al.)
-:mod:`.staged_slot`    staged-slot valve: unified open/closed orifice,
-                       laminar to turbulent (Maré & Attar)
-:mod:`.leakage`        earlier closed-orifice leakage laws (Ellman, Eryilmaz,
-                       laminar gap)
-:mod:`.spool_dynamics` first- and second-order spools, rate limits, delay
-:mod:`.torque_motor`   torque motor of a two-stage servovalve: second-order
-                       armature; electromagnetic torque from the geometry
-:mod:`.armature`       flexure tube, flapper bending, feedback spring with
-                       clearance, impact on the nozzle
-:mod:`.flapper_nozzle` flapper-nozzle stage driving the main spool; its
-                       conductances, nozzle pressures and null gap
-:mod:`.servo_spool`    a servovalve's spool stage: real openings, port
-                       flows, flow forces, leakage through the lapped lands
-:mod:`.chamber`        pressure build-up in volumes and cylinder chambers
-:mod:`.line`           lines as lumped segments: capacitance, inertance,
-                       laminar resistance; segments for a frequency range
-:mod:`.accumulator`    the polytropic gas spring of an accumulator
-:mod:`.displacement`   pumps and motors: displaced flow, leakage, torque,
-                       pressure compensator
-:mod:`.pressure_valve` spring-loaded valves: opening against pressure,
-                       the relief/reducing spool's flow coefficient
-:mod:`.friction`       Stribeck friction
-=====================  ======================================================
+======================  =======================================================
+module                  laws
+======================  =======================================================
+:mod:`.fluid`           bulk modulus (Lee & Lee, Eggerth), density, wave speed,
+                        line length; fluid properties against pressure and
+                        temperature (Maré & Attar eqs. 1-2, Walther)
+:mod:`.orifice`         the turbulent orifice law and its one regularisation at
+                        null; flow number, transition pressure; catalogue flow
+                        coefficient
+:mod:`.four_way`        the four-way bridge assembly; the sharp-edged spool
+                        valve with per-edge laps (Efe)
+:mod:`.pseudo_section`  pseudo-section valve (Ferreira et al.)
+:mod:`.staged_slot`     staged-slot valve: unified open/closed orifice,
+                        laminar to turbulent (Maré & Attar)
+:mod:`.leakage`         earlier closed-orifice leakage laws (Ellman, Eryilmaz,
+                        laminar gap)
+:mod:`.spool_dynamics`  first- and second-order spools, rate limits, delay
+:mod:`.torque_motor`    torque motor of a two-stage servovalve: second-order
+                        armature; electromagnetic torque from the geometry
+:mod:`.armature`        flexure tube, flapper bending, feedback spring with
+                        clearance, impact on the nozzle
+:mod:`.flapper_nozzle`  flapper-nozzle stage driving the main spool; its
+                        conductances, nozzle pressures and null gap
+:mod:`.servo_spool`     a servovalve's spool stage: real openings, port
+                        flows, flow forces, leakage through the lapped lands
+:mod:`.chamber`         pressure build-up in volumes and cylinder chambers
+:mod:`.line`            lines as lumped segments: capacitance, inertance,
+                        laminar resistance; segments for a frequency range
+:mod:`.accumulator`     the polytropic gas spring of an accumulator
+:mod:`.displacement`    pumps and motors: displaced flow, leakage, torque,
+                        pressure compensator
+:mod:`.pressure_valve`  spring-loaded valves: opening against pressure,
+                        the relief/reducing spool's flow coefficient
+:mod:`.friction`        Stribeck friction
+======================  =======================================================
 """
 
 from hydroservo.laws import (

@@ -6,7 +6,7 @@ vectorised functions (NumPy arrays or CasADi expressions). Citation keys in
 brackets are those of :mod:`hydroservo.references`.
 
 The rate-limited model of [FerreiraND] Fig. 11, re-derived
----------------------------------------------------------
+----------------------------------------------------------
 The figure is a second-order loop drawn with its velocity and acceleration as
 signals, so that each can be limited:
 

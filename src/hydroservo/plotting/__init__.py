@@ -4,20 +4,20 @@ Every function draws into a new figure, saves it when ``file`` is given
 (without needing a display) and returns the figure. Matplotlib is imported
 only when a plot is drawn.
 
-=====================  ==========================================================
-module                 plots
-=====================  ==========================================================
-:mod:`.results`        signals of a simulation against time
-:mod:`.bode`           amplitude-dependent Bode plots, data against models
-:mod:`.pseudo_section` pseudo-sections and the characteristics of a
-                       pseudo-section valve ([FerreiraND] Figs. 2-9)
-:mod:`.staged_slot`    test-bench characteristics of the staged-slot valve
-                       across temperature ([MareAttarND] Figs. 3-4, 6-8)
-:mod:`.study`          parameter studies: a family of responses coloured by a
-                       parameter, metrics against a parameter
-:mod:`.linear`         linear models: the poles with their modes, Bode plots of
-                       input-output pairs
-=====================  ==========================================================
+======================  ==========================================================
+module                  plots
+======================  ==========================================================
+:mod:`.results`         signals of a simulation against time
+:mod:`.bode`            amplitude-dependent Bode plots, data against models
+:mod:`.pseudo_section`  pseudo-sections and the characteristics of a
+                        pseudo-section valve ([FerreiraND] Figs. 2-9)
+:mod:`.staged_slot`     test-bench characteristics of the staged-slot valve
+                        across temperature ([MareAttarND] Figs. 3-4, 6-8)
+:mod:`.study`           parameter studies: a family of responses coloured by a
+                        parameter, metrics against a parameter
+:mod:`.linear`          linear models: the poles with their modes, Bode plots of
+                        input-output pairs
+======================  ==========================================================
 """
 
 from __future__ import annotations

@@ -51,3 +51,17 @@ def test_signal_blocks_take_their_unit_and_former_names_resolve() -> None:
     assert reference("MareSpoolValve").name == "StagedSlotValve"
     with pytest.raises(ParameterError, match=r"component type 'Valve': unknown \(did you mean 'CheckValve' or 'ReliefValve'\?\); known: .*Cylinder"):
         reference("Valve")
+
+
+def test_equations_print_in_unicode_in_a_terminal_and_as_latex_in_the_docs() -> None:
+    from hydroservo.components.reference import catalogue, markdown, text
+
+    cyl = reference("Cylinder")
+    shown = text(cyl)
+    assert "ṗ_A = E'(p_A)/V_A(Q_A - A_Aẋ - Q_Li - Q_LeA),    V_A = V_A0 + k_V A_A x" in shown
+    assert "ṗ_B = E'(p_B)/V_B(" in shown  # an aligned block: one line per line
+    for ref in catalogue():  # no LaTeX left in any terminal text: no \frac, no \dot, no :math:
+        assert "\\" not in ref.notes and ":math:" not in ref.notes and ".. math::" not in ref.notes, ref.name
+    page = markdown(cyl)
+    assert "$$\n\\begin{aligned}\\dot p_A &= \\frac{E'(p_A)}{V_A}" in page  # MathJax renders it on the site
+    assert "$Q_{Li} = C_{Li}(p_A - p_B)$" in page
