@@ -14,10 +14,10 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from hydroservo.io.html import Table
-    from hydroservo.system.result import Result
+    from hydroservo.system.result import BatchResult, Result
     from hydroservo.system.system import System
 
-__all__ = ["parameter_table", "signal_table", "system_html", "result_html"]
+__all__ = ["parameter_table", "signal_table", "system_html", "result_html", "batch_html"]
 
 
 def _value(value: float, unit: str) -> str:
@@ -128,3 +128,46 @@ def result_title(result: Result) -> str:
     return (f"Result of {result.model!r}: {result.t[0]:g} to {result.t[-1]:g} s, {result.t.size} times, "
             f"{len(result.names)} signals" + (f" ({run})" if run else "")
             + (f"; {len(result.warnings)} warning(s)" if result.warnings else ""))
+
+
+def batch_html(batch: BatchResult) -> str:
+    """The notebook's display of a batch: how many runs succeeded, each run's varied values (in the units the
+    parameters are declared in) and status, and the family of curves of the main signal the runs differ in most."""
+    import io
+
+    from hydroservo.io.html import Notice, Picture, Table, fragment
+    from hydroservo.units import si_unit
+
+    items: list[Any] = [Notice(batch.summary(), "warning" if batch.failed else "info")]
+    varied = list(batch.varied)
+    rows = []
+    for k in range(len(batch)):
+        status = f"failed: {batch.failed[k]}" if k in batch.failed else (
+            f"implausible: {batch.warnings[k][0]}" if k in batch.warnings else "ok")
+        rows.append([k, *(float(batch.params[v][k]) for v in varied), status])
+    columns = ["run", *(f"{v} [{si_unit(batch.param_units.get(v, ''))}]" for v in varied), "status"]
+    table = Table(columns, rows[:200], caption=f"{len(rows)} runs" + (", the first 200 shown" if len(rows) > 200 else ""))
+    signal = _most_varied(batch)
+    if signal is not None and len(batch.failed) < len(batch):
+        buffer = io.BytesIO()
+        batch.plot(signal, file=buffer)
+        items.append(Picture(buffer.getvalue(), f"{signal} in every run that did not fail (BatchResult.plot)"))
+    return fragment(repr(batch).strip("<>"), items, [("Runs", [table])])
+
+
+def _most_varied(batch: BatchResult) -> str | None:
+    """Of the model's main signals, the one whose runs differ most, relative to its range (None if none do)."""
+    import numpy as np
+
+    best, spread = None, 0.0
+    ok = batch.ok
+    for name in dict.fromkeys(n for panel in batch.panels for n in panel if n in batch.units):
+        values = np.asarray(batch[name], dtype=float)[ok]
+        finite = values[np.isfinite(values)]
+        if finite.size == 0:
+            continue
+        scale = float(np.ptp(finite)) or 1.0
+        differ = float(np.nanmax(np.nanmax(values, axis=0) - np.nanmin(values, axis=0))) / scale
+        if differ > spread:
+            best, spread = name, differ
+    return best

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, BinaryIO, Protocol
 
 import numpy as np
 
@@ -41,7 +41,7 @@ def plot_family(
     unit: str | None = None,
     color_by: str | None = None,
     title: str | None = None,
-    file: str | Path | None = None,
+    file: str | Path | BinaryIO | None = None,
 ) -> Figure:
     """``signal`` of every run that did not fail, coloured by ``color_by`` (default: the first varied
     parameter) with a colour bar; implausible runs dashed."""

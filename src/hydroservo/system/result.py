@@ -260,6 +260,15 @@ class BatchResult(_Signals):
         self.param_units = dict(param_units or {})
         #: Physical bounds crossed, by run (:mod:`hydroservo.system.plausibility`).
         self.warnings: dict[int, list[Implausible]] = {}
+        #: The model's main signals, panel by panel (set by the system): a notebook plots the first.
+        self.panels: list[list[str]] = []
+
+    def _repr_html_(self) -> str:
+        """In a notebook: how many runs succeeded, each run's varied values and status, the family of the
+        model's first main signal."""
+        from hydroservo.io.notebook import batch_html
+
+        return batch_html(self)
 
     def __len__(self) -> int:
         return int(self.stats["runs"])
@@ -297,7 +306,7 @@ class BatchResult(_Signals):
         unit: str | None = None,
         color_by: str | None = None,
         title: str | None = None,
-        file: str | Path | None = None,
+        file: str | Path | BinaryIO | None = None,
     ) -> Figure:
         """The family of curves of ``signal``, one per run that did not fail, coloured by the value of
         ``color_by`` (default: the first varied parameter) (:func:`hydroservo.plotting.study.plot_family`), in

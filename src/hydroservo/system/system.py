@@ -540,7 +540,46 @@ class System:
     def simulate(
         self, t_end: float | str | None = None, params: Mapping[str, Any] | None = None, **kwargs: Any
     ) -> Result:
-        """Simulate; see :meth:`hydroservo.system.model.Model.simulate`."""
+        """Simulate the system from its initial state and return every signal.
+
+        Parameters
+        ----------
+        t_end : float or str, optional
+            Duration [s], or a quantity (``"500 ms"``); default the system's :attr:`t_end`.
+        params : mapping, optional
+            Parameter values for this run only, ``"component.parameter"`` -> value, with units
+            (``{"load.W": "3000 lbf"}``) or SI numbers; the system itself is not changed.
+        **kwargs
+            The integration's settings, those of :meth:`hydroservo.system.model.Model.simulate`: ``n_points``
+            (output times, default 1001) or ``t_eval`` [s]; ``accuracy`` (deviation wanted, relative to each
+            signal's range; default 1e-4) or ``rtol``/``atol``; ``method`` (``"auto"``: compiled ``rodas3`` for
+            up to 20 states where a C compiler is found, else ``"cvodes"``; or ``"cvodes"``, ``"rodas3"``,
+            ``"ros23"``, ``"dopri5"``); ``initial`` (``"parameters"``, ``"trim"`` or states [SI]);
+            ``max_steps``; ``events``.
+
+        Returns
+        -------
+        Result
+            Signals by name, SI inside (``r["cyl.pA"]`` [Pa], ``r.get("cyl.pA", "psi")``), shown in the
+            model's units by :meth:`~hydroservo.system.result.Result.summary`, ``to_pandas``, ``to_csv`` and
+            ``plot`` (:meth:`unit_choice`); ``r.t`` [s]; ``r.stats`` (method, steps, wall time);
+            ``r.warnings`` (physical bounds crossed, also issued as
+            :class:`~hydroservo.errors.ImplausibleResultWarning`).
+
+        Raises
+        ------
+        ParameterError
+            A value out of its range or of the wrong unit, an unknown parameter or setting.
+        SolverError
+            The integration failed: the message says when, in which state and why.
+
+        Examples
+        --------
+        >>> import hydroservo as hs
+        >>> r = hs.load_model("flight-simulator").simulate(t_end="0.5 s", params={"load.W": "3000 lbf"})
+        >>> round(float(r.get("y", "in")[-1]), 1), r.summary()["p2"]["unit"]
+        (10.1, 'psi')
+        """
         model = self.build()
         t = self.t_end if t_end is None else to_si(t_end, "s", what="t_end")
         result = model.simulate(t, self._vector(model, params), **kwargs)
@@ -646,6 +685,7 @@ class System:
                     invalid[i] = str(exc)
         found = model.batch(t, self._vector(model, None), si, failed=invalid, **kwargs)
         found.unit_choice = self.unit_choice()
+        found.panels = self.default_panels()
         return found
 
     def calibrate(self, records: Any, fit: Any, **options: Any) -> Any:

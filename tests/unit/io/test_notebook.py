@@ -79,3 +79,12 @@ def test_writing_a_plot_keeps_the_backend_a_notebook_chose(flight, tmp_path, mon
     monkeypatch.setattr(matplotlib, "use", lambda *a, **k: chosen.append(a))
     pyplot(tmp_path / "x.png")  # pyplot is in use (imported by the test above): its backend stays
     assert chosen == []
+
+
+def test_a_batch_shows_its_runs_and_the_signal_they_differ_in_most(flight) -> None:
+    system, _ = flight
+    batch = system.batch({"load.m": ["2500 kg", "2900 kg", "3300 kg"]}, t_end=0.3)
+    page = batch._repr_html_()
+    assert page.startswith('<div class="hydroservo">') and "3 of 3 runs succeeded" in page
+    assert "<th>load.m [kg]</th>" in page and page.count("<td>ok</td>") == 3
+    assert "in every run that did not fail" in page and "vi in every run" not in page  # not the command: it is the same
