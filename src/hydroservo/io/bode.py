@@ -27,14 +27,9 @@ __all__ = ["read_bode", "write_bode"]
 def write_bode(response: FrequencyResponse, path: str | Path) -> Path:
     """Write ``frequency [Hz], amplitude [%], gain [dB], phase [deg]``, the format :func:`read_bode` reads."""
 
-    path = Path(path)
-    with path.open("w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(["frequency [Hz]", "amplitude [%]", "gain [dB]", "phase [deg]"])
-        for row in response.rows():
-            w.writerow([f"{v:.10g}" for v in row])
-    return path
+    from hydroservo.io.results import write_table
 
+    return write_table(path, ["frequency [Hz]", "amplitude [%]", "gain [dB]", "phase [deg]"], response.rows())
 
 
 def read_bode(path: str | Path) -> FrequencyResponse:

@@ -205,7 +205,8 @@ def bench_tables(curves: BenchCurves) -> list[str]:
 
 def write_bench_table(curves: BenchCurves, name: str, path: str | Path) -> Path:
     """Write table ``name`` of :data:`BENCH_TABLES` of ``curves`` as CSV (um, L/min, bar) to ``path``."""
-    path = Path(path)
+    from hydroservo.io.results import write_table
+
     b = curves.bench
     head = [
         f"# temperature = {curves.temperature!r} degC",
@@ -219,11 +220,8 @@ def write_bench_table(curves: BenchCurves, name: str, path: str | Path) -> Path:
     X = getattr(curves, x_name)
     cols = {k: getattr(curves, attr) for k, attr in columns.items() if getattr(curves, attr) is not None}
     scale = {"L/min": from_si(1.0, "m^3/s", "L/min"), "bar": 1e-5}
-    lines = head + ["X [um], " + ", ".join(cols)]
     data = [np.asarray(X) * 1e6] + [np.asarray(v) * scale[k.split("[")[1][:-1]] for k, v in cols.items()]
-    lines += [", ".join(repr(float(x)) for x in row) for row in zip(*data, strict=True)]
-    path.write_text("\n".join(lines) + "\n")
-    return path
+    return write_table(path, ["X [um]", *cols], zip(*data, strict=True), [line.removeprefix("# ") for line in head])
 
 
 def write_bench_curves(curves: BenchCurves, folder: str | Path, stem: str = "") -> list[Path]:

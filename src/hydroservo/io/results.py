@@ -10,7 +10,7 @@ from hydroservo.units import si_unit
 if TYPE_CHECKING:
     import numpy as np
 
-__all__ = ["write_csv", "write_mat", "read_csv", "csv_header"]
+__all__ = ["write_csv", "write_mat", "read_csv", "csv_header", "write_table"]
 
 
 class Result(Protocol):
@@ -36,6 +36,38 @@ def csv_header(name: str, unit: str, ascii: bool = False) -> str:
     """
     printed = si_unit(unit)
     return f"{name} [{(parseable_unit(printed) or '-') if ascii else printed}]"
+
+
+def write_table(
+    path: str | Path, columns: list[str], rows: Any, comments: list[str] | tuple[str, ...] = ()
+) -> Path:
+    """Write a CSV table as every CSV of hydroservo is laid out: ``# `` comment lines first (what the table is,
+    its conditions), a header row of ``name [unit]`` columns, then one row per line; commas without spaces,
+    numbers at full precision (``repr``), NaN as an empty cell, text quoted only where it must be. UTF-8, with
+    a byte-order mark only if the table holds characters beyond ASCII (so that spreadsheets read them right).
+    """
+    import csv
+    import io
+    import math
+
+    def cell(value: Any) -> str:
+        if isinstance(value, str):
+            return value
+        if isinstance(value, int) and not isinstance(value, bool):
+            return str(value)
+        v = float(value)
+        return "" if math.isnan(v) else repr(v)
+
+    text = io.StringIO()
+    for line in comments:
+        text.write(f"# {line}\n")
+    writer = csv.writer(text, lineterminator="\n")
+    writer.writerow(columns)
+    writer.writerows([cell(v) for v in row] for row in rows)
+    body = text.getvalue()
+    path = Path(path)
+    path.write_text(body, encoding="utf-8" if body.isascii() else "utf-8-sig", newline="")
+    return path
 
 
 def write_csv(result: Result, path: str | Path, units: Any = None, ascii: bool = False) -> Path:
