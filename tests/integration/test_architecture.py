@@ -50,6 +50,7 @@ DELEGATIONS = {
     ("hydroservo.system.result", "analysis"),  # BatchResult.table
     ("hydroservo.analysis.frequency", "plotting"),  # FrequencyResponse.plot
     ("hydroservo.analysis.sensitivity", "plotting"),  # OneAtATime.plot, GlobalStudy.plot
+    ("hydroservo.analysis.sensitivity", "io"),  # a notebook's display of a study (io.notebook)
     ("hydroservo.system.system", "identification"),  # System.calibrate, System.plan_experiment
     ("hydroservo.identification.calibration", "plotting"),  # Calibration.plot
 }

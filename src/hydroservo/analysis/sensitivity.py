@@ -68,6 +68,12 @@ class OneAtATime:
     units: dict[str, str]
     failed: dict[tuple[str, int], str] = field(default_factory=dict)
 
+    def _repr_html_(self) -> str:
+        """In a notebook: the metrics of each level, the response family of the first factor."""
+        from hydroservo.io.notebook import study_html
+
+        return study_html(self)
+
     def plot(self, factor: str, signals: Sequence[str] | None = None, *, units: Mapping[str, str] | None = None,
              title: str = "", file: Any = None) -> Any:
         """The response family of ``factor``: a panel per signal, a line per level ([Efe2014] Figs. 5.14-5.19)."""
@@ -214,6 +220,12 @@ class GlobalStudy:
             "indices": [{k: (None if isinstance(v, float) and not np.isfinite(v) else v) for k, v in r.items()} for r in rows],
             "notes": self.notes,
         }
+
+    def _repr_html_(self) -> str:
+        """In a notebook: the indices with their confidence intervals, and their bar chart."""
+        from hydroservo.io.notebook import study_html
+
+        return study_html(self)
 
     def plot(self, *, title: str = "", file: Any = None) -> Any:
         """Bar chart of the indices with their confidence intervals, a panel per metric."""

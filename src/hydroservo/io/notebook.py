@@ -17,7 +17,7 @@ if TYPE_CHECKING:
     from hydroservo.system.result import BatchResult, Result
     from hydroservo.system.system import System
 
-__all__ = ["parameter_table", "signal_table", "system_html", "result_html", "batch_html"]
+__all__ = ["parameter_table", "signal_table", "dataframe_table", "system_html", "result_html", "batch_html", "study_html"]
 
 
 def _value(value: float, unit: str) -> str:
@@ -171,3 +171,48 @@ def _most_varied(batch: BatchResult) -> str | None:
         if differ > spread:
             best, spread = name, differ
     return best
+
+
+def dataframe_table(frame: Any, caption: str = "", index: bool = False) -> Table:
+    """A pandas DataFrame as a table (its index as the first column when ``index``)."""
+    from hydroservo.io.html import Table
+
+    columns = ([str(frame.index.name or "")] if index else []) + [str(c) for c in frame.columns]
+    rows = [([str(i)] if index else []) + [_plain(v) for v in row] for i, row in zip(frame.index, frame.itertuples(index=False))]
+    return Table(columns, rows, caption)
+
+
+def _plain(value: Any) -> Any:
+    """A cell of a frame: numbers as floats, the rest as text."""
+    if isinstance(value, bool):
+        return value
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return None if value is None else str(value)
+
+
+def study_html(study: Any) -> str:
+    """The notebook's display of a sensitivity study (:mod:`hydroservo.analysis.sensitivity`): a one-at-a-time
+    study's table of metrics by level and the response family of its first factor; a global study's indices
+    with their confidence intervals and its bar chart."""
+    import io
+
+    from hydroservo.io.html import Notice, Picture, fragment
+
+    buffer = io.BytesIO()
+    if hasattr(study, "indices"):  # GlobalStudy
+        title = (f"{study.method.capitalize()} sensitivity study: {', '.join(study.parameters)} "
+                 f"({study.runs.stats.get('runs', '?')} runs, {study.runs.stats.get('failed', 0)} failed)")
+        study.plot(file=buffer)
+        items: list[Any] = [Notice(n) for n in study.notes]
+        items += [Picture(buffer.getvalue(), "the indices (GlobalStudy.plot)"), dataframe_table(study.indices)]
+        return fragment(title, items)
+    factors = list(study.levels)
+    title = f"One-at-a-time study of {study.model!r}: " + ", ".join(f"{f} ({len(study.levels[f])} levels)" for f in factors)
+    items = [Notice(f"{factor} = {study.levels[factor][k]}: {why}") for (factor, k), why in study.failed.items()]
+    items.append(dataframe_table(study.table))
+    if factors:
+        study.plot(factors[0], file=buffer)
+        items.append(Picture(buffer.getvalue(), f"the responses at each level of {factors[0]} (OneAtATime.plot)"))
+    return fragment(title, items)

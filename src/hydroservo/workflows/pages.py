@@ -11,7 +11,7 @@ import math
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
-from hydroservo.io.notebook import parameter_table, signal_table
+from hydroservo.io.notebook import dataframe_table, parameter_table, signal_table
 
 if TYPE_CHECKING:
     from hydroservo.io.html import Item, Section, Table
@@ -96,25 +96,6 @@ def system_summary(system: System) -> list[Item]:
     if facts:
         items.append(Text("; ".join(facts)))
     return items
-
-
-def dataframe_table(frame: Any, caption: str = "", index: bool = False) -> Table:
-    """A pandas DataFrame as a table (its index as the first column when ``index``)."""
-    from hydroservo.io.html import Table
-
-    columns = ([str(frame.index.name or "")] if index else []) + [str(c) for c in frame.columns]
-    rows = [([str(i)] if index else []) + [_plain(v) for v in row] for i, row in zip(frame.index, frame.itertuples(index=False))]
-    return Table(columns, rows, caption)
-
-
-def _plain(value: Any) -> Any:
-    """A cell of a frame: numbers as floats, the rest as text."""
-    if isinstance(value, bool):
-        return value
-    try:
-        return float(value)
-    except (TypeError, ValueError):
-        return None if value is None else str(value)
 
 
 def files_section(files: Mapping[str, str]) -> Section | None:

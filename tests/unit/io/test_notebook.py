@@ -88,3 +88,18 @@ def test_a_batch_shows_its_runs_and_the_signal_they_differ_in_most(flight) -> No
     assert page.startswith('<div class="hydroservo">') and "3 of 3 runs succeeded" in page
     assert "<th>load.m [kg]</th>" in page and page.count("<td>ok</td>") == 3
     assert "in every run that did not fail" in page and "vi in every run" not in page  # not the command: it is the same
+
+
+def test_sensitivity_studies_show_their_table_and_plot() -> None:
+    from hydroservo.analysis.sensitivity import one_at_a_time, sobol
+
+    arm = hs.load_model("robot-arm")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        study = sobol(arm, {"valve.c_v": (1e-4, 2e-4), "load.m": ("15 kg", "35 kg")}, 8)
+        oat = one_at_a_time(arm, {"load.m": ["15 kg", "35 kg"]}, n_points=101)
+    page = study._repr_html_()
+    assert "Sobol sensitivity study: valve.c_v, load.m (32 runs, 0 failed)" in page
+    assert "<th>ST_conf</th>" in page and "data:image/png;base64," in page
+    page = oat._repr_html_()
+    assert "One-at-a-time study of 'robot-arm': load.m (2 levels)" in page and "data:image/png;base64," in page
