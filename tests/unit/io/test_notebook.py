@@ -102,4 +102,4 @@ def test_sensitivity_studies_show_their_table_and_plot() -> None:
     assert "Sobol sensitivity study: valve.c_v, load.m (32 runs, 0 failed)" in page
     assert "<th>ST_conf</th>" in page and "data:image/png;base64," in page
     page = oat._repr_html_()
-    assert "One-at-a-time study of 'robot-arm': load.m (2 levels)" in page and "data:image/png;base64," in page
+    assert "One-at-a-time study of &#x27;robot-arm&#x27;: load.m (2 levels)" in page and "data:image/png;base64," in page
