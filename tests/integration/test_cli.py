@@ -425,3 +425,15 @@ def test_sensitivity_runs_on_a_dask_scheduler_by_its_address(tmp_path, cli) -> N
     assert remote["indices"] == local["indices"]
     code, _, err = cli(*argv[:-1], "--scheduler", "tcp://127.0.0.1:9", "--out", str(tmp_path / "none"))
     assert code == 2 and "cannot connect" in err and not (tmp_path / "none").exists()
+
+
+def test_report_shows_a_result_file_in_its_units_or_in_those_asked_for(tmp_path, cli) -> None:
+    code, _, _ = cli("simulate", "flight-simulator", "--t-end", "0.2", "--write", "csv", "--out", str(tmp_path / "run"))
+    csv = str(tmp_path / "run" / "flight-simulator.csv")
+    code, out, _ = cli("report", csv, "--json", "--out", str(tmp_path / "a"))
+    assert code == 0 and json.loads(out)["signals"]["p2"]["unit"] == "psi"  # as the file is written
+    code, out, _ = cli("report", csv, "--units", "p=bar", "--json", "--out", str(tmp_path / "b"))
+    p2 = json.loads(out)["signals"]["p2"]
+    assert code == 0 and p2["unit"] == "bar" and 40 < p2["min"] < 60  # 772 psi = 53 bar at the start
+    code, _, err = cli("report", csv, "--units", "cyl.pX=bar", "--out", str(tmp_path / "c"))
+    assert code == 2 and "did you mean 'cyl.pB'" in err and not (tmp_path / "c").exists()

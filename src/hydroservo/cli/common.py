@@ -63,8 +63,8 @@ def component_inputs(text: str | None, what: str = "--inputs") -> list[str]:
     return names
 
 
-def add_unit_options(p: Any) -> None:
-    """``--units``, ``--si`` and ``--ascii``: the units results are shown and written in."""
+def add_unit_options(p: Any, csv: bool = True) -> None:
+    """``--units``, ``--si`` and (with ``csv``) ``--ascii``: the units results are shown and written in."""
     p.add_argument(
         "--units",
         default=None,
@@ -73,7 +73,8 @@ def add_unit_options(p: Any) -> None:
         "a quantity's (p=bar, x=mm, v=mm/s, Q=L/min, F=kN) or a signal's (cyl.pA=psi), comma-separated",
     )
     p.add_argument("--si", action="store_true", help="show and write every result in SI units instead")
-    p.add_argument("--ascii", action="store_true", help="CSV unit names in ASCII (m^3/s), without a byte-order mark")
+    if csv:
+        p.add_argument("--ascii", action="store_true", help="CSV unit names in ASCII (m^3/s), without a byte-order mark")
 
 
 def add_output_options(p: Any, default: str) -> None:

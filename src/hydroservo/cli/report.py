@@ -6,8 +6,9 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, execute
+from hydroservo.cli.common import add_output_options, add_unit_options, execute
 from hydroservo.cli.progress import progress_bars
+from hydroservo.errors import ParameterError
 
 __all__ = ["add_parsers"]
 
@@ -15,8 +16,10 @@ __all__ = ["add_parsers"]
 def cmd_report(args: argparse.Namespace) -> int:
     from hydroservo.workflows.report import ReportOf
 
+    if args.si and args.units:
+        raise ParameterError(f"--si and --units {args.units!r}: give one of them")
     job = ReportOf(args.source, args.set, t_end=args.t_end, accuracy=args.accuracy,
-                   validation=not args.no_validation, cli=True)
+                   validation=not args.no_validation, units="si" if args.si else args.units, cli=True)
     return execute(job, args, progress_bars(args))
 
 
@@ -47,6 +50,7 @@ def add_parsers(sub: Any) -> None:
                    help="deviation wanted, relative to each signal's range: 1e-3 or 0.1%% (default 1e-4)")
     p.add_argument("--no-validation", action="store_true",
                    help="leave out the published figures' verdicts (they take a few seconds for some models)")
+    add_unit_options(p, csv=False)
     add_output_options(p, "hydroservo-NAME-report")
     p.add_argument("--json", action="store_true", help="print what the page shows as JSON")
     p.set_defaults(func=cmd_report)

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
+from hydroservo.errors import HydroservoError, ParameterError
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, footer, safe_name
 
 if TYPE_CHECKING:
@@ -137,7 +138,7 @@ class ResultReport(Report):
         return out
 
     def to_dict(self) -> dict[str, Any]:
-        return {"result": self.source, "signals": self.result.summary(), "files": self.files}
+        return {"result": self.source, "signals": self.result.summary(self.units), "files": self.files}
 
     def document(self) -> Page:
         from hydroservo.io.html import Page, Section
@@ -167,6 +168,9 @@ class ReportOf(Workflow):
         Deviation wanted, relative to each signal's range (default 1e-4).
     validation : bool
         Also check the published figures of a built-in model that has a validation (:mod:`hydroservo.validation`).
+    units : str or dict, optional
+        Units to show the signals in, over the model's own (a result file's: those it is written in);
+        ``"si"`` for SI (:class:`~hydroservo.units.UnitChoice`).
     """
 
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "validation": "--no-validation"}
@@ -176,6 +180,7 @@ class ReportOf(Workflow):
     t_end: float | str | None = None
     accuracy: float | str | None = None
     validation: bool = True
+    units: str | Mapping[str, str] | None = None
 
     def __post_init__(self) -> None:
         from hydroservo.system.system import System
@@ -187,9 +192,14 @@ class ReportOf(Workflow):
 
             self.result = read_csv(str(self.source))
             self.stem = safe_name(self.result.model)
+            try:
+                self.shown = self.result.shown_units(self.units)
+            except HydroservoError as exc:
+                raise ParameterError(f"{self.name('units')}: {str(exc).split(': ', 1)[-1]}") from None
         else:
+            si = isinstance(self.units, str) and self.units.strip().lower() == "si"
             self.job = Simulate(self.source, self.sets, t_end=self.t_end, accuracy=self.accuracy, write="none",
-                                cli=self.cli)
+                                units=None if si else self.units, si=si, cli=self.cli)
             self.stem = safe_name(self.job.system.name)
 
     def folder(self) -> str:
@@ -200,7 +210,7 @@ class ReportOf(Workflow):
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> ModelReport | ResultReport:
         if self.is_result:
-            return ResultReport(str(self.source), self.result, result_panels(self.result), {})
+            return ResultReport(str(self.source), self.result, result_panels(self.result), self.shown)
         if progress is not None:
             progress("simulating")
         simulation = self.job.run()
