@@ -81,6 +81,7 @@ def registry() -> pint.UnitRegistry:
     # Hydraulic shorthands that pint does not define under these names.
     reg.define("lpm = liter / minute = L_min")
     reg.define("rev = revolution")
+    reg.define("gpm = gallon / minute")  # US gallons
     # Absolute pressures (hydroservo's pressures are gauge): the atmosphere is 101325 Pa.
     reg.define("Pa_abs = Pa; offset: -101325")
     reg.define("bar_abs = 100000 * Pa; offset: -101325 = bara")
@@ -544,7 +545,7 @@ def _printed_pint(unit: str) -> str:
     """pint's short printed form, with the litre written ``L`` as engineers write it (pint prints ``l``)."""
     if unit == "":
         return "-"
-    return re.sub(r"(?<![\w°µΩ])l(?![\w°µΩ])", "L", f"{_unit(unit):~P}")
+    return re.sub(r"(?<![\w°µΩ])([mcdµ]?)l(?![\w°µΩ])", r"\1L", f"{_unit(unit):~P}")
 
 
 def format_quantity(value: float, unit: str) -> str:
@@ -570,9 +571,29 @@ QUANTITIES = {
 }
 
 
+#: Names of angle units: pint counts an angle as no dimension (``rad/s`` is ``1/s``, ``cm^3/rev`` a volume), but a
+#: signal per radian is no signal per second, nor a displacement per revolution a volume: a choice of display
+#: units keeps them apart (:func:`_dimension_key`).
+_ANGLES = ("rad", "radian", "rev", "revolution", "deg", "degree", "turn", "cycle", "rpm", "grad", "arcmin", "arcsec")
+_FACTOR = re.compile(r"([/*]?)\s*([^\W\d][\w°µΩ]*)(?:\s*(?:\^|\*\*)\s*\(?([-+]?[\d.]+)\)?)?")
+
+
+def _angle_exponent(unit: str) -> float:
+    """The power of angle in ``unit`` as written: ``rad/s`` 1, ``cm^3/rev`` -1, ``rpm`` 1, ``Hz`` 0."""
+    total = 0.0
+    for sign, name, power in _FACTOR.findall(unit):
+        if name in _ANGLES:
+            total += (-1.0 if sign == "/" else 1.0) * (float(power) if power else 1.0)
+    return total
+
+
 def _dimension_key(unit: str) -> tuple[tuple[str, float], ...]:
-    """The dimension of ``unit`` as a hashable key (exponents of the SI base units)."""
-    return tuple(sorted(si_definition(unit)[2].items()))
+    """The dimension of ``unit`` as a hashable key: the exponents of the SI base units, and of angle."""
+    dims = dict(si_definition(unit)[2])
+    angle = _angle_exponent(unit)
+    if angle:
+        dims["angle"] = angle
+    return tuple(sorted(dims.items()))
 
 
 class UnitChoice:
@@ -580,7 +601,8 @@ class UnitChoice:
 
     Read from text as the ``--units`` option takes it: items separated by commas, each a unit that applies to
     every signal of its dimension (``"bar"``), a quantity and its unit (``"p=bar"``, ``"Q=L/min"``; the names
-    of :data:`QUANTITIES`), or a signal and its unit (``"cyl.pA=psi"``). A signal's own unit wins over its
+    of :data:`QUANTITIES`), or a signal and its unit (``"cyl.pA=psi"``). A length unit brings velocities and
+    accelerations in that length per second (squared) unless they are chosen too. A signal's own unit wins over its
     dimension's; :meth:`over` puts one choice before another (the user's before the model's). ``si`` shows
     every signal in SI. Signals with no unit chosen are shown in SI, as hydroservo carries them.
 
@@ -588,7 +610,7 @@ class UnitChoice:
     --------
     >>> choice = UnitChoice.parse("p=bar, mm, cyl.pA=psi")
     >>> choice.unit("cyl.pA", "Pa"), choice.unit("cyl.pB", "Pa"), choice.unit("load.x", "m"), choice.unit("load.v", "m/s")
-    ('psi', 'bar', 'mm', 'm/s')
+    ('psi', 'bar', 'mm', 'mm/s')
     >>> UnitChoice.parse("L/min").over(UnitChoice.parse("Q=gal/min, bar")).unit("valve.QA", "m^3/s")
     'L/min'
     """
@@ -647,13 +669,17 @@ class UnitChoice:
                 choice.dimensions[dims] = unit
             else:
                 choice.signals[key] = unit
+        _derive_speeds(choice.dimensions)
         return choice
 
     def over(self, other: UnitChoice) -> UnitChoice:
         """This choice, completed by ``other`` where it chooses nothing: for each signal, this choice's unit of
-        the signal, else of its dimension, else ``other``'s. If either is :attr:`SI`, the result is."""
-        if self.si or other.si:
+        the signal, else of its dimension, else ``other``'s. If this is :attr:`SI`, the result is; if only
+        ``other`` is, this choice stands alone (what it does not choose is SI)."""
+        if self.si:
             return UnitChoice.SI
+        if other.si:
+            return UnitChoice(self.signals, self.dimensions)
         merged = UnitChoice(other.signals, other.dimensions)
         for name in list(merged.signals):  # a dimension chosen here beats a signal's unit there
             if _dimension_key(merged.signals[name]) in self.dimensions:
@@ -729,8 +755,13 @@ def inferred_units(texts: Any) -> UnitChoice:
         found = counts.setdefault(key, {})
         found[unit] = found.get(unit, 0) + 1
     chosen = {key: max(units, key=lambda u: units[u]) for key, units in counts.items()}  # first of equals
+    _derive_speeds(chosen)
+    return UnitChoice(dimensions={k: u for k, u in chosen.items() if u != coherent_unit(u)})
+
+
+def _derive_speeds(chosen: dict[tuple[tuple[str, float], ...], str]) -> None:
+    """Velocities and accelerations in the chosen length unit per second (squared), unless chosen themselves."""
     length = chosen.get(_dimension_key("m"))
-    if length is not None and length != "m":
+    if length is not None and length != "m" and re.fullmatch(r"[^\W\d][\w°µΩ]*", length):
         chosen.setdefault(_dimension_key("m/s"), f"{length}/s")
         chosen.setdefault(_dimension_key("m/s^2"), f"{length}/s^2")
-    return UnitChoice(dimensions={k: u for k, u in chosen.items() if u != coherent_unit(u)})

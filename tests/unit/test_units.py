@@ -96,3 +96,32 @@ def test_a_built_in_model_runs_without_building_the_registry() -> None:
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "False"
+
+
+# -- display units (UnitChoice): what a review found ----------------------------------------------------------------
+def test_angles_keep_their_own_dimension_in_a_choice_of_units() -> None:
+    from hydroservo.errors import UnitError
+    from hydroservo.units import UnitChoice, inferred_units
+
+    # pint counts an angle as nothing: cm^3/rev would pass for a volume and Hz for rad/s (a factor 2 pi off)
+    choice = inferred_units(["25 cm^3/rev", "4 L", "1500 rpm"])
+    assert choice.unit("acc.V_oil", "m^3") == "L" and choice.unit("pump.D", "m^3/rev") == "cm^3/rev"
+    with pytest.raises(UnitError, match="not a unit of speed"):
+        UnitChoice.parse("speed=Hz")
+    assert UnitChoice.parse("speed=rpm").unit("motor.omega", "rad/s") == "rpm"
+    assert UnitChoice.parse("Hz").unit("motor.omega", "rad/s") == "rad/s"
+
+
+def test_a_model_that_asks_for_si_gives_way_to_the_user() -> None:
+    from hydroservo.units import UnitChoice
+
+    model = UnitChoice.parse("si")
+    assert UnitChoice.parse("bar").over(model).unit("cyl.pA", "Pa") == "bar"
+    assert UnitChoice.parse("si").over(UnitChoice.parse("bar")).unit("cyl.pA", "Pa") == "Pa"
+
+
+def test_a_length_brings_its_velocities_and_accelerations() -> None:
+    from hydroservo.units import UnitChoice
+
+    choice = UnitChoice.parse("mm, a=m/s^2")
+    assert (choice.unit("x", "m"), choice.unit("v", "m/s"), choice.unit("a", "m/s^2")) == ("mm", "mm/s", "m/s^2")

@@ -119,6 +119,45 @@ def _latex_to_text() -> Any:
     return LatexNodes2Text(math_mode="text", latex_context=db, strict_latex_spaces="based-on-source")
 
 
+def _group_end(text: str, k: int) -> int:
+    """The index after the brace group that starts at ``text[k]`` (``{``), or after the one character there."""
+    if k >= len(text) or text[k] != "{":
+        return k + 1
+    depth = 0
+    for j in range(k, len(text)):
+        depth += {"{": 1, "}": -1}.get(text[j], 0)
+        if depth == 0:
+            return j + 1
+    return len(text)
+
+
+def _readable(latex: str) -> str:
+    r"""LaTeX made unambiguous as plain text before it is rendered: a fraction that a factor follows is put in
+    brackets (``[a/b](c + d)``, not ``a/b(c + d)``), a symbol after a symbol gets a space (``A_A ẋ``, not
+    ``A_Aẋ``), a third derivative is primed (``x‴``)."""
+    latex = re.sub(r"\\dddot\s*(\{[^{}]*\}|[A-Za-z])", lambda m: m.group(1).strip("{}") + "‴", latex)
+    out, k = [], 0
+    while k < len(latex):
+        if latex.startswith("\\frac", k) or latex.startswith("\\dfrac", k):
+            start = k
+            k = latex.index("frac", k) + 4
+            for _ in range(2):  # numerator, denominator
+                while k < len(latex) and latex[k] == " ":
+                    k += 1
+                k = _group_end(latex, k)
+            inner = latex[start:k]
+            head = inner.index("frac") + 4
+            frac = inner[:head] + _readable(inner[head:])  # fractions inside fractions
+            rest = re.sub(r"^(\s|\\,)+", "", latex[k:])
+            factor = bool(re.match(r"[\w(\[{]|\\(?!\\|,|quad|qquad|right|end)", rest))
+            out.append(f"[{frac}]" if factor else frac)
+            continue
+        out.append(latex[k])
+        k += 1
+    spaced = re.sub(r"(?<=[\w}'])\s*\\(?=(?!right|end|quad|qquad)[A-Za-z])", r" \\", "".join(out))
+    return spaced
+
+
 def equation_text(latex: str) -> str:
     """LaTeX as a terminal shows it: Greek letters, dots and roots in Unicode, fractions as ``a/(b c)``, one line
     per line of an aligned block.
@@ -126,7 +165,7 @@ def equation_text(latex: str) -> str:
     >>> equation_text(r"\\dot p = \\frac{Q}{C(p)}, \\qquad C(p) = \\frac{V_{dead}}{\\beta_e} + \\frac{V_g}{\\kappa\\,p_{abs}}")
     'ṗ = Q/C(p),      C(p) = V_dead/β_e + V_g/(κ p_abs)'
     """
-    lines = [line.replace("&", "").replace("\n", " ") for line in re.split(r"\\\\", latex)]
+    lines = [_readable(line.replace("&", "").replace("\n", " ")) for line in re.split(r"\\\\", latex)]
     shown = [" ".join(_latex_to_text().latex_to_text(line).split(" \n")).strip() for line in lines]
     return "\n".join(line for line in shown if line)
 

@@ -56,32 +56,24 @@ def parameter_table(system: System) -> Table:
                  caption="Values as given, in their units; SI where no unit was given.")
 
 
-def _unit_of(result: Result, name: str, units: Mapping[str, str]) -> tuple[float, str]:
-    """The factor from SI and the unit a signal is shown in: its plot unit, else SI."""
-    from hydroservo.units import from_si, si_unit
-
-    own = result.units.get(name, "")
-    if name in units:
-        try:
-            return float(from_si(1.0, own, units[name])), si_unit(units[name])
-        except Exception:  # noqa: BLE001 - a plot unit the model file got wrong is refused elsewhere; show SI
-            pass
-    return 1.0, si_unit(own)
-
-
 def signal_table(result: Result, units: Mapping[str, str] | None = None, names: Sequence[str] | None = None) -> Table:
     """Final, minimum and maximum of each signal (``names``, default all), in its plot unit where ``units`` has one."""
     import numpy as np
 
     from hydroservo.io.html import Table
+    from hydroservo.units import si_unit
 
     units = units or {}
     rows = []
     for name in names if names is not None else list(result.data):
-        factor, unit = _unit_of(result, name, units)
-        values = np.asarray(result[name], dtype=float) * factor
+        unit = units.get(name) or result.units.get(name, "")
+        try:
+            values = np.asarray(result.get(name, unit), dtype=float)
+        except Exception:  # noqa: BLE001 - a plot unit the model file got wrong is refused elsewhere; show SI
+            unit = result.units.get(name, "")
+            values = np.asarray(result[name], dtype=float)
         description = result.descriptions.get(name, "")
-        rows.append([name, unit, float(values[-1]), float(np.min(values)), float(np.max(values)), description])
+        rows.append([name, si_unit(unit), float(values[-1]), float(np.min(values)), float(np.max(values)), description])
     return Table(["signal", "unit", "final", "min", "max", "meaning"], rows)
 
 
@@ -115,9 +107,10 @@ def result_html(result: Result) -> str:
     main = list(dict.fromkeys(n for panel in result.panels for n in panel if n in shown)) or list(shown)[:8]
     items: list[Any] = [Notice(str(w)) for w in result.warnings]
     items.append(signal_table(result, shown, main))
-    buffer = io.BytesIO()
-    result.plot(file=buffer)
-    items.append(Picture(buffer.getvalue(), "the main signals, in the model's units (Result.plot)"))
+    if main:
+        buffer = io.BytesIO()
+        result.plot(file=buffer)
+        items.append(Picture(buffer.getvalue(), "the main signals, in the model's units (Result.plot)"))
     return fragment(result_title(result), items, [(f"All {len(shown)} signals", [signal_table(result, shown)])])
 
 

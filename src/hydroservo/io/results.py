@@ -27,15 +27,23 @@ class Result(Protocol):
     def shown(self, name: str, unit: str) -> np.ndarray: ...
 
 
+#: ASCII spellings of the characters unit names may hold beyond ASCII.
+_ASCII_UNITS = str.maketrans({"µ": "u", "μ": "u", "Ω": "ohm", "°": "deg", "²": "^2", "³": "^3", "·": "*", "⋅": "*"})
+
+
 def csv_header(name: str, unit: str, ascii: bool = False) -> str:
-    """A column's header, ``name [unit]``: the unit printed (``m³/s``), or as unit text (``m^3/s``) with
-    ``ascii``; every CSV hydroservo writes names its columns so.
+    """A column's header, ``name [unit]``: the unit printed (``m³/s``), or with ``ascii`` as unit text in ASCII
+    that the unit parser reads back (``m^3/s``, ``um``, ``degC``); every CSV hydroservo writes names its columns so.
 
     >>> csv_header("valve.QA", "m^3/s"), csv_header("valve.QA", "m^3/s", ascii=True), csv_header("eps", "")
     ('valve.QA [m³/s]', 'valve.QA [m^3/s]', 'eps [-]')
+    >>> csv_header("load.x", "µm", ascii=True), csv_header("oil.T", "degC", ascii=True)
+    ('load.x [um]', 'oil.T [degC]')
     """
-    printed = si_unit(unit)
-    return f"{name} [{(parseable_unit(printed) or '-') if ascii else printed}]"
+    if ascii:
+        text = unit.strip().translate(_ASCII_UNITS) or "-"
+        return f"{name} [{text}]"
+    return f"{name} [{si_unit(unit)}]"
 
 
 def write_table(
@@ -177,8 +185,9 @@ def read_csv(path: str | Path, model: str | None = None) -> Any:
     for i, (name, unit) in enumerate(zip(names, units)):
         if not i:
             continue
+        unit = {"°C": "degC", "°F": "degF", "degree_Celsius": "degC", "degree_Fahrenheit": "degF"}.get(unit, unit)
         try:
-            si = coherent_unit(unit)
+            si = "degC" if unit in ("degC", "degF", "K") else coherent_unit(unit)  # temperatures are degC inside
             scale, offset = from_si(1.0, si, unit), from_si(0.0, si, unit)
         except HydroservoError as exc:
             raise ParameterError(f"result file {str(path)!r}: column {header[i]!r}: {exc}") from None

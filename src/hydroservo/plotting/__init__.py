@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["pyplot", "finish", "lpm"]
+__all__ = ["pyplot", "finish", "lpm", "panel_units"]
 
 
 def pyplot(file: Any) -> Any:
@@ -74,6 +74,24 @@ def _show(plt: Any) -> None:
         )
         return
     plt.show()
+
+
+def panel_units(own: dict[str, str], panel: list[str], units: dict[str, str]) -> list[str]:
+    """The unit each signal of a plot panel is drawn in: the first signal's (its unit in ``units``, else its own
+    ``own`` unit) for every signal of that dimension, so that one axis has one unit; a signal of another
+    dimension keeps its own choice.
+
+    >>> panel_units({"a": "Pa", "b": "Pa", "c": "m"}, ["a", "b", "c"], {"a": "psi", "b": "bar"})
+    ['psi', 'psi', 'm']
+    """
+    from hydroservo.units import same_dimension
+
+    first = units.get(panel[0]) or own.get(panel[0], "")
+    out = []
+    for name in panel:
+        mine = units.get(name) or own.get(name, "")
+        out.append(first if mine != first and own.get(name, "") and same_dimension(first, mine) else mine)
+    return out
 
 
 def lpm(q: Any) -> Any:

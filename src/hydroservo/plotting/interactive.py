@@ -101,7 +101,8 @@ def result_figure(
 
     Hovering shows every signal of the panel at that time, each with its unit.
     """
-    from hydroservo.units import from_si, si_unit
+    from hydroservo.plotting import panel_units
+    from hydroservo.units import si_unit
 
     units = units or {}
     chosen = [list(p) for p in (panels or result.panels or [[n] for n in result.names[:6]])]
@@ -114,12 +115,10 @@ def result_figure(
     for row, panel in enumerate(chosen, start=1):
         yaxis = "y" if row == 1 else f"y{row}"
         shown_units = []
-        for name in panel:
-            own = result.units.get(name, "")
-            unit = si_unit(units.get(name) or own)
-            factor = from_si(1.0, own, units[name]) if name in units else 1.0
+        for name, drawn in zip(panel, panel_units(result.units, panel, dict(units))):
+            unit = si_unit(drawn)
             shown_units.append(unit)
-            x, y = _thin(t, np.asarray(result[name], dtype=float) * factor)
+            x, y = _thin(t, np.asarray(result.get(name, drawn), dtype=float))
             described = result.descriptions.get(name, "")
             label = f"{name} [{unit}]"
             data.append({

@@ -6,7 +6,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, BinaryIO, Protocol
 
-from hydroservo.plotting import finish, pyplot
+from hydroservo.plotting import finish, panel_units, pyplot
 from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
@@ -53,13 +53,12 @@ def plot_result(
     panels = [[n] if isinstance(n, str) else list(n) for n in chosen]
     fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(7.5, 1.9 + 1.6 * len(panels)), squeeze=False)
     for ax, panel in zip(axes[:, 0], panels):
-        shown = []
-        for n in panel:
-            unit = (units or {}).get(n)
-            shown.append(si_unit(unit if unit else result.units.get(n, "")))
+        drawn = panel_units(result.units, panel, dict(units or {}))
+        for n, unit in zip(panel, drawn):
             described = result.descriptions.get(n, "")
             ax.plot(result.t, result.get(n, unit), label=f"{n}: {described}" if described and described != n else n)
-        ax.set_ylabel(f"{', '.join(panel)} [{shown[0]}]")
+        shown = [si_unit(u) for u in drawn]
+        ax.set_ylabel(f"{', '.join(panel)} [{' / '.join(dict.fromkeys(shown))}]")
         ax.legend(loc="best", fontsize="small", framealpha=0.8)
         ax.grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel("t [s]")

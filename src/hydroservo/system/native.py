@@ -359,34 +359,35 @@ def _build(folder: Path, sources: Sequence[str], flags: Sequence[str], link: Seq
     into ``target``; the object files are removed."""
     command = compiler()
     objects = [f"{Path(source).stem}.hydroservo.o" for source in sources]
+    running: list[subprocess.Popen[str]] = []
     try:
-        running = [
-            subprocess.Popen(
-                [*command, *flags, "-c", source, "-o", obj],
-                cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-            )
-            for source, obj in zip(sources, objects)
-        ]
-    except OSError as exc:
-        raise ParameterError(f"C compiler {command[0]!r}: could not run ({exc})") from None
-    failures = []
-    for process in running:
         try:
-            output, _ = process.communicate(timeout=600)
-        except subprocess.TimeoutExpired:
-            process.kill()
-            output, _ = process.communicate()
-            failures.append((-1, "timed out after 600 s"))
-            continue
-        if process.returncode != 0:
-            failures.append((process.returncode, output))
-    try:
+            for source, obj in zip(sources, objects):
+                running.append(subprocess.Popen(
+                    [*command, *flags, "-c", source, "-o", obj],
+                    cwd=folder, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                ))
+        except OSError as exc:
+            raise ParameterError(f"C compiler {command[0]!r}: could not run ({exc})") from None
+        failures = []
+        for process in running:
+            try:
+                output, _ = process.communicate(timeout=600)
+            except subprocess.TimeoutExpired:
+                failures.append((-1, "timed out after 600 s"))
+                continue
+            if process.returncode != 0:
+                failures.append((process.returncode, output))
         if failures:
             code, output = failures[0]
             tail = "\n".join(output.strip().splitlines()[-12:])
             raise ParameterError(f"C compiler {command[0]!r} failed on the exported sources (exit {code}):\n{tail}")
         _run_compiler(folder, [*command, *flags, *link, *objects, "-lm"])
-    finally:
+    finally:  # on any failure or interruption: no compiler left running, no object file left behind
+        for process in running:
+            if process.poll() is None:
+                process.kill()
+                process.communicate()
         for obj in objects:
             (folder / obj).unlink(missing_ok=True)
     return folder / target

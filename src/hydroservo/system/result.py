@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 import numpy as np
 
 from hydroservo.errors import ParameterError, SolverError, UnitError, did_you_mean
-from hydroservo.units import UnitChoice, from_si, si_unit
+from hydroservo.units import UnitChoice, from_si, same_dimension, si_unit
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -83,12 +83,17 @@ class _Signals:
         ParameterError
             If ``units`` names a signal the result does not have.
         """
-        choice = UnitChoice.parse(units, what="units").over(self.unit_choice)
-        unknown = UnitChoice.parse(units, what="units").unknown(self.names)
+        asked = UnitChoice.parse(units, what="units")
+        choice = asked.over(self.unit_choice)
+        unknown = asked.unknown(self.names)
         if unknown:
             raise ParameterError(
                 f"units: no signal {unknown[0]!r} in the result of {self.model!r}{did_you_mean(unknown[0], self.names)}"
             )
+        for name, unit in asked.signals.items():
+            own = self.units.get(name, "")
+            if not same_dimension(unit, own):
+                raise ParameterError(f"units: {name}={unit}: {name} is in {si_unit(own)}; expected a unit of that dimension")
         return {name: choice.unit(name, self.units.get(name, "")) for name in self.names}
 
     def shown(self, name: str, unit: str) -> np.ndarray:
@@ -102,19 +107,17 @@ class _Signals:
         return np.asarray((scale - offset) * values + offset)
 
     def get(self, name: str, unit: str | None = None) -> np.ndarray:
-        """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``)."""
+        """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``; offsets too: ``"bar_abs"``, ``"degF"``)."""
         values = self[name]
         if unit is None:
             return values
         own = self.units.get(name, "")
         try:
-            factor = from_si(1.0, own, unit)
+            return self.shown(name, unit)
         except UnitError:
             raise UnitError(
                 f"signal {name!r} of {self.model!r} is in {si_unit(own)}: cannot show it in {unit!r}"
             ) from None
-        scaled: np.ndarray = np.asarray(factor) * values
-        return scaled
 
 
 class Result(_Signals):
@@ -139,6 +142,7 @@ class Result(_Signals):
     ) -> None:
         self.t = t
         self._init_signals(data, outputs, pending)
+        self.unit_choice = UnitChoice()
         self.units = units
         self.descriptions = descriptions
         self.stats = stats
@@ -254,6 +258,7 @@ class BatchResult(_Signals):
     ) -> None:
         self.t, self.units, self.params, self.stats, self.model = t, units, params, stats, model
         self._init_signals(data, outputs, pending)
+        self.unit_choice = UnitChoice()
         self.failed: dict[int, str] = dict(failed or {})
         #: The parameters the batch varied, and the units of all parameters (SI).
         self.varied = list(varied)

@@ -303,7 +303,8 @@ def _refuse_ambiguous_number(comp: Any, pname: str, val: Any, shown: str, what: 
     if unit and unit != coherent_unit(unit):
         raise ParameterError(
             f"{shown}: the model gives {comp.name}.{pname} in {unit} ({given!r}), and a bare number would be taken "
-            f"in SI ({coherent_unit(spec.unit)}); give the unit: {what} \"{comp.name}.{pname}={val.strip()} {unit}\""
+            f"in SI ({coherent_unit(spec.unit)}); give the unit you mean: {what} \"{comp.name}.{pname}={val.strip()} "
+            f"{unit}\" or {what} \"{comp.name}.{pname}={val.strip()} {coherent_unit(spec.unit)}\""
         )
 
 

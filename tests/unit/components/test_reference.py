@@ -58,8 +58,10 @@ def test_equations_print_in_unicode_in_a_terminal_and_as_latex_in_the_docs() -> 
 
     cyl = reference("Cylinder")
     shown = text(cyl)
-    assert "ṗ_A = E'(p_A)/V_A(Q_A - A_Aẋ - Q_Li - Q_LeA),    V_A = V_A0 + k_V A_A x" in shown
-    assert "ṗ_B = E'(p_B)/V_B(" in shown  # an aligned block: one line per line
+    # a fraction a factor follows is bracketed, symbols side by side are spaced: no reading E'/(V_A (Q_A ...))
+    assert "ṗ_A = [E'(p_A)/V_A](Q_A - A_A ẋ - Q_Li - Q_LeA),    V_A = V_A0 + k_V A_A x" in shown
+    assert "ṗ_B = [E'(p_B)/V_B](" in shown  # an aligned block: one line per line
+    assert "x‴_v = [K_2/A_v]ω_h^2 x_f - 2 δ_h ω_h ẍ_v" in text(reference("FlapperNozzleSpool"))
     for ref in catalogue():  # no LaTeX left in any terminal text: no \frac, no \dot, no :math:
         assert "\\" not in ref.notes and ":math:" not in ref.notes and ".. math::" not in ref.notes, ref.name
     page = markdown(cyl)

@@ -59,3 +59,53 @@ def test_a_compiled_model_is_shared_by_structure_only() -> None:
     b = hs.System("a")
     b.add(hs.components.Step("s", unit="bar", amplitude=1.0))
     assert a.build() is not b.build() and a.build().units["s.y"] != b.build().units["s.y"]
+
+
+def test_offset_units_hold_in_plots_tables_and_files(tmp_path) -> None:
+    # an absolute pressure is the gauge one plus the atmosphere: every way a result is shown adds it
+    import warnings
+
+    import hydroservo as hs
+    from hydroservo.io.notebook import signal_table
+    from hydroservo.io.results import read_csv
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        r = hs.load_model("robot-arm").simulate(t_end=0.1, n_points=11)
+    assert r.get("tank.p", "bar_abs")[0] == pytest.approx(1.01325)
+    assert r.summary("p=bar_abs")["tank.p"]["final"] == pytest.approx(1.01325)
+    fig = r.plot(["tank.p"], units="p=bar_abs", file=tmp_path / "p.png")
+    assert fig.axes[0].lines[0].get_ydata()[0] == pytest.approx(1.01325)
+    row = next(row for row in signal_table(r, r.shown_units("p=bar_abs")).rows if row[0] == "cyl.pA")
+    assert row[2] == pytest.approx(r.get("cyl.pA", "bar")[-1] + 1.01325)
+    # ASCII files read back, whatever unit was chosen (um, not µm turned into ?m)
+    path = r.to_csv(tmp_path / "r.csv", units="um, p=bar_abs", ascii=True)
+    assert path.read_bytes().isascii() and b"load.x [um]" in path.read_bytes()
+    back = read_csv(path)
+    assert back["load.x"] == pytest.approx(r["load.x"], rel=1e-9) and back["cyl.pA"] == pytest.approx(r["cyl.pA"], rel=1e-8)
+
+
+def test_one_axis_one_unit() -> None:
+    import hydroservo as hs
+
+    r = hs.load_model("robot-arm").simulate(t_end=0.05, n_points=6)
+    import matplotlib.pyplot as plt
+
+    with pytest.warns(UserWarning, match="not shown"):
+        fig = r.plot(["cyl.pA", "cyl.pB"], units="cyl.pA=psi")
+    plt.close(fig)
+    assert fig.axes[0].get_ylabel() == "cyl.pA, cyl.pB [psi]"
+    ratio = fig.axes[0].lines[1].get_ydata()[-1] / r["cyl.pB"][-1]
+    assert ratio == pytest.approx(1 / 6894.757, rel=1e-6)  # pB drawn in psi too, not in the model's bar
+    with pytest.raises(hs.ParameterError, match="cyl.pA is in Pa"):
+        r.summary("cyl.pA=mm")
+
+
+def test_a_result_file_keeps_temperatures_in_degc(tmp_path) -> None:
+    from hydroservo.io.results import read_csv
+
+    path = tmp_path / "T.csv"
+    path.write_text("t [s],oil.T [°C],oil.p [bar]\n0,40,1\n1,41,2\n", encoding="utf-8")
+    back = read_csv(path)
+    assert back.units["oil.T"] == "degC" and back["oil.T"][0] == pytest.approx(40.0)
+    assert back["oil.p"][1] == pytest.approx(2e5)
