@@ -103,7 +103,9 @@ class _Parser(argparse.ArgumentParser):
 
 def build_parser() -> argparse.ArgumentParser:
     parser = _Parser(
-        prog="hydroservo", description="Electro-hydraulic servo systems: simulate, export, validate."
+        prog="hydroservo", description="Electro-hydraulic servo systems: simulate, export, validate.",
+        epilog="The user guide is installed with hydroservo: hydroservo docs lists its pages, hydroservo docs NAME "
+        "prints one (a message naming docs/NAME.md means that page).",
     )
     parser.add_argument("--version", action="version", version=f"hydroservo {__version__}")
     parser.add_argument("--debug", action="store_true", help="show tracebacks on errors")

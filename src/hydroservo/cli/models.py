@@ -37,6 +37,12 @@ def cmd_cache(args: argparse.Namespace) -> int:
     return execute(Cache(clear=args.clear, cli=True), args)
 
 
+def cmd_docs(args: argparse.Namespace) -> int:
+    from hydroservo.workflows.docs import Docs
+
+    return execute(Docs(args.page, path_only=args.path, cli=True), args)
+
+
 def cmd_export(args: argparse.Namespace) -> int:
     from hydroservo.workflows.export import ExportModel
 
@@ -45,7 +51,7 @@ def cmd_export(args: argparse.Namespace) -> int:
 
 
 def add_parsers(sub: Any) -> None:
-    """Add ``models``, ``simulate`` and ``export``."""
+    """Add ``models``, ``cache``, ``simulate``, ``docs`` and ``export``."""
     p = sub.add_parser("models", help="list the built-in systems")
     p.set_defaults(func=cmd_models)
 
@@ -110,6 +116,16 @@ def add_parsers(sub: Any) -> None:
     )
     p.add_argument("--json", action="store_true", help="print signals, solver statistics and wall time as JSON")
     p.set_defaults(func=cmd_simulate)
+
+    p = sub.add_parser(
+        "docs",
+        help="the user guide: list its pages, or print one (the pages messages name, docs/NAME.md)",
+        description="The user guide's pages, installed with hydroservo: without a page, their names and titles.",
+    )
+    p.add_argument("page", nargs="?", default=None, metavar="PAGE", help="a page: validation, engine.md, ...")
+    p.add_argument("--path", action="store_true", help="print only where the page is")
+    p.add_argument("--json", action="store_true", help="print the folder and the pages as JSON")
+    p.set_defaults(func=cmd_docs)
 
     p = sub.add_parser("export", help="write a system as an editable TOML model file to stdout")
     p.add_argument("model", metavar="NAME_OR_FILE")

@@ -31,11 +31,13 @@ import functools
 import tomllib
 from dataclasses import dataclass
 from importlib import resources
+from pathlib import Path
 from typing import Any
 
 from hydroservo.errors import ParameterError
 
 __all__ = [
+    "guide_folder",
     "ParameterSet",
     "parameter_set",
     "parameter_sets",
@@ -138,3 +140,14 @@ def servovalves() -> dict[str, dict[str, str]]:
     the rated supply and current as printed."""
     with _ROOT.joinpath("servovalves.toml").open("rb") as f:
         return {name: dict(entry) for name, entry in tomllib.load(f).items()}
+
+
+def guide_folder() -> Path | None:
+    """Where the user guide's pages (``docs/NAME.md``, the pages the package's messages name) are: in the
+    installed package (a wheel carries them as ``hydroservo/docs``), else in the repository beside ``src/`` (a
+    clone, an editable install); None if neither holds them."""
+    package = Path(__file__).resolve().parents[1]
+    for folder in (package / "docs", package.parents[1] / "docs"):
+        if (folder / "validation.md").is_file():
+            return folder
+    return None
