@@ -42,6 +42,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "VACUUM",
+    "convert",
     "ABSOLUTE_ZERO",
     "registry",
     "unit_table",
@@ -452,6 +453,20 @@ def from_si(value: float, unit: str, to: str) -> float:
         raise UnitError(f"cannot express {si_unit(unit)} in {to!r}: {type(exc).__name__}") from None
 
 
+def convert(values: Any, unit: str, to: str) -> Any:
+    """``values`` (a number or an array) in ``unit`` expressed in ``to``, offsets included: the conversion is
+    linear, ``a * value + b``, ``b`` the offset of temperatures and absolute pressures (``"Pa"`` to
+    ``"bar_abs"``). A :class:`UnitError` if the dimensions differ.
+
+    >>> convert(2e5, "Pa", "bar"), round(convert(0.0, "Pa", "bar_abs"), 5), round(convert(100.0, "degC", "degF"), 9)
+    (2.0, 1.01325, 212.0)
+    """
+    if unit == to:
+        return values
+    offset = from_si(0.0, unit, to)
+    return (from_si(1.0, unit, to) - offset) * values + offset
+
+
 #: Coherent SI units by name, for :func:`coherent_unit` to prefer over pint's base-unit products.
 _COHERENT = ("m", "Pa", "N", "m^3/s", "m/s", "m/s^2", "m^3", "m^2", "s", "kg", "A", "V", "ohm", "N*m", "rad/s", "W", "J")
 
@@ -701,23 +716,35 @@ class UnitChoice:
         """The unit each signal is shown in: ``signal_units`` maps signal names to their SI units."""
         return {name: self.unit(name, unit) for name, unit in signal_units.items()}
 
-    def unknown(self, names: Any) -> list[str]:
-        """The signals this choice names that are not among ``names``."""
-        known = set(names)
-        return [n for n in self.signals if n not in known]
+    def check(self, signal_units: dict[str, str], what: str = "units") -> None:
+        """Refuse a unit chosen for a signal that ``signal_units`` (signal name -> its SI unit) does not hold, or
+        of another dimension than the signal's, with ``what`` (the option) naming the choice.
+
+        Raises
+        ------
+        ParameterError
+            Naming the option, the signal and its unit, with close matches for an unknown name.
+        """
+        from hydroservo.errors import ParameterError, did_you_mean
+
+        for name, unit in self.signals.items():
+            if name not in signal_units:
+                raise ParameterError(f"{what} {name}={unit}: no signal {name!r}{did_you_mean(name, signal_units)}")
+            own = signal_units[name]
+            try:
+                alike = same_dimension(unit, own)
+            except UnitError as exc:
+                raise ParameterError(f"{what} {name}={unit}: {exc}") from None
+            if not alike:
+                raise ParameterError(
+                    f"{what} {name}={unit}: {name} is in {si_unit(own)}; expected a unit of that dimension"
+                )
 
     def items(self) -> list[str]:
         """The choice as the items of its text (``["cyl.pA=psi", "bar"]``)."""
         if self.si:
             return ["si"]
         return [f"{name}={unit}" for name, unit in self.signals.items()] + list(self.dimensions.values())
-
-    def __bool__(self) -> bool:
-        return self.si or bool(self.signals or self.dimensions)
-
-    def __eq__(self, other: object) -> bool:
-        return isinstance(other, UnitChoice) and (self.si, self.signals, self.dimensions) == (
-            other.si, other.signals, other.dimensions)
 
     def __repr__(self) -> str:
         return f"UnitChoice({', '.join(self.items())!r})"

@@ -52,7 +52,7 @@ def test_cli_simulate_csv_reads_back_as_the_result(tmp_path, cli) -> None:
     back = read_csv(path)  # in SI again, whatever units the file is in
     for name in ("y", "p2", "spool.xv", "valve.QA"):  # ten significant digits
         column = next(c for c in table.columns if c.startswith(f"{name} ["))
-        assert table[column].to_numpy() == pytest.approx(result.shown(name, shown[name]), rel=1e-9, abs=1e-300)
+        assert table[column].to_numpy() == pytest.approx(result.get(name, shown[name]), rel=1e-9, abs=1e-300)
         assert back[name] == pytest.approx(result[name], rel=1e-9, abs=1e-300)
     assert back.shown_units()["p2"] == "psi"  # and shown in the file's units
 

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from hydroservo.errors import HydroservoError, ModelFileError, shorten
+from hydroservo.errors import ModelFileError, shorten
 
 if TYPE_CHECKING:
     from xml.etree.ElementTree import Element
@@ -406,8 +406,6 @@ def read_hmf(path: str | Path) -> HopsanModel:
         own = reader.system(top, (), {})
     except RecursionError:
         raise ModelFileError(f"Hopsan model {str(path)!r}: nested too deep to read") from None
-    except HydroservoError:
-        raise
     settings = top.find("simulationtime")
     where = f"Hopsan model {str(path)!r}, <simulationtime>"
     start = _float(settings.get("start") if settings is not None else None, where, "start", 0.0)

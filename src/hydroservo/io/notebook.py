@@ -104,7 +104,7 @@ def result_html(result: Result) -> str:
     from hydroservo.io.html import Notice, Picture, fragment
 
     shown = result.shown_units()
-    main = list(dict.fromkeys(n for panel in result.panels for n in panel if n in shown)) or list(shown)[:8]
+    main = result.main_signals()
     items: list[Any] = [Notice(str(w)) for w in result.warnings]
     items.append(signal_table(result, shown, main))
     if main:
@@ -154,7 +154,7 @@ def _most_varied(batch: BatchResult) -> str | None:
 
     best, spread = None, 0.0
     ok = batch.ok
-    for name in dict.fromkeys(n for panel in batch.panels for n in panel if n in batch.units):
+    for name in batch.main_signals():
         values = np.asarray(batch[name], dtype=float)[ok]
         finite = values[np.isfinite(values)]
         if finite.size == 0:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
@@ -24,7 +25,7 @@ class Result(Protocol):
 
     def shown_units(self, units: Any = None) -> dict[str, str]: ...
 
-    def shown(self, name: str, unit: str) -> np.ndarray: ...
+    def get(self, name: str, unit: str | None = None) -> np.ndarray: ...
 
 
 #: ASCII spellings of the characters unit names may hold beyond ASCII.
@@ -47,16 +48,26 @@ def csv_header(name: str, unit: str, ascii: bool = False) -> str:
 
 
 def write_table(
-    path: str | Path, columns: list[str], rows: Any, comments: list[str] | tuple[str, ...] = ()
+    path: str | Path,
+    columns: list[str],
+    rows: Any,
+    comments: list[str] | tuple[str, ...] = (),
+    digits: int | None = None,
 ) -> Path:
     """Write a CSV table as every CSV of hydroservo is laid out: ``# `` comment lines first (what the table is,
     its conditions), a header row of ``name [unit]`` columns, then one row per line; commas without spaces,
-    numbers at full precision (``repr``), NaN as an empty cell, text quoted only where it must be. UTF-8, with
-    a byte-order mark only if the table holds characters beyond ASCII (so that spreadsheets read them right).
+    numbers at full precision (``repr``) or to ``digits`` significant digits, NaN as an empty cell, text quoted
+    only where it must be. UTF-8, with a byte-order mark only if the table holds characters beyond ASCII (so
+    that spreadsheets read them right).
+
+    ``rows`` is rows of numbers and text, or a 2-D array of numbers (written by NumPy: a result's thousand
+    rows without a Python loop over cells).
     """
     import csv
     import io
     import math
+
+    import numpy as np
 
     def cell(value: Any) -> str:
         if isinstance(value, str):
@@ -64,42 +75,40 @@ def write_table(
         if isinstance(value, int) and not isinstance(value, bool):
             return str(value)
         v = float(value)
-        return "" if math.isnan(v) else repr(v)
+        return "" if math.isnan(v) else (f"{v:.{digits}g}" if digits else repr(v))
 
     text = io.StringIO()
     for line in comments:
         text.write(f"# {line}\n")
     writer = csv.writer(text, lineterminator="\n")
     writer.writerow(columns)
-    writer.writerows([cell(v) for v in row] for row in rows)
-    body = text.getvalue()
+    if isinstance(rows, np.ndarray) and rows.ndim == 2 and rows.dtype.kind == "f":
+        body = io.StringIO()
+        np.savetxt(body, rows, fmt=f"%.{digits or 17}g", delimiter=",")
+        text.write(re.sub(r"(?<![\w.])-?nan(?![\w])", "", body.getvalue()))
+    else:
+        writer.writerows([cell(v) for v in row] for row in rows)
+    whole = text.getvalue()
     path = Path(path)
-    path.write_text(body, encoding="utf-8" if body.isascii() else "utf-8-sig", newline="")
+    path.write_text(whole, encoding="utf-8" if whole.isascii() else "utf-8-sig", newline="")
     return path
 
 
 def write_csv(result: Result, path: str | Path, units: Any = None, ascii: bool = False) -> Path:
-    """Write ``result`` as CSV: a time column ``t [s]``, then one column ``signal [unit]`` per signal, in the
-    units the result shows (:meth:`~hydroservo.system.result.Result.shown_units`: the model's, ``units``
-    over them, ``"si"`` for SI).
+    """Write ``result`` as CSV (:func:`write_table`): a time column ``t [s]``, then one column ``signal [unit]``
+    per signal, in the units the result shows (:meth:`~hydroservo.system.result.Result.shown_units`: the
+    model's, ``units`` over them, ``"si"`` for SI), ten significant digits.
 
-    UTF-8 with a byte-order mark, so that spreadsheet programs read ``m³/s`` right; with ``ascii``, unit names
-    in ASCII (``m^3/s``) and no mark. Ten significant digits; written by NumPy, so that a command-line run does
-    not load pandas (``pandas.read_csv`` and :func:`read_csv` read it back, ``nan`` as NaN).
+    Units are printed (``m³/s``), with the byte-order mark that lets spreadsheet programs read them right; with
+    ``ascii``, written as ASCII unit text (``m^3/s``) and no mark. ``pandas.read_csv`` and :func:`read_csv` read
+    either back.
     """
-    import csv
-
     import numpy as np
 
-    path = Path(path)
     shown = result.shown_units(units)
     header = ["t [s]", *(csv_header(n, u, ascii) for n, u in shown.items())]
-    encoding = "ascii" if ascii else "utf-8-sig"
-    columns = [result.t, *(result.shown(n, u) for n, u in shown.items())]
-    with path.open("w", encoding=encoding, errors="replace", newline="") as f:
-        csv.writer(f, lineterminator="\n").writerow(header)
-        np.savetxt(f, np.column_stack(columns), fmt="%.10g", delimiter=",")
-    return path
+    columns = np.column_stack([result.t, *(result.get(n, u) for n, u in shown.items())])
+    return write_table(path, header, np.asarray(columns, dtype=float), digits=10)
 
 
 def write_mat(result: Result, path: str | Path) -> Path:
@@ -128,8 +137,6 @@ def parseable_unit(printed: str) -> str:
     >>> parseable_unit("m³/Pa⁰⋅⁵/s"), parseable_unit("m·N"), parseable_unit("-"), parseable_unit("kg/m^3")
     ('m^3/Pa^0.5/s', 'm*N', '', 'kg/m^3')
     """
-    import re
-
     text = printed.strip()
     if text in ("-", ""):
         return ""
@@ -179,7 +186,7 @@ def read_csv(path: str | Path, model: str | None = None) -> Any:
     t = values[:, 0]
     if not np.all(np.diff(t) > 0):
         raise ParameterError(f"result file {str(path)!r}: the time column must increase from row to row")
-    from hydroservo.units import UnitChoice, coherent_unit, from_si
+    from hydroservo.units import UnitChoice, coherent_unit, convert
 
     data, si_units, written = {}, {}, {}
     for i, (name, unit) in enumerate(zip(names, units)):
@@ -188,10 +195,9 @@ def read_csv(path: str | Path, model: str | None = None) -> Any:
         unit = {"°C": "degC", "°F": "degF", "degree_Celsius": "degC", "degree_Fahrenheit": "degF"}.get(unit, unit)
         try:
             si = "degC" if unit in ("degC", "degF", "K") else coherent_unit(unit)  # temperatures are degC inside
-            scale, offset = from_si(1.0, si, unit), from_si(0.0, si, unit)
+            data[name] = convert(values[:, i], unit, si)
         except HydroservoError as exc:
             raise ParameterError(f"result file {str(path)!r}: column {header[i]!r}: {exc}") from None
-        data[name] = (values[:, i] - offset) / (scale - offset)
         si_units[name] = si
         if unit != si:
             written[name] = unit

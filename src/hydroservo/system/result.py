@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 import numpy as np
 
 from hydroservo.errors import ParameterError, SolverError, UnitError, did_you_mean
-from hydroservo.units import UnitChoice, from_si, same_dimension, si_unit
+from hydroservo.units import UnitChoice, convert, si_unit
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -72,7 +72,13 @@ class _Signals:
             ) from None
 
     #: The units the model shows its signals in (:meth:`hydroservo.system.System.unit_choice`); SI if none.
-    unit_choice: UnitChoice = UnitChoice()
+    unit_choice: UnitChoice
+
+    panels: list[list[str]]
+
+    def main_signals(self) -> list[str]:
+        """The model's main signals, those of its plot panels (:attr:`panels`) in their order; all if none."""
+        return list(dict.fromkeys(n for panel in self.panels for n in panel if n in self.units)) or list(self.names)
 
     def shown_units(self, units: Any = None) -> dict[str, str]:
         """The unit each signal is shown in: ``units`` (``"p=bar, mm"``, a mapping, ``"si"``;
@@ -81,30 +87,12 @@ class _Signals:
         Raises
         ------
         ParameterError
-            If ``units`` names a signal the result does not have.
+            If ``units`` names a signal the result does not have, or gives one a unit of another dimension.
         """
         asked = UnitChoice.parse(units, what="units")
+        asked.check(self.units, "units")
         choice = asked.over(self.unit_choice)
-        unknown = asked.unknown(self.names)
-        if unknown:
-            raise ParameterError(
-                f"units: no signal {unknown[0]!r} in the result of {self.model!r}{did_you_mean(unknown[0], self.names)}"
-            )
-        for name, unit in asked.signals.items():
-            own = self.units.get(name, "")
-            if not same_dimension(unit, own):
-                raise ParameterError(f"units: {name}={unit}: {name} is in {si_unit(own)}; expected a unit of that dimension")
         return {name: choice.unit(name, self.units.get(name, "")) for name in self.names}
-
-    def shown(self, name: str, unit: str) -> np.ndarray:
-        """Signal ``name`` in ``unit`` (temperatures and absolute pressures with their offsets)."""
-        own = self.units.get(name, "")
-        values = self[name]
-        if unit == own:
-            return values
-        scale = from_si(1.0, own, unit)
-        offset = from_si(0.0, own, unit)
-        return np.asarray((scale - offset) * values + offset)
 
     def get(self, name: str, unit: str | None = None) -> np.ndarray:
         """Signal ``name``, converted to ``unit`` if given (e.g. ``"psi"``; offsets too: ``"bar_abs"``, ``"degF"``)."""
@@ -113,7 +101,8 @@ class _Signals:
             return values
         own = self.units.get(name, "")
         try:
-            return self.shown(name, unit)
+            converted: np.ndarray = convert(values, own, unit)
+            return converted
         except UnitError:
             raise UnitError(
                 f"signal {name!r} of {self.model!r} is in {si_unit(own)}: cannot show it in {unit!r}"
@@ -169,7 +158,7 @@ class Result(_Signals):
         the model's, ``units`` over them, ``"si"`` for SI)."""
         out = {}
         for n, unit in self.shown_units(units).items():
-            v = self.shown(n, unit)
+            v = self.get(n, unit)
             out[n] = {"unit": si_unit(unit), "final": float(v[-1]), "min": float(np.min(v)), "max": float(np.max(v))}
         return out
 
@@ -189,7 +178,7 @@ class Result(_Signals):
         import pandas as pd
 
         shown = self.shown_units(units)
-        df = pd.DataFrame({n: self.shown(n, u) for n, u in shown.items()}, index=pd.Index(self.t, name="t"))
+        df = pd.DataFrame({n: self.get(n, u) for n, u in shown.items()}, index=pd.Index(self.t, name="t"))
         df.attrs["units"] = {"t": "s", **{n: si_unit(u) for n, u in shown.items()}}
         return df
 

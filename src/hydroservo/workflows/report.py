@@ -197,9 +197,8 @@ class ReportOf(Workflow):
             except HydroservoError as exc:
                 raise ParameterError(f"{self.name('units')}: {str(exc).split(': ', 1)[-1]}") from None
         else:
-            si = isinstance(self.units, str) and self.units.strip().lower() == "si"
             self.job = Simulate(self.source, self.sets, t_end=self.t_end, accuracy=self.accuracy, write="none",
-                                units=None if si else self.units, si=si, cli=self.cli)
+                                units=self.units, cli=self.cli)
             self.stem = safe_name(self.job.system.name)
 
     def folder(self) -> str:

@@ -77,7 +77,7 @@ class SimulationReport(Report):
             + ")"
         ]
         summary = result.summary(self.units)
-        shown = list(summary) if self.all_signals else self.main_signals()
+        shown = list(summary) if self.all_signals else result.main_signals()
         rows = [(n, summary[n]["unit"], summary[n]["final"], summary[n]["min"], summary[n]["max"]) for n in shown]
         w = max(len(r[0]) for r in rows)
         out.append(f"{'signal'.ljust(w)}  {'unit':>8}  {'final':>12}  {'min':>12}  {'max':>12}")
@@ -89,11 +89,6 @@ class SimulationReport(Report):
         if self.files:
             out.append(f"wrote {' and '.join(self.files.values())}")
         return out
-
-    def main_signals(self) -> list[str]:
-        """The signals the table shows: those of the model's plot panels, else its states."""
-        names = list(dict.fromkeys(n for panel in self.result.panels for n in panel if n in self.result.units))
-        return names or list(self.result.names)
 
     def to_dict(self) -> dict[str, Any]:
         result = self.result
@@ -238,21 +233,7 @@ class Simulate(Workflow):
         except HydroservoError as exc:
             raise ParameterError(str(exc)) from None
         if choice.signals:
-            model = self.system.build()
-            signals = [*model.state_names, *model.output_names]
-            for name in choice.unknown(signals):
-                raise ParameterError(
-                    f"{self.name('units')} {name}={choice.signals[name]}: no signal {name!r}"
-                    f"{did_you_mean(name, signals)}"
-                )
-            for name, unit in choice.signals.items():
-                from hydroservo.units import same_dimension, si_unit
-
-                own = model.units.get(name, "")
-                if not same_dimension(unit, own):
-                    raise ParameterError(
-                        f"{self.name('units')} {name}={unit}: {name} is in {si_unit(own)}; expected a unit of that dimension"
-                    )
+            choice.check(self.system.build().units, self.name("units"))
         return choice
 
     def _check_solver_options(self) -> None:
@@ -306,7 +287,7 @@ class Simulate(Workflow):
 
     def _check_plots(self) -> None:
         """Refuse, before the run, plot panels naming unknown signals and plot units of the wrong dimension."""
-        from hydroservo.units import from_si
+        from hydroservo.units import UnitChoice
 
         system = self.system
         model = system.build()
@@ -318,13 +299,7 @@ class Simulate(Workflow):
                     f"{where}: [model] plots: no signal {name!r}{did_you_mean(name, signals)}; signals: "
                     f"{', '.join(sorted(signals))}"
                 )
-        for name, unit in system.plot_units.items():
-            if name not in signals:
-                raise ParameterError(f"{where}: [model] plot_units: no signal {name!r}{did_you_mean(name, signals)}")
-            try:
-                from_si(1.0, model.units.get(name, ""), unit)
-            except HydroservoError as exc:
-                raise ParameterError(f"{where}: [model] plot_units {name} = {unit!r}: {exc}") from None
+        UnitChoice(dict(system.plot_units)).check(model.units, f"{where}: [model] plot_units")
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> SimulationReport:
         if self.system.plots and "png" in self.kinds:
