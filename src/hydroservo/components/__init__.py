@@ -10,13 +10,15 @@ module                 components
 :mod:`.pumps`          Pump, VariablePump, Motor
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
+:mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
 :mod:`.valves`         FourWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
-:mod:`.signals`        Step, Pulse, Ramp, Sine, Square, Table
-:mod:`.control`        Sum, Gain, Lag, Saturation, PID, Amplifier, Transducer
+:mod:`.signals`        Constant, Step, Pulse, Ramp, Sine, Square, Table
+:mod:`.control`        Sum, Gain, Lag, Integrator, Saturation, PID, Amplifier,
+                       Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -37,13 +39,14 @@ from hydroservo.components.base import (
     RenamedWarning,
     State,
 )
-from hydroservo.components.control import PID, Amplifier, Gain, Lag, Saturation, Sum, Transducer
+from hydroservo.components.control import PID, Amplifier, Gain, Integrator, Lag, Saturation, Sum, Transducer
 from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
+from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
 from hydroservo.components.pumps import Motor, Pump, VariablePump
-from hydroservo.components.signals import Pulse, Ramp, Sine, Square, Step, Table
+from hydroservo.components.signals import Constant, Pulse, Ramp, Sine, Square, Step, Table
 from hydroservo.components.sources import ConstantPressure, PressureTable, Tank
 from hydroservo.components.spools import (
     FlapperNozzleSpool,
@@ -80,6 +83,13 @@ __all__ = [
     "RenamedWarning",
     "Cylinder",
     "Mass",
+    "Spring",
+    "Damper",
+    "FixedPosition",
+    "ForceSource",
+    "VelocitySource",
+    "Constant",
+    "Integrator",
     "ConstantPressure",
     "Tank",
     "PressureTable",

@@ -19,6 +19,10 @@ A component is a small class. At the top it declares
   a port to a port once (``system.connect("valve.A", "cyl.A")``) and the
   system works out which side gives the pressure and which the flow
   (:mod:`hydroservo.system.nodes`),
+* ``MECHANICAL``: port name -> :class:`Mechanical`, the places where a
+  component pushes or is pushed along a line: each names a position, a
+  velocity and a force signal, and is connected port to port in the same way
+  (``system.connect("cyl.R", "load.P1")``),
 
 and below it writes two methods with CasADi expressions:
 
@@ -67,6 +71,7 @@ __all__ = [
     "Option",
     "Limit",
     "Hydraulic",
+    "Mechanical",
     "Component",
     "SIGNAL",
     "REGISTRY",
@@ -256,6 +261,37 @@ class Hydraulic:
         return 1.0 if self.into else -1.0
 
 
+@dataclass(frozen=True)
+class Mechanical:
+    """A mechanical port of one-dimensional motion: position ``x``, velocity ``v`` and force ``F`` at one place.
+
+    Which signals the component computes decides the port's causality, as for :class:`Hydraulic`:
+
+    * ``x`` and ``v`` outputs, ``F`` an input: a **motion port** (a mass, a fixed point, a velocity source): it
+      gives the motion of the node and takes the sum of the forces acting on it there;
+    * ``x`` and ``v`` inputs, ``F`` an output: a **force port** (a cylinder's rod, a spring, a damper, a force
+      source): it takes the motion of the node and gives the force it exerts there.
+
+    ``x``, ``v`` and ``F`` are counted in the component's own direction at that port: ``outward`` is True if
+    that direction points out of the component (a mass's end 2, a cylinder's rod), False if into it (Hopsan's
+    convention at the ports of its springs). Two connected ports face each other, so the one's outward is the
+    other's inward (:func:`hydroservo.system.nodes.resolve`). ``kind`` keeps translational ports (m, m/s, N)
+    apart from rotational ones (rad, rad/s, N m).
+    """
+
+    x: str
+    v: str
+    F: str
+    description: str
+    outward: bool = True
+    kind: str = "translational"
+
+    @property
+    def sign(self) -> float:
+        """+1 if the port's direction points out of the component, -1 if into it."""
+        return 1.0 if self.outward else -1.0
+
+
 class Component:
     """Base class of all components. See the module docstring."""
 
@@ -267,6 +303,7 @@ class Component:
     OPTIONS: ClassVar[dict[str, Option]] = {}
     LIMITS: ClassVar[dict[str, Limit]] = {}
     HYDRAULIC: ClassVar[dict[str, Hydraulic]] = {}
+    MECHANICAL: ClassVar[dict[str, Mechanical]] = {}
     #: Former parameter names -> current names (accepted with a :class:`RenamedWarning`).
     RENAMED: ClassVar[dict[str, str]] = {}
 

@@ -17,16 +17,17 @@ from hydroservo.components.signals import SIGNAL_OUTPUT
 from hydroservo.errors import ParameterError, UnitError
 from hydroservo.units import coherent_unit, is_absolute_pressure
 
-__all__ = ["Sum", "Gain", "Lag", "Saturation", "PID", "Amplifier", "Transducer"]
+__all__ = ["Sum", "Gain", "Lag", "Integrator", "Saturation", "PID", "Amplifier", "Transducer"]
 
 
 @register
 class Sum(Component):
-    """``y = gain1 u1 + gain2 u2 + gain3 u3`` (unconnected inputs are 0); by default ``u1 - u2 + u3``."""
+    """``y = gain1 u1 + gain2 u2 + gain3 u3 + offset`` (unconnected inputs are 0); by default ``u1 - u2 + u3``."""
 
     RENAMED = {"k1": "gain1", "k2": "gain2", "k3": "gain3"}
     PARAMETERS = {
-        f"gain{i}": Param(-1.0 if i == 2 else 1.0, "", f"weight of input {i}") for i in (1, 2, 3)
+        **{f"gain{i}": Param(-1.0 if i == 2 else 1.0, "", f"weight of input {i}") for i in (1, 2, 3)},
+        "offset": Param(0.0, SIGNAL, "added to the weighted inputs"),
     }
     INPUTS = {f"u{i}": Port(SIGNAL, f"input {i}", default=0.0) for i in (1, 2, 3)}
     OUTPUTS = SIGNAL_OUTPUT
@@ -34,7 +35,7 @@ class Sum(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"y": p["gain1"] * u["u1"] + p["gain2"] * u["u2"] + p["gain3"] * u["u3"]}
+        return {"y": p["gain1"] * u["u1"] + p["gain2"] * u["u2"] + p["gain3"] * u["u3"] + p["offset"]}
 
 
 #: Placeholder unit of a gain's input (``input_unit``); the output keeps ``SIGNAL`` (``unit``).
@@ -136,6 +137,26 @@ class Lag(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"y": (p["K"] * u["u"] - x["y"]) / p["tau"]}
+
+
+@register
+class Integrator(Component):
+    r"""Integrator :math:`\dot y = u`, from ``y0``, without limits (Hopsan's SignalIntegrator2, [Hopsan2026])."""
+
+    PARAMETERS = {"y0": Param(0.0, SIGNAL, "initial output")}
+    STATES = {"y": State(SIGNAL, "output", initial="y0", nominal=1.0)}
+    INPUTS = {"u": Port(SIGNAL + "/s", "input (the output's rate)")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": x["y"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": u["u"]}
 
 
 @register

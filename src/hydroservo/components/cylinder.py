@@ -6,10 +6,22 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
+from hydroservo.components.base import (
+    Component,
+    Hydraulic,
+    Limit,
+    Mechanical,
+    Option,
+    Output,
+    Param,
+    Port,
+    State,
+    register,
+)
 from hydroservo.errors import ParameterError
 from hydroservo.laws.chamber import check_valve_floor, cylinder_volumes, pressure_rate
 from hydroservo.laws.fluid import bulk_modulus_eggerth, bulk_modulus_lee
+from hydroservo.laws.stops import end_stop_force
 from hydroservo.units import VACUUM
 
 __all__ = ["Cylinder"]
@@ -59,13 +71,15 @@ class Cylinder(Component):
     * ``none``: the continuity equation alone (a chamber may go below vacuum,
       which the plausibility check flags).
 
-    Output ``F`` is the hydraulic force on the piston in +x plus the end-stop
-    force: a spring-damper (``k_stop``, ``c_stop``) acting beyond ``x_min``/``x_max``,
+    Output ``F`` is the hydraulic force on the piston in +x, less the piston's
+    viscous friction ``B_p`` v, plus the end-stop force
+    (:func:`~hydroservo.laws.stops.end_stop_force`): a spring-damper (``k_stop``, ``c_stop``) acting beyond ``x_min``/``x_max``,
     stiff by default (1e9 N/m, 1e6 N s/m: 0.1 mm under 100 kN, a hard stop for any
     practical load, as Hopsan's stroke limit tends to one); with both 0 there
     are no end stops. Output ``m_oil`` is the oil mass in both chambers
     ([Efe2014] eqs. 3.44-3.46); connect it to a mass's ``m_add`` to count it
-    in the moving mass. Outputs ``VA``, ``VB`` are the volumes of the
+    in the moving mass. The rod's end is the mechanical port ``R``
+    (``connect("cyl.R", "load.P1")`` feeds ``x``, ``v`` and ``F``). Outputs ``VA``, ``VB`` are the volumes of the
     pressure equations.
 
     Every run is checked against the cylinder's physical bounds (``LIMITS``,
@@ -101,6 +115,7 @@ class Cylinder(Component):
         "x_min": Param(-0.1, "m", "end stop, retracted"),
         "x_max": Param(0.1, "m", "end stop, extended"),
         "k_stop": Param(1e9, "N/m", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
+        "B_p": Param(0.0, "N*s/m", "viscous friction of the piston", min=0.0),
         "c_stop": Param(1e6, "N*s/m", "end-stop damping", min=0.0),
         "pA0": Param(0.0, "Pa", "initial pressure, side A", min=VACUUM),
         "pB0": Param(0.0, "Pa", "initial pressure, side B", min=VACUUM),
@@ -127,6 +142,7 @@ class Cylinder(Component):
         "A": Hydraulic("pA", "QA", "chamber A (piston side)"),
         "B": Hydraulic("pB", "QB", "chamber B (rod side)"),
     }
+    MECHANICAL = {"R": Mechanical("x", "v", "F", "the rod's end (outward is +x, extending)")}
     OUTPUTS = {
         "pA": Output("Pa", "pressure, side A"),
         "pB": Output("Pa", "pressure, side B"),
@@ -210,11 +226,8 @@ class Cylinder(Component):
         pA, pB = self._pressures(x, p)
         out = {"pA": pA, "pB": pB, "QLi": p["C_Li"] * (pA - pB)}
         pos = u["x"]
-        over = bk.fmax(pos - p["x_max"], 0.0)
-        under = bk.fmin(pos - p["x_min"], 0.0)
-        in_stop = bk.if_else(over - under > 0, 1.0, 0.0)
-        stop = -p["k_stop"] * (over + under) - p["c_stop"] * u["v"] * in_stop
-        out["F"] = pA * p["A_A"] - pB * p["A_B"] + stop
+        stop = end_stop_force(pos, u["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
+        out["F"] = pA * p["A_A"] - pB * p["A_B"] - p["B_p"] * u["v"] + stop
         VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
         out["m_oil"] = p["rho"] * (VA + VB)
         out["VA"], out["VB"] = VA, VB

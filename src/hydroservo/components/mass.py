@@ -8,8 +8,9 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
 from hydroservo.laws.friction import stribeck
+from hydroservo.laws.stops import end_stop_force
 
 __all__ = ["Mass"]
 
@@ -20,7 +21,7 @@ G = 9.80665
 class Mass(Component):
     r"""Rigid mass on a line with weight, damping, spring and Stribeck friction.
 
-    .. math:: (m + m_{add})\ddot x = F + F_{ext} - W\sin\theta - F_f(\dot x) - k_{spring}(x - x_{spring})
+    .. math:: (m + m_{add})\ddot x = F + F_{ext} - W\sin\theta - F_f(\dot x) - k_{spring}(x - x_{spring}) + F_{stop}
 
     with the Stribeck friction :math:`F_f` of [Efe2014] eq. (3.47) (viscous
     coefficient ``B`` = :math:`\sigma`, ``F_c0``, ``F_s0``, ``c_s``; the sign is
@@ -30,6 +31,12 @@ class Mass(Component):
     (3-26), where the weight-per-mass term "g" is :math:`W/M`.
     ``m_add`` (input) is added mass such as a cylinder's oil ([Efe2014] eqs.
     3.44-3.46).
+
+    Its two ends are the mechanical ports ``P1`` (outward is -x) and ``P2``
+    (outward is +x), as Hopsan's MechanicTranslationalMass ([Hopsan2026]):
+    the forces of what is connected there (a cylinder's rod, a spring) add into
+    ``F``. End stops (:func:`~hydroservo.laws.stops.end_stop_force`) act
+    beyond ``x_min`` and ``x_max`` when ``k_stop`` or ``c_stop`` is set.
     """
 
     RENAMED = {"k": "k_spring", "x_s": "x_spring"}
@@ -45,6 +52,10 @@ class Mass(Component):
         "v_reg": Param(1e-4, "m/s", "velocity over which the friction sign is smoothed", min=0.0, min_inclusive=False),
         "k_spring": Param(0.0, "N/m", "spring stiffness", min=0.0),
         "x_spring": Param(0.0, "m", "spring free position"),
+        "x_min": Param(-1e30, "m", "end stop, low side"),
+        "x_max": Param(1e30, "m", "end stop, high side"),
+        "k_stop": Param(0.0, "N/m", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
+        "c_stop": Param(0.0, "N*s/m", "end-stop damping", min=0.0),
         "x0": Param(0.0, "m", "initial position"),
         "v0": Param(0.0, "m/s", "initial velocity"),
     }
@@ -56,6 +67,10 @@ class Mass(Component):
         "F": Port("N", "driving force in +x (e.g. a cylinder's F)", default=0.0),
         "F_ext": Port("N", "external force in +x", default=0.0),
         "m_add": Port("kg", "added moving mass", default=0.0),
+    }
+    MECHANICAL = {
+        "P1": Mechanical("x", "v", "F", "end 1 (outward is -x)", outward=False),
+        "P2": Mechanical("x", "v", "F", "end 2 (outward is +x)"),
     }
     OUTPUTS = {
         "x": Output("m", "position"),
@@ -75,4 +90,5 @@ class Mass(Component):
     ) -> dict[str, Any]:
         weight = p["W"] * bk.sin(p["incline"])
         force = u["F"] + u["F_ext"] - weight - y["F_f"] - p["k_spring"] * (x["x"] - p["x_spring"])
+        force = force + end_stop_force(x["x"], x["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
         return {"x": x["v"], "v": force / (p["m"] + u["m_add"])}

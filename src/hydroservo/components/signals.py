@@ -16,10 +16,23 @@ from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Output, Param, register
 from hydroservo.errors import ParameterError
 
-__all__ = ["Step", "Pulse", "Ramp", "Sine", "Square", "Table", "SIGNAL_OUTPUT"]
+__all__ = ["Constant", "Step", "Pulse", "Ramp", "Sine", "Square", "Table", "SIGNAL_OUTPUT"]
 
 #: The output of every signal block.
 SIGNAL_OUTPUT = {"y": Output(SIGNAL, "signal")}
+
+
+@register
+class Constant(Component):
+    """A constant signal ``y = value``."""
+
+    PARAMETERS = {"value": Param(0.0, SIGNAL, "the value")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": p["value"] + 0.0 * t}
 
 
 @register

@@ -2,7 +2,8 @@
 
 ``"-mass.x"``, ``"load.W / cyl.A_A"``, ``"2 * pi * f.frequency"``: numbers,
 ``+ - * / **``, parentheses, dotted names and the functions ``sqrt``, ``abs``,
-``sin``, ``cos``. Names are looked up in a mapping supplied by the caller
+``sin``, ``cos``, the constants ``pi`` and ``p_atm`` (the standard atmosphere,
+101325 Pa: an absolute pressure is ``cyl.pA + p_atm``). Names are looked up in a mapping supplied by the caller
 (signals for aliases, parameters for initial conditions). Nothing else is
 evaluated: no attribute access, calls or imports.
 """
@@ -23,6 +24,8 @@ __all__ = ["evaluate", "names_in", "check_dimension"]
 
 _FUNCS: dict[str, Callable[[Any], Any]] = {"sqrt": ca.sqrt, "abs": ca.fabs, "sin": ca.sin, "cos": ca.cos}
 _CONSTS = {"pi": math.pi}
+#: Constants with a unit: name -> (value in SI, unit).
+_UNIT_CONSTS = {"p_atm": (101325.0, "Pa")}
 
 
 def _dotted(node: ast.AST) -> str | None:
@@ -57,7 +60,7 @@ def names_in(text: str, what: str = "expression") -> list[str]:
         if name is not None and isinstance(node, ast.Attribute):
             out.append(name)
             return
-        if isinstance(node, ast.Name) and node.id not in _CONSTS and node.id not in _FUNCS:
+        if isinstance(node, ast.Name) and node.id not in _CONSTS and node.id not in _UNIT_CONSTS and node.id not in _FUNCS:
             out.append(node.id)
             return
         for child in ast.iter_child_nodes(node):
@@ -115,6 +118,8 @@ def _evaluate(
                 return names[name]
             if name in _CONSTS:
                 return _CONSTS[name]
+            if name in _UNIT_CONSTS:
+                return _UNIT_CONSTS[name][0]
             raise ModelError(f"{what}: unknown name {name!r} in {text!r}")
         raise ModelError(f"{what}: {text!r} uses something other than numbers, names, + - * / ** and sqrt/abs/sin/cos")
 
@@ -138,7 +143,8 @@ def check_dimension(text: str, units: Mapping[str, str], declared: str, what: st
     name's unit (``units``: name -> unit), so ``load.x + cyl.pA`` and a length
     declared in bar are found when the model is built.
     """
-    named = {name: dimension(units[name]) for name in names_in(text, what) if name in units}
+    units = {**units, **{k: u for k, (_, u) in _UNIT_CONSTS.items() if k in text}}
+    named = {name: dimension(units[name]) for name in [*names_in(text, what), *_UNIT_CONSTS] if name in units}
     want_known = dimension(declared)
     if want_known is not None and all(d is not None for d in named.values()):  # shipped units: no registry
         dims: dict[str, Callable[[Any], Any]] = {

@@ -12,6 +12,7 @@ structure changes, never when a parameter value does.
 from __future__ import annotations
 
 import copy
+import re
 from collections import OrderedDict
 from collections.abc import Callable, Collection, Iterable, Mapping
 from dataclasses import dataclass
@@ -19,12 +20,12 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from hydroservo.components.base import Component
+from hydroservo.components.base import Component, Hydraulic, Mechanical
 from hydroservo.errors import HydroservoError, ModelError, ParameterError, UnitError, did_you_mean
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import batch_columns
 from hydroservo.system.model import Model
-from hydroservo.system.nodes import Node, nodes, port_of, resolve
+from hydroservo.system.nodes import Node, nodes, port_kind, port_of, port_signals, resolve
 from hydroservo.units import UnitChoice, check_unit, inferred_units, same_dimension, to_si
 
 if TYPE_CHECKING:
@@ -177,7 +178,7 @@ class System:
         used = {ref.split(".", 1)[1] for pair in self.connections.items() for ref in pair if ref.split(".", 1)[0] == name}
         ports = {ref.split(".", 1)[1] for pair in self.links for ref in pair if ref.split(".", 1)[0] == name}
         offered = set(component.INPUTS) | set(component.OUTPUTS)
-        missing = sorted((used - offered) | (ports - set(component.HYDRAULIC)))
+        missing = sorted((used - offered) | (ports - set(component.HYDRAULIC) - set(component.MECHANICAL)))
         if missing:
             raise ModelError(
                 f"replace {name!r}: {type(component).__name__} has no {', '.join(missing)}, which the system connects"
@@ -255,11 +256,12 @@ class System:
             ) from None
 
     def connect(self, source: str, *targets: str) -> None:
-        """Connect hydraulic ports, or feed a signal output into inputs.
+        """Connect hydraulic or mechanical ports, or feed a signal output into inputs.
 
-        * Hydraulic ports ("comp.port", e.g. ``connect("valve.A", "cyl.A")``):
-          all the ports named join one node, with any ports they are already
-          linked to; order does not matter. See :mod:`hydroservo.system.nodes`.
+        * Hydraulic ports ("comp.port", e.g. ``connect("valve.A", "cyl.A")``)
+          or mechanical ports (``connect("cyl.R", "load.P1")``): all the ports
+          named join one node, with any ports they are already linked to; order
+          does not matter. See :mod:`hydroservo.system.nodes`.
         * Signals: output ``source`` ("comp.output") feeds each input ``targets``
           ("comp.input").
         """
@@ -271,7 +273,8 @@ class System:
         sc, so = split_name(source, "connection source")
         comp = self[sc]
         if so not in comp.OUTPUTS:
-            ports = f"; hydraulic ports: {', '.join(comp.HYDRAULIC)}" if comp.HYDRAULIC else ""
+            named = [*comp.HYDRAULIC, *comp.MECHANICAL]
+            ports = f"; ports: {', '.join(named)}" if named else ""
             raise ModelError(
                 f"connection {source!r}: {type(comp).__name__} {sc!r} has no output {so!r}; outputs: "
                 f"{', '.join(comp.OUTPUTS)}{ports}"
@@ -286,10 +289,11 @@ class System:
             if target in self.connections:
                 raise ModelError(f"input {target!r} is already connected to {self.connections[target]!r}")
             linked = {ref for pair in self.links for ref in pair}
-            for pname, port in tcomp.HYDRAULIC.items():
-                if ti in (port.p, port.Q) and f"{tc}.{pname}" in linked:
+            ports_of: list[tuple[str, Hydraulic | Mechanical]] = [*tcomp.HYDRAULIC.items(), *tcomp.MECHANICAL.items()]
+            for pname, port in ports_of:
+                if ti in port_signals(port) and f"{tc}.{pname}" in linked:
                     raise ModelError(
-                        f"input {target!r} is already fed by the hydraulic node of port {tc}.{pname}; connect the "
+                        f"input {target!r} is already fed by the node of port {tc}.{pname}; connect the "
                         "port or its signals, not both"
                     )
             u_out, u_in = comp.OUTPUTS[so].unit, tcomp.INPUTS[ti].unit
@@ -301,18 +305,22 @@ class System:
 
     def _link(self, *ports: str) -> None:
         if len(ports) < 2:
-            raise ModelError(f"connection {ports[0]!r}: a hydraulic port connects to at least one other port")
+            raise ModelError(f"connection {ports[0]!r}: a port connects to at least one other port")
+        kinds: dict[str, str] = {}
         for ref in ports:
-            cname, pname = split_name(ref, "hydraulic connection")
+            cname, pname = split_name(ref, "port connection")
             comp = self[cname]
-            port = comp.HYDRAULIC.get(pname)
+            port = comp.HYDRAULIC.get(pname) or comp.MECHANICAL.get(pname)
             if port is None:
-                known = ", ".join(comp.HYDRAULIC) or "none"
+                known = ", ".join([*comp.HYDRAULIC, *comp.MECHANICAL]) or "none"
                 raise ModelError(
-                    f"connection {' – '.join(ports)}: {type(comp).__name__} {cname!r} has no hydraulic port "
-                    f"{pname!r}; its hydraulic ports: {known} (a hydraulic port connects only to hydraulic ports)"
+                    f"connection {' – '.join(ports)}: {type(comp).__name__} {cname!r} has no port "
+                    f"{pname!r}; its ports: {known} (a port connects only to ports of its kind)"
                 )
-            for signal in (port.p, port.Q):
+            kinds[ref] = port_kind(port)
+            for signal in port_signals(port):
+                if signal not in comp.INPUTS:
+                    continue
                 if f"{cname}.{signal}" in self.connections:
                     raise ModelError(
                         f"connection {' – '.join(ports)}: {ref}'s {signal} is already connected as a signal to "
@@ -320,10 +328,18 @@ class System:
                     )
         if len(set(ports)) < len(ports):
             raise ModelError(f"connection {' – '.join(ports)}: a port is named twice")
+        joined = {ref for pair in self.links for ref in pair if any(r in pair for r in ports)}
+        for ref in joined - set(kinds):  # the ports these join through earlier links
+            found = port_of(self.components, ref)
+            assert found is not None
+            kinds[ref] = port_kind(found[1])
+        if len(set(kinds.values())) > 1:
+            listed = ", ".join(f"{ref} ({kind})" for ref, kind in kinds.items())
+            raise ModelError(f"connection {' – '.join(ports)}: ports of different kinds cannot join: {listed}")
         self.links.extend((ports[0], other) for other in ports[1:])
 
     def nodes(self) -> list[Node]:
-        """The hydraulic nodes: sets of connected ports."""
+        """The hydraulic and mechanical nodes: sets of connected ports."""
         return nodes(self.links)
 
     def references(self) -> list[str]:
@@ -388,14 +404,17 @@ class System:
         return f"<System {self.name!r}{about} ({len(self.components)} components{source})>"
 
     def hydraulic_inputs(self) -> dict[str, list[tuple[float, str]]]:
-        """The inputs the hydraulic nodes feed: "comp.input" -> terms (coefficient, "comp.output")
+        """The inputs the hydraulic and mechanical nodes feed: "comp.input" -> terms (coefficient, "comp.output")
         (see :func:`hydroservo.system.nodes.resolve`; raises for a node with no pressure port or two)."""
         return resolve(self.components, self.links) if self.links else {}
 
     def alias(self, name: str, expr: str, unit: str = "", description: str = "") -> None:
-        """Name an expression of signals, e.g. ``alias("y", "-load.x", "m")``."""
-        if not name.isidentifier():
-            raise ModelError(f"alias {name!r}: expected an identifier")
+        """Name an expression of signals, e.g. ``alias("y", "-load.x", "m")``.
+
+        The name is an identifier, or names joined by dots as another tool names its variables
+        (``Mass.P2.Position``, Hopsan's ``Mass#P2#Position``); it must not be a signal's name."""
+        if not (name.isidentifier() or re.fullmatch(r"\w+(\.\w+)+", name, flags=re.ASCII)):
+            raise ModelError(f"alias {name!r}: expected an identifier, or names joined by dots (Mass.P2.Position)")
         if not isinstance(unit, str):
             raise ModelError(f"alias {name!r}: unit {unit!r}: expected a unit name such as 'mm'")
         try:

@@ -106,8 +106,8 @@ def test_a_node_without_a_pressure_port_asks_for_a_volume():
 @pytest.mark.parametrize(
     ("args", "message"),
     [
-        (("valve.A", "cyl.C"), "Cylinder 'cyl' has no hydraulic port 'C'; its hydraulic ports: A, B"),
-        (("valve.A", "cyl.pA"), "has no hydraulic port 'pA'"),
+        (("valve.A", "cyl.C"), "Cylinder 'cyl' has no port 'C'; its ports: A, B, R"),
+        (("valve.A", "cyl.pA"), "has no port 'pA'"),
         (("valve.A", "valve.A"), "a port is named twice"),
         (("valve.A",), "connects to at least one other port"),
     ],
@@ -125,7 +125,7 @@ def test_a_port_and_its_own_signals_cannot_both_be_connected():
         s.connect("valve.A", "cyl.A")
     s = by_ports()
     s.add(c.ConstantPressure("other"))
-    with pytest.raises(ModelError, match="already fed by the hydraulic node of port valve.A"):
+    with pytest.raises(ModelError, match="already fed by the node of port valve.A"):
         s.connect("other.p", "valve.pA")
 
 
@@ -157,3 +157,77 @@ def test_every_declared_hydraulic_port_pairs_a_pressure_and_a_flow_of_opposite_c
         p_unit = (cls.INPUTS.get(port.p) or cls.OUTPUTS[port.p]).unit
         q_unit = (cls.INPUTS.get(port.Q) or cls.OUTPUTS[port.Q]).unit
         assert same_dimension(p_unit, "Pa") and same_dimension(q_unit, "m^3/s"), (cls.__name__, name)
+
+
+# -- mechanical nodes ---------------------------------------------------------------------------------------------
+
+
+def _oscillator(force: float = 0.0) -> System:
+    from hydroservo.components import Constant, FixedPosition, ForceSource, Mass, Spring
+
+    s = System("oscillator")
+    s.add(Mass("m", m=2.0, B=0.0, x0=0.01))
+    s.add(Spring("k", k=800.0))
+    s.add(FixedPosition("ground"))
+    s.add(ForceSource("f"))
+    s.add(Constant("F0", unit="N", value=force))
+    s.connect("m.P2", "k.P1")
+    s.connect("k.P2", "ground.P")
+    s.connect("f.P", "m.P1")
+    s.connect("F0.y", "f.u")
+    return s
+
+
+def test_mass_on_a_spring_joined_port_to_port_oscillates_as_it_should() -> None:
+    """x(t) = x0 cos(ω t), ω = √(k/m) = 20 rad/s: the spring's force reaches the mass through two ports of
+    opposite directions (the mass's end 2 outward along +x, the spring's end 1 outward along -x)."""
+    t = np.linspace(0.0, 1.0, 201)
+    r = _oscillator().simulate(t_eval=t, accuracy=1e-8)
+    assert np.max(np.abs(r.get("m.x") - 0.01 * np.cos(20.0 * t))) < 1e-6
+    assert np.allclose(r.get("k.F"), -800.0 * r.get("m.x"), atol=1e-9)  # +x compresses the spring: tension < 0
+
+
+def test_force_source_at_end_1_pushes_the_mass_along_plus_x() -> None:
+    """A force pushing outward from the source at the mass's end 1 drives +x: static deflection F/k."""
+    s = _oscillator(force=100.0)
+    s["m"].set(B=200.0, x0=0.0)
+    r = s.simulate(t_end=3.0)
+    assert r.get("m.x")[-1] == pytest.approx(100.0 / 800.0, rel=1e-5)
+    assert r.get("k.F")[-1] == pytest.approx(-100.0, rel=1e-5)  # compressed: negative tension
+
+
+def test_mechanical_nodes_need_one_motion_port() -> None:
+    from hydroservo.components import FixedPosition, ForceSource, Mass, Spring
+
+    s = System("no motion")
+    s.add(Spring("k"))
+    s.add(ForceSource("f"))
+    s.add(FixedPosition("g"))
+    s.connect("k.P1", "f.P")
+    s.connect("k.P2", "g.P")
+    with pytest.raises(ModelError, match=r"mechanical node k\.P1 – f\.P: every port there takes a motion"):
+        s.hydraulic_inputs()
+    s = System("two motions")
+    s.add(Mass("m"))
+    s.add(FixedPosition("g"))
+    s.connect("m.P1", "g.P")
+    with pytest.raises(ModelError, match=r"m\.P1, g\.P each set the node's motion"):
+        s.hydraulic_inputs()
+
+
+def test_ports_of_different_kinds_do_not_join() -> None:
+    from hydroservo.components import Mass, Volume
+
+    s = System("mixed")
+    s.add(Mass("m"))
+    s.add(Volume("v"))
+    with pytest.raises(ModelError, match=r"ports of different kinds cannot join"):
+        s.connect("m.P1", "v.P")
+    s2 = System("both")
+    s2.add(Mass("m"))
+    from hydroservo.components import Cylinder
+
+    s2.add(Cylinder("c"))
+    s2.connect("c.F", "m.F")
+    with pytest.raises(ModelError, match=r"already connected as a signal"):
+        s2.connect("c.R", "m.P1")

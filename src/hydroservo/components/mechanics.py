@@ -1,0 +1,146 @@
+"""One-dimensional mechanics joined port to port: springs, dampers, fixed points, force and velocity sources.
+
+Each has mechanical ports (:class:`~hydroservo.components.base.Mechanical`) counted outward: a port's position,
+velocity and force point out of the component. A :class:`~hydroservo.components.mass.Mass` or a fixed point
+gives a node its motion; springs, dampers, cylinders' rods and force sources push on it
+(:mod:`hydroservo.system.nodes`). Hopsan ([Hopsan2026]) joins its mechanical components the same way, one C
+component (spring, force source) to one Q component (mass, fixed point) at each node.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
+
+__all__ = ["Spring", "Damper", "FixedPosition", "ForceSource", "VelocitySource"]
+
+
+def _ends(what: str) -> dict[str, Mechanical]:
+    return {
+        "P1": Mechanical("x1", "v1", "F1", f"end 1 of the {what} (outward)"),
+        "P2": Mechanical("x2", "v2", "F2", f"end 2 of the {what} (outward)"),
+    }
+
+
+_END_INPUTS = {
+    "x1": Port("m", "outward displacement of end 1", default=0.0),
+    "v1": Port("m/s", "outward velocity of end 1", default=0.0),
+    "x2": Port("m", "outward displacement of end 2", default=0.0),
+    "v2": Port("m/s", "outward velocity of end 2", default=0.0),
+}
+
+_END_OUTPUTS = {
+    "F1": Output("N", "force on what end 1 is joined to, outward"),
+    "F2": Output("N", "force on what end 2 is joined to, outward"),
+    "F": Output("N", "tension"),
+}
+
+
+@register
+class Spring(Component):
+    r"""Linear spring between two ends: :math:`F_1 = F_2 = -k\,(x_1 + x_2 - e_0)`.
+
+    ``x1``, ``x2`` are the outward displacements of its ends, so :math:`x_1 + x_2` is its extension;
+    ``F1``, ``F2`` the forces it exerts outward on what its ends are joined to (a stretched spring pulls them
+    in). ``e0`` is the extension at which it is relaxed. Hopsan's MechanicTranslationalSpring ([Hopsan2026]) is
+    the same law as a transmission-line element, relaxed at its start positions. Output ``F`` is the spring's
+    tension (compression negative, Hopsan's node force with the opposite sign).
+    """
+
+    PARAMETERS = {
+        "k": Param(100.0, "N/m", "stiffness", min=0.0),
+        "e0": Param(0.0, "m", "extension (x1 + x2) at which the spring is relaxed"),
+    }
+    INPUTS = _END_INPUTS
+    MECHANICAL = _ends("spring")
+    OUTPUTS = _END_OUTPUTS
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        tension = p["k"] * (u["x1"] + u["x2"] - p["e0"])
+        return {"F1": -tension, "F2": -tension, "F": tension}
+
+
+@register
+class Damper(Component):
+    r"""Linear damper between two ends: :math:`F_1 = F_2 = -B\,(v_1 + v_2)`, with ``v1``, ``v2`` the outward
+    velocities of its ends (Hopsan's MechanicTranslationalDamper, [Hopsan2026])."""
+
+    PARAMETERS = {"B": Param(100.0, "N*s/m", "damping coefficient", min=0.0)}
+    INPUTS = _END_INPUTS
+    MECHANICAL = _ends("damper")
+    OUTPUTS = _END_OUTPUTS
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        tension = p["B"] * (u["v1"] + u["v2"])
+        return {"F1": -tension, "F2": -tension, "F": tension}
+
+
+@register
+class FixedPosition(Component):
+    """A fixed point: its port ``P`` stands still at ``x = 0`` whatever force acts on it (Hopsan's
+    MechanicFixedPosition, [Hopsan2026]). The force it takes is the force of what is joined to it."""
+
+    INPUTS = {"F": Port("N", "force acting on the point, outward", default=0.0)}
+    MECHANICAL = {"P": Mechanical("x", "v", "F", "the fixed point (outward)")}
+    OUTPUTS = {
+        "x": Output("m", "position (always 0)"),
+        "v": Output("m/s", "velocity (always 0)"),
+    }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"x": 0.0 * t, "v": 0.0 * t}
+
+
+@register
+class ForceSource(Component):
+    """A force from a signal: its port ``P`` pushes outward on what it is joined to with the input ``u``
+    (Hopsan's MechanicForceTransformer, [Hopsan2026], whose signal is the force it presses on its node)."""
+
+    INPUTS = {
+        "u": Port("N", "force pushing outward on what port P is joined to", default=0.0),
+        "x": Port("m", "outward displacement of port P", default=0.0),
+        "v": Port("m/s", "outward velocity of port P", default=0.0),
+    }
+    MECHANICAL = {"P": Mechanical("x", "v", "F", "where the force acts (outward)")}
+    OUTPUTS = {"F": Output("N", "force on what port P is joined to, outward")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"F": u["u"]}
+
+
+@register
+class VelocitySource(Component):
+    """A velocity from a signal: its port ``P`` moves outward at the input ``u``, from ``x0``, whatever force it
+    takes (Hopsan's MechanicVelocityTransformer with its position input unconnected, [Hopsan2026])."""
+
+    PARAMETERS = {"x0": Param(0.0, "m", "initial position")}
+    STATES = {"x": State("m", "position", initial="x0", nominal=0.1)}
+    INPUTS = {
+        "u": Port("m/s", "velocity imposed outward", default=0.0),
+        "F": Port("N", "force acting on port P, outward", default=0.0),
+    }
+    MECHANICAL = {"P": Mechanical("x", "v", "F", "the moving point (outward)")}
+    OUTPUTS = {
+        "x": Output("m", "position"),
+        "v": Output("m/s", "velocity"),
+    }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"x": x["x"], "v": u["u"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"x": u["u"]}
