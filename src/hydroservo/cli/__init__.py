@@ -6,6 +6,7 @@ module                 commands
 :mod:`.models`         ``models``, ``simulate``, ``export``
 :mod:`.export_c`       ``export-c``
 :mod:`.export_fmu`     ``export-fmu``
+:mod:`.hopsan`         ``import-hopsan``
 :mod:`.linear`         ``linearize``
 :mod:`.ladder`         ``ladder``
 :mod:`.sensitivity`    ``sensitivity``
@@ -42,6 +43,7 @@ from hydroservo.cli import (
     export_c,
     export_fmu,
     fluid,
+    hopsan,
     ladder,
     linear,
     models,
@@ -113,6 +115,7 @@ def build_parser() -> argparse.ArgumentParser:
     models.add_parsers(sub)
     export_c.add_parsers(sub)
     export_fmu.add_parsers(sub)
+    hopsan.add_parsers(sub)
     linear.add_parsers(sub)
     ladder.add_parsers(sub)
     sensitivity.add_parsers(sub)

@@ -1,0 +1,96 @@
+"""``hydroservo import-hopsan``: a Hopsan model file (``.hmf``) as a hydroservo model file.
+
+>>> from hydroservo.workflows.hopsan import ImportHopsan  # doctest: +SKIP
+>>> ImportHopsan("Position Servo.hmf").run().write("out")  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, ClassVar
+
+from hydroservo.workflows.base import Progress, Report, Workflow
+
+__all__ = ["ImportHopsan", "HopsanReport"]
+
+
+@dataclass
+class HopsanReport(Report):
+    """A Hopsan model imported: the system, the model file's text, and what each Hopsan component became."""
+
+    command: ClassVar[str] = "import-hopsan"
+
+    imported: Any  #: :class:`hydroservo.io.hopsan_library.HopsanImport`
+    text: str
+    file_name: str
+
+    def title(self) -> str:
+        return f"{self.imported.system.name}: imported from Hopsan ({Path(self.imported.system.source).name})"
+
+    def lines(self) -> list[str]:
+        imp = self.imported
+        out = [
+            f"imported {Path(imp.system.source).name}: {len(imp.mapping)} Hopsan components as "
+            f"{len(imp.system.components)} hydroservo components, {len(imp.system.aliases)} of Hopsan's variables as "
+            f"aliases; t_end {imp.system.meta['t_end']} (Hopsan's step {imp.system.meta['hopsan_timestep']})",
+            "",
+            "  Hopsan component -> hydroservo",
+        ]
+        width = max(len(f"{path} ({kind})") for path, kind, _ in imp.mapping)
+        out += [f"  {f'{path} ({kind})':<{width}}  {became}" for path, kind, became in imp.mapping]
+        if self.files:
+            out += ["", f"wrote {self.files['model']}: hydroservo simulate {self.files['model']}"]
+        return out
+
+    def to_dict(self) -> dict[str, Any]:
+        imp = self.imported
+        return {
+            "model": imp.system.name,
+            "source": imp.system.source,
+            "components": [{"hopsan": p, "type": k, "hydroservo": b} for p, k, b in imp.mapping],
+            "aliases": list(imp.system.aliases),
+            "t_end": imp.system.meta["t_end"],
+            "hopsan_timestep": imp.system.meta["hopsan_timestep"],
+            "files": self.files,
+        }
+
+    def artifacts(self) -> list[Any]:
+        from hydroservo.workflows.base import Artifact
+
+        return [Artifact("model", self.file_name, lambda path: path.write_text(self.text, encoding="utf-8"))]
+
+
+@dataclass
+class ImportHopsan(Workflow):
+    """The Hopsan model file ``file`` mapped to hydroservo's components (:func:`hydroservo.io.hopsan_library.import_hopsan`)."""
+
+    OPTIONS: ClassVar[dict[str, str]] = {"file": "FILE.hmf"}
+
+    file: str | Path
+
+    def __post_init__(self) -> None:
+        from hydroservo.io.hopsan_library import import_hopsan, safe_name
+
+        self.imported = import_hopsan(self.file)  # refused here, before any folder is made
+        self.file_name = f"{safe_name(Path(self.file).stem)}.toml"
+
+    def folder(self) -> str:
+        return f"hydroservo-{Path(self.file_name).stem}"
+
+    def planned(self) -> list[str]:
+        return [self.file_name]
+
+    def run(self, progress: Progress | None = None, folder: Path | None = None) -> HopsanReport:
+        from hydroservo.io.model_file import model_to_toml
+
+        imp = self.imported
+        header = [
+            f"# Imported from the Hopsan model file {Path(self.file).name} by hydroservo import-hopsan.",
+            "# Hopsan's pressures are absolute: they are written in Pa_abs. Its port variables are aliases named",
+            "# as Hopsan logs them, with dots (Mass#P2#Position is Mass.P2.Position), in SI (docs/hopsan.md).",
+            "# Hopsan component -> hydroservo:",
+            *(f"#   {path} ({kind}) -> {became}" for path, kind, became in imp.mapping),
+            "",
+        ]
+        return HopsanReport(imp, "\n".join(header) + model_to_toml(imp.system), self.file_name)

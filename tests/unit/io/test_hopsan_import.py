@@ -1,0 +1,186 @@
+"""Hopsan models imported (hydroservo.io.hopsan_library, ``hydroservo import-hopsan``).
+
+The model file of Hopsan's example "Position Servo" is written here from its components, parameters and
+connections (as Hopsan's repository holds it, Models/Example Models/Position Servo.hmf; the values that do not
+bear on the run, such as temperatures and wave variables, left out), so that no file of Hopsan's is shipped. The
+imported model is compared with Hopsan's own converged result (hydroservo/data/reference/, with how it was made).
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from hydroservo.data import reference_text
+from hydroservo.errors import ModelFileError
+from hydroservo.io.hopsan_library import LIBRARY, import_hopsan, read_hopsan, safe_name
+
+COMPONENTS = [
+    ('HydraulicTankC', 'Tank_C', {'p': ('100000', 'Pa')}),
+    ('MechanicTranslationalMass', 'Mass', {'m': ('100', 'kg'), 'B#Value': ('0', 'Ns/m'), 'k#Value': ('0', 'N/m'), 'x_min#Value': ('0', 'm'), 'x_max#Value': ('1', 'm')}),
+    ('MechanicPositionSensor', 'Position_Sensor', {'P1#Position': ('0', 'm')}),
+    ('HydraulicVolumeMultiPort', 'Hydraulic_Volume_Multi_Port', {'P1#Pressure': ('100000', 'Pa'), 'P_high': ('2e+007', 'Pa'), 'V#Value': ('0.001', 'm^3'), 'Beta_e#Value': ('1e+009', 'Pa'), 'alpha#Value': ('0.3', '-')}),
+    ('SignalSink', 'Sink', {'in_bottom#Value': ('0', '')}),
+    ('HydraulicTankC', 'Tank_C_1', {'p': ('100000', 'Pa')}),
+    ('SignalGain', 'GainI', {'in#Value': ('0', ''), 'k#Value': ('0.000672426', '')}),
+    ('HydraulicTankC', 'Tank_C_2', {'p': ('100000', 'Pa')}),
+    ('SignalSubtract', 'Subtract', {'in1#Value': ('0', ''), 'in2#Value': ('0', '')}),
+    ('SignalIntegrator2', 'Integrator', {'in#Value': ('0', ''), 'out#Value': ('0', '')}),
+    ('HydraulicPressureReliefValve', 'Pressure_Relief_Valve', {'p_max#Value': ('2e+07', 'Pa'), 'tao#Value': ('0.001', 's'), 'p_h#Value': ('0', 'Pa'), 'k_cs': ('1e-008', '(m^3/s)/Pa'), 'k_cf': ('1e-008', '(m^3/s)/Pa'), 'q_nom': ('0.01', 'm^3/s')}),
+    ('SignalStep', 'Step', {'y_0#Value': ('0.2', ''), 'y_A#Value': ('0.5', ''), 't_step#Value': ('1', 's')}),
+    ('HydraulicFixedDisplacementPump', 'Q_type_Fixed_Displacement_Pump_1', {'a#Value': ('0', ''), 'n_p#Value': ('200', 'rad/s'), 'D_p#Value': ('25e-05', 'm^3/rev'), 'C_lp#Value': ('1e-12', '(m^3/s)/Pa')}),
+    ('SignalGain', 'GainP', {'in#Value': ('0', ''), 'k#Value': ('0.0264249', '')}),
+    ('MechanicFixedPosition', 'Fixed_Position_Attachment', {'m_e': ('1', 'kg')}),
+    ('SignalAdd', 'Add', {'in1#Value': ('0', ''), 'in2#Value': ('0', '')}),
+    ('MechanicTranslationalSpring', 'Translational_Spring', {'P1#Position': ('0', 'm'), 'P2#Position': ('0', 'm'), 'k#Value': ('100', 'N/m')}),
+    ('Hydraulic43Valve', '4_3_Servo_Valve', {'xv#Value': ('0', ''), 'in#Value': ('0', 'm'), 'C_q#Value': ('0.67', '-'), 'rho#Value': ('890', 'kg/m^3'), 'd#Value': ('0.01', 'm'), 'f_pa#Value': ('1', '-'), 'f_pb#Value': ('1', '-'), 'f_at#Value': ('1', '-'), 'f_bt#Value': ('1', '-'), 'x_pa#Value': ('1e-4', 'm'), 'x_pb#Value': ('1e-4', 'm'), 'x_at#Value': ('1e-4', 'm'), 'x_bt#Value': ('1e-4', 'm'), 'x_vmax#Value': ('0.01', 'm'), 'omega_h': ('200', 'rad/s'), 'delta_h': ('1', '-')}),
+    ('SignalSink', 'Scope', {'in_bottom#Value': ('0', '')}),
+    ('HydraulicCylinderC', 'Cylinder_C', {'P1#Pressure': ('100000', 'Pa'), 'P2#Pressure': ('100000', 'Pa'), 'P3#Position': ('0', 'm'), 'A_1#Value': ('0.001', 'm^2'), 'A_2#Value': ('0.001', 'm^2'), 's_l#Value': ('1', 'm'), 'V_1#Value': ('0.0003', 'm^3'), 'V_2#Value': ('0.0003', 'm^3'), 'B_p#Value': ('0', 'Ns/m'), 'Beta_e#Value': ('1e+009', 'Pa'), 'c_leak#Value': ('0', '')}),
+]
+CONNECTIONS = [
+    ('Mass.P1', 'Cylinder_C.P3'),
+    ('4_3_Servo_Valve.PA', 'Cylinder_C.P1'),
+    ('4_3_Servo_Valve.PB', 'Cylinder_C.P2'),
+    ('Position_Sensor.P1', 'Mass.P2'),
+    ('Position_Sensor.out', 'Subtract.in2'),
+    ('Tank_C.P1', '4_3_Servo_Valve.PT'),
+    ('Subtract.out', 'GainP.in'),
+    ('Hydraulic_Volume_Multi_Port.P1', 'Pressure_Relief_Valve.P1'),
+    ('Hydraulic_Volume_Multi_Port.P1', '4_3_Servo_Valve.PP'),
+    ('Step.out', 'Subtract.in1'),
+    ('Sink.in', '4_3_Servo_Valve.xv'),
+    ('Tank_C_1.P1', 'Pressure_Relief_Valve.P2'),
+    ('Integrator.out', 'GainI.in'),
+    ('Add.out', '4_3_Servo_Valve.in'),
+    ('Add.in1', 'GainP.out'),
+    ('GainI.out', 'Add.in2'),
+    ('Integrator.in', 'Subtract.out'),
+    ('Pressure_Relief_Valve.xv', 'Sink.in_right'),
+    ('Translational_Spring.P1', 'Mass.P2'),
+    ('Fixed_Position_Attachment.Pm1', 'Translational_Spring.P2'),
+    ('Position_Sensor.out', 'Scope.in'),
+    ('Step.out', 'Scope.in'),
+    ('Q_type_Fixed_Displacement_Pump_1.P1', 'Tank_C_2.P1'),
+    ('Q_type_Fixed_Displacement_Pump_1.P2', 'Hydraulic_Volume_Multi_Port.P1'),
+]
+
+
+def _hmf(components: list, connections: list) -> str:
+    objects = "".join(
+        f'<component subtypename="" name="{name}" typename="{kind}" cqstype="S"><parameters>'
+        + "".join(f'<parameter type="double" name="{k}" value="{v}" unit="{u}"/>' for k, (v, u) in params.items())
+        + "</parameters></component>"
+        for kind, name, params in components
+    )
+    links = "".join(
+        f'<connect startcomponent="{a.rpartition(".")[0]}" startport="{a.rpartition(".")[2]}" '
+        f'endcomponent="{b.rpartition(".")[0]}" endport="{b.rpartition(".")[2]}"/>'
+        for a, b in connections
+    )
+    return (
+        '<?xml version="1.0" encoding="UTF-8"?>\n<hopsanmodelfile hmfversion="0.4">'
+        '<system subtypename="" name="Position Servo" typename="Subsystem">'
+        '<simulationtime stop="3" timestep="0.0001" start="0" inherit_timestep="true"/>'
+        f"<objects>{objects}</objects><connections>{links}</connections></system></hopsanmodelfile>"
+    )
+
+
+@pytest.fixture(scope="module")
+def servo_file(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    path = tmp_path_factory.mktemp("hopsan") / "Position Servo.hmf"
+    path.write_text(_hmf(COMPONENTS, CONNECTIONS), encoding="utf-8")
+    return path
+
+
+def _reference() -> np.ndarray:
+    import io
+
+    return np.genfromtxt(io.StringIO(reference_text("hopsan_position_servo.csv")), delimiter=",", names=True)
+
+
+def test_position_servo_imported_matches_hopsans_converged_result(servo_file: Path) -> None:
+    """Piston position and chamber-A pressure against Hopsan's converged traces (Richardson-extrapolated, uncertain
+    to about 0.05 % of range): the issue's floor is 0.5 % of range; measured 0.0008 % and 0.01 %."""
+    ref = _reference()
+    system = read_hopsan(servo_file)
+    with pytest.warns(Warning):  # the chamber peaks Hopsan's result has too (docs/hopsan.md)
+        result = system.simulate(t_eval=ref["t_s"])
+    x, xr = result.get("Mass.P2.Position"), ref["x_converged_m"]
+    assert np.max(np.abs(x - xr)) < 0.005 * np.ptp(xr)
+    p, pr = result.get("Cylinder_C.P1.Pressure"), ref["pA_converged_Pa"]  # absolute, as Hopsan logs it
+    assert np.max(np.abs(p - pr)) < 0.005 * np.ptp(pr)
+    # a sensor reads its node as Hopsan's does: the position sensor's output is the mass's P2 position
+    assert np.allclose(result.get("Position_Sensor.out.Value"), x)
+    # Hopsan's conventions: P1 of a mass counts outward the other way; a C port's force is the node's
+    assert np.allclose(result.get("Mass.P1.Position"), -x)
+    assert np.allclose(result.get("Cylinder_C.P3.Force"), result.get("Cylinder_C.F"))
+
+
+def test_import_maps_every_component_and_keeps_hopsans_settings(servo_file: Path) -> None:
+    imp = import_hopsan(servo_file)
+    system = imp.system
+    assert [path for path, _, _ in imp.mapping] == [name for _, name, _ in COMPONENTS]
+    assert imp.names["4_3_Servo_Valve"] == "c_4_3_Servo_Valve"  # a name that starts with a digit
+    assert system.meta["t_end"] == "3.0 s" and system.meta["hopsan_timestep"] == "0.0001 s"
+    # values in Hopsan's units, absolute pressures as such
+    assert system["Pressure_Relief_Valve"].given["p_crack"] == "20000000.0 Pa_abs"
+    assert system["Cylinder_C"].values["V_B0"] == pytest.approx(3e-4 + 1e-3 * 1.0)
+    # the sinks are dropped, and what they showed stays logged at its source
+    assert "Sink" not in system.components and "Step.out.Value" in system.aliases
+
+
+def test_imported_model_file_round_trips(servo_file: Path, tmp_path: Path) -> None:
+    from hydroservo.io.model_file import load_model
+    from hydroservo.workflows.hopsan import ImportHopsan
+
+    report = ImportHopsan(servo_file).run()
+    files = report.write(tmp_path / "out")
+    text = Path(files["model"]).read_text(encoding="utf-8")
+    assert "#   4_3_Servo_Valve (Hydraulic43Valve) -> a Gain" in text
+    again = load_model(files["model"])
+    t = np.linspace(0.0, 1.5, 301)
+    with pytest.warns(Warning):
+        a = report.imported.system.simulate(t_eval=t)
+        b = again.simulate(t_eval=t)
+    assert np.allclose(a.get("Mass.P2.Position"), b.get("Mass.P2.Position"), rtol=0, atol=1e-9)
+
+
+def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> None:
+    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalPulseWave", "Wave", {})]
+    path = tmp_path / "m.hmf"
+    path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalPulseWave\)"):
+        read_hopsan(path)
+
+
+def test_unsupported_settings_are_refused_before_simulation(tmp_path: Path) -> None:
+    components = [
+        (k, n, {**p, "f_pa#Value": ("0.5", "-")} if k == "Hydraulic43Valve" else p) for k, n, p in COMPONENTS
+    ]
+    path = tmp_path / "m.hmf"
+    path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"4_3_Servo_Valve \(Hydraulic43Valve\): the edges' area fractions"):
+        read_hopsan(path)
+
+
+def test_safe_names() -> None:
+    assert safe_name("4_3 Servo-Valve") == "c_4_3_Servo_Valve" and safe_name("Mass") == "Mass"
+    assert "Hydraulic43Valve" in LIBRARY
+
+
+def test_cli_writes_the_model_and_refuses_what_it_cannot_map(servo_file: Path, tmp_path: Path) -> None:
+    run = [sys.executable, "-m", "hydroservo", "import-hopsan"]
+    done = subprocess.run([*run, str(servo_file), "--out", str(tmp_path / "a"), "--json"], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    data = json.loads(done.stdout)
+    assert Path(data["files"]["model"]).is_file() and len(data["components"]) == len(COMPONENTS)
+    bad = tmp_path / "bad.hmf"
+    bad.write_text(_hmf([*COMPONENTS, ("SignalPulseWave", "Wave", {})], CONNECTIONS), encoding="utf-8")
+    done = subprocess.run([*run, str(bad), "--out", str(tmp_path / "b")], capture_output=True, text=True)
+    assert done.returncode == 2 and "Wave (SignalPulseWave)" in done.stderr and "Traceback" not in done.stderr
+    assert not (tmp_path / "b").exists()
