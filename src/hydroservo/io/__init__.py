@@ -31,6 +31,8 @@ from typing import TYPE_CHECKING, Any
 #: Public name -> the module that defines it.
 _LAZY: dict[str, str] = {
     "read_bode": "hydroservo.io.bode",
+    "read_hmf": "hydroservo.io.hopsan",
+    "read_hopsan": "hydroservo.io.hopsan_library",
     "write_bode": "hydroservo.io.bode",
     "component_file_text": "hydroservo.io.component_file",
     "component_toml": "hydroservo.io.component_file",
@@ -68,6 +70,8 @@ _LAZY: dict[str, str] = {
 
 __all__ = [
     "read_bode",
+    "read_hmf",
+    "read_hopsan",
     "write_bode",
     "component_file_text",
     "component_toml",
