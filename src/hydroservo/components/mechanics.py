@@ -40,7 +40,7 @@ _END_OUTPUTS = {
 
 @register
 class Spring(Component):
-    r"""Linear spring between two ends: :math:`F_1 = F_2 = -k\,(x_1 + x_2 - e_0)`.
+    r"""Linear spring between two ends: :math:`F_1 = F_2 = -k_{spring}\,(x_1 + x_2 - e_0)`.
 
     ``x1``, ``x2`` are the outward displacements of its ends, so :math:`x_1 + x_2` is its extension;
     ``F1``, ``F2`` the forces it exerts outward on what its ends are joined to (a stretched spring pulls them
@@ -50,7 +50,7 @@ class Spring(Component):
     """
 
     PARAMETERS = {
-        "k": Param(100.0, "N/m", "stiffness", min=0.0),
+        "k_spring": Param(100.0, "N/m", "spring stiffness", min=0.0),
         "e0": Param(0.0, "m", "extension (x1 + x2) at which the spring is relaxed"),
     }
     INPUTS = _END_INPUTS
@@ -60,7 +60,7 @@ class Spring(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        tension = p["k"] * (u["x1"] + u["x2"] - p["e0"])
+        tension = p["k_spring"] * (u["x1"] + u["x2"] - p["e0"])
         return {"F1": -tension, "F2": -tension, "F": tension}
 
 

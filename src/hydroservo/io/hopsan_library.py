@@ -262,7 +262,7 @@ def _spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
     # relaxed at its start positions (Hopsan's are inward, hydroservo's outward)
     e0 = -(par.start("P1", "Position") + par.start("P2", "Position"))
-    return Mapped([Spring(n, k=par("k", 100.0), e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+    return Mapped([Spring(n, k_spring=par("k", 100.0), e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
 def _fixed_position(hc: HopsanComponent, n: str, par: _Params) -> Mapped:

@@ -167,7 +167,7 @@ def _oscillator(force: float = 0.0) -> System:
 
     s = System("oscillator")
     s.add(Mass("m", m=2.0, B=0.0, x0=0.01))
-    s.add(Spring("k", k=800.0))
+    s.add(Spring("k", k_spring=800.0))
     s.add(FixedPosition("ground"))
     s.add(ForceSource("f"))
     s.add(Constant("F0", unit="N", value=force))
