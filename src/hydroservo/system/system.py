@@ -356,8 +356,8 @@ class System:
         >>> from hydroservo import System, components as c
         >>> s = System()
         >>> _ = s.add(c.Mass("load", m=2.0))
-        >>> s.references()  # the Stribeck friction law
-        ['Efe2014']
+        >>> s.references()  # the Stribeck friction law, and the end stops (Hopsan's cylinder's)
+        ['Efe2014', 'Hopsan2026']
         """
         import inspect
 
