@@ -198,7 +198,8 @@ def _outputs(
     for aname, alias in system.aliases.items():
         if aname in signals:
             raise ModelError(f"alias {aname!r} clashes with a signal name")
-        outputs.add(aname, evaluate(alias.expr, {**signals, **params}, what=f"alias {aname!r}"))
+        # a signal and a parameter of one name (a source's output p and its setting p): the signal, which may be driven
+        outputs.add(aname, evaluate(alias.expr, {**params, **signals}, what=f"alias {aname!r}"))
         check_dimension(alias.expr, {**param_units, **units}, alias.unit, what=f"alias {aname!r}")
         units[aname], descriptions[aname] = alias.unit, alias.description or alias.expr
     return outputs
