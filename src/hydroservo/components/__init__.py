@@ -3,7 +3,8 @@
 =====================  ==========================================================
 module                 components
 =====================  ==========================================================
-:mod:`.sources`        ConstantPressure, Tank, PressureTable
+:mod:`.sources`        ConstantPressure, Tank, PressureTable, PressureSource,
+                       FlowSource
 :mod:`.volume`         Volume
 :mod:`.line`           Line, Hose
 :mod:`.accumulator`    Accumulator
@@ -12,11 +13,11 @@ module                 components
 :mod:`.mass`           Mass
 :mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
 :mod:`.valves`         FourWayValve, PseudoSectionValve, ServoSolenoidValve,
-                       StagedSlotValve, Orifice, CheckValve, ReliefValve,
+                       StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
-:mod:`.signals`        Constant, Step, Pulse, Ramp, Sine, Square, Table
+:mod:`.signals`        Constant, Step, SoftStep, Pulse, Ramp, Sine, Square, Table
 :mod:`.control`        Sum, Gain, Lag, Integrator, Saturation, PID, Amplifier,
                        Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
@@ -46,8 +47,8 @@ from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
 from hydroservo.components.pumps import Motor, Pump, VariablePump
-from hydroservo.components.signals import Constant, Pulse, Ramp, Sine, Square, Step, Table
-from hydroservo.components.sources import ConstantPressure, PressureTable, Tank
+from hydroservo.components.signals import Constant, Pulse, Ramp, Sine, SoftStep, Square, Step, Table
+from hydroservo.components.sources import ConstantPressure, FlowSource, PressureSource, PressureTable, Tank
 from hydroservo.components.spools import (
     FlapperNozzleSpool,
     SpoolFirstOrder,
@@ -60,6 +61,7 @@ from hydroservo.components.valves import (
     CheckValve,
     CounterbalanceValve,
     FourWayValve,
+    LaminarOrifice,
     Orifice,
     PressureReducingValve,
     PseudoSectionValve,
@@ -89,6 +91,10 @@ __all__ = [
     "ForceSource",
     "VelocitySource",
     "Constant",
+    "SoftStep",
+    "FlowSource",
+    "PressureSource",
+    "LaminarOrifice",
     "Integrator",
     "ConstantPressure",
     "Tank",

@@ -32,11 +32,12 @@ class Mass(Component):
     ``m_add`` (input) is added mass such as a cylinder's oil ([Efe2014] eqs.
     3.44-3.46).
 
-    Its two ends are the mechanical ports ``P1`` (outward is -x) and ``P2``
-    (outward is +x), as Hopsan's MechanicTranslationalMass ([Hopsan2026]):
-    the forces of what is connected there (a cylinder's rod, a spring) add into
-    ``F``. End stops (:func:`~hydroservo.laws.stops.end_stop_force`) act
-    beyond ``x_min`` and ``x_max`` when ``k_stop`` or ``c_stop`` is set.
+    Its two ends are the mechanical ports ``P2`` (at ``x``, outward along +x)
+    and ``P1`` (at ``x_P1 = length - x`` along its own outward direction, -x),
+    as Hopsan's MechanicTranslationalMass ([Hopsan2026]), whose ``length`` is
+    the sum of its ends' start positions: the forces of what is connected at
+    P2 add into ``F``, those at P1 into ``F_P1`` (counted outward at end 1).
+    End stops (:func:`~hydroservo.laws.stops.end_stop_force`) act beyond ``x_min`` and ``x_max`` when ``k_stop`` or ``c_stop`` is set.
     """
 
     RENAMED = {"k": "k_spring", "x_s": "x_spring"}
@@ -56,6 +57,7 @@ class Mass(Component):
         "x_max": Param(1e30, "m", "end stop, high side"),
         "k_stop": Param(0.0, "N/m", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
         "c_stop": Param(0.0, "N*s/m", "end-stop damping", min=0.0),
+        "length": Param(0.0, "m", "position of end 1 plus that of end 2, each along its outward direction"),
         "x0": Param(0.0, "m", "initial position"),
         "v0": Param(0.0, "m/s", "initial velocity"),
     }
@@ -65,17 +67,20 @@ class Mass(Component):
     }
     INPUTS = {
         "F": Port("N", "driving force in +x (e.g. a cylinder's F)", default=0.0),
+        "F_P1": Port("N", "force on end 1, outward (along -x): what port P1 sums", default=0.0),
         "F_ext": Port("N", "external force in +x", default=0.0),
         "m_add": Port("kg", "added moving mass", default=0.0),
     }
     MECHANICAL = {
-        "P1": Mechanical("x", "v", "F", "end 1 (outward is -x)", outward=False),
+        "P1": Mechanical("x_P1", "v_P1", "F_P1", "end 1 (outward is -x)"),
         "P2": Mechanical("x", "v", "F", "end 2 (outward is +x)"),
     }
     OUTPUTS = {
         "x": Output("m", "position"),
         "v": Output("m/s", "velocity"),
         "F_f": Output("N", "friction force (opposing motion)"),
+        "x_P1": Output("m", "position of end 1 along its outward direction (-x): length - x"),
+        "v_P1": Output("m/s", "velocity of end 1, outward (-v)"),
     }
 
     def output_equations(
@@ -83,12 +88,12 @@ class Mass(Component):
     ) -> dict[str, Any]:
         v = x["v"]
         Ff = stribeck(v, p["B"], p["F_c0"], p["F_s0"], p["c_s"], p["v_reg"])
-        return {"x": x["x"], "v": v, "F_f": Ff}
+        return {"x": x["x"], "v": v, "F_f": Ff, "x_P1": p["length"] - x["x"], "v_P1": -v}
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         weight = p["W"] * bk.sin(p["incline"])
-        force = u["F"] + u["F_ext"] - weight - y["F_f"] - p["k_spring"] * (x["x"] - p["x_spring"])
+        force = u["F"] - u["F_P1"] + u["F_ext"] - weight - y["F_f"] - p["k_spring"] * (x["x"] - p["x_spring"])
         force = force + end_stop_force(x["x"], x["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
         return {"x": x["v"], "v": force / (p["m"] + u["m_add"])}

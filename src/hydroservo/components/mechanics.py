@@ -83,20 +83,21 @@ class Damper(Component):
 
 @register
 class FixedPosition(Component):
-    """A fixed point: its port ``P`` stands still at ``x = 0`` whatever force acts on it (Hopsan's
+    """A fixed point: its port ``P`` stands still at ``x0`` whatever force acts on it (Hopsan's
     MechanicFixedPosition, [Hopsan2026]). The force it takes is the force of what is joined to it."""
 
+    PARAMETERS = {"x0": Param(0.0, "m", "where the point is, along its outward direction")}
     INPUTS = {"F": Port("N", "force acting on the point, outward", default=0.0)}
     MECHANICAL = {"P": Mechanical("x", "v", "F", "the fixed point (outward)")}
     OUTPUTS = {
-        "x": Output("m", "position (always 0)"),
+        "x": Output("m", "position (always x0)"),
         "v": Output("m/s", "velocity (always 0)"),
     }
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"x": 0.0 * t, "v": 0.0 * t}
+        return {"x": p["x0"] + 0.0 * t, "v": 0.0 * t}
 
 
 @register

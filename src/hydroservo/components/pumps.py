@@ -24,13 +24,15 @@ _PUMP_HYDRAULIC = {
 class Pump(Component):
     r"""Fixed-displacement pump at constant speed, with internal leakage.
 
-    .. math:: Q_P = D\,\omega - C_{leak}\,(p_P - p_S), \qquad Q_S = Q_P
+    .. math:: Q_P = \varepsilon D\,\omega - C_{leak}\,(p_P - p_S), \qquad Q_S = Q_P
 
     (:mod:`hydroservo.laws.displacement`, [Merritt1967]). ``D`` is per radian;
     give a catalogue's displacement with its unit (``"25 cm^3/rev"``) and the
     speed as ``"1500 rpm"``. The drive holds its speed whatever the load (an
-    electric motor far from stall). Outputs: the delivered flow ``QP`` and the
-    shaft torque the pump takes.
+    electric motor far from stall). The input ``eps`` (default 1) scales the
+    displacement: a variable pump driven by a signal, without a controller
+    (Hopsan's HydraulicVariableDisplacementPump, [Hopsan2026]). Outputs: the
+    delivered flow ``QP`` and the shaft torque the pump takes.
     """
 
     PARAMETERS = {
@@ -41,7 +43,10 @@ class Pump(Component):
             350e5, "Pa", "rated pressure: the highest it is built to deliver against", min=0.0, min_inclusive=False
         ),
     }
-    INPUTS = dict(_PUMP_INPUTS)
+    INPUTS = {
+        **_PUMP_INPUTS,
+        "eps": Port("", "displacement setting (1: full; a variable pump without a controller)", default=1.0),
+    }
     OUTPUTS = {
         "QP": Output("m^3/s", "flow delivered at P"),
         "QS": Output("m^3/s", "flow drawn at S"),
@@ -61,7 +66,7 @@ class Pump(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return self._delivery(u, p)
+        return self._delivery(u, p, u["eps"])
 
 
 @register

@@ -16,7 +16,7 @@ from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Output, Param, register
 from hydroservo.errors import ParameterError
 
-__all__ = ["Constant", "Step", "Pulse", "Ramp", "Sine", "Square", "Table", "SIGNAL_OUTPUT"]
+__all__ = ["Constant", "Step", "SoftStep", "Pulse", "Ramp", "Sine", "Square", "Table", "SIGNAL_OUTPUT"]
 
 #: The output of every signal block.
 SIGNAL_OUTPUT = {"y": Output(SIGNAL, "signal")}
@@ -55,6 +55,38 @@ class Step(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, tuple[Any, float]]:
         return {"step": (t - p["t_step"], 1e-3)}
+
+
+@register
+class SoftStep(Component):
+    r"""A step eased by half a cosine: ``offset`` before ``t_start``,
+    :math:`offset + \tfrac{A}{2}(1 - \cos(\pi (t - t_{start})/(t_{end} - t_{start})))` until ``t_end``,
+    ``offset + amplitude`` after (Hopsan's SignalSoftStep, [Hopsan2026])."""
+
+    PARAMETERS = {
+        "amplitude": Param(1.0, SIGNAL, "step height"),
+        "t_start": Param(1.0, "s", "start of the step", min=0.0),
+        "t_end": Param(2.0, "s", "end of the step", min=0.0),
+        "offset": Param(0.0, SIGNAL, "value before the step"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def check(self) -> None:
+        if self.values["t_end"] <= self.values["t_start"]:
+            raise ParameterError(
+                f"{self.name}.t_end = {self.values['t_end']:g} s: expected after t_start = {self.values['t_start']:g} s"
+            )
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        phase = bk.fmin(bk.fmax((t - p["t_start"]) / (p["t_end"] - p["t_start"]), 0.0), 1.0)
+        return {"y": p["offset"] + 0.5 * p["amplitude"] * (1.0 - bk.cos(np.pi * phase))}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        return {"start": (t - p["t_start"], 1e-3), "end": (t - p["t_end"], 1e-3)}
 
 
 @register

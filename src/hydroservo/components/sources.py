@@ -12,7 +12,7 @@ from hydroservo.components.base import Component, Hydraulic, Limit, Output, Para
 from hydroservo.errors import ParameterError
 from hydroservo.units import VACUUM, to_si
 
-__all__ = ["ConstantPressure", "Tank", "PressureTable"]
+__all__ = ["ConstantPressure", "Tank", "PressureTable", "PressureSource", "FlowSource"]
 
 
 @register
@@ -99,3 +99,43 @@ def _si_list(values: Any, unit: str, what: str) -> list[float]:
     """A list of numbers (SI) or of quantities with units, in SI."""
     items = np.atleast_1d(np.asarray(values, dtype=object)).ravel().tolist()
     return [to_si(v, unit, what=what) if isinstance(v, str) else float(v) for v in items]
+
+
+@register
+class FlowSource(Component):
+    """Ideal flow source: delivers the flow ``q + u`` into the circuit through its port ``P``, whatever the
+    pressure there (Hopsan's HydraulicFlowSourceQ, [Hopsan2026])."""
+
+    PARAMETERS = {"q": Param(1e-3, "m^3/s", "constant flow delivered")}
+    INPUTS = {
+        "u": Port("m^3/s", "flow delivered on top of q (a signal)", default=0.0),
+        "p": Port("Pa", "pressure at port P", default=0.0),
+    }
+    OUTPUTS = {"Q": Output("m^3/s", "flow delivered into the circuit at P")}
+    HYDRAULIC = {"P": Hydraulic("p", "Q", "flow port", into=False)}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"Q": p["q"] + u["u"]}
+
+
+@register
+class PressureSource(Component):
+    """A pressure set by a signal: its port ``P`` holds ``p0 + u`` whatever flow it takes (Hopsan's
+    HydraulicPressureSourceC with its pressure driven, [Hopsan2026]; a signal of absolute pressure takes
+    ``p0 = "0 Pa_abs"``)."""
+
+    PARAMETERS = {"p0": Param(0.0, "Pa", "pressure added to the signal (gauge)", min=VACUUM)}
+    INPUTS = {
+        "u": Port("Pa", "pressure signal"),
+        "Q": Port("m^3/s", "flow delivered into the circuit through port P", default=0.0),
+    }
+    OUTPUTS = {"p": Output("Pa", "pressure")}
+    LIMITS = {"p": Limit("source")}
+    HYDRAULIC = {"P": Hydraulic("p", "Q", "pressure port", into=False)}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"p": p["p0"] + u["u"]}

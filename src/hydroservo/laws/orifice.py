@@ -278,6 +278,37 @@ def turbulent_flow(G: Any, dp: Any, p_tr: Any = 0.0) -> Any:
     return G * signed_sqrt(dp, p_tr)
 
 
+def laminar_flow(K_c: Any, dp: Any) -> Any:
+    r"""Laminar flow through a restriction, proportional to the pressure drop: :math:`Q = K_c\,\Delta p`.
+
+    The law of a capillary or a long narrow passage (Hagen-Poiseuille: :math:`K_c = \pi d^4/(128 \mu l)` for
+    a round bore), and of Hopsan's HydraulicLaminarOrifice, whose pressure-flow coefficient :math:`K_c` is
+    given directly.
+
+    Parameters
+    ----------
+    K_c : array_like
+        Pressure-flow coefficient [m^3/s/Pa].
+    dp : array_like
+        Pressure drop, upstream minus downstream [Pa].
+
+    Returns
+    -------
+    array_like
+        Volume flow [m^3/s], positive from upstream to downstream.
+
+    References
+    ----------
+    [Merritt1967] (laminar flow through passages); [Hopsan2026] (HydraulicLaminarOrifice).
+
+    Examples
+    --------
+    >>> round(float(laminar_flow(1e-11, 1e6)) * 6e4, 6)  # L/min
+    0.6
+    """
+    return K_c * dp
+
+
 def orifice_flow(A: Any, dp: Any, rho: Any, Cd: Any = DISCHARGE_COEFFICIENT, p_tr: Any = 0.0) -> Any:
     r"""Flow through a sharp-edged orifice, in the direction of the pressure drop.
 

@@ -228,6 +228,6 @@ def test_ports_of_different_kinds_do_not_join() -> None:
     from hydroservo.components import Cylinder
 
     s2.add(Cylinder("c"))
-    s2.connect("c.F", "m.F")
+    s2.connect("c.F", "m.F_P1")
     with pytest.raises(ModelError, match=r"already connected as a signal"):
         s2.connect("c.R", "m.P1")

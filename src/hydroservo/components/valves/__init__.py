@@ -12,7 +12,7 @@ valves), :mod:`.two_stage` (the first-principles two-stage servovalve of
 from hydroservo.components.valves.catalogue import CatalogueServovalve
 from hydroservo.components.valves.check import CheckValve
 from hydroservo.components.valves.four_way import FourWayValve
-from hydroservo.components.valves.orifice import Orifice
+from hydroservo.components.valves.orifice import LaminarOrifice, Orifice
 from hydroservo.components.valves.pressure_control import CounterbalanceValve, PressureReducingValve, ReliefValve
 from hydroservo.components.valves.pseudo_section import PseudoSectionValve, ServoSolenoidValve
 from hydroservo.components.valves.staged_slot import StagedSlotValve
@@ -24,6 +24,7 @@ __all__ = [
     "ServoSolenoidValve",
     "StagedSlotValve",
     "Orifice",
+    "LaminarOrifice",
     "CheckValve",
     "ReliefValve",
     "PressureReducingValve",

@@ -1,4 +1,4 @@
-"""Fixed restrictions: the sharp-edged orifice, turbulent with its laminar transition."""
+"""Fixed restrictions: the sharp-edged orifice, turbulent with its laminar transition, and the laminar one."""
 
 from __future__ import annotations
 
@@ -7,11 +7,12 @@ from typing import Any
 
 import numpy as np
 
-from hydroservo.components.base import Component, Output, Param, register
+from hydroservo import backend as bk
+from hydroservo.components.base import Component, Output, Param, Port, register
 from hydroservo.components.valves.ports import FLUID_PARAMETERS, TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
-from hydroservo.laws.orifice import DISCHARGE_COEFFICIENT, orifice_flow, transition_pressure
+from hydroservo.laws.orifice import DISCHARGE_COEFFICIENT, laminar_flow, orifice_flow, transition_pressure
 
-__all__ = ["Orifice"]
+__all__ = ["Orifice", "LaminarOrifice"]
 
 
 @register
@@ -44,3 +45,20 @@ class Orifice(Component):
         p_tr = transition_pressure(p["d"], p["rho"], p["nu"], p["lambda_crit"])
         area = np.pi * p["d"] ** 2 / 4.0
         return {"Q": orifice_flow(area, u["pA"] - u["pB"], p["rho"], p["Cd"], p_tr)}
+
+
+@register
+class LaminarOrifice(Component):
+    r"""Laminar restriction: :math:`Q = (G_{lam} + u)\,(p_A - p_B)` (:func:`hydroservo.laws.orifice.laminar_flow`), a
+    capillary, a long narrow passage, or Hopsan's HydraulicLaminarOrifice ([Hopsan2026]); the input ``u`` is a
+    signal that varies the coefficient (a load of Hopsan's examples)."""
+
+    PARAMETERS = {"G_lam": Param(1e-11, "m^3/s/Pa", "laminar conductance (pressure-flow coefficient)", min=0.0)}
+    INPUTS = {**TWO_PORT_PRESSURES, "u": Port("m^3/s/Pa", "conductance added to G_lam (a signal)", default=0.0)}
+    OUTPUTS = {"Q": Output("m^3/s", "flow from A to B")}
+    HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"Q": laminar_flow(bk.fabs(p["G_lam"] + u["u"]), u["pA"] - u["pB"])}

@@ -1,0 +1,107 @@
+"""The parts added for Hopsan's library: laminar orifice, flow source, driven sources, soft step, integrator,
+a pump's displacement setting, a fixed point away from 0, a velocity source, a mass with a length.
+
+Each against its closed form."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from hydroservo import System
+from hydroservo import components as c
+
+
+def test_laminar_orifice_between_two_sources_and_its_driven_coefficient() -> None:
+    s = System("orifice")
+    s.add(c.Tank("high", p="100 bar"))
+    s.add(c.Tank("low"))
+    s.add(c.LaminarOrifice("o", G_lam=2e-11))
+    s.add(c.Step("dk", unit="m^3/s/Pa", amplitude=1e-11, t_step=0.5))
+    s.connect("high.P", "o.A")
+    s.connect("o.B", "low.P")
+    s.connect("dk.y", "o.u")
+    r = s.simulate(t_eval=[0.25, 0.75])
+    assert r["o.Q"][0] == pytest.approx(2e-11 * 100e5) and r["o.Q"][1] == pytest.approx(3e-11 * 100e5)
+
+
+def test_flow_source_fills_a_volume() -> None:
+    """dp/dt = beta q / V: 1e-4 m^3/s into 1 L at 1e9 Pa gives 1e8 Pa/s."""
+    s = System("fill")
+    s.add(c.FlowSource("q", q=1e-4))
+    s.add(c.Volume("v", V="1 L", beta_e=1e9))
+    s.connect("q.P", "v.P")
+    r = s.simulate(t_eval=[0.0, 0.01])
+    assert r["v.p"][1] == pytest.approx(1e6, rel=1e-6)
+
+
+def test_a_pressure_source_follows_its_signal() -> None:
+    s = System("driven")
+    s.add(c.PressureSource("t", p0="1 bar"))
+    s.add(c.Constant("u", unit="Pa", value=2e5))
+    s.add(c.Volume("v"))
+    s.add(c.LaminarOrifice("o"))
+    s.connect("t.P", "o.A")
+    s.connect("o.B", "v.P")
+    s.connect("u.y", "t.u")
+    assert s.simulate(t_end=0.01)["t.p"][-1] == pytest.approx(3e5)
+
+
+def test_soft_step_is_half_a_cosine() -> None:
+    s = System("soft")
+    s.add(c.SoftStep("y", amplitude=2.0, offset=1.0, t_start=1.0, t_end=3.0))
+    s.add(c.Integrator("i"))
+    s.connect("y.y", "i.u")
+    t = np.array([0.0, 0.5, 1.5, 2.0, 4.0])
+    r = s.simulate(t_eval=t, accuracy=1e-8)
+    expected = 1.0 + 1.0 * (1.0 - np.cos(np.pi * np.clip((t - 1.0) / 2.0, 0.0, 1.0)))
+    assert np.allclose(r["y.y"], expected)
+    # its integral over 0-4 s: 1 before the step, 4 during it (the cosine's part integrates to 0), 3 after
+    assert r["i.y"][-1] == pytest.approx(8.0, rel=1e-6)
+    with pytest.raises(Exception, match="t_end"):
+        c.SoftStep("bad", t_start=2.0, t_end=1.0).check()
+
+
+def test_pump_displacement_setting_scales_its_flow() -> None:
+    s = System("pump")
+    s.add(c.Tank("t"))
+    s.add(c.Tank("out", p="10 bar"))
+    s.add(c.Pump("p", D="10 cm^3/rev", omega="1500 rpm"))
+    s.add(c.Constant("eps", value=0.4))
+    s.connect("t.P", "p.S")
+    s.connect("p.P", "out.P")
+    s.connect("eps.y", "p.eps")
+    q = s.simulate(t_end=0.01)["p.QP"][-1]
+    assert q == pytest.approx(0.4 * 10e-6 * 1500 / 60)
+
+
+def test_mass_length_places_end_1_and_a_fixed_point_holds_its_position() -> None:
+    """A mass whose end 1 sits at length - x, held by a spring to a fixed point at 0.1 m: relaxed at the start
+    positions, the spring holds it there; 10 N along +x moves it by 10 N / k."""
+    s = System("held")
+    s.add(c.Mass("m", m=1.0, B=100.0, x0=0.02, length=0.05))
+    # the spring's ends face the mass's end 1 and the point: outward displacements -(0.05 - 0.02) and -0.1
+    s.add(c.Spring("k", k_spring=1000.0, e0=-(0.03 + 0.1)))
+    s.add(c.FixedPosition("g", x0=0.1))
+    s.add(c.Step("push", unit="N", amplitude=10.0, t_step=1.0))
+    s.connect("m.P1", "k.P1")
+    s.connect("k.P2", "g.P")
+    s.connect("push.y", "m.F_ext")
+    r = s.simulate(t_eval=[0.0, 0.9, 6.0], accuracy=1e-8)
+    assert np.allclose(r["m.x_P1"], 0.05 - r["m.x"])
+    assert r["m.x"][1] == pytest.approx(0.02, abs=1e-12)  # relaxed: nothing moves before the push
+    assert r["m.x"][2] == pytest.approx(0.02 + 10.0 / 1000.0, rel=1e-6)
+
+
+def test_velocity_source_moves_its_node() -> None:
+    s = System("driven mass")
+    s.add(c.VelocitySource("src", x0=0.01))
+    s.add(c.Constant("v", unit="m/s", value=0.2))
+    s.add(c.Spring("k", k_spring=500.0, e0=-0.01))
+    s.add(c.FixedPosition("g"))
+    s.connect("v.y", "src.u")
+    s.connect("src.P", "k.P1")
+    s.connect("k.P2", "g.P")
+    r = s.simulate(t_eval=[0.0, 1.0])
+    assert r["src.x"][1] == pytest.approx(0.21)
+    assert r["k.F"][1] == pytest.approx(500.0 * (-0.21 + 0.01))  # compressed by 0.2 m: tension -100 N
