@@ -382,7 +382,7 @@ def test_readme_example_compiles_and_runs(tmp_path: Any) -> None:
         ({"step": 0.0}, r"step '0\.0': expected a positive, finite step"),
         ({"step": "1 bar"}, "wrong dimension"),
         ({"step": 1e-3, "method": "euler"}, "method 'euler': expected one of rk4, bdf2"),
-        ({"step": 1e-3, "inputs": ["load.push"]}, "'load' has no input 'push'; expected one of load.F, load.F_ext"),
+        ({"step": 1e-3, "inputs": ["load.push"]}, "'load' has no input 'push'; expected one of load.F, load.F_P1, load.F_ext"),
         ({"step": 1e-3, "inputs": ["lever.u"]}, "no component 'lever'"),
         ({"step": 1e-3, "inputs": ["load.F_ext", "load.F_ext"]}, "given twice"),
         ({"step": 1e-3, "name": "double"}, "expected a C identifier"),

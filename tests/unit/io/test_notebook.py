@@ -34,7 +34,7 @@ def test_a_system_shows_what_it_is_its_source_notes_circuit_and_parameters(fligh
 def test_a_result_shows_its_run_main_signals_in_the_model_units_and_a_plot(flight) -> None:
     _, result = flight
     text = repr(result)
-    assert re.fullmatch(r"<Result of 'flight-simulator': 0 to 0\.3 s, 61 times, 36 signals \(rodas3, \d+ steps\)>", text)
+    assert re.fullmatch(r"<Result of 'flight-simulator': 0 to 0\.3 s, 61 times, 38 signals \(rodas3, \d+ steps\)>", text)
     page = result._repr_html_()
     main = page[: page.index("<details>")]
     rows = re.findall(r"<tr><td>([^<]+)</td><td>([^<]+)</td>", main)
@@ -42,7 +42,7 @@ def test_a_result_shows_its_run_main_signals_in_the_model_units_and_a_plot(fligh
     png = base64.b64decode(re.search(r'src="data:image/png;base64,([^"]+)"', page).group(1))
     assert png.startswith(b"\x89PNG") and len(png) > 20_000
     every = page[page.index("<details>"):]
-    assert "All 36 signals" in every and "<td>cyl.m_oil</td>" in every
+    assert "All 38 signals" in every and "<td>cyl.m_oil</td>" in every
 
 
 def test_a_result_with_warnings_says_so_first(tmp_path) -> None:
