@@ -45,6 +45,7 @@ __all__ = [
     "model_text",
     "example_files",
     "reference_text",
+    "reference_path",
     "c_template",
     "servovalves",
 ]
@@ -124,6 +125,14 @@ def reference_text(name: str) -> str:
     if not path.is_file():
         raise ParameterError(f"no reference result {name!r}")
     return path.read_text(encoding="utf-8")
+
+
+def reference_path(name: str) -> Path:
+    """The file of a result of another tool, or of the model it was compared with (``reference/NAME``)."""
+    path = Path(str(_ROOT / "reference" / name))
+    if not path.is_file():
+        raise ParameterError(f"no reference file {name!r}")
+    return path
 
 
 def c_template(name: str) -> str:

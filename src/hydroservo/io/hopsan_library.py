@@ -74,17 +74,30 @@ class Mapped:
     outputs: dict[str, str] = field(default_factory=dict)
     values: dict[str, Var] = field(default_factory=dict)
     note: str = ""
+    #: Hopsan input port -> (parameter of the first component, its value) set when a signal drives that input,
+    #: which the component then adds (a source's pressure, an orifice's coefficient)
+    zeroed: dict[str, tuple[str, float | str]] = field(default_factory=dict)
+    #: initial values of states ("comp.state" -> value, SI) taken from Hopsan's start values
+    initial: dict[str, float] = field(default_factory=dict)
     #: signals joining the components it became: (output, input)
     internal: list[tuple[str, str]] = field(default_factory=list)
-    #: Hopsan ports that are multiports (each connection a node of its own, as a multiport volume's P1)
-    multiports: frozenset[str] = frozenset()
 
 
 class _Params:
     """A Hopsan component's parameters, read by Hopsan's names with their defaults (from its component file)."""
 
-    def __init__(self, hc: HopsanComponent, where: str, problems: list[str]) -> None:
+    def __init__(
+        self,
+        hc: HopsanComponent,
+        where: str,
+        problems: list[str],
+        node_start: dict[str, dict[str, float]] | None = None,
+        driven: frozenset[str] = frozenset(),
+    ) -> None:
         self.hc, self.where, self.problems = hc, where, problems
+        self.node_start = node_start or {}
+        #: the component's ports Hopsan connects to something (its signal inputs among them are driven)
+        self.driven = driven
 
     def __call__(self, name: str, default: float) -> float:
         for key in (f"{name}#Value", name):
@@ -97,11 +110,22 @@ class _Params:
         return default
 
     def start(self, port: str, variable: str, default: float = 0.0) -> float:
-        """A port variable's start value (``P1#Pressure``)."""
-        return self(f"{port}#{variable}", default)
+        """A port variable's start value (``P1#Pressure``): the node's, which the component that owns it gives
+        (Hopsan's C components write the start values of their nodes, its Q components read them), else this
+        component's own."""
+        value = self.node_start.get(port, {}).get(variable)
+        return value if value is not None else self(f"{port}#{variable}", default)
 
 
 Builder = Callable[[HopsanComponent, str, _Params], Mapped]
+
+#: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
+MULTIPORTS: dict[str, frozenset[str]] = {
+    "HydraulicVolumeMultiPort": frozenset({"P1"}),
+    "HydraulicMultiTankC": frozenset({"MP"}),
+    "HydraulicMultiPressureSourceC": frozenset({"MP"}),
+    "HydraulicCylinderC": frozenset({"P1", "P2"}),
+}
 
 
 def safe_name(name: str) -> str:
@@ -119,17 +143,24 @@ def _abs(p: float) -> str:
 
 
 def _tank(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    from hydroservo.components import Tank
+    return _source(n, par("p", 1e5), hc, par)
 
-    return Mapped([Tank(n, p=_abs(par("p", 1e5)))], power={"P1": f"{n}.P"})
+
+def _source(n: str, p_abs: float, hc: HopsanComponent, par: _Params) -> Mapped:
+    """A tank or a C-type pressure source: a Tank at Hopsan's absolute pressure, or a PressureSource following
+    the signal that drives it (Hopsan's absolute pressure)."""
+    from hydroservo.components import PressureSource, Tank
+
+    port = "MP" if "Multi" in hc.typename else "P1"
+    if "p" in par.driven:
+        return Mapped([PressureSource(n, p0="0 Pa_abs")], power={port: f"{n}.P"}, inputs={"p": f"{n}.u"})
+    return Mapped([Tank(n, p=_abs(p_abs))], power={port: f"{n}.P"})
 
 
 def _pressure_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    from hydroservo.components import Tank
-
     # a source of constant pressure that takes any flow: a tank at that pressure (Tank allows any pressure
     # above vacuum, ConstantPressure only above the atmosphere)
-    return Mapped([Tank(n, p=_abs(par("p", 1e5)))], power={"P1": f"{n}.P"})
+    return _source(n, par("p", 1e5), hc, par)
 
 
 def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -137,7 +168,7 @@ def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
     comp = Volume(n, V=par("V", 1e-3), beta_e=par("Beta_e", 1e9), p0=_abs(par.start("P1", "Pressure", 1e5)))
     ports = {"P1": f"{n}.P", "P2": f"{n}.P"}  # HydraulicVolume's two ports and the multiport's one: one node
-    return Mapped([comp], power=ports, multiports=frozenset({"P1"}) if hc.typename.endswith("MultiPort") else frozenset())
+    return Mapped([comp], power=ports)
 
 
 def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -195,6 +226,7 @@ def _valve43(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         power={"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.A", "PB": f"{n}.B"},
         inputs={"in": f"{n}_stroke.u"},
         values={"xv": Var(1.0, f"{n}_spool.xv")},
+        initial={f"{n}_spool.s": par("xv", 0.0) / x_vmax},  # Hopsan's start value of the spool's position
         internal=[(f"{n}_stroke.y", f"{n}_spool.u"), (f"{n}_spool.xv", f"{n}.xv"), (f"{n}_spool.vv", f"{n}.vv")],
         note="a Gain (reference in m to a fraction of the stroke), a SpoolSecondOrder and a FourWayValve",
     )
@@ -220,7 +252,49 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         pA0=_abs(par.start("P1", "Pressure", 1e5)),
         pB0=_abs(par.start("P2", "Pressure", 1e5)),
     )
-    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.R"}, multiports=frozenset({"P1", "P2"}))
+    use_sl = hc.parameters.get("use_sl")
+    if use_sl is not None and use_sl.text.strip().lower() in ("false", "0"):
+        comp.set(k_stop=0.0, c_stop=0.0)  # Hopsan's end stops switched off
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.R"})
+
+
+def _flow_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import FlowSource
+
+    # Hopsan's q is an input: a constant, or a signal added to q = 0 (the importer sets it when connected)
+    return Mapped([FlowSource(n, q=par("q", 1e-3))], power={"P1": f"{n}.P"}, inputs={"q": f"{n}.u"}, zeroed={"q": ("q", 0.0)})
+
+
+def _laminar_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import LaminarOrifice
+
+    return Mapped(
+        [LaminarOrifice(n, G_lam=abs(par("Kc", 1e-11)))],
+        power={"P1": f"{n}.A", "P2": f"{n}.B"},
+        inputs={"Kc": f"{n}.u"},
+        zeroed={"Kc": ("G_lam", 0.0)},
+    )
+
+
+def _turbulent_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Orifice
+
+    area = abs(par("A", 1e-5))
+    comp = Orifice(
+        n,
+        d=math.sqrt(4.0 * area / math.pi),
+        Cd=par("C_q", 0.67),
+        rho=par("rho", 870.0),
+        lambda_crit=10.0,  # turbulent down to a few Pa, as Hopsan's
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Pump
+
+    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("omega_p", 50.0), C_leak=par("K_cp", 1e-12))
+    return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"}, inputs={"eps": f"{n}.eps"})
 
 
 def _pressure_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -238,22 +312,19 @@ def _mass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Mass
 
     x_min, x_max = par("x_min", -1e300), par("x_max", 1e300)
+    x1, x2 = par.start("P1", "Position"), par.start("P2", "Position")
     comp = Mass(
         n,
         m=par("m", 100.0),
         B=par("B", 10.0),
         k_spring=par("k", 0.0),
         incline=0.0,
-        x0=par.start("P2", "Position"),
+        length=x1 + x2,  # Hopsan keeps the ends' start positions apart by this (its mLength)
+        x0=x2,
         v0=par.start("P2", "Velocity"),
     )
     if abs(x_min) < 1e299 or abs(x_max) < 1e299:  # Hopsan's inelastic stops, as stiff ones
         comp.set(x_min=max(x_min, -1e30), x_max=min(x_max, 1e30), k_stop=1e9, c_stop=1e6)
-    if par.start("P1", "Position") + par.start("P2", "Position") != 0.0:
-        par.problems.append(
-            f"{par.where}: start positions of P1 and P2 that do not add up to zero (a mass of some length) are not "
-            "supported yet"
-        )
     return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
@@ -268,13 +339,21 @@ def _spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _fixed_position(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import FixedPosition
 
-    return Mapped([FixedPosition(n)], power={"Pm1": f"{n}.P"})
+    return Mapped([FixedPosition(n, x0=par.start("Pm1", "Position"))], power={"Pm1": f"{n}.P"})
 
 
 def _force_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import ForceSource
 
     return Mapped([ForceSource(n)], power={"P1": f"{n}.P"}, inputs={"F": f"{n}.u"})
+
+
+def _velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import VelocitySource
+
+    comp = VelocitySource(n, x0=par("x", 0.0))
+    # the position input, when connected, sets the position apart from the velocity: not supported (refused)
+    return Mapped([comp], power={"Pm1": f"{n}.P"}, inputs={"v": f"{n}.u"})
 
 
 def _position_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -303,6 +382,41 @@ def _step(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Step
 
     comp = Step(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_step=par("t_step", 1.0))
+    return Mapped([comp], outputs={"out": f"{n}.y"})
+
+
+def _ramp(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Ramp, Step
+
+    y0, ya, t0, t1 = par("y_0", 0.0), par("y_A", 1.0), par("t_start", 1.0), par("t_end", 2.0)
+    if t1 <= t0:  # Hopsan jumps at t_start
+        return Mapped([Step(n, offset=y0, amplitude=ya, t_step=max(t0, 0.0))], outputs={"out": f"{n}.y"})
+    comp = Ramp(n, offset=y0, slope=ya / (t1 - t0), t_start=max(t0, 0.0), limit=abs(ya))
+    if t0 < 0.0:
+        par.problems.append(f"{par.where}: a ramp that starts before 0 s (t_start = {t0:g} s) is not supported")
+    return Mapped([comp], outputs={"out": f"{n}.y"})
+
+
+def _sine(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Sine
+
+    f = par("f", 1.0)
+    comp = Sine(n, amplitude=par("y_A", 1.0), frequency=f, phase=-2.0 * math.pi * f * par("y_offset", 0.0), t_start=par("t_start", 0.0))
+    return Mapped([comp], outputs={"out": f"{n}.y"})
+
+
+def _pulse(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Pulse
+
+    t0, t1 = par("t_start", 1.0), par("t_end", 2.0)
+    comp = Pulse(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=max(t0, 0.0), duration=max(t1 - max(t0, 0.0), 0.0))
+    return Mapped([comp], outputs={"out": f"{n}.y"})
+
+
+def _soft_step(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import SoftStep
+
+    comp = SoftStep(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=par("t_start", 1.0), t_end=par("t_end", 2.0))
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
@@ -343,7 +457,14 @@ def _sink(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 #: ``componentLibraries/defaultLibrary``).
 LIBRARY: dict[str, Builder] = {
     "HydraulicTankC": _tank,
+    "HydraulicMultiTankC": _tank,
     "HydraulicPressureSourceC": _pressure_source,
+    "HydraulicMultiPressureSourceC": _pressure_source,
+    "HydraulicFlowSourceQ": _flow_source,
+    "HydraulicLaminarOrifice": _laminar_orifice,
+    "HydraulicTurbulentOrifice": _turbulent_orifice,
+    "HydraulicVariableDisplacementPump": _variable_pump,
+    "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
     "HydraulicPressureReliefValve": _relief,
@@ -360,6 +481,10 @@ LIBRARY: dict[str, Builder] = {
     "MechanicVelocitySensor": _velocity_sensor,
     "MechanicForceSensor": _force_sensor,
     "SignalStep": _step,
+    "SignalRamp": _ramp,
+    "SignalSineWave": _sine,
+    "SignalPulse": _pulse,
+    "SignalSoftStep": _soft_step,
     "SignalConstant": _constant,
     "SignalGain": _gain,
     "SignalAdd": _sum_of_two(1.0),
@@ -377,6 +502,7 @@ class HopsanImport:
     model: HopsanModel
     mapping: list[tuple[str, str, str]]  #: (Hopsan path, Hopsan type, what it became)
     names: dict[str, str]  #: Hopsan path -> hydroservo component name
+    variables: dict[str, str]  #: alias -> Hopsan's name of the variable (``Servo1$Valve#PA#Pressure``)
 
 
 def read_hopsan(path: str | Path) -> System:
@@ -411,6 +537,13 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     used: set[str] = set()
     mapped: dict[str, Mapped] = {}
     mapping: list[tuple[str, str, str]] = []
+    by_name = {hc.full_name: hc for hc in model.components}
+    multiports = {(c.full_name, p) for c in model.components for p in MULTIPORTS.get(c.typename, ())}
+    node_start = _node_starts(model, by_name, multiports)
+    connected: dict[str, frozenset[str]] = {}
+    for connection in model.connections:
+        for owner, port in (_end(e) for e in connection):
+            connected[owner] = connected.get(owner, frozenset()) | {port}
     for hc in model.components:
         name = safe_name("_".join((*hc.path, hc.name)))
         base, k = name, 1
@@ -421,7 +554,8 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         names[hc.full_name] = name
         where = f"{source}: {hc.full_name} ({hc.typename})"
         try:
-            m = LIBRARY[hc.typename](hc, name, _Params(hc, where, problems))
+            starts = {port: values for (c, port), values in node_start.items() if c == hc.full_name}
+            m = LIBRARY[hc.typename](hc, name, _Params(hc, where, problems, starts, connected.get(hc.full_name, frozenset())))
         except Exception as exc:  # a value out of a component's range: named with the Hopsan component
             problems.append(f"{where}: {exc}")
             continue
@@ -431,8 +565,15 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     if problems:
         raise ModelFileError("; ".join(problems))
 
-    system = System(safe_name(model.name or Path(source).stem))
+    system = System(safe_name(model.name or Path(source).stem), t_end=model.stop - model.start)
     system.description = model.description or f"imported from Hopsan model {Path(source).name}"
+    system.notes.append(
+        f"Imported from the Hopsan model {Path(source).name}, which Hopsan runs from {model.start:g} s to "
+        f"{model.stop:g} s at a fixed step of {model.timestep:g} s; hydroservo chooses its steps by the accuracy "
+        f"asked for. Hopsan's port variables are aliases named with dots (Mass#P2#Position is Mass.P2.Position)."
+    )
+    if model.start != 0.0:
+        problems.append(f"{source}: a simulation that starts at {model.start:g} s, not 0, is not supported yet")
     system.source = source
     for m in mapped.values():
         for comp in m.components:
@@ -440,34 +581,53 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     for m in mapped.values():
         for out, inp in m.internal:
             system.connect(out, inp)
-
-    def ref(end: str) -> tuple[str, str]:
-        comp, _, port = end.rpartition(".")
-        return comp, port
+        for state, first in m.initial.items():
+            if first != 0.0:
+                system.set_initial(state, first)
 
     # group Hopsan's connections into nodes: power ports (and read ports) by union, signal links pairwise
     power_groups: list[list[tuple[str, str]]] = []
     signal_links: list[tuple[tuple[str, str], tuple[str, str]]] = []
     for connection in model.connections:
-        ends = [ref(e) for e in connection]
+        ends = [_end(e) for e in connection]
         kinds = {_port_kind(mapped.get(c), p) for c, p in ends}
         if kinds <= {"power", "read"}:
             power_groups.append(ends)
         else:
             signal_links.extend(zip(ends, ends[1:], strict=False))
-    power_groups = _union(power_groups, {(c, p) for c, m in mapped.items() for p in m.multiports})
+    power_groups = _union(power_groups, multiports)
 
     connected_inputs: set[tuple[str, str]] = set()
+    scopes: dict[str, list[str]] = {}  # a sink -> what it shows (Hopsan's outputs): the imported model's plots
     for (ca, pa), (cb, pb) in signal_links:
         ka, kb = _port_kind(mapped.get(ca), pa), _port_kind(mapped.get(cb), pb)
+        if "dropped" in (ka, kb) and ({ka, kb} & {"output", "value"}):
+            (co, po), sink = ((ca, pa), cb) if kb == "dropped" else ((cb, pb), ca)
+            scopes.setdefault(sink, []).append(f"{co}.{po}.Value")
+            continue
         if {ka, kb} == {"output", "input"}:
             (co, po), (ci, pi) = ((ca, pa), (cb, pb)) if ka == "output" else ((cb, pb), (ca, pa))
             system.connect(mapped[co].outputs[po], mapped[ci].inputs[pi])
             connected_inputs.add((ci, pi))
-        elif "none" not in (ka, kb) and "dropped" not in (ka, kb):
-            problems.append(f"{source}: connection {ca}.{pa} – {cb}.{pb}: ports of kinds {ka} and {kb} do not join")
+            if pi in mapped[ci].zeroed:
+                key, setting = mapped[ci].zeroed[pi]
+                mapped[ci].components[0].set(**{key: setting})
+        elif "dropped" not in (ka, kb):
+            unmapped = [f"{c}.{p}" for (c, p), k in (((ca, pa), ka), ((cb, pb), kb)) if k == "none"]
+            what = (
+                f"{' and '.join(unmapped)} driven by a signal is not supported yet"
+                if unmapped
+                else f"ports of kinds {ka} and {kb} do not join"
+            )
+            problems.append(f"{source}: connection {ca}.{pa} – {cb}.{pb}: {what}")
 
     aliases: dict[str, Var] = {}
+    hopsan_names: dict[str, str] = {}
+
+    def hopsan(full_name: str, port: str, variable: str) -> str:
+        """Hopsan's name of a variable: subsystems joined by $, then #port#variable."""
+        return f"{full_name.replace('.', '$')}#{port}#{variable}"
+
     for node_ends in power_groups:
         refs = [mapped[c].power[p] for c, p in node_ends if _port_kind(mapped.get(c), p) == "power"]
         if len(set(refs)) > 1:
@@ -475,9 +635,10 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         node = _node_variables(system, refs, port_of)
         for c, p in node_ends:
             for var, value in node.items():
-                if (var == "Flow" and p in mapped[c].multiports) or f"{c}.{p}.{var}" in aliases:
+                if (var == "Flow" and (c, p) in multiports) or f"{c}.{p}.{var}" in aliases:
                     continue  # a multiport's flow is one per connection: Hopsan logs none of them by the port
                 aliases[f"{c}.{p}.{var}"] = value
+                hopsan_names[f"{c}.{p}.{var}"] = hopsan(c, p, var)
             read = mapped[c].read.get(p)
             if read is not None:
                 target, variable = read
@@ -493,8 +654,8 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     for hc in model.components:
         m = mapped[hc.full_name]
         for port, target in m.inputs.items():
-            if (hc.full_name, port) in connected_inputs:
-                continue
+            if (hc.full_name, port) in connected_inputs or port in m.zeroed:
+                continue  # driven, or a parameter holds its value (a source's pressure)
             par = hc.parameters.get(f"{port}#Value")
             start = par.value if par is not None and par.value is not None else 0.0
             cname, iname = target.split(".")
@@ -504,21 +665,48 @@ def import_hopsan(path: str | Path) -> HopsanImport:
                 system.connect(f"{const.name}.y", target)
         for port, signal in m.outputs.items():
             aliases[f"{hc.full_name}.{port}.Value"] = Var(1.0, signal)
+            hopsan_names[f"{hc.full_name}.{port}.Value"] = hopsan(hc.full_name, port, "Value")
         for variable, value in m.values.items():
             aliases[f"{hc.full_name}.{variable}.Value"] = value
+            hopsan_names[f"{hc.full_name}.{variable}.Value"] = hopsan(hc.full_name, variable, "Value")
     if problems:
         raise ModelFileError("; ".join(problems))
     for name, value in aliases.items():
         unit = _unit_of(system, value)
-        system.alias(name, value.expr(), unit, f"Hopsan's {name.replace('.', '#')}")
-    system.meta.update(
-        {
-            "t_end": f"{model.stop - model.start!r} s",
-            "hopsan_timestep": f"{model.timestep!r} s",
-            "status": "imported",
-        }
-    )
-    return HopsanImport(system, model, mapping, names)
+        system.alias(name, value.expr(), unit, f"Hopsan's {hopsan_names[name]}")
+    system.meta.update({"status": "imported", "hopsan_timestep": f"{model.timestep!r} s"})
+    system.plots = [list(dict.fromkeys(shown)) for shown in scopes.values() if shown]
+    return HopsanImport(system, model, mapping, names, hopsan_names)
+
+
+def _node_starts(
+    model: HopsanModel, by_name: dict[str, HopsanComponent], multiports: set[tuple[str, str]]
+) -> dict[tuple[str, str], dict[str, float]]:
+    """Each port's node start values (``Position`` -> value): those its C component declares, else its Q
+    component's, else a sensor's (Hopsan's C components own the start values of their nodes)."""
+    groups = _union([[_end(e) for e in c] for c in model.connections], multiports)
+    rank = {"C": 0, "Q": 1}
+    out: dict[tuple[str, str], dict[str, float]] = {}
+    for group in groups:
+        values: dict[str, float] = {}
+        for comp, port in sorted(group, key=lambda e: rank.get(getattr(by_name.get(e[0]), "cqs", ""), 2), reverse=True):
+            hc = by_name.get(comp)
+            if hc is None:
+                continue
+            for key, par in hc.parameters.items():
+                head, _, variable = key.partition("#")
+                if head == port and variable and par.value is not None and variable != "Value":
+                    values[variable] = par.value  # later (higher ranked) components overwrite
+        for end in group:
+            if end not in multiports:
+                out[end] = values
+    return out
+
+
+def _end(end: str) -> tuple[str, str]:
+    """``Comp.Port`` (the component's path may hold dots) as (component, port)."""
+    comp, _, port = end.rpartition(".")
+    return comp, port
 
 
 def _port_kind(m: Mapped | None, port: str) -> str:
@@ -532,6 +720,8 @@ def _port_kind(m: Mapped | None, port: str) -> str:
         return "input"
     if port in m.outputs:
         return "output"
+    if port in m.values:
+        return "value"
     return "dropped" if not m.components else "none"
 
 

@@ -18,6 +18,7 @@ validation                     source              module
 ``robot-arm-friction``         Efe2014             :mod:`.efe`
 ``skydrol-fluid``              MareAttarND         :mod:`.mare_attar`
 ``position-servo``             Hopsan2026          :mod:`.hopsan`
+``hopsan-examples``            Hopsan2026          :mod:`.hopsan_examples`
 ``two-stage-servovalve``       GordicND            :mod:`.gordic`
 =============================  ==================  =======================================
 """
@@ -141,6 +142,10 @@ VALIDATIONS: dict[str, tuple[str, str]] = {
     "robot-arm-friction": ("efe", "Stribeck friction of the robot-arm cylinder (Efe2014 Table 5.2)"),
     "skydrol-fluid": ("mare_attar", "Skydrol properties against pressure and temperature (MareAttarND 2.1)"),
     "position-servo": ("hopsan", "Hopsan's Position Servo example against its converged result (Hopsan2026)"),
+    "hopsan-examples": (
+        "hopsan_examples",
+        "Hopsan's example and component-test models, imported, against Hopsan's converged results (Hopsan2026)",
+    ),
     "two-stage-servovalve": ("gordic", "the first-principles two-stage servovalve's constants (GordicND Table 1)"),
 }
 

@@ -33,7 +33,7 @@ class HopsanReport(Report):
         out = [
             f"imported {Path(imp.system.source).name}: {len(imp.mapping)} Hopsan components as "
             f"{len(imp.system.components)} hydroservo components, {len(imp.system.aliases)} of Hopsan's variables as "
-            f"aliases; t_end {imp.system.meta['t_end']} (Hopsan's step {imp.system.meta['hopsan_timestep']})",
+            f"aliases; t_end {imp.system.t_end:g} s (Hopsan's step {imp.system.meta['hopsan_timestep']})",
             "",
             "  Hopsan component -> hydroservo",
         ]
@@ -50,7 +50,7 @@ class HopsanReport(Report):
             "source": imp.system.source,
             "components": [{"hopsan": p, "type": k, "hydroservo": b} for p, k, b in imp.mapping],
             "aliases": list(imp.system.aliases),
-            "t_end": imp.system.meta["t_end"],
+            "t_end": imp.system.t_end,
             "hopsan_timestep": imp.system.meta["hopsan_timestep"],
             "files": self.files,
         }

@@ -9,6 +9,7 @@ imported model is compared with Hopsan's own converged result (hydroservo/data/r
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -126,7 +127,9 @@ def test_import_maps_every_component_and_keeps_hopsans_settings(servo_file: Path
     system = imp.system
     assert [path for path, _, _ in imp.mapping] == [name for _, name, _ in COMPONENTS]
     assert imp.names["4_3_Servo_Valve"] == "c_4_3_Servo_Valve"  # a name that starts with a digit
-    assert system.meta["t_end"] == "3.0 s" and system.meta["hopsan_timestep"] == "0.0001 s"
+    assert system.t_end == 3.0 and system.meta["hopsan_timestep"] == "0.0001 s"
+    assert "at a fixed step of 0.0001 s" in system.notes[0]
+    assert imp.variables["Mass.P2.Position"] == "Mass#P2#Position"
     # values in Hopsan's units, absolute pressures as such
     assert system["Pressure_Relief_Valve"].given["p_crack"] == "20000000.0 Pa_abs"
     assert system["Cylinder_C"].values["V_B0"] == pytest.approx(3e-4 + 1e-3 * 1.0)
@@ -184,3 +187,51 @@ def test_cli_writes_the_model_and_refuses_what_it_cannot_map(servo_file: Path, t
     done = subprocess.run([*run, str(bad), "--out", str(tmp_path / "b")], capture_output=True, text=True)
     assert done.returncode == 2 and "Wave (SignalPulseWave)" in done.stderr and "Traceback" not in done.stderr
     assert not (tmp_path / "b").exists()
+
+
+def test_an_imported_model_linearises_runs_a_study_and_exports_an_fmu(tmp_path: Path) -> None:
+    """Hopsan's Pressure Controlled Pump Simple, as imported (the shipped model file): a trim and its linear model
+    (stable but for the velocity source's integrator), a one-at-a-time study of the control spring (a stiffer spring lets the pump regulate higher) and an
+    FMU run by FMPy that agrees with the model's own run."""
+    from hydroservo.analysis.linear import linearize
+    from hydroservo.analysis.sensitivity import one_at_a_time
+    from hydroservo.codegen.fmu import export_fmu
+    from hydroservo.data import reference_path
+    from hydroservo.io.model_file import load_model
+
+    system = load_model(reference_path("hopsan/pressure-controlled-pump-simple.toml"))
+    lin = linearize(
+        system, "trim", t=2.0, inputs=["C_type_Pressure_Source_1.u"], outputs=["Hydraulic_Volume_Multi_Port.P1.Pressure"]
+    )
+    eig = np.linalg.eigvals(lin.A)
+    still = np.abs(eig) < 1e-9  # the velocity source's position: an integrator of its (zero) velocity
+    assert still.sum() == 1 and np.all(np.real(eig[~still]) < 0)
+    study = one_at_a_time(
+        system, {"Translational_Spring.k_spring": ["10000 N/m", "14000 N/m"]},
+        metrics=["final(Hydraulic_Volume_Multi_Port.p)"], t_end=3.0,
+    )
+    finals = study.table["final(Hydraulic_Volume_Multi_Port.p) [Pa]"].to_numpy()
+    assert finals[1] > finals[0] > 1e7
+    fmpy = pytest.importorskip("fmpy")
+    fmu = export_fmu(system, tmp_path / "fmu", method="rodas3")
+    out = fmpy.simulate_fmu(str(fmu.path), stop_time=2.0, output=["Hydraulic_Volume_Multi_Port.p"], fmi_type="CoSimulation")
+    own = system.simulate(t_eval=[0.0, 2.0])["Hydraulic_Volume_Multi_Port.p"][-1]
+    assert out["Hydraulic_Volume_Multi_Port.p"][-1] == pytest.approx(own, rel=1e-3)
+
+
+@pytest.mark.skipif(not os.environ.get("HOPSAN_SOURCE"), reason="needs HOPSAN_SOURCE, a clone of Hopsan's repository")
+def test_shipped_imports_are_what_import_hopsan_writes_from_hopsans_files_today() -> None:
+    """The model files beside the references (hydroservo/data/reference/hopsan/) are import-hopsan's output for
+    the very files the references were made from (same SHA-256)."""
+    import hashlib
+
+    from hydroservo.data import reference_path, reference_text
+    from hydroservo.validation.hopsan_examples import MODELS
+    from hydroservo.workflows.hopsan import ImportHopsan
+
+    index = json.loads(reference_text("hopsan/hopsan_examples.json"))
+    source = Path(os.environ["HOPSAN_SOURCE"])
+    for name, spec in MODELS.items():
+        path = source / "Models" / spec.path
+        assert hashlib.sha256(path.read_bytes()).hexdigest() == index[name]["sha256"], name
+        assert ImportHopsan(path).run().text == reference_path(f"hopsan/{name}.toml").read_text(encoding="utf-8"), name
