@@ -18,8 +18,8 @@ module                 components
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, Pulse, Ramp, Sine, Square, Table
-:mod:`.control`        Sum, Gain, Lag, Integrator, Saturation, PID, Amplifier,
-                       Transducer
+:mod:`.control`        Sum, Product, Quotient, Absolute, Power, Gain, Lag,
+                       Integrator, Saturation, PID, Amplifier, Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -40,7 +40,20 @@ from hydroservo.components.base import (
     RenamedWarning,
     State,
 )
-from hydroservo.components.control import PID, Amplifier, Gain, Integrator, Lag, Saturation, Sum, Transducer
+from hydroservo.components.control import (
+    PID,
+    Absolute,
+    Amplifier,
+    Gain,
+    Integrator,
+    Lag,
+    Power,
+    Product,
+    Quotient,
+    Saturation,
+    Sum,
+    Transducer,
+)
 from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
@@ -96,6 +109,10 @@ __all__ = [
     "PressureSource",
     "LaminarOrifice",
     "Integrator",
+    "Product",
+    "Quotient",
+    "Absolute",
+    "Power",
     "ConstantPressure",
     "Tank",
     "PressureTable",

@@ -17,7 +17,7 @@ from hydroservo.components.signals import SIGNAL_OUTPUT
 from hydroservo.errors import ParameterError, UnitError
 from hydroservo.units import coherent_unit, is_absolute_pressure
 
-__all__ = ["Sum", "Gain", "Lag", "Integrator", "Saturation", "PID", "Amplifier", "Transducer"]
+__all__ = ["Sum", "Product", "Quotient", "Absolute", "Power", "Gain", "Lag", "Integrator", "Saturation", "PID", "Amplifier", "Transducer"]
 
 
 @register
@@ -36,6 +36,59 @@ class Sum(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"y": p["gain1"] * u["u1"] + p["gain2"] * u["u2"] + p["gain3"] * u["u3"] + p["offset"]}
+
+
+@register
+class Product(Component):
+    """``y = u1 u2`` of dimensionless signals (an input left unconnected is 1)."""
+
+    INPUTS = {"u1": Port("", "factor 1", default=1.0), "u2": Port("", "factor 2", default=1.0)}
+    OUTPUTS = {"y": Output("", "product")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": u["u1"] * u["u2"]}
+
+
+@register
+class Quotient(Component):
+    """``y = u1 / u2`` of dimensionless signals (a zero divisor gives a non-finite result, which the run reports)."""
+
+    INPUTS = {"u1": Port("", "dividend", default=0.0), "u2": Port("", "divisor", default=1.0)}
+    OUTPUTS = {"y": Output("", "quotient")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": u["u1"] / u["u2"]}
+
+
+@register
+class Absolute(Component):
+    """``y = |u|``."""
+
+    INPUTS = {"u": Port(SIGNAL, "input")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": bk.fabs(u["u"])}
+
+
+@register
+class Power(Component):
+    """``y = |u|^n`` of a dimensionless signal (Hopsan's SignalPower, [Hopsan2026], takes the magnitude)."""
+
+    PARAMETERS = {"n": Param(2.0, "", "exponent")}
+    INPUTS = {"u": Port("", "input")}
+    OUTPUTS = {"y": Output("", "|u|^n")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": bk.fabs(u["u"]) ** p["n"]}
 
 
 #: Placeholder unit of a gain's input (``input_unit``); the output keeps ``SIGNAL`` (``unit``).
