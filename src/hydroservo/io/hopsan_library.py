@@ -74,6 +74,8 @@ class Mapped:
     outputs: dict[str, str] = field(default_factory=dict)
     values: dict[str, Var] = field(default_factory=dict)
     note: str = ""
+    #: Hopsan multi-input port (a sum's "in") -> the hydroservo inputs it fills, in the order it is connected
+    multi: dict[str, list[str]] = field(default_factory=dict)
     #: Hopsan input port -> (parameter of the first component, its value) set when a signal drives that input,
     #: which the component then adds (a source's pressure, an orifice's coefficient)
     zeroed: dict[str, tuple[str, float | str]] = field(default_factory=dict)
@@ -96,6 +98,8 @@ class _Params:
     ) -> None:
         self.hc, self.where, self.problems = hc, where, problems
         self.node_start = node_start or {}
+        #: Hopsan's start time: hydroservo's runs start at 0, so Hopsan's times are shifted by it (``time``)
+        self.t0 = 0.0
         #: the component's ports Hopsan connects to something (its signal inputs among them are driven)
         self.driven = driven
 
@@ -108,6 +112,10 @@ class _Params:
                     return default
                 return par.value
         return default
+
+    def time(self, name: str, default: float) -> float:
+        """A time parameter on hydroservo's clock, which starts at 0 where Hopsan's starts at its start time."""
+        return self(name, default) - self.t0
 
     def start(self, port: str, variable: str, default: float = 0.0) -> float:
         """A port variable's start value (``P1#Pressure``): the node's, which the component that owns it gives
@@ -166,7 +174,14 @@ def _pressure_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Volume
 
-    comp = Volume(n, V=par("V", 1e-3), beta_e=par("Beta_e", 1e9), p0=_abs(par.start("P1", "Pressure", 1e5)))
+    comp = Volume(
+        n,
+        V=par("V", 1e-3),
+        beta_e=par("Beta_e", 1e9),
+        p0=_abs(par.start("P1", "Pressure", 1e5)),
+        pressure_floor="cavity",  # Hopsan's volumes cavitate at 0 Pa absolute: the ports see max(p, 0)
+        p_floor="0 Pa_abs",
+    )
     ports = {"P1": f"{n}.P", "P2": f"{n}.P"}  # HydraulicVolume's two ports and the multiport's one: one node
     return Mapped([comp], power=ports)
 
@@ -381,19 +396,20 @@ def _sensor(n: str, variable: str, unit: str) -> Mapped:
 def _step(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Step
 
-    comp = Step(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_step=par("t_step", 1.0))
+    # a step before the start (Hopsan's t_step < 0) is on from the start
+    comp = Step(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_step=max(par.time("t_step", 1.0), 0.0))
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
 def _ramp(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Ramp, Step
 
-    y0, ya, t0, t1 = par("y_0", 0.0), par("y_A", 1.0), par("t_start", 1.0), par("t_end", 2.0)
+    y0, ya, t0, t1 = par("y_0", 0.0), par("y_A", 1.0), par.time("t_start", 1.0), par.time("t_end", 2.0)
     if t1 <= t0:  # Hopsan jumps at t_start
         return Mapped([Step(n, offset=y0, amplitude=ya, t_step=max(t0, 0.0))], outputs={"out": f"{n}.y"})
     comp = Ramp(n, offset=y0, slope=ya / (t1 - t0), t_start=max(t0, 0.0), limit=abs(ya))
     if t0 < 0.0:
-        par.problems.append(f"{par.where}: a ramp that starts before 0 s (t_start = {t0:g} s) is not supported")
+        par.problems.append(f"{par.where}: a ramp that starts before the run (t_start = {t0 + par.t0:g} s) is not supported")
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
@@ -401,14 +417,17 @@ def _sine(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Sine
 
     f = par("f", 1.0)
-    comp = Sine(n, amplitude=par("y_A", 1.0), frequency=f, phase=-2.0 * math.pi * f * par("y_offset", 0.0), t_start=par("t_start", 0.0))
+    t0 = par.time("t_start", 0.0)
+    # Hopsan's wave is 0 before t_start and sin(2 pi f (t - t_start - y_offset)) from it
+    phase = -2.0 * math.pi * f * (par("y_offset", 0.0) + max(-t0, 0.0))
+    comp = Sine(n, amplitude=par("y_A", 1.0), frequency=f, phase=phase, t_start=max(t0, 0.0))
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
 def _pulse(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pulse
 
-    t0, t1 = par("t_start", 1.0), par("t_end", 2.0)
+    t0, t1 = par.time("t_start", 1.0), par.time("t_end", 2.0)
     comp = Pulse(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=max(t0, 0.0), duration=max(t1 - max(t0, 0.0), 0.0))
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
@@ -416,14 +435,17 @@ def _pulse(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _soft_step(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import SoftStep
 
-    comp = SoftStep(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=par("t_start", 1.0), t_end=par("t_end", 2.0))
+    t0, t1 = par.time("t_start", 1.0), par.time("t_end", 2.0)
+    if t0 < 0.0:
+        par.problems.append(f"{par.where}: a soft step that starts before the run (t_start = {t0 + par.t0:g} s) is not supported")
+    comp = SoftStep(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=max(t0, 0.0), t_end=t1)
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
 def _constant(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Constant
 
-    return Mapped([Constant(n, value=par("y", 1.0))], outputs={"out": f"{n}.y"})
+    return Mapped([Constant(n, value=par("y", 1.0))], outputs={"y": f"{n}.y"})  # Hopsan's output is y
 
 
 def _gain(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -441,6 +463,53 @@ def _sum_of_two(sign: float) -> Builder:
         )
 
     return build
+
+
+def _product(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Product
+
+    return Mapped([Product(n)], inputs={"in1": f"{n}.u1", "in2": f"{n}.u2"}, outputs={"out": f"{n}.y"})
+
+
+def _quotient(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Quotient
+
+    return Mapped([Quotient(n)], inputs={"in1": f"{n}.u1", "in2": f"{n}.u2"}, outputs={"out": f"{n}.y"})
+
+
+def _absolute(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Absolute
+
+    return Mapped([Absolute(n)], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
+def _power(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Power
+
+    return Mapped([Power(n, n=par("x", 0.0))], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
+def _sum(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Sum
+
+    comp = Sum(n, gain1=1.0, gain2=1.0, gain3=1.0)
+    return Mapped([comp], multi={"in": [f"{n}.u1", f"{n}.u2", f"{n}.u3"]}, outputs={"out": f"{n}.y"})
+
+
+def _low_pass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Lag
+
+    if abs(par("y_min", -1.5e300)) < 1e299 or abs(par("y_max", 1.5e300)) < 1e299:
+        par.problems.append(f"{par.where}: a low-pass filter with output limits is not supported yet")
+    comp = Lag(n, K=1.0, tau=1.0 / par("omega", 1000.0), y0=par("out", 0.0))
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
+def _saturation(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Saturation
+
+    comp = Saturation(n, lower=par("y_lower", -1.0), upper=par("y_upper", 1.0))
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
 
 
 def _integrator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -490,6 +559,13 @@ LIBRARY: dict[str, Builder] = {
     "SignalAdd": _sum_of_two(1.0),
     "SignalSubtract": _sum_of_two(-1.0),
     "SignalIntegrator2": _integrator,
+    "SignalMultiply": _product,
+    "SignalDivide": _quotient,
+    "SignalAbsoluteValue": _absolute,
+    "SignalPower": _power,
+    "SignalSum": _sum,
+    "SignalLP1Filter": _low_pass,
+    "SignalSaturation": _saturation,
     "SignalSink": _sink,
 }
 
@@ -555,7 +631,9 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         where = f"{source}: {hc.full_name} ({hc.typename})"
         try:
             starts = {port: values for (c, port), values in node_start.items() if c == hc.full_name}
-            m = LIBRARY[hc.typename](hc, name, _Params(hc, where, problems, starts, connected.get(hc.full_name, frozenset())))
+            params = _Params(hc, where, problems, starts, connected.get(hc.full_name, frozenset()))
+            params.t0 = model.start
+            m = LIBRARY[hc.typename](hc, name, params)
         except Exception as exc:  # a value out of a component's range: named with the Hopsan component
             problems.append(f"{where}: {exc}")
             continue
@@ -571,9 +649,8 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         f"Imported from the Hopsan model {Path(source).name}, which Hopsan runs from {model.start:g} s to "
         f"{model.stop:g} s at a fixed step of {model.timestep:g} s; hydroservo chooses its steps by the accuracy "
         f"asked for. Hopsan's port variables are aliases named with dots (Mass#P2#Position is Mass.P2.Position)."
+        + (f" Hydroservo's time is Hopsan's less {model.start:g} s: its runs start at 0." if model.start else "")
     )
-    if model.start != 0.0:
-        problems.append(f"{source}: a simulation that starts at {model.start:g} s, not 0, is not supported yet")
     system.source = source
     for m in mapped.values():
         for comp in m.components:
@@ -585,41 +662,54 @@ def import_hopsan(path: str | Path) -> HopsanImport:
             if first != 0.0:
                 system.set_initial(state, first)
 
-    # group Hopsan's connections into nodes: power ports (and read ports) by union, signal links pairwise
+    # group Hopsan's connections into nodes: power ports (and read ports) by union; signal groups each hold one
+    # output (or a component's value) and what reads it
     power_groups: list[list[tuple[str, str]]] = []
-    signal_links: list[tuple[tuple[str, str], tuple[str, str]]] = []
+    signal_groups: list[list[tuple[str, str]]] = []
     for connection in model.connections:
         ends = [_end(e) for e in connection]
         kinds = {_port_kind(mapped.get(c), p) for c, p in ends}
-        if kinds <= {"power", "read"}:
-            power_groups.append(ends)
-        else:
-            signal_links.extend(zip(ends, ends[1:], strict=False))
+        (power_groups if kinds <= {"power", "read"} else signal_groups).append(ends)
     power_groups = _union(power_groups, multiports)
 
     connected_inputs: set[tuple[str, str]] = set()
     scopes: dict[str, list[str]] = {}  # a sink -> what it shows (Hopsan's outputs): the imported model's plots
-    for (ca, pa), (cb, pb) in signal_links:
-        ka, kb = _port_kind(mapped.get(ca), pa), _port_kind(mapped.get(cb), pb)
-        if "dropped" in (ka, kb) and ({ka, kb} & {"output", "value"}):
-            (co, po), sink = ((ca, pa), cb) if kb == "dropped" else ((cb, pb), ca)
-            scopes.setdefault(sink, []).append(f"{co}.{po}.Value")
+    filled: dict[tuple[str, str], int] = {}  # a multi-input -> how many of its inputs are taken
+    for ends in signal_groups:
+        end_kinds = [_port_kind(mapped.get(c), p) for c, p in ends]
+        sources = [e for e, k in zip(ends, end_kinds, strict=True) if k in ("output", "value")]
+        joined = " – ".join(f"{c}.{p}" for c, p in ends)
+        if not sources and set(end_kinds) <= {"none", "dropped"} and "dropped" in end_kinds:
+            continue  # a scope showing a variable hydroservo does not name (a relief valve's own xv)
+        if len(sources) != 1:
+            problems.append(f"{source}: connection {joined}: expected one signal output, found {len(sources)}")
             continue
-        if {ka, kb} == {"output", "input"}:
-            (co, po), (ci, pi) = ((ca, pa), (cb, pb)) if ka == "output" else ((cb, pb), (ca, pa))
-            system.connect(mapped[co].outputs[po], mapped[ci].inputs[pi])
-            connected_inputs.add((ci, pi))
-            if pi in mapped[ci].zeroed:
-                key, setting = mapped[ci].zeroed[pi]
-                mapped[ci].components[0].set(**{key: setting})
-        elif "dropped" not in (ka, kb):
-            unmapped = [f"{c}.{p}" for (c, p), k in (((ca, pa), ka), ((cb, pb), kb)) if k == "none"]
-            what = (
-                f"{' and '.join(unmapped)} driven by a signal is not supported yet"
-                if unmapped
-                else f"ports of kinds {ka} and {kb} do not join"
-            )
-            problems.append(f"{source}: connection {ca}.{pa} – {cb}.{pb}: {what}")
+        co, po = sources[0]
+        signal = mapped[co].outputs[po] if po in mapped[co].outputs else None
+        for (ci, pi), kind in zip(ends, end_kinds, strict=True):
+            if (ci, pi) == (co, po):
+                continue
+            if kind == "dropped":
+                scopes.setdefault(ci, []).append(f"{co}.{po}.Value")
+            elif kind == "input" and signal is not None:
+                m = mapped[ci]
+                if pi in m.multi:
+                    taken = filled.get((ci, pi), 0)
+                    if taken >= len(m.multi[pi]):
+                        problems.append(f"{source}: {ci}.{pi} reads more than {len(m.multi[pi])} signals")
+                        continue
+                    filled[(ci, pi)] = taken + 1
+                    system.connect(signal, m.multi[pi][taken])
+                    continue
+                system.connect(signal, m.inputs[pi])
+                connected_inputs.add((ci, pi))
+                if pi in m.zeroed:
+                    key, setting = m.zeroed[pi]
+                    m.components[0].set(**{key: setting})
+            elif kind == "none":
+                problems.append(f"{source}: connection {joined}: {ci}.{pi} driven by a signal is not supported yet")
+            else:
+                problems.append(f"{source}: connection {joined}: {ci}.{pi} ({kind}) cannot read {co}.{po}")
 
     aliases: dict[str, Var] = {}
     hopsan_names: dict[str, str] = {}
@@ -716,7 +806,7 @@ def _port_kind(m: Mapped | None, port: str) -> str:
         return "power"
     if port in m.read:
         return "read"
-    if port in m.inputs:
+    if port in m.inputs or port in m.multi:
         return "input"
     if port in m.outputs:
         return "output"

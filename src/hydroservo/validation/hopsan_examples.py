@@ -36,6 +36,8 @@ class Spec:
     path: str
     about: str
     timestep: float | None = None
+    #: kinds of trace known to differ (kind -> why): their rows expect "NOT reproduced"
+    known: tuple[tuple[str, str], ...] = ()
 
 
 MODELS: dict[str, Spec] = {
@@ -54,6 +56,21 @@ MODELS: dict[str, Spec] = {
     ),
     "hydraulic-43-valve-test": Spec(
         "Component Test/HydraulicComponent Test/Hydraulic43ValveTest.hmf", "a 4/3 valve driven through its stroke"
+    ),
+    "hydraulic-valve-43-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicValve43Test.hmf", "a 4/3 valve between volumes and a load"
+    ),
+    "hydraulic-variable-displacement-pump-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicVariableDisplacementPumpTest.hmf",
+        "a variable pump whose displacement setting is ramped from -1 to 1, in a closed loop through a laminar "
+        "orifice between two volumes",
+        known=tuple(
+            (kind, "Hopsan's pump limits its flow so that neither port falls below 0 Pa (it stops drawing from a "
+             "suction that has emptied); hydroservo's Pump keeps its displacement flow and the emptied volume holds a "
+             "cavity, so near full displacement either way the loaded side rises to 2.64 bar, not 2.0 bar. While "
+             "neither volume is empty (Hopsan's 2 to 8 s) the traces agree within 0.0001 % (docs/validation.md)")
+            for kind in ("Pressure", "Flow")
+        ),
     ),
 }
 
@@ -94,10 +111,10 @@ def rows() -> list[Row]:
                     TOLERANCE,
                     "%",
                     0.0,
-                    _WHY,
+                    dict(spec.known).get(kind, _WHY),
                     f"max |y - y_Hopsan| over {index[name]['samples']} points of {index[name]['stop']:g} s, over the "
                     f"range of y_Hopsan, worst of the {_PLURAL[kind]} at the model's Hopsan nodes; {spec.about}",
-                    "reproduced",
+                    "NOT reproduced" if kind in dict(spec.known) else "reproduced",
                     upper_bound=True,
                 )
             )
@@ -125,13 +142,14 @@ def deviations(name: str) -> dict[str, float]:
 
     header, ref = _reference(name)
     delta = 2.0 * float(_index()[name]["steps"][-1])
-    t = ref[:, 0]
-    grid = np.unique(np.concatenate([t, np.clip(t - delta, t[0], t[-1]), np.clip(t + delta, t[0], t[-1])]))
+    # hydroservo's runs start at 0, Hopsan's at its start time (the reference logs from Hopsan's t = 0 on)
+    t = np.clip(ref[:, 0] - float(_index()[name]["start"]), 0.0, None)
+    grid = np.unique(np.concatenate([[0.0], t, np.clip(t - delta, 0.0, t[-1]), np.clip(t + delta, 0.0, t[-1])]))
     system = load_model(reference_path(f"hopsan/{name}.toml"))
     with warnings.catch_warnings():  # implausible peaks are Hopsan's too; the comparison is the point here
         warnings.simplefilter("ignore")
         result = system.simulate(t_eval=grid, max_steps=10**6)
-    at = [np.searchsorted(grid, np.clip(t + d, t[0], t[-1])) for d in (-delta, 0.0, delta)]
+    at = [np.searchsorted(grid, np.clip(t + d, 0.0, t[-1])) for d in (-delta, 0.0, delta)]
     columns = [column.split(" [")[0] for column in header[1:]]
     floors = {kind: 0.01 * max((float(np.ptp(ref[:, i + 1])) for i, c in enumerate(columns) if c.endswith(kind)), default=0.0)
               for kind in KINDS}

@@ -235,3 +235,28 @@ def test_shipped_imports_are_what_import_hopsan_writes_from_hopsans_files_today(
         path = source / "Models" / spec.path
         assert hashlib.sha256(path.read_bytes()).hexdigest() == index[name]["sha256"], name
         assert ImportHopsan(path).run().text == reference_path(f"hopsan/{name}.toml").read_text(encoding="utf-8"), name
+
+
+def test_a_sum_reads_each_signal_connected_to_its_one_port_and_time_starts_at_hopsans_start(tmp_path: Path) -> None:
+    """Hopsan's SignalSum has one port 'in' that any number of signals join (three here); a model that starts
+    at -1 s runs from 0 with its times shifted (the step at 0.5 s comes at 1.5 s)."""
+    components = [
+        ("SignalConstant", "A", {"y#Value": ("1.5", "")}),
+        ("SignalConstant", "B", {"y#Value": ("2", "")}),
+        ("SignalStep", "C", {"y_0#Value": ("0", ""), "y_A#Value": ("4", ""), "t_step#Value": ("0.5", "s")}),
+        ("SignalSum", "Sum", {}),
+        ("SignalSink", "Scope", {}),
+    ]
+    connections = [("A.y", "Sum.in"), ("B.y", "Sum.in"), ("C.out", "Sum.in"), ("Sum.out", "Scope.in")]
+    text = _hmf(components, connections).replace('start="0"', 'start="-1"')
+    path = tmp_path / "sum.hmf"
+    path.write_text(text, encoding="utf-8")
+    system = read_hopsan(path)
+    r = system.simulate(t_eval=[0.0, 1.4, 1.6])
+    assert list(r["Sum.out.Value"]) == pytest.approx([3.5, 3.5, 7.5])
+    assert system.t_end == pytest.approx(4.0) and system.plots == [["Sum.out.Value"]]
+    path.write_text(
+        _hmf([*components, ("SignalConstant", "D", {})], [*connections, ("D.y", "Sum.in")]), encoding="utf-8"
+    )
+    with pytest.raises(ModelFileError, match=r"Sum\.in reads more than 3 signals"):
+        read_hopsan(path)
