@@ -47,6 +47,8 @@ MAX_BYTES = 20_000_000
 MAX_DEPTH = 32
 #: The most components read (all subsystems together).
 MAX_COMPONENTS = 20_000
+#: Joins a subsystem path inside the reader: no character a Hopsan name may hold (names hold "/": "4/3 Valve").
+_SEP = "\x1f"
 #: The longest parameter expression read [characters], and its deepest nesting.
 MAX_EXPRESSION = 200
 MAX_NESTING = 20
@@ -314,8 +316,10 @@ class _Reader:
         own = self.parameters(element.find("parameters"), scope, path, "")
         inner = {**scope, **{k: p.value for k, p in own.items() if p.value is not None}}
         objects = element.find("objects")
+        here: set[str] = set()  # the names a connection of this system may name
         for child in list(objects) if objects is not None else []:
             name = child.get("name") or ""
+            here.add(name)
             if child.tag in ("component", "system") and not name:
                 raise ModelFileError(f"{self.where(path)}: a <{child.tag}> without a name")
             if child.tag == "component":
@@ -329,7 +333,7 @@ class _Reader:
             elif child.tag == "system":
                 self.system(child, (*path, name), inner)
             elif child.tag == "systemport":
-                self.system_ports.append("/".join((*path, name)))
+                self.system_ports.append(_SEP.join((*path, name)))
         connections = element.find("connections")
         for link in list(connections) if connections is not None else []:
             if link.tag != "connect":
@@ -338,20 +342,26 @@ class _Reader:
             if not all(ends):
                 raise ModelFileError(f"{self.where(path)}: a <connect> without its start and end component and port")
             a, pa, b, pb = (e or "" for e in ends)
+            for named in (a, b):
+                if named not in here:
+                    raise ModelFileError(
+                        f"{self.where(path)}: a <connect> of {a}.{pa} and {b}.{pb} names {named!r}, which is no "
+                        "component, subsystem or port of this system"
+                    )
             self.edges.append((self.node(path, a, pa), self.node(path, b, pb)))
         return own
 
     def node(self, path: tuple[str, ...], component: str, port: str) -> str:
         """A port as a node of the graph: a systemport of this system stands for itself, whatever port is named."""
-        here = "/".join((*path, component))
+        here = _SEP.join((*path, component))
         return here if here in self.system_ports else f"{here}.{port}"
 
     def flattened(self) -> list[tuple[str, ...]]:
         """The connections between component ports, through the subsystems: a port outside (``sub.port``) and
-        the systemport inside (``sub/port``) are one junction, and the component ports on either side of it form
+        the systemport inside (``sub`` _SEP ``port``) are one junction, and the component ports on either side of it form
         one group. Connections between two components stay pairs (a signal sink's one port may read several
         signals: it is no junction of them)."""
-        names = {"/".join((*c.path, c.name)) for c in self.components}
+        names = {_SEP.join((*c.path, c.name)) for c in self.components}
 
         def is_component_port(end: str) -> bool:
             return end.rsplit(".", 1)[0] in names
@@ -366,8 +376,8 @@ class _Reader:
         def union(a: str, b: str) -> None:
             parent[find(a)] = find(b)
 
-        for port in self.system_ports:  # "path/sub/Port" inside is "path/sub.Port" outside
-            head, _, name = port.rpartition("/")
+        for port in self.system_ports:  # path, sub, Port joined by _SEP inside is "path...sub.Port" outside
+            head, _, name = port.rpartition(_SEP)
             union(port, f"{head}.{name}" if head else port)
         pairs: list[tuple[str, ...]] = []
         attached: dict[str, list[str]] = {}
@@ -383,7 +393,7 @@ class _Reader:
         for junction, ports in attached.items():
             groups.setdefault(find(junction), []).extend(ports)
         pairs += [tuple(dict.fromkeys(ports)) for ports in groups.values() if len(set(ports)) > 1]
-        return [tuple(port.replace("/", ".") for port in group) for group in pairs]
+        return [tuple(port.replace(_SEP, ".") for port in group) for group in pairs]
 
 
 def read_hmf(path: str | Path) -> HopsanModel:

@@ -187,3 +187,15 @@ def test_every_model_file_of_hopsan_is_read() -> None:
     for path in files:
         model = read_hmf(path)
         assert model.components, path
+
+
+def test_names_may_hold_a_slash_and_a_connection_must_name_what_is_there(tmp_path: Path) -> None:
+    """Hopsan names a valve "4/3 Directional Valve"; a connection naming a component the system lacks is refused
+    (it was dropped silently)."""
+    text = MODEL.replace('name="Source"', 'name="4/3 Source"').replace('startcomponent="Source"', 'startcomponent="4/3 Source"')
+    model = read_hmf(_file(tmp_path, text))
+    assert "4/3 Source" in [c.full_name for c in model.components]
+    assert any("4/3 Source.P1" in group for group in model.connections)
+    ghost = MODEL.replace('startcomponent="Step" startport="out" endcomponent="Scope"', 'startcomponent="Ghost" startport="out" endcomponent="Scope"')
+    with pytest.raises(ModelFileError, match=r"names 'Ghost', which is no component, subsystem or port"):
+        read_hmf(_file(tmp_path, ghost, "ghost.hmf"))
