@@ -71,8 +71,11 @@ class Cylinder(Component):
     * ``none``: the continuity equation alone (a chamber may go below vacuum,
       which the plausibility check flags).
 
-    Output ``F`` is the hydraulic force on the piston in +x, less the piston's
-    viscous friction ``B_p`` v, plus the end-stop force
+    Output ``F`` is the hydraulic force on the piston in +x (the chambers' gauge
+    pressures on their areas, and ``p_amb``, the gauge pressure around the rod,
+    on the rod's section: 0 for a rod in the atmosphere; Hopsan's cylinder, whose
+    force is that of absolute pressures, has none, ``"0 Pa_abs"``), less the
+    piston's viscous friction ``B_p`` v, plus the end-stop force
     (:func:`~hydroservo.laws.stops.end_stop_force`): a spring-damper (``k_stop``, ``c_stop``) acting beyond ``x_min``/``x_max``,
     stiff by default (1e9 N/m, 1e6 N s/m: 0.1 mm under 100 kN, a hard stop for any
     practical load, as Hopsan's stroke limit tends to one); with both 0 there
@@ -116,6 +119,9 @@ class Cylinder(Component):
         "x_max": Param(0.1, "m", "end stop, extended"),
         "k_stop": Param(1e9, "N/m", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
         "B_p": Param(0.0, "N*s/m", "viscous friction of the piston", min=0.0),
+        "p_amb": Param(
+            0.0, "Pa", "pressure around the rod, acting on its section A_A - A_B (gauge; '0 Pa_abs' for none)", min=VACUUM
+        ),
         "c_stop": Param(1e6, "N*s/m", "end-stop damping", min=0.0),
         "pA0": Param(0.0, "Pa", "initial pressure, side A", min=VACUUM),
         "pB0": Param(0.0, "Pa", "initial pressure, side B", min=VACUUM),
@@ -227,7 +233,7 @@ class Cylinder(Component):
         out = {"pA": pA, "pB": pB, "QLi": p["C_Li"] * (pA - pB)}
         pos = u["x"]
         stop = end_stop_force(pos, u["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
-        out["F"] = pA * p["A_A"] - pB * p["A_B"] - p["B_p"] * u["v"] + stop
+        out["F"] = pA * p["A_A"] - pB * p["A_B"] - p["p_amb"] * (p["A_A"] - p["A_B"]) - p["B_p"] * u["v"] + stop
         VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
         out["m_oil"] = p["rho"] * (VA + VB)
         out["VA"], out["VB"] = VA, VB
