@@ -6,7 +6,7 @@ development setup: ``hopsancli``) and a clone of Hopsan's repository for its mod
     python scripts/hopsan_references.py --cli $HOPSAN_ROOT/install/bin/hopsancli --source path/to/hopsan
 
 For each model of :data:`hydroservo.validation.hopsan_examples.MODELS` it runs Hopsan at its own time step and at
-steps halved again and again, logging the positions, velocities, pressures and flows of its ports (one column per
+steps halved again and again, logging the positions, velocities, forces, pressures and flows of its ports (one column per
 Hopsan node; the variables are the imported model's aliases of those kinds), until two successive halvings
 change no trace by more than ``--tol`` of its range, or ``--levels`` halvings are done, or two halvings in a
 row bring no improvement (at very small steps Hopsan's accumulated time and round-off make the result drift
@@ -61,7 +61,7 @@ def variables(model: Path, logged: set[str]) -> dict[str, str]:
     for name, alias in imported.system.aliases.items():
         var = imported.variables[name]
         kind = name.rsplit(".", 1)[-1]
-        if kind in ("Position", "Velocity", "Pressure", "Flow") and var in logged and alias.expr not in seen:
+        if kind in ("Position", "Velocity", "Force", "Pressure", "Flow") and var in logged and alias.expr not in seen:
             seen.add(alias.expr)
             chosen[var] = name
     return chosen
@@ -167,7 +167,7 @@ def _rel(diff: np.ndarray, ref: np.ndarray) -> float:
 
 
 def _unit(var: str) -> str:
-    return {"Position": "m", "Velocity": "m/s", "Pressure": "Pa", "Flow": "m^3/s"}[var.rsplit("#", 1)[-1]]  # SI
+    return {"Position": "m", "Velocity": "m/s", "Force": "N", "Pressure": "Pa", "Flow": "m^3/s"}[var.rsplit("#", 1)[-1]]
 
 
 if __name__ == "__main__":

@@ -28,7 +28,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from hydroservo.components import base as cbase
-from hydroservo.errors import ModelFileError
+from hydroservo.errors import ModelError, ModelFileError
 from hydroservo.io.hopsan import HopsanComponent, HopsanModel, read_hmf
 
 if TYPE_CHECKING:
@@ -127,6 +127,13 @@ class _Params:
 
 Builder = Callable[[HopsanComponent, str, _Params], Mapped]
 
+#: Hopsan's C components among the mapped types (they own the start values of their nodes)
+C_TYPES = frozenset({
+    "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
+    "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
+    "MechanicForceTransformer",
+})
+
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
 MULTIPORTS: dict[str, frozenset[str]] = {
     "HydraulicVolumeMultiPort": frozenset({"P1"}),
@@ -189,13 +196,18 @@ def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import ReliefValve
 
+    if par("p_h", 5e5) != 0.0:
+        par.problems.append(
+            f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa (Hopsan's default is 5e5 Pa) is not supported yet; "
+            "set p_h to 0 in Hopsan for a valve without hysteresis"
+        )
     comp = ReliefValve(
         n,
         p_crack=_abs(par("p_max", 2e7)),
         tau=par("tao", 0.01),
         k_cs=par("k_cs", 1e-8),
         k_cf=par("k_cf", 1e-8),
-        q_nom=par("q_nom", 0.01),
+        q_nom=par("q_nom", 0.001),
         p_nom=7e6,  # Hopsan's fixed nominal pressure drop (HydraulicPressureReliefValve.hpp)
         p_tr=1e3,
     )
@@ -206,7 +218,7 @@ def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
-    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("n_p", 50.0), C_leak=par("C_lp", 1e-11))
+    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("n_p", 250.0), C_leak=par("C_lp", 1e-12))
     return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"})
 
 
@@ -259,11 +271,12 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         V_B0=par("V_2", 3e-4) + a2 * sl,  # Hopsan measures chamber 2 from the other end of the stroke
         beta_e=par("Beta_e", 1e9),
         B_p=par("B_p", 1e3),
-        C_Li=par("c_leak", 0.0),
+        C_Li=par("c_leak", 1e-11),
         x_min=0.0,
         x_max=sl,
         pressure_floor="cavity",
         p_floor="0 Pa_abs",
+        p_amb="0 Pa_abs",  # Hopsan's piston force is that of absolute pressures: no atmosphere on the rod
         pA0=_abs(par.start("P1", "Pressure", 1e5)),
         pB0=_abs(par.start("P2", "Pressure", 1e5)),
     )
@@ -346,9 +359,18 @@ def _mass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Spring
 
-    # relaxed at its start positions (Hopsan's are inward, hydroservo's outward)
+    # Hopsan's spring starts at its ends' start positions (inward; hydroservo's are outward) with the start force
+    # of its nodes (a compression: a preload), and adds k times the ends' displacements
+    k = par("k", 100.0)
     e0 = -(par.start("P1", "Position") + par.start("P2", "Position"))
-    return Mapped([Spring(n, k_spring=par("k", 100.0), e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+    preload = par.start("P1", "Force")
+    if preload != par.start("P2", "Force"):
+        par.problems.append(f"{par.where}: start forces at P1 and P2 that differ are not supported")
+    if preload and k > 0.0:
+        e0 += preload / k  # compressed by preload / k at the start
+    elif preload:
+        par.problems.append(f"{par.where}: a start force on a spring of zero stiffness is not supported")
+    return Mapped([Spring(n, k_spring=k, e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
 def _fixed_position(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -547,7 +569,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicFixedPosition": _fixed_position,
     "MechanicForceTransformer": _force_source,
     "MechanicPositionSensor": _position_sensor,
-    "MechanicVelocitySensor": _velocity_sensor,
+    "MechanicSpeedSensor": _velocity_sensor,
     "MechanicForceSensor": _force_sensor,
     "SignalStep": _step,
     "SignalRamp": _ramp,
@@ -602,6 +624,17 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     model = read_hmf(path)
     source = str(path)
     problems: list[str] = []
+    seen_names: set[str] = set()
+    for hc in model.components:
+        if hc.full_name in seen_names:
+            problems.append(f"{source}: two components are named {hc.full_name!r}")
+        seen_names.add(hc.full_name)
+    for connection in model.connections:
+        for end in connection:
+            if _end(end)[0] not in seen_names:
+                problems.append(f"{source}: connection {' – '.join(connection)}: no component {_end(end)[0]!r} in the model")
+    if problems:
+        raise ModelFileError("; ".join(problems))
     unsupported = [c for c in model.components if c.typename not in LIBRARY]
     if unsupported:
         listed = "; ".join(f"{c.full_name} ({c.typename})" for c in unsupported)
@@ -668,6 +701,18 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     signal_groups: list[list[tuple[str, str]]] = []
     for connection in model.connections:
         ends = [_end(e) for e in connection]
+        unknown = [(c, p) for c, p in ends if _port_kind(mapped.get(c), p) == "none" and not _is_input_variable(by_name[c], p)]
+        if unknown and all(_port_kind(mapped.get(c), p) in ("dropped", "none") for c, p in ends):
+            continue  # a scope showing a variable hydroservo does not name (a relief valve's own xv)
+        for c, p in unknown:
+            m_in = mapped[c]
+            known = sorted({*m_in.power, *m_in.read, *m_in.inputs, *m_in.multi, *m_in.outputs, *m_in.values})
+            problems.append(
+                f"{source}: connection {' – '.join(connection)}: {by_name[c].typename} {c!r} has no port {p!r} that "
+                f"hydroservo maps (its ports: {', '.join(known) or 'none'})"
+            )
+        if unknown:
+            continue
         kinds = {_port_kind(mapped.get(c), p) for c, p in ends}
         (power_groups if kinds <= {"power", "read"} else signal_groups).append(ends)
     power_groups = _union(power_groups, multiports)
@@ -690,7 +735,7 @@ def import_hopsan(path: str | Path) -> HopsanImport:
             if (ci, pi) == (co, po):
                 continue
             if kind == "dropped":
-                scopes.setdefault(ci, []).append(f"{co}.{po}.Value")
+                scopes.setdefault(ci, []).append(f"{_alias(co)}.{po}.Value")
             elif kind == "input" and signal is not None:
                 m = mapped[ci]
                 if pi in m.multi:
@@ -706,7 +751,7 @@ def import_hopsan(path: str | Path) -> HopsanImport:
                 if pi in m.zeroed:
                     key, setting = m.zeroed[pi]
                     m.components[0].set(**{key: setting})
-            elif kind == "none":
+            elif kind == "none":  # an input variable of Hopsan's that hydroservo holds constant
                 problems.append(f"{source}: connection {joined}: {ci}.{pi} driven by a signal is not supported yet")
             else:
                 problems.append(f"{source}: connection {joined}: {ci}.{pi} ({kind}) cannot read {co}.{po}")
@@ -725,10 +770,10 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         node = _node_variables(system, refs, port_of)
         for c, p in node_ends:
             for var, value in node.items():
-                if (var == "Flow" and (c, p) in multiports) or f"{c}.{p}.{var}" in aliases:
+                if (var == "Flow" and (c, p) in multiports) or f"{_alias(c)}.{p}.{var}" in aliases:
                     continue  # a multiport's flow is one per connection: Hopsan logs none of them by the port
-                aliases[f"{c}.{p}.{var}"] = value
-                hopsan_names[f"{c}.{p}.{var}"] = hopsan(c, p, var)
+                aliases[f"{_alias(c)}.{p}.{var}"] = value
+                hopsan_names[f"{_alias(c)}.{p}.{var}"] = hopsan(c, p, var)
             read = mapped[c].read.get(p)
             if read is not None:
                 target, variable = read
@@ -740,7 +785,12 @@ def import_hopsan(path: str | Path) -> HopsanImport:
                 comp.set(gain1=value.coef, offset=value.offset)
                 system.connect(value.signal, target)
 
-    # Hopsan's signal inputs left unconnected take their start value: a constant where it is not 0
+    try:
+        system.hydraulic_inputs()  # every node needs one pressure (motion) port: two C components joined are refused
+    except ModelError as exc:
+        problems.append(f"{source}: {exc}")
+
+    # Hopsan's signal inputs left unconnected take their start value: a constant where it differs from the default
     for hc in model.components:
         m = mapped[hc.full_name]
         for port, target in m.inputs.items():
@@ -750,15 +800,15 @@ def import_hopsan(path: str | Path) -> HopsanImport:
             start = par.value if par is not None and par.value is not None else 0.0
             cname, iname = target.split(".")
             default = system[cname].INPUTS[iname].default
-            if start != 0.0 or default is None:
+            if default is None or start != default:
                 const = system.add(Constant(f"{cname}_{iname}", value=start))
                 system.connect(f"{const.name}.y", target)
         for port, signal in m.outputs.items():
-            aliases[f"{hc.full_name}.{port}.Value"] = Var(1.0, signal)
-            hopsan_names[f"{hc.full_name}.{port}.Value"] = hopsan(hc.full_name, port, "Value")
+            aliases[f"{_alias(hc.full_name)}.{port}.Value"] = Var(1.0, signal)
+            hopsan_names[f"{_alias(hc.full_name)}.{port}.Value"] = hopsan(hc.full_name, port, "Value")
         for variable, value in m.values.items():
-            aliases[f"{hc.full_name}.{variable}.Value"] = value
-            hopsan_names[f"{hc.full_name}.{variable}.Value"] = hopsan(hc.full_name, variable, "Value")
+            aliases[f"{_alias(hc.full_name)}.{variable}.Value"] = value
+            hopsan_names[f"{_alias(hc.full_name)}.{variable}.Value"] = hopsan(hc.full_name, variable, "Value")
     if problems:
         raise ModelFileError("; ".join(problems))
     for name, value in aliases.items():
@@ -775,11 +825,18 @@ def _node_starts(
     """Each port's node start values (``Position`` -> value): those its C component declares, else its Q
     component's, else a sensor's (Hopsan's C components own the start values of their nodes)."""
     groups = _union([[_end(e) for e in c] for c in model.connections], multiports)
-    rank = {"C": 0, "Q": 1}
+    def rank(end: tuple[str, str]) -> int:
+        """0 for the component that owns the node's start values (Hopsan's C), 2 for a sensor, 1 otherwise; a file
+        that does not say (older files have no cqstype) is read by the type."""
+        hc = by_name.get(end[0])
+        if hc is None or "Sensor" in hc.typename:
+            return 2
+        return 0 if hc.cqs == "C" or hc.typename in C_TYPES else 1
+
     out: dict[tuple[str, str], dict[str, float]] = {}
     for group in groups:
         values: dict[str, float] = {}
-        for comp, port in sorted(group, key=lambda e: rank.get(getattr(by_name.get(e[0]), "cqs", ""), 2), reverse=True):
+        for comp, port in sorted(group, key=rank, reverse=True):
             hc = by_name.get(comp)
             if hc is None:
                 continue
@@ -791,6 +848,17 @@ def _node_starts(
             if end not in multiports:
                 out[end] = values
     return out
+
+
+def _is_input_variable(hc: HopsanComponent, port: str) -> bool:
+    """Whether Hopsan's component has an input variable ``port`` (a parameter a signal may drive)."""
+    return f"{port}#Value" in hc.parameters or port in hc.parameters
+
+
+def _alias(full_name: str) -> str:
+    """A Hopsan component's path as the head of an alias: each name made safe (``Tank C_1`` -> ``Tank_C_1``), but
+    a leading digit kept (``4_3_Servo_Valve.PA.Flow``, as Hopsan logs it)."""
+    return ".".join(re.sub(r"\W", "_", part, flags=re.ASCII) or "_" for part in full_name.split("."))
 
 
 def _end(end: str) -> tuple[str, str]:

@@ -172,8 +172,8 @@ def _hydraulic_node(
 
 def _mechanical_node(components: Mapping[str, Component], node: Node, fed: dict[str, list[tuple[float, str]]]) -> None:
     """Feed a mechanical node: the force ports read the motion port's position and velocity, and the motion
-    port's force input sums their forces, each turned by -s_f s_m into the motion port's direction (a component
-    with two motion ports feeding one force input, as a mass's two ends, gets the terms of both)."""
+    port's force input sums their forces, each turned by -s_f s_m into the motion port's direction (a mass's two
+    ends each have their own force input: F at end 2, F_P1 at end 1)."""
     motion: list[tuple[str, Mechanical]] = []
     force: list[tuple[str, Mechanical]] = []
     for ref in node.ports:
