@@ -5,7 +5,6 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo import backend as bk
 from hydroservo.components.base import (
     Component,
     Hydraulic,
@@ -19,7 +18,13 @@ from hydroservo.components.base import (
     register,
 )
 from hydroservo.errors import ParameterError
-from hydroservo.laws.chamber import check_valve_floor, cylinder_volumes, pressure_rate
+from hydroservo.laws.chamber import (
+    cavity_pressure,
+    cavity_volume,
+    check_valve_floor,
+    cylinder_volumes,
+    pressure_rate,
+)
 from hydroservo.laws.fluid import bulk_modulus_eggerth, bulk_modulus_lee
 from hydroservo.laws.stops import end_stop_force
 from hydroservo.units import VACUUM
@@ -201,7 +206,7 @@ class Cylinder(Component):
     def _pressures(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> tuple[Any, Any]:
         """The chamber pressures the ports and the piston see."""
         if self.option("pressure_floor") == "cavity":
-            return bk.fmax(x["pA_state"], p["p_floor"]), bk.fmax(x["pB_state"], p["p_floor"])
+            return cavity_pressure(x["pA_state"], p["p_floor"]), cavity_pressure(x["pB_state"], p["p_floor"])
         return x["pA"], x["pB"]
 
     def check(self) -> None:
@@ -239,7 +244,7 @@ class Cylinder(Component):
         out["VA"], out["VB"] = VA, VB
         if self.option("pressure_floor") == "cavity":
             for side, V in (("A", VA), ("B", VB)):
-                out[f"V_cav{side}"] = V * bk.fmax(p["p_floor"] - x[f"p{side}_state"], 0.0) / self._bulk(out[f"p{side}"], p)
+                out[f"V_cav{side}"] = cavity_volume(x[f"p{side}_state"], p["p_floor"], V, self._bulk(out[f"p{side}"], p))
         return out
 
     def switch_equations(

@@ -5,9 +5,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo import backend as bk
 from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
-from hydroservo.laws.chamber import pressure_rate
+from hydroservo.laws.chamber import cavity_pressure, cavity_volume, pressure_rate
 from hydroservo.units import VACUUM
 
 __all__ = ["Volume"]
@@ -72,8 +71,10 @@ class Volume(Component):
     ) -> dict[str, Any]:
         if self.option("pressure_floor") != "cavity":
             return {"p": x["p"]}
-        cavity = p["V"] * bk.fmax(p["p_floor"] - x["p_state"], 0.0) / p["beta_e"]
-        return {"p": bk.fmax(x["p_state"], p["p_floor"]), "V_cav": cavity}
+        return {
+            "p": cavity_pressure(x["p_state"], p["p_floor"]),
+            "V_cav": cavity_volume(x["p_state"], p["p_floor"], p["V"], p["beta_e"]),
+        }
 
     def switch_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]

@@ -102,3 +102,66 @@ def check_valve_floor(p: Any, dp: Any, p_floor: Any) -> Any:
     (0.0, -5.0)
     """
     return bk.if_else(p <= p_floor, bk.fmax(dp, 0.0), dp)
+
+
+def cavity_pressure(p_state: Any, p_floor: Any) -> Any:
+    r"""The pressure a cavitating chamber's ports see: :math:`p = \max(p_{state}, p_{floor})`.
+
+    The pressure state integrates the continuity equation without a floor; below ``p_floor`` (where the oil
+    releases gas or vapour, near vacuum) it stands for a cavity (:func:`cavity_volume`) that the inflow must
+    refill before the pressure rises again. Hopsan's cylinders and volumes behave so, passing max(p, 0) to the
+    components around them.
+
+    Parameters
+    ----------
+    p_state : array_like
+        Pressure state [Pa].
+    p_floor : array_like
+        Pressure at which the chamber cavitates [Pa].
+
+    Returns
+    -------
+    array_like
+        The pressure the ports see [Pa].
+
+    References
+    ----------
+    [Hopsan2026] (HydraulicCylinderC, HydraulicVolume: pressures below zero passed on as zero).
+
+    Examples
+    --------
+    >>> float(cavity_pressure(-1e6, 0.0)), float(cavity_pressure(2e6, 0.0))
+    (0.0, 2000000.0)
+    """
+    return bk.fmax(p_state, p_floor)
+
+
+def cavity_volume(p_state: Any, p_floor: Any, V: Any, E: Any) -> Any:
+    r"""The cavity a chamber's pressure state stands for below its floor: :math:`V\,\max(p_{floor} - p_{state}, 0)/E`.
+
+    Parameters
+    ----------
+    p_state : array_like
+        Pressure state [Pa].
+    p_floor : array_like
+        Pressure at which the chamber cavitates [Pa].
+    V : array_like
+        Chamber volume [m^3].
+    E : array_like
+        Effective bulk modulus [Pa].
+
+    Returns
+    -------
+    array_like
+        Cavity volume [m^3].
+
+    References
+    ----------
+    [Hopsan2026] (HydraulicCylinderC, HydraulicVolume).
+
+    Examples
+    --------
+    >>> float(cavity_volume(-1e6, 0.0, 1e-3, 1e9))  # 1 L, 10 bar below the floor: 1 cm^3
+    1e-06
+    """
+    return V * bk.fmax(p_floor - p_state, 0.0) / E
