@@ -812,10 +812,13 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     if problems:
         raise ModelFileError("; ".join(problems))
     for name, value in aliases.items():
-        unit = _unit_of(system, value)
+        unit = "Pa_abs" if value.absolute else _unit_of(system, value)  # Hopsan's pressures are absolute values
         system.alias(name, value.expr(), unit, f"Hopsan's {hopsan_names[name]}")
     system.meta.update({"status": "imported", "hopsan_timestep": f"{model.timestep!r} s"})
     system.plots = [list(dict.fromkeys(shown)) for shown in scopes.values() if shown]
+    if not system.plots:  # no scope: what an engineer looks at first, not the first of Hopsan's many variables
+        system.plots = system.default_panels(aliases=False)
+    system.display_units = ["Pa_abs"]  # pressures shown absolute, as Hopsan shows them
     return HopsanImport(system, model, mapping, names, hopsan_names)
 
 

@@ -634,13 +634,13 @@ class System:
             texts += [t for k, t in self.fluid.given if k != "temperature"]
         return per_signal.over(inferred_units(texts))
 
-    def default_panels(self) -> list[list[str]]:
-        """The main signals to plot, panel by panel: the model file's ``plots``, else one panel per alias,
-        else what an engineer looks at first (positions; spool positions; the pressures of the circuit's
-        volumes, chambers and accumulators; speeds), else one panel per state (at most 8 panels)."""
+    def default_panels(self, aliases: bool = True) -> list[list[str]]:
+        """The main signals to plot, panel by panel: the model file's ``plots``, else one panel per alias (unless
+        ``aliases`` is False), else what an engineer looks at first (positions; spool positions; the pressures of
+        the circuit's volumes, chambers and accumulators; speeds), else one panel per state (at most 8 panels)."""
         if self.plots:
             return [list(panel) for panel in self.plots]
-        if self.aliases:
+        if self.aliases and aliases:
             return [[a] for a in list(self.aliases)[:8]]
         positions, spools, pressures, speeds = [], [], [], []
         for cname, comp in self.components.items():
