@@ -320,6 +320,11 @@ class Component:
         self.explicit: set[str] = set()
         self.option_values: dict[str, str] = {k: v.default for k, v in self.OPTIONS.items()}
         self.set(**values)
+        self.options_changed()
+
+    def options_changed(self) -> None:
+        """Hook, called once the component is made and whenever an option is set: a component whose states or
+        outputs depend on its options (a chamber's cavity state) declares them here, on the instance."""
 
     def _bind_signal_unit(self, unit: str) -> None:
         """Give signal blocks a unit: every declared unit "@" becomes the coherent SI unit of ``unit``
@@ -423,6 +428,7 @@ class Component:
                 f"{self.name}.{key} = {value!r}: expected one of {', '.join(spec.choices)} ({spec.description})"
             )
         self.option_values[key] = str(value)
+        self.options_changed()
 
     def option(self, key: str) -> str:
         return self.option_values[key]

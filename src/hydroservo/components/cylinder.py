@@ -173,16 +173,7 @@ class Cylinder(Component):
         "VB": Limit("volume"),
     }
 
-    def __init__(self, name: str, **values: Any) -> None:
-        super().__init__(name, **values)
-        self._declare()
-
-    def set_option(self, key: str, value: Any) -> None:
-        super().set_option(key, value)
-        if hasattr(self, "values"):  # after construction: the states depend on the floor
-            self._declare()
-
-    def _declare(self) -> None:
+    def options_changed(self) -> None:
         """The states of the chosen pressure floor: the pressures, or (cavity) pressure states below the ports' pressures."""
         cls = type(self)
         if self.option("pressure_floor") != "cavity":

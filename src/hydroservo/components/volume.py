@@ -46,16 +46,7 @@ class Volume(Component):
     HYDRAULIC = {"P": Hydraulic("p", "Q", "the volume's port")}
     OUTPUTS = {"p": Output("Pa", "pressure")}
 
-    def __init__(self, name: str, **values: Any) -> None:
-        super().__init__(name, **values)
-        self._declare()
-
-    def set_option(self, key: str, value: Any) -> None:
-        super().set_option(key, value)
-        if hasattr(self, "values"):  # after construction: the state depends on the floor
-            self._declare()
-
-    def _declare(self) -> None:
+    def options_changed(self) -> None:
         """The state of the chosen floor: the pressure, or (cavity) a pressure state below the port's pressure."""
         cls = type(self)
         if self.option("pressure_floor") != "cavity":
