@@ -76,9 +76,6 @@ class Mapped:
     note: str = ""
     #: Hopsan multi-input port (a sum's "in") -> the hydroservo inputs it fills, in the order it is connected
     multi: dict[str, list[str]] = field(default_factory=dict)
-    #: Hopsan input port -> (parameter of the first component, its value) set when a signal drives that input,
-    #: which the component then adds (a source's pressure, an orifice's coefficient)
-    zeroed: dict[str, tuple[str, float | str]] = field(default_factory=dict)
     #: initial values of states ("comp.state" -> value, SI) taken from Hopsan's start values
     initial: dict[str, float] = field(default_factory=dict)
     #: signals joining the components it became: (output, input)
@@ -289,19 +286,20 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _flow_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import FlowSource
 
-    # Hopsan's q is an input: a constant, or a signal added to q = 0 (the importer sets it when connected)
-    return Mapped([FlowSource(n, q=par("q", 1e-3))], power={"P1": f"{n}.P"}, inputs={"q": f"{n}.u"}, zeroed={"q": ("q", 0.0)})
+    # Hopsan's q is an input: the flow, or, driven by a signal, the signal (added to q = 0)
+    if "q" in par.driven:
+        return Mapped([FlowSource(n, q=0.0)], power={"P1": f"{n}.P"}, inputs={"q": f"{n}.u"})
+    return Mapped([FlowSource(n, q=par("q", 1e-3))], power={"P1": f"{n}.P"})
 
 
 def _laminar_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import LaminarOrifice
 
-    return Mapped(
-        [LaminarOrifice(n, G_lam=abs(par("Kc", 1e-11)))],
-        power={"P1": f"{n}.A", "P2": f"{n}.B"},
-        inputs={"Kc": f"{n}.u"},
-        zeroed={"Kc": ("G_lam", 0.0)},
-    )
+    # Hopsan's Kc is an input: the coefficient, or, driven by a signal, the signal (added to G_lam = 0)
+    ports = {"P1": f"{n}.A", "P2": f"{n}.B"}
+    if "Kc" in par.driven:
+        return Mapped([LaminarOrifice(n, G_lam=0.0)], power=ports, inputs={"Kc": f"{n}.u"})
+    return Mapped([LaminarOrifice(n, G_lam=abs(par("Kc", 1e-11)))], power=ports)
 
 
 def _turbulent_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -748,9 +746,6 @@ def import_hopsan(path: str | Path) -> HopsanImport:
                     continue
                 system.connect(signal, m.inputs[pi])
                 connected_inputs.add((ci, pi))
-                if pi in m.zeroed:
-                    key, setting = m.zeroed[pi]
-                    m.components[0].set(**{key: setting})
             elif kind == "none":  # an input variable of Hopsan's that hydroservo holds constant
                 problems.append(f"{source}: connection {joined}: {ci}.{pi} driven by a signal is not supported yet")
             else:
@@ -794,8 +789,8 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     for hc in model.components:
         m = mapped[hc.full_name]
         for port, target in m.inputs.items():
-            if (hc.full_name, port) in connected_inputs or port in m.zeroed:
-                continue  # driven, or a parameter holds its value (a source's pressure)
+            if (hc.full_name, port) in connected_inputs:
+                continue
             par = hc.parameters.get(f"{port}#Value")
             start = par.value if par is not None and par.value is not None else 0.0
             cname, iname = target.split(".")
