@@ -712,6 +712,28 @@ class UnitChoice:
             return chosen
         return self.dimensions.get(_dimension_key(unit), unit) if unit else unit
 
+    def shown(self, name: str, value: float, unit: str) -> tuple[float, str]:
+        """``value`` of signal ``name``, carried in SI ``unit``, in the unit it is shown in, and that unit.
+
+        >>> value, unit = UnitChoice.parse("psi").shown("cyl.pA", 6.894757e6, "Pa")
+        >>> round(value, 3), unit
+        (1000.0, 'psi')
+        """
+        to = self.unit(name, unit)
+        return (float(value) if to == unit else float(convert(value, unit, to))), to
+
+    def scale(self, name: str, unit: str) -> tuple[float, str]:
+        """``(factor, shown unit)`` for a difference of signal ``name`` (a rate, a spread, an error): no offset,
+        so a difference of absolute pressures or of temperatures scales without one.
+
+        >>> UnitChoice.parse("bar_abs").scale("cyl.pA", "Pa")
+        (1e-05, 'bar_abs')
+        """
+        to = self.unit(name, unit)
+        if to == unit:
+            return 1.0, unit
+        return si_definition(unit)[0] / si_definition(to)[0], to
+
     def units(self, signal_units: dict[str, str]) -> dict[str, str]:
         """The unit each signal is shown in: ``signal_units`` maps signal names to their SI units."""
         return {name: self.unit(name, unit) for name, unit in signal_units.items()}

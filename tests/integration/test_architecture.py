@@ -53,6 +53,7 @@ DELEGATIONS = {
     ("hydroservo.analysis.sensitivity", "io"),  # a notebook's display of a study (io.notebook)
     ("hydroservo.system.system", "identification"),  # System.calibrate, System.plan_experiment
     ("hydroservo.identification.calibration", "plotting"),  # Calibration.plot
+    ("hydroservo.identification.calibration", "io"),  # Calibration.lines: its tables laid out by io.text
 }
 
 

@@ -370,7 +370,7 @@ def test_ladder_prints_the_table_and_writes_its_files(tmp_path, cli) -> None:  #
     assert names == ["nonlinear", "linear", "simplified-feedback", "improved nonlinear", "improved linear",
                      "improved simplified-feedback"]
     row = report["models"][3]
-    assert row["error 36.8 % [%]"] == pytest.approx(100 * (row["displacement 36.8 %"] - 33.0) / 33.0)
+    assert row["error 36.8 % [%]"] == pytest.approx(100 * (row["displacement 36.8 % [mm]"] - 33.0) / 33.0)
     assert sorted(p.name for p in (tmp_path / "lad").iterdir()) == ["ladder-classes.png", "ladder-responses.png", "ladder.csv"]
     code, text, _ = cli("ladder", "robot-arm", "--steps", "36.8", "--models", "nonlinear,linear", "--out", str(tmp_path / "l2"))
     assert code == 0 and "improved linear" in text and "A accurate" in text

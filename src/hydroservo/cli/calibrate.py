@@ -66,7 +66,7 @@ def add_parsers(sub: Any) -> None:
         help="fit a model's parameters to rig records, with standard errors, 95 %% intervals and a check on records "
         "kept out",
         description="Weighted least squares over every record at once (parameters shared), with exact gradients from "
-        "the model's sensitivity equations. Prints each parameter with its standard error and 95 %% interval (in the "
+        "the model's sensitivity equations. Prints each parameter with its standard error and 95 % interval (in the "
         "unit it was given in), the correlations, the RMS residual of each signal beside its noise, and warns of "
         "parameters the records cannot separate. Writes the calibrated model file, plots of measured against model "
         "with residuals, and calibration.json.",

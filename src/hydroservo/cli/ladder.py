@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, execute, numbers
+from hydroservo.cli.common import add_output_options, add_unit_options, execute, numbers
 from hydroservo.cli.progress import progress_bars
 from hydroservo.errors import ParameterError, shorten
 
@@ -40,7 +40,8 @@ def cmd_ladder(args: argparse.Namespace) -> int:
         args.model, args.set, steps=None if steps is None else [v / 100 for v in steps], parameter=args.parameter,
         output=args.output, t=args.t, free=[s.strip() for s in args.free.split(",") if s.strip()]
         if args.free is not None else None, models=[k.strip() for k in args.models.split(",")] if args.models
-        else None, measured=_measured(args.measured), points=args.points, cli=True,
+        else None, measured=_measured(args.measured), points=args.points, units=args.units, si=args.si,
+        cli=True,
     )
     return execute(job, args, progress_bars(args))
 
@@ -52,8 +53,8 @@ def add_parsers(sub: Any) -> None:
         help="model-fidelity ladder: nonlinear, linearised, simplified, with parameter feedback; error table",
         description="Derive from a model its linearised and simplified (load-pressure) versions, with and without "
         "parameter feedback and the valves' compensation tables, run them at each valve-signal step and classify "
-        "each model's steady-state displacement error as Efe's Table 5.3 (< 7.5 %% accurate, 7.5-20 %% moderate, "
-        "> 20 %% inaccurate), against the model as given or measured responses.",
+        "each model's steady-state displacement error as Efe's Table 5.3 (< 7.5 % accurate, 7.5-20 % moderate, "
+        "> 20 % inaccurate), against the model as given or measured responses.",
     )
     p.add_argument("model", metavar="NAME_OR_FILE")
     p.add_argument("--steps", default=None, metavar="S1,S2,...",
@@ -68,6 +69,7 @@ def add_parsers(sub: Any) -> None:
                    help="a measured response for a step (time [s] in column 0, the output in its unit): the reference")
     p.add_argument("--points", type=int, default=301, help="output times per run (default 301)")
     p.add_argument("--set", action="append", default=[], metavar="PARAM=VALUE", help="set a parameter first")
+    add_unit_options(p, csv=False)
     add_output_options(p, "hydroservo-NAME-ladder")
     p.add_argument("--json", action="store_true", help="print the ladder table (displacements, errors, classes, costs) as JSON")
     p.set_defaults(func=cmd_ladder)

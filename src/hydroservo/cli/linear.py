@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, execute, frequencies, numbers
+from hydroservo.cli.common import add_output_options, add_unit_options, execute, frequencies, numbers
 from hydroservo.errors import ParameterError
 
 __all__ = ["add_parsers"]
@@ -30,7 +30,7 @@ def cmd_linearize(args: argparse.Namespace) -> int:
         simulate=numbers(args.simulate, "--simulate", above=0.0, expected="positive amplitudes in the input's unit")
         if args.simulate else None,
         write=args.out is not None or not args.json,  # --json alone writes nothing
-        cli=True,
+        units=args.units, si=args.si, cli=True,
     )
     return execute(job, args)
 
@@ -61,6 +61,7 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--simulate", default=None, metavar="A1,A2,...",
                    help="also run the nonlinear system with sines of these amplitudes (the first input's unit) about "
                    "the operating point: its gain beside the linear one, for the first output, shows where linearity ends")
+    add_unit_options(p, csv=False)
     add_output_options(p, "hydroservo-NAME-linear")
     p.add_argument("--json", action="store_true",
                    help="print the matrices with their names, the modes and the valve coefficients as JSON "

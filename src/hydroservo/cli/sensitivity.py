@@ -6,7 +6,7 @@ from __future__ import annotations
 import argparse
 from typing import Any
 
-from hydroservo.cli.common import add_output_options, execute
+from hydroservo.cli.common import add_output_options, add_unit_options, execute
 from hydroservo.cli.progress import progress_bars
 
 __all__ = ["add_parsers"]
@@ -20,7 +20,7 @@ def cmd_sensitivity(args: argparse.Namespace) -> int:
         args.model, args.vary, method=args.method, sets=args.set, n=args.n, levels=args.levels,
         metrics=args.metric or None, signals=args.signals.split(",") if args.signals else None, t_end=args.t_end,
         points=args.points, seed=args.seed, threads=args.threads, chunk=args.chunk, scheduler=args.scheduler,
-        force=args.force, runs_progress=bars.runs, cli=True,
+        force=args.force, runs_progress=bars.runs, units=args.units, si=args.si, cli=True,
     )
     return execute(job, args, bars)
 
@@ -56,6 +56,7 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--chunk", type=int, default=None, help="runs per chunk (default 128)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run the chunks on this Dask scheduler, e.g. tcp://10.0.0.5:8786")
+    add_unit_options(p, csv=False)
     add_output_options(p, "hydroservo-NAME-sensitivity")
     p.add_argument("--json", action="store_true", help="print the indices with their confidence intervals as JSON")
     p.set_defaults(func=cmd_sensitivity)

@@ -573,22 +573,24 @@ class Calibration:
         }
 
     def lines(self) -> list[str]:
-        out = [f"{'parameter':<18} {'value':>12} {'± stderr':>11}  {'95 % interval':<27} unit"]
+        from hydroservo.io.text import text_table
+
+        rows = []
         for p in self.parameters:
             d = self.parameter(p.name)
-            ci = f"[{d['ci95'][0]:.5g}, {d['ci95'][1]:.5g}]"
-            out.append(f"{p.name:<18} {d['value']:>12.5g} {d['stderr']:>11.3g}  {ci:<27} {si_unit(p.unit)}")
+            rows.append([p.name, d["value"], d["stderr"], f"[{d['ci95'][0]:.5g}, {d['ci95'][1]:.5g}]", si_unit(p.unit)])
+        out = text_table(rows, ["parameter", "value", "± stderr", "95 % interval", "unit"], digits=[5, 5, 3])
         out.append("")
-        out.append(f"{'signal':<18} {'RMS residual':>13} {'noise':>11}  unit")
-        for s in self.signals:
-            noise = f"{s.noise:.3g}" + ("" if s.noise_given else " (est.)")
-            out.append(f"{s.name:<18} {s.rms:>13.4g} {noise:>11}  {si_unit(s.unit)}")
+        out += text_table(
+            [[s.name, s.rms, f"{s.noise:.3g}" + ("" if s.noise_given else " (est.)"), si_unit(s.unit)] for s in self.signals],
+            ["signal", "RMS residual", "noise", "unit"], digits=4, align=["left", "decimal", "right", "left"],
+        )
         n = len(self.parameters)
         if n > 1:
             out.append("")
-            out.append("correlation " + " ".join(f"{k + 1:>6}" for k in range(n)))
-            for i, name in enumerate(self.names[:n]):
-                out.append(f"{i + 1:>2} {name:<16}" + " ".join(f"{self.correlation[i, j]:>+6.2f}" for j in range(n)))
+            out += text_table([[f"{i + 1} {name}", *(f"{self.correlation[i, j]:+.2f}" for j in range(n))]
+                               for i, name in enumerate(self.names[:n])], ["correlation", *map(str, range(1, n + 1))],
+                              align=["left", *["right"] * n])
         out.append("")
         status = "converged" if self.success else "NOT converged"
         out.append(
@@ -954,14 +956,13 @@ class Prediction:
         return out
 
     def lines(self) -> list[str]:
-        out = [f"{'record':<20} {'signal':<14} {'RMS error':>11} {'% range':>8}  {'final error':>11}  class"]
-        for r in self.rows:
-            final = f"{r['final_error_percent']:+.2f} %" if r.get("final_error_percent") is not None else "-"
-            out.append(
-                f"{r['record']:<20} {r['signal']:<14} {r['rms']:>11.4g} {r['rms_percent']:>8.2f}  {final:>11}  "
-                f"{r.get('class') or '-'}  ({si_unit(r['unit'])})"
-            )
-        return out
+        from hydroservo.io.text import text_table
+
+        rows = [[r["record"], r["signal"], r["rms"], si_unit(r["unit"]), f"{r['rms_percent']:.2f}",
+                 f"{r['final_error_percent']:+.2f} %" if r.get("final_error_percent") is not None else None,
+                 r.get("class") or None] for r in self.rows]
+        return text_table(rows, ["record", "signal", "RMS error", "unit", "% range", "final error", "class"], digits=4,
+                          align=["left", "left", "decimal", "left", "right", "right", "left"])
 
 
 def _settled(t: np.ndarray, y: np.ndarray) -> bool:
@@ -1044,10 +1045,13 @@ class ExperimentPlan:
 
     def lines(self, warnings: bool = True) -> list[str]:
         """The table; ``warnings``: with the identifiability warnings after it."""
-        out = [f"{'parameter':<18} {'nominal':>12} {'± stderr':>11} {'relative':>9}  unit"]
-        for p, s in zip(self.parameters, self.stderr):
-            rel = f"{100 * s / abs(p.start):.2f} %" if p.start else "-"
-            out.append(f"{p.name:<18} {p.shown(p.start):>12.5g} {abs(p.shown(p.start + s) - p.shown(p.start)):>11.3g} {rel:>9}  {si_unit(p.unit)}")
+        from hydroservo.io.text import text_table
+
+        rows = [[p.name, p.shown(p.start), abs(p.shown(p.start + s) - p.shown(p.start)),
+                 f"{100 * s / abs(p.start):.2f} %" if p.start else None, si_unit(p.unit)]
+                for p, s in zip(self.parameters, self.stderr)]
+        out = text_table(rows, ["parameter", "nominal", "± stderr", "relative", "unit"], digits=[5, 5, 3],
+                         align=["left", "decimal", "decimal", "right", "left"])
         return out + ([f"warning: {w}" for w in self.warnings] if warnings else [])
 
 

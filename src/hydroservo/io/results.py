@@ -11,7 +11,7 @@ from hydroservo.units import si_unit
 if TYPE_CHECKING:
     import numpy as np
 
-__all__ = ["write_csv", "write_mat", "read_csv", "csv_header", "write_table"]
+__all__ = ["write_csv", "write_mat", "read_csv", "csv_header", "write_table", "write_frame"]
 
 
 class Result(Protocol):
@@ -70,6 +70,8 @@ def write_table(
     import numpy as np
 
     def cell(value: Any) -> str:
+        if value is None:
+            return ""
         if isinstance(value, str):
             return value
         if isinstance(value, int) and not isinstance(value, bool):
@@ -92,6 +94,14 @@ def write_table(
     path = Path(path)
     path.write_text(whole, encoding="utf-8" if whole.isascii() else "utf-8-sig", newline="")
     return path
+
+
+def write_frame(frame: Any, path: str | Path, comments: list[str] | tuple[str, ...] = (), index: bool = False) -> Path:
+    """Write a pandas DataFrame (a study's table, a ladder's) as :func:`write_table` lays out every CSV; its
+    columns are named ``name [unit]`` already, and with ``index`` its index is the first column."""
+    if index:
+        frame = frame.reset_index()
+    return write_table(path, [str(c) for c in frame.columns], frame.itertuples(index=False, name=None), comments)
 
 
 def write_csv(result: Result, path: str | Path, units: Any = None, ascii: bool = False) -> Path:

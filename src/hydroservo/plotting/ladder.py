@@ -18,8 +18,11 @@ __all__ = ["plot_ladder_responses", "plot_ladder_classes"]
 CLASS_COLOURS = {"accurate": "#8fd18f", "moderate": "#f5d76e", "inaccurate": "#f08c8c", "failed": "#bbbbbb"}
 
 
-def plot_ladder_responses(ladder: LadderTable, *, unit: str = "", title: str = "", file: str | Path | None = None) -> Any:
-    """A panel per step: ``output`` against time for every model, the reference in black."""
+def plot_ladder_responses(
+    ladder: LadderTable, *, unit: str = "", scale: float = 1.0, title: str = "", file: str | Path | None = None
+) -> Any:
+    """A panel per step: ``output`` against time for every model (times ``scale``: SI to ``unit``), the reference
+    in black."""
     plt = pyplot(file)
     steps = ladder.steps
     ncol = 3 if len(steps) > 4 else min(2, len(steps))
@@ -35,7 +38,7 @@ def plot_ladder_responses(ladder: LadderTable, *, unit: str = "", title: str = "
                 continue
             kind = name.removeprefix("improved ")
             is_ref = name == ladder.reference
-            ax.plot(batch.t, batch[ladder.output][k], ls=styles.get(kind, "-"), lw=2.2 if is_ref else 1.1,
+            ax.plot(batch.t, scale * batch[ladder.output][k], ls=styles.get(kind, "-"), lw=2.2 if is_ref else 1.1,
                     color="black" if is_ref else colors[i % len(colors)], label=name + (" (reference)" if is_ref else ""),
                     zorder=3 if is_ref else 2)
         ax.set_title(f"{100 * step:g} %", fontsize=9)

@@ -183,19 +183,18 @@ def _fmt(v: float | None) -> str:
 
 def format_checks(name: str, checks: list[Check]) -> str:
     """Plain-text table: quantity, published, computed, tolerance, unit, verdict."""
-    table = [("quantity", "published", "computed", "tolerance", "unit", "verdict")]
+    from hydroservo.io.text import text_table
+
+    table = []
     for c in checks:
         r = c.row
         pub = ("≤ " if r.upper_bound else "") + _fmt(r.published)
         tol = "-" if r.tolerance is None else ("upper bound" if r.upper_bound else f"±{_fmt(r.tolerance)}")
         verdict = c.verdict + (f" (expected {r.expected})" if c.regression else "")
         table.append((r.quantity, pub, _fmt(c.computed), tol, r.unit, verdict))
-    widths = [max(len(t[i]) for t in table) for i in range(len(table[0]))]
     lines = [f"validation of {name!r}"]
-    for k, t in enumerate(table):
-        lines.append("  ".join(s.ljust(w) for s, w in zip(t, widths, strict=True)).rstrip())
-        if k == 0:
-            lines.append("  ".join("-" * w for w in widths))
+    lines += text_table(table, ["quantity", "published", "computed", "tolerance", "unit", "verdict"],
+                        align=["left"] * 6)
     n_ok = sum(c.verdict == "reproduced" for c in checks)
     n_no = sum(c.verdict == "NOT reproduced" for c in checks)
     bad = regressions(checks)

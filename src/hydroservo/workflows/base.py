@@ -40,6 +40,7 @@ if TYPE_CHECKING:
     from hydroservo.io.files import OutputFolder
     from hydroservo.io.html import Page
     from hydroservo.system.system import System
+    from hydroservo.units import UnitChoice
 
 __all__ = [
     "Artifact",
@@ -285,6 +286,31 @@ def load_with_sets(
         except HydroservoError as exc:
             raise ParameterError(f"{what} {', '.join(items)}: {exc}") from None
     return system
+
+
+def asked_units(system: System, units: Any, si: bool, what: Callable[[str], str]) -> UnitChoice:
+    """The units a workflow's options ask for (``units``: ``"p=bar, mm"``, a mapping; ``si``), checked against
+    ``system``'s signals before anything runs; ``what`` names an option (``--units`` or ``units``).
+
+    Raises
+    ------
+    ParameterError
+        For both options at once, a unit that is not one, or a unit chosen for a signal the model lacks or of
+        another dimension than the signal's.
+    """
+    from hydroservo.units import UnitChoice
+
+    if si and units:
+        raise ParameterError(f"{what('si')} and {what('units')} {shorten(str(units))!r}: give one of them")
+    if si:
+        return UnitChoice.SI
+    try:
+        choice = UnitChoice.parse(units, what=what("units"))
+    except HydroservoError as exc:
+        raise ParameterError(str(exc)) from None
+    if choice.signals:
+        choice.check(system.build().units, what("units"))
+    return choice
 
 
 def _refuse_ambiguous_number(comp: Any, pname: str, val: Any, shown: str, what: str) -> None:

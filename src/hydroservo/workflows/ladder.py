@@ -14,12 +14,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ParameterError
-from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, asked_units, load_with_sets, safe_name
 
 if TYPE_CHECKING:
     from hydroservo.analysis.ladder import LadderTable
     from hydroservo.io.html import Page
     from hydroservo.system.system import System
+    from hydroservo.units import UnitChoice
 
 __all__ = ["Ladder", "LadderReport", "run"]
 
@@ -38,6 +39,26 @@ class LadderReport(Report):
     t: float  #: time of the operating point [s]
     free: list[str]
     unit: str  #: the output's unit (SI)
+    #: the units the displacements are shown in (None: the model's)
+    units: UnitChoice | None = None
+
+    def _shown(self) -> tuple[float, str]:
+        """The factor from SI to the unit the output's displacements (changes) are shown in, and that unit."""
+        choice = self.units if self.units is not None else self.system.unit_choice()
+        return choice.scale(self.ladder.output, self.unit)
+
+    def table(self) -> Any:
+        """The ladder's table (a DataFrame, a row per model), its displacements in the unit they are shown in."""
+        from hydroservo.units import si_unit
+
+        factor, unit = self._shown()
+        table = self.ladder.table.copy()
+        renamed = {}
+        for column in table.columns:
+            if str(column).startswith("displacement "):
+                table[column] = table[column] * factor
+                renamed[column] = f"{column} [{si_unit(unit) or '-'}]"
+        return table.rename(columns=renamed)
 
     def title(self) -> str:
         lad = self.ladder
@@ -46,36 +67,51 @@ class LadderReport(Report):
                 f"{lad.reference}")
 
     def artifacts(self) -> list[Artifact]:
+        from hydroservo.io.results import write_frame
         from hydroservo.plotting.ladder import plot_ladder_classes, plot_ladder_responses
 
         lad = self.ladder
         return [
-            Artifact("ladder.csv", "ladder.csv", lambda p: lad.table.to_csv(p)),
+            Artifact("ladder.csv", "ladder.csv", lambda p: write_frame(self.table(), p, index=True)),
             Artifact("ladder-responses.png", "ladder-responses.png", lambda p: plot_ladder_responses(
-                lad, unit=self.unit, file=p,
+                lad, unit=self._shown()[1], scale=self._shown()[0], file=p,
                 title=f"{self.system.name}: {lad.output} of every model at each step of {lad.parameter}")),
             Artifact("ladder-classes.png", "ladder-classes.png", lambda p: plot_ladder_classes(lad, file=p)),
         ]
 
     def to_dict(self) -> dict[str, Any]:
+        import math
+
+        rows = self.table().reset_index().to_dict(orient="records")
+        clean = [{k: (None if isinstance(v, float) and not math.isfinite(v) else v) for k, v in r.items()} for r in rows]
         return {"model": self.system.name, "operating_point": {"t": self.t, "free": self.free},
-                **self.ladder.to_dict(), "files": self.files}
+                **self.ladder.to_dict(), "models": clean, "files": self.files}
 
     def lines(self) -> list[str]:
+        from hydroservo.io.text import text_table
+        from hydroservo.units import si_unit
+
         lad = self.ladder
         out = [self.title()]
         short = {"accurate": "A", "moderate": "M", "inaccurate": "I", "failed": "F"}
         out.append("  error against the reference [%] and class (A accurate < 7.5 %, M moderate to 20 %, "
                    "I inaccurate; * implausible run)")
-        out.append("    " + "model".ljust(30) + "".join(f"{100 * s:>10g} %" for s in lad.steps) + "   cost")
+        rows = []
         for model, row in lad.table.iterrows():
-            cells = ""
+            cells = []
             for s in lad.steps:
                 cls = str(row[f"class {100 * s:g} %"])
-                mark = short.get(cls.split(" ")[0], "?") + ("*" if "implausible" in cls else " ")
-                cells += f"{row[f'error {100 * s:g} % [%]']:+9.1f} {mark}"
-            out.append(f"    {model:<30}{cells}   {int(row['states'])} states, {row['solver steps']:.0f} steps, "
-                       f"{row['wall time [ms]']:.1f} ms")
+                mark = short.get(cls.split(" ")[0], "?") + ("*" if "implausible" in cls else "")
+                cells.append(f"{row[f'error {100 * s:g} % [%]']:+.1f} {mark}")
+            rows.append([model, *cells, f"{int(row['states'])} states, {row['solver steps']:.0f} steps, "
+                         f"{row['wall time [ms]']:.1f} ms"])
+        out += text_table(rows, ["model", *(f"{100 * s:g} %" for s in lad.steps), "cost"], indent=4,
+                          align=["left", *["right"] * len(lad.steps), "left"])
+        factor, unit = self._shown()
+        if lad.reference in lad.table.index:
+            ref = lad.table.loc[lad.reference]
+            changes = ", ".join(f"{factor * ref[f'displacement {100 * s:g} %']:.4g}" for s in lad.steps)
+            out.append(f"  the reference's change of {lad.output} [{si_unit(unit) or '-'}]: {changes}")
         for f, path in self.files.items():
             out.append(f"  {f}: {path}")
         return out
@@ -90,18 +126,19 @@ class LadderReport(Report):
         from hydroservo.workflows import pages
 
         lad = self.ladder
+        factor, unit = self._shown()
         figures = []
         for k, step in enumerate(lad.steps):
             curves = []
             for rung, batch in lad.runs.items():
                 t = np.asarray(batch.t, dtype=float)
                 y = np.asarray(batch[lad.output], dtype=float)
-                curves.append((t, y[k] if y.ndim > 1 else y, rung))
+                curves.append((t, (y[k] if y.ndim > 1 else y) * factor, rung))
             if curves:
-                figures.append(Figure(xy_figure(curves, "t [s]", f"{lad.output} [{si_unit(self.unit)}]",
+                figures.append(Figure(xy_figure(curves, "t [s]", f"{lad.output} [{si_unit(unit)}]",
                                                 title=f"step {100 * step:g} % of {lad.parameter}")))
         return pages.page(self.title(), f"against {lad.reference}", [
-            Section("Errors and classes ([Efe2014] Table 5.3)", [pages.dataframe_table(lad.table, index=True)]),
+            Section("Errors and classes ([Efe2014] Table 5.3)", [pages.dataframe_table(self.table(), index=True)]),
             Section("Responses", figures) if figures else None,
             pages.circuit_section(self.system),
             pages.references_section(self.system.references()),
@@ -136,6 +173,11 @@ class Ladder(Workflow):
         its unit in column 1), ``(file, column)``, or ``(t, y)`` arrays.
     points : int
         Output times per run.
+    units : str or dict, optional
+        Units to show the output's displacements in, over the model's own (``"mm"``;
+        :class:`~hydroservo.units.UnitChoice`): the table, the CSV, the JSON and the plots.
+    si : bool
+        Show them in SI instead.
     """
 
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
@@ -150,12 +192,15 @@ class Ladder(Workflow):
     models: Sequence[str] | None = None
     measured: Mapping[float, Measured] | None = None
     points: int = 301
+    units: str | Mapping[str, str] | None = None
+    si: bool = False
 
     def __post_init__(self) -> None:
         from hydroservo.analysis.ladder import RUNGS, STEPS, ladder_defaults
         from hydroservo.units import to_si
 
         system = self.system = load_with_sets(self.model, self.sets, self.name("sets"))
+        self.unit_choice = system.unit_choice(asked_units(system, self.units, self.si, self.name))
         defaults = ladder_defaults(system)
         self.stepped = self.parameter or defaults["parameter"]
         if self.stepped is None:
@@ -212,7 +257,7 @@ class Ladder(Workflow):
         table = ladder_table(rungs, self.step_values, parameter=self.stepped, output=self.compared,
                              n_points=self.points, reference=self.reference)
         unit = self.system.build().units.get(self.compared, "")
-        return LadderReport(self.system, table, self.time, self.free_states, unit)
+        return LadderReport(self.system, table, self.time, self.free_states, unit, self.unit_choice)
 
 
 def run(model: str | Path | System, **inputs: Any) -> LadderReport:

@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ParameterError, shorten
-from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, asked_units, load_with_sets, safe_name
 
 if TYPE_CHECKING:
     import numpy as np
@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from hydroservo.analysis.linear import LinearModel, ValveCoefficients
     from hydroservo.io.html import Page
     from hydroservo.system.system import System
+    from hydroservo.units import UnitChoice
 
 __all__ = ["Linearize", "LinearReport", "run", "operating_point"]
 
@@ -61,6 +62,52 @@ class LinearReport(Report):
     frequencies: np.ndarray | None = None  #: [Hz], of the Bode plot and the JSON's frequency response
     simulated: FrequencyResponse | None = None
     write_files: bool = True
+    #: the units the operating point and the valve coefficients are shown in (None: the model's)
+    units: UnitChoice | None = None
+
+    def _choice(self) -> UnitChoice:
+        return self.units if self.units is not None else self.system.unit_choice()
+
+    def _point(self) -> list[tuple[str, float, str, float]]:
+        """The operating point as shown: state, value, unit, rate (in that unit per second)."""
+        choice, lin = self._choice(), self.model
+        rows = []
+        for s, v in lin.x0.items():
+            value, unit = choice.shown(s, v, lin.units[s])
+            rows.append((s, value, unit, lin.drift[s] * choice.scale(s, lin.units[s])[0]))
+        return rows
+
+    def _coefficients(self) -> list[tuple[str, str, float]]:
+        """The valve coefficients' names, the unit each is shown in and its factor from SI: the model's units of
+        flow, stroke and pressure composed ((L/min)/mm), SI when it chooses none."""
+        from hydroservo.units import si_unit
+
+        choice = self._choice()
+        (fq, q), (fx, x), (fp, p) = (choice.scale("", u) for u in ("m^3/s", "m", "Pa"))
+        si = {"m^3/s", "m", "Pa"}
+
+        def ratio(a: str, b: str, fa: float, fb: float, si_text: str) -> tuple[str, float]:
+            if {a, b} <= si:
+                return si_text, 1.0
+            if b in a.split("^")[0]:  # in^3/s per in: in²/s
+                return si_unit(f"{a}/{b}"), fa / fb
+            return (f"({si_unit(a)})/{si_unit(b)}" if "/" in a else f"{si_unit(a)}/{si_unit(b)}"), fa / fb
+
+        return [
+            ("K_Qx", *ratio(q, x, fq, fx, "m^2/s")),
+            ("K_Qp", *ratio(q, p, fq, fp, "m^3/(s Pa)")),
+            ("K_px", *ratio(p, x, fp, fx, "Pa/m")),
+        ]
+
+    def _valve_point(self, vc: ValveCoefficients) -> str:
+        from hydroservo.units import si_unit
+
+        choice = self._choice()
+        parts = []
+        for key, label, unit in (("xv", "x_v", "m"), ("pA", "p_A", "Pa"), ("pB", "p_B", "Pa")):
+            value, shown = choice.shown("", vc.point[key], unit)
+            parts.append(f"{label} = {value:.4g} {si_unit(shown)}")
+        return ", ".join(parts)
 
     def title(self) -> str:
         return f"{self.model.name}: linear model at {self.model.info.get('at', '')} (t = {self.model.t:g} s)"
@@ -117,6 +164,7 @@ class LinearReport(Report):
         return report
 
     def lines(self) -> list[str]:
+        from hydroservo.io.text import text_table
         from hydroservo.units import si_unit
 
         lin = self.model
@@ -124,40 +172,40 @@ class LinearReport(Report):
         out.append(f"  {len(lin.states)} states, {len(lin.inputs)} inputs ({', '.join(lin.inputs)}), "
                    f"{len(lin.outputs)} outputs")
         out.append("  operating point:")
-        for s, v in lin.x0.items():
-            drift = lin.drift[s]
-            moving = f"   (rate {drift:.4g} {si_unit(lin.units[s])}/s)" if abs(drift) > 1e-9 * max(1.0, abs(v)) else ""
-            out.append(f"    {s:<24} {v:>12.5g} {si_unit(lin.units[s])}{moving}")
+        point = self._point()
+        moving = any(abs(drift) > 1e-9 * max(1.0, abs(v)) for _, v, _, drift in point)
+        out += text_table(
+            [[s, v, si_unit(unit)] + ([drift] if moving else []) for s, v, unit, drift in point],
+            ["state", "value", "unit"] + (["rate [unit/s]"] if moving else []), indent=4, digits=[5, 5, 5, 4],
+        )
         out.append("  modes (slowest first):")
-        out.append(f"    {'pole [1/s]':>26}  {'f_n [Hz]':>9}  {'damping':>7}  {'tau [s]':>9}  states taking part")
+        rows = []
         for m in lin.modes():
             lam = m.eigenvalue
             pole = f"{lam.real + 0.0:.4g}" + (f" ± {abs(lam.imag):.4g}j" if m.oscillatory else "")
-            zeta = "   -   " if m.damping != m.damping else f"{m.damping:7.3f}"
-            tau = f"{m.time_constant:9.3g}" if abs(m.time_constant) < 1e12 else "      inf"
-            parts = ", ".join(f"{s} {100 * m.participation[s]:.0f}%" for s in m.main_states(0.1))
-            out.append(f"    {pole:>26}  {m.frequency:9.4g}  {zeta}  {tau}  {parts}")
+            rows.append([pole, m.frequency, None if m.damping != m.damping else f"{m.damping:.3f}",
+                         m.time_constant if abs(m.time_constant) < 1e12 else "inf",
+                         ", ".join(f"{s} {100 * m.participation[s]:.0f}%" for s in m.main_states(0.1))])
+        out += text_table(rows, ["pole [1/s]", "f_n [Hz]", "damping", "tau [s]", "states taking part"], indent=4,
+                          digits=[4, 4, 3, 3], align=["right", "decimal", "decimal", "decimal", "left"])
         for vc in self.valves:
-            out.append(
-                f"  valve {vc.valve} at x_v = {vc.point['xv'] * 1e3:.4g} mm, p_A = {vc.point['pA'] / 1e5:.4g} bar, "
-                f"p_B = {vc.point['pB'] / 1e5:.4g} bar ([Efe2014] eqs. 4.8-4.12; closed form in parentheses):"
-            )
-            for key, unit in (("K_Qx", "m^2/s"), ("K_Qp", "m^3/(s Pa)"), ("K_px", "Pa/m")):
-                for side in ("A", "B"):
-                    k = f"{key}_{side}"
-                    closed = f"  ({vc.closed_form[k]:.4g})" if vc.closed_form else ""
-                    out.append(f"    {k:<7} {vc.model[k]:>11.4g}{closed} {unit}")
+            out.append(f"  valve {vc.valve} at {self._valve_point(vc)} ([Efe2014] eqs. 4.8-4.12):")
+            rows = [[f"{key}_{side}", factor * vc.model[f"{key}_{side}"],
+                     factor * vc.closed_form[f"{key}_{side}"] if vc.closed_form else None, unit]
+                    for key, unit, factor in self._coefficients() for side in ("A", "B")]
+            out += text_table(rows, ["coefficient", "model", "closed form", "unit"], indent=4, digits=4)
         for what, path in self.files.items():
             out.append(f"  {what}: {path}")
         sim = self.simulated
         if sim is not None:
             linear = lin.bode(sim.frequencies, lin.inputs[0], lin.outputs[0])
             out.append(f"  {lin.outputs[0]} / {lin.inputs[0]}, simulated sines against the linear model [dB]:")
-            out.append("    " + "f [Hz]".rjust(8) + "linear".rjust(10)
-                       + "".join(f"{'A=' + format(a, 'g'):>12}" for a in sim.amplitudes))
-            for j, fk in enumerate(sim.frequencies):
-                out.append("    " + f"{fk:8.3g}" + f"{linear.gain_db[0, j]:10.2f}"
-                           + "".join(f"{sim.gain_db[i, j]:12.2f}" for i in range(sim.amplitudes.size)))
+            out += text_table(
+                [[fk, linear.gain_db[0, j], *(sim.gain_db[i, j] for i in range(sim.amplitudes.size))]
+                 for j, fk in enumerate(sim.frequencies)],
+                ["f [Hz]", "linear", *(f"A={a:g}" for a in sim.amplitudes)], indent=4,
+                digits=[3, *[".2f"] * (1 + sim.amplitudes.size)],
+            )
             if "not_run" in sim.info:
                 out.append(f"    note: {sim.info['not_run']}")
         return out
@@ -173,7 +221,7 @@ class LinearReport(Report):
 
         lin = self.model
         point = Table(["state", "value", "unit", "rate [unit/s]"],
-                      [[s, v, si_unit(lin.units[s]), lin.drift[s]] for s, v in lin.x0.items()])
+                      [[s, v, si_unit(unit), drift] for s, v, unit, drift in self._point()])
         modes = Table(["pole [1/s]", "f_n [Hz]", "damping", "tau [s]", "states taking part"], [
             [f"{m.eigenvalue.real:.4g}" + (f" ± {abs(m.eigenvalue.imag):.4g}j" if m.oscillatory else ""), m.frequency,
              None if m.damping != m.damping else m.damping, m.time_constant if abs(m.time_constant) < 1e12 else None,
@@ -192,9 +240,10 @@ class LinearReport(Report):
                                               input_unit=si_unit(lin.units.get(lin.inputs[0], "")),
                                               output_unit=si_unit(lin.units.get(out, "")))))
         valves = [Table(["coefficient", "model", "closed form", "unit"], [
-            [f"{key}_{side}", vc.model[f"{key}_{side}"], vc.closed_form.get(f"{key}_{side}") if vc.closed_form else None,
-             unit] for key, unit in (("K_Qx", "m^2/s"), ("K_Qp", "m^3/(s Pa)"), ("K_px", "Pa/m")) for side in ("A", "B")
-        ], f"valve {vc.valve} ([Efe2014] eqs. 4.8-4.12)") for vc in self.valves]
+            [f"{key}_{side}", factor * vc.model[f"{key}_{side}"],
+             factor * vc.closed_form[f"{key}_{side}"] if vc.closed_form else None, si_unit(unit)]
+            for key, unit, factor in self._coefficients() for side in ("A", "B")
+        ], f"valve {vc.valve} at {self._valve_point(vc)} ([Efe2014] eqs. 4.8-4.12)") for vc in self.valves]
         return pages.page(self.title(), f"{len(lin.states)} states, inputs {', '.join(lin.inputs)}", [
             pages.circuit_section(self.system),
             Section("Operating point", [point]),
@@ -231,6 +280,11 @@ class Linearize(Workflow):
         Amplitudes (the first input's unit) of sines run through the nonlinear system beside the linear model.
     write : bool
         Whether the report writes its files (the model as JSON, the poles and the Bode plots).
+    units : str or dict, optional
+        Units to show the operating point and the valve coefficients in, over the model's own (``"p=bar, mm"``;
+        :class:`~hydroservo.units.UnitChoice`). The JSON keeps SI, as the matrices are.
+    si : bool
+        Show them in SI instead.
     """
 
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
@@ -245,6 +299,8 @@ class Linearize(Workflow):
     frequencies: Sequence[float] | np.ndarray | None = None
     simulate: Sequence[float] | None = None
     write: bool = True
+    units: str | Mapping[str, str] | None = None
+    si: bool = False
     point: Any = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -256,6 +312,7 @@ class Linearize(Workflow):
         self.point = operating_point(self.at, self.name("at"))
         self.time = to_si(self.t, "s", what=self.name("t"))
         self.grid = None if self.frequencies is None else np.asarray(self.frequencies, dtype=float)
+        self.unit_choice = self.system.unit_choice(asked_units(self.system, self.units, self.si, self.name))
 
     def folder(self) -> str:
         return f"hydroservo-{safe_name(self.system.name)}-linear"
@@ -283,7 +340,7 @@ class Linearize(Workflow):
             simulated = simulated_response(
                 self.system, lin, grid_sim, list(self.simulate), input=lin.inputs[0], output=lin.outputs[0]
             )
-        return LinearReport(self.system, lin, valves, self.grid, simulated, self.write)
+        return LinearReport(self.system, lin, valves, self.grid, simulated, self.write, self.unit_choice)
 
 
 def run(model: str | Path | System, **inputs: Any) -> LinearReport:

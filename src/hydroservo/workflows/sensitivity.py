@@ -19,12 +19,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ParameterError, shorten
-from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, asked_units, load_with_sets, safe_name
 
 if TYPE_CHECKING:
     from hydroservo.analysis.sensitivity import GlobalStudy, OneAtATime
     from hydroservo.io.html import Page
     from hydroservo.system.system import System
+    from hydroservo.units import UnitChoice
 
 __all__ = ["Sensitivity", "OneAtATimeReport", "GlobalReport", "run", "METHODS"]
 
@@ -44,6 +45,49 @@ def _quantity(text: Any) -> Any:
         return text
 
 
+@dataclass(frozen=True)
+class _Shown:
+    """How a metric column is shown: its name with the unit shown, a value's conversion, a difference's factor."""
+
+    name: str
+    convert: Callable[[float], float]
+    factor: float
+
+
+def _converter(own: str, to: str) -> Callable[[float], float]:
+    """A value in unit ``own`` to unit ``to``."""
+    from hydroservo.units import convert
+
+    if own == to:
+        return float
+    return lambda v: float(convert(v, own, to))
+
+
+def _shown_metrics(system: System, columns: Sequence[str], choice: UnitChoice) -> dict[str, _Shown]:
+    """For each metric column (``"final(xv) [m]"``), how it is shown in ``choice``'s units: a metric of a signal's
+    value (final, at, peak, max, min, mean) in the signal's shown unit; times and overshoots as they are."""
+    from hydroservo.analysis.metrics import KINDS, parse_metric
+    from hydroservo.units import si_unit
+
+    units = system.build().units
+    out: dict[str, _Shown] = {}
+    for column in columns:
+        text = column.rsplit(" [", 1)[0]
+        try:
+            metric = parse_metric(text, units)
+        except ParameterError:  # a metric of the user's own (custom_metric): shown as it is
+            out[column] = _Shown(column, float, 1.0)
+            continue
+        own = units.get(metric.signal, "")
+        if KINDS.get(metric.kind) != "signal" or not own:
+            out[column] = _Shown(column, float, 1.0)
+            continue
+        to = choice.unit(metric.signal, own)
+        factor = choice.scale(metric.signal, own)[0]
+        out[column] = _Shown(f"{text} [{si_unit(to)}]", _converter(own, to), factor)
+    return out
+
+
 @dataclass
 class OneAtATimeReport(Report):
     """The response family and the metrics of each level of each factor ([Efe2014] Figs. 5.14-5.19)."""
@@ -53,15 +97,33 @@ class OneAtATimeReport(Report):
     system: System
     study: OneAtATime
     signals: list[str] | None = None
+    #: the units signals and metrics are shown in (None: the model's)
+    units: UnitChoice | None = None
 
     def title(self) -> str:
         return f"{self.study.model}: one factor at a time"
 
+    def _choice(self) -> UnitChoice:
+        return self.units if self.units is not None else self.system.unit_choice()
+
+    def _metrics(self) -> list[str]:
+        return [c for c in self.study.table.columns if c not in ("factor", "level", "status", "reason")]
+
+    def table(self) -> Any:
+        """The metrics of every level (a DataFrame), in the units they are shown in (:attr:`units`)."""
+        shown = _shown_metrics(self.system, self._metrics(), self._choice())
+        table = self.study.table.copy()
+        for column, how in shown.items():
+            table[column] = [how.convert(v) for v in table[column]]
+        return table.rename(columns={c: how.name for c, how in shown.items()})
+
     def artifacts(self) -> list[Artifact]:
+        from hydroservo.io.results import write_frame
+
         study = self.study
-        out = [Artifact("oat.csv", "oat.csv", lambda p: study.table.to_csv(p, index=False))]
+        out = [Artifact("oat.csv", "oat.csv", lambda p: write_frame(self.table(), p))]
         def family(factor: str) -> Any:
-            return lambda path: study.plot(factor, self.signals, units=self.system.unit_choice().units(study.units), file=path)
+            return lambda path: study.plot(factor, self.signals, units=self._choice().units(study.units), file=path)
 
         for f in study.levels:
             name = f"oat-{safe_name(f)}.png"
@@ -69,19 +131,25 @@ class OneAtATimeReport(Report):
         return out
 
     def to_dict(self) -> dict[str, Any]:
-        return {"method": "oat", "table": self.study.table.to_dict(orient="records"), "files": self.files}
+        import math
+
+        rows = self.table().to_dict(orient="records")
+        clean = [{k: (None if isinstance(v, float) and not math.isfinite(v) else v) for k, v in r.items()} for r in rows]
+        return {"method": "oat", "table": clean, "files": self.files}
 
     def lines(self) -> list[str]:
-        study = self.study
-        cols = [c for c in study.table.columns if c not in ("factor", "level", "status", "reason")]
+        """A table per factor: a row per metric (its unit in brackets), a column per level."""
+        from hydroservo.io.text import text_table
+
+        study, table = self.study, self.table()
+        metrics = [c for c in table.columns if c not in ("factor", "level", "status", "reason")]
         out = [self.title()]
-        for factor, levels in study.levels.items():
-            rows = study.table[study.table["factor"] == factor]
+        for factor in study.levels:
+            rows = table[table["factor"] == factor]
             out.append(f"  {factor}:")
-            for (_, row), level in zip(rows.iterrows(), levels):
-                vals = "  ".join(f"{c.split(' [')[0]} {row[c]:.4g}" for c in cols)
-                flag = "" if row["status"] == "ok" else f"  FAILED: {row['reason']}"
-                out.append(f"    {level:<24} {vals}{flag}")
+            out += text_table([[m, *rows[m]] for m in metrics], ["metric", *rows["level"]], indent=4, digits=4)
+            for _, row in rows[rows["status"] != "ok"].iterrows():
+                out.append(f"    FAILED at {row['level']}: {row['reason']}")
         for f, path in self.files.items():
             out.append(f"  {f}: {path}")
         return out
@@ -94,7 +162,7 @@ class OneAtATimeReport(Report):
         from hydroservo.workflows import pages
 
         study = self.study
-        units = self.system.unit_choice().units(study.units)
+        units = self._choice().units(study.units)
         figures = []
         for factor, levels in study.levels.items():
             for signal in (self.signals or [n for p in (self.system.plots or self.system.default_panels()) for n in p])[:4]:
@@ -106,7 +174,7 @@ class OneAtATimeReport(Report):
                 if curves:
                     figures.append(Figure(xy_figure(curves, "t [s]", f"{signal} [{unit}]", title=f"{signal}: {factor}")))
         return pages.page(self.title(), "one factor at a time, the others at their values", [
-            Section("Metrics", [pages.dataframe_table(study.table)]),
+            Section("Metrics", [pages.dataframe_table(self.table())]),
             Section("Responses", figures) if figures else None,
             pages.circuit_section(self.system),
             pages.files_section(self.files),
@@ -124,14 +192,33 @@ class GlobalReport(Report):
     wall_time: float  #: [s]
     #: where the runs were written as they finished (Parquet parts), if anywhere
     runs_folder: Path | None = None
+    #: the units Morris' effects are shown in, those of their metrics (None: the model's)
+    units: UnitChoice | None = None
 
     def title(self) -> str:
         return f"{self.system.name}: {self.study.method} ({self.study.runs.stats['runs']} runs)"
 
+    def indices(self) -> Any:
+        """The indices (a DataFrame); Morris' effects in the unit their metric is shown in (:attr:`units`),
+        named in the ``metric`` column (Sobol's indices have no unit)."""
+        study = self.study
+        table = study.indices.copy()
+        if study.method != "morris" or table.empty:
+            return table
+        shown = _shown_metrics(self.system, list(dict.fromkeys(table["metric"])),
+                               self.units if self.units is not None else self.system.unit_choice())
+        for key in ("mu_star", "mu_star_conf", "sigma", "mu"):
+            if key in table:
+                table[key] = [v * shown[m].factor for v, m in zip(table[key], table["metric"], strict=True)]
+        table["metric"] = [shown[m].name for m in table["metric"]]
+        return table
+
     def artifacts(self) -> list[Artifact]:
+        from hydroservo.io.results import write_frame
+
         study = self.study
         return [
-            Artifact("indices.csv", "indices.csv", lambda p: study.indices.to_csv(p, index=False)),
+            Artifact("indices.csv", "indices.csv", lambda p: write_frame(self.indices(), p)),
             Artifact("indices.png", "indices.png", lambda p: study.plot(file=p, title=self.title())),
         ]
 
@@ -139,23 +226,30 @@ class GlobalReport(Report):
         return self.files | ({"runs": str(self.runs_folder)} if self.runs_folder is not None else {})
 
     def to_dict(self) -> dict[str, Any]:
-        return {**self.study.to_dict(), "wall_time_s": self.wall_time, "files": self._files()}
+        import math
+
+        rows = self.indices().to_dict(orient="records")
+        clean = [{k: (None if isinstance(v, float) and not math.isfinite(v) else v) for k, v in r.items()} for r in rows]
+        return {**self.study.to_dict(), "indices": clean, "wall_time_s": self.wall_time, "files": self._files()}
 
     def lines(self) -> list[str]:
+        from hydroservo.io.text import text_table
+
         result = self.study
         s = result.runs.stats
         out = [f"{result.method}: {s['runs']} runs ({s['run_now']} now, {s['resumed']} resumed), {s['failed']} failed, "
                f"{s['implausible']} implausible; {self.wall_time:.1f} s, {s['runs_per_s']:.0f} runs/s ({s['where']})"]
-        keys = ("S1", "S1_conf", "ST", "ST_conf") if result.method == "sobol" else ("mu_star", "mu_star_conf", "sigma")
-        for metric, rows in result.indices.groupby("metric", sort=False):
+        sobol = result.method == "sobol"
+        conf = f"± {100 * result.conf_level:g} %"
+        for metric, rows in self.indices().groupby("metric", sort=False):
             out.append(f"  {metric}")
-            for _, r in rows.sort_values(keys[2] if result.method == "sobol" else keys[0], ascending=False).iterrows():
-                if result.method == "sobol":
-                    out.append(f"    {r['parameter']:<24} S1 {r['S1']:6.3f} ± {r['S1_conf']:.3f}   "
-                               f"ST {r['ST']:6.3f} ± {r['ST_conf']:.3f}")
-                else:
-                    out.append(f"    {r['parameter']:<24} mu* {r['mu_star']:10.4g} ± {r['mu_star_conf']:.3g}   "
-                               f"sigma {r['sigma']:.4g}")
+            rows = rows.sort_values("ST" if sobol else "mu_star", ascending=False)
+            if sobol:
+                out += text_table([[r["parameter"], r["S1"], r["S1_conf"], r["ST"], r["ST_conf"]] for _, r in rows.iterrows()],
+                                  ["parameter", "S1", conf, "ST", conf], indent=4, digits=".3f")
+            else:
+                out += text_table([[r["parameter"], r["mu_star"], r["mu_star_conf"], r["sigma"]] for _, r in rows.iterrows()],
+                                  ["parameter", "mu*", conf, "sigma"], indent=4, digits=[4, 4, 3, 4])
         for note in result.notes:
             out.append(f"  note: {note}")
         for f, path in self._files().items():
@@ -223,6 +317,11 @@ class Sensitivity(Workflow):
         Replace the runs of another study found in the folder (otherwise refused).
     runs_progress : callable, optional
         ``runs_progress(done, failed, total, elapsed)`` as a global study's runs finish.
+    units : str or dict, optional
+        Units to show signals and metrics in, over the model's own (``"p=bar, mm"``;
+        :class:`~hydroservo.units.UnitChoice`): the table, the CSV, the JSON and the plots.
+    si : bool
+        Show them in SI instead.
     """
 
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "metrics": "--metric", "levels": "--levels"}
@@ -243,6 +342,8 @@ class Sensitivity(Workflow):
     scheduler: str | None = None
     force: bool = False
     runs_progress: RunsProgress | None = field(default=None, repr=False)
+    units: str | Mapping[str, str] | None = None
+    si: bool = False
 
     def __post_init__(self) -> None:
         from hydroservo.units import to_si
@@ -250,6 +351,7 @@ class Sensitivity(Workflow):
         if self.method not in METHODS:
             raise ParameterError(f"{self.name('method')} {self.method!r}: expected one of {', '.join(METHODS)}")
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
+        self.unit_choice = self.system.unit_choice(asked_units(self.system, self.units, self.si, self.name))
         self.grid_levels = self.levels if self.levels is not None else (4 if self.method == "morris" else 5)
         if self.grid_levels < 2 or (self.method == "morris" and self.grid_levels % 2):
             raise ParameterError(
@@ -360,7 +462,7 @@ class Sensitivity(Workflow):
             signals = list(self.signals) if self.signals else None
             study = one_at_a_time(self.system, self.factors, metrics=metrics, signals=signals, t_end=self.duration,
                                   n_points=self.points)
-            return OneAtATimeReport(self.system, study, signals)
+            return OneAtATimeReport(self.system, study, signals, self.unit_choice)
         return self._run_global(metrics, folder)
 
     def _run_global(self, metrics: list[str] | None, folder: Path | None) -> GlobalReport:
@@ -395,7 +497,7 @@ class Sensitivity(Workflow):
                     folder.rmdir()
             raise
         wall = time.perf_counter() - start
-        return GlobalReport(system, result, wall, None if folder is None else folder / "runs")
+        return GlobalReport(system, result, wall, None if folder is None else folder / "runs", self.unit_choice)
 
 
 def run(model: str | Path | System, **inputs: Any) -> OneAtATimeReport | GlobalReport:

@@ -17,8 +17,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from hydroservo.errors import HydroservoError, ImplausibleResultError, ParameterError, did_you_mean, shorten
-from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
+from hydroservo.errors import ImplausibleResultError, ParameterError, did_you_mean, shorten
+from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, asked_units, load_with_sets, safe_name
 
 if TYPE_CHECKING:
     from hydroservo.io.html import Page
@@ -68,6 +68,8 @@ class SimulationReport(Report):
         return f"{self.system.name}: simulated response" + (f" ({', '.join(self.changes)})" if self.changes else "")
 
     def lines(self) -> list[str]:
+        from hydroservo.io.text import text_table
+
         result = self.result
         out = [
             f"simulated {self.system.name!r} for {self.t_end:g} s in {self.wall_time * 1e3:.1f} ms "
@@ -79,10 +81,7 @@ class SimulationReport(Report):
         summary = result.summary(self.units)
         shown = list(summary) if self.all_signals else result.main_signals()
         rows = [(n, summary[n]["unit"], summary[n]["final"], summary[n]["min"], summary[n]["max"]) for n in shown]
-        w = max(len(r[0]) for r in rows)
-        out.append(f"{'signal'.ljust(w)}  {'unit':>8}  {'final':>12}  {'min':>12}  {'max':>12}")
-        for n, unit, fin, lo, hi in rows:
-            out.append(f"{n.ljust(w)}  {unit:>8}  {fin:>12.5g}  {lo:>12.5g}  {hi:>12.5g}")
+        out += text_table(rows, ["signal", "unit", "final", "min", "max"])
         if len(shown) < len(summary):
             out.append(f"({len(summary) - len(shown)} more signals in the CSV and --json; --all lists them here)")
         out += [f"note: {text}" for text in self.system.notes]
@@ -218,23 +217,7 @@ class Simulate(Workflow):
                 raise ParameterError(f"{self.name('t_end')} {self.t_end}: expected a positive, finite duration")
         if self.initial not in ("parameters", "trim"):
             raise ParameterError(f"{self.name('initial')} {self.initial!r}: expected 'parameters' or 'trim'")
-        self.unit_choice = self._unit_choice()
-
-    def _unit_choice(self) -> Any:
-        """The units asked for (``units``, ``si``), checked against the model's signals before the run."""
-        from hydroservo.units import UnitChoice
-
-        if self.si and self.units:
-            raise ParameterError(f"{self.name('si')} and {self.name('units')} {shorten(str(self.units))!r}: give one of them")
-        if self.si:
-            return UnitChoice.SI
-        try:
-            choice = UnitChoice.parse(self.units, what=self.name("units"))
-        except HydroservoError as exc:
-            raise ParameterError(str(exc)) from None
-        if choice.signals:
-            choice.check(self.system.build().units, self.name("units"))
-        return choice
+        self.unit_choice = asked_units(self.system, self.units, self.si, self.name)
 
     def _check_solver_options(self) -> None:
         """Refuse rtol, accuracy, method and points before anything is loaded or built."""
