@@ -46,7 +46,7 @@ def cmd_docs(args: argparse.Namespace) -> int:
 def cmd_export(args: argparse.Namespace) -> int:
     from hydroservo.workflows.export import ExportModel
 
-    sys.stdout.write(ExportModel(args.model, args.set, cli=True).run().text)
+    sys.stdout.write(ExportModel(args.model, args.set, full=args.full, cli=True).run().text)
     return 0
 
 
@@ -127,7 +127,16 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--json", action="store_true", help="print the folder and the pages as JSON")
     p.set_defaults(func=cmd_docs)
 
-    p = sub.add_parser("export", help="write a system as an editable TOML model file to stdout")
+    p = sub.add_parser(
+        "export",
+        help="write a system as an editable TOML model file to stdout",
+        description="Write the model's own file (a model file or a built-in model's) with the values of --set "
+        "written in, as given: its comments, order and layout are kept, and former type and parameter names are "
+        "written as they are now called. --full writes every parameter of every component instead, each with its "
+        "description and unit.",
+    )
     p.add_argument("model", metavar="NAME_OR_FILE")
-    p.add_argument("--set", action="append", default=[], metavar="PARAM=VALUE")
+    p.add_argument("--set", action="append", default=[], metavar="PARAM=VALUE", help="set a parameter or option first")
+    p.add_argument("--full", action="store_true",
+                   help="every parameter of every component, with its description (default: the file as written)")
     p.set_defaults(func=cmd_export)

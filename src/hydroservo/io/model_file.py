@@ -50,6 +50,7 @@ model file by path.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
@@ -68,6 +69,7 @@ __all__ = [
     "read_model",
     "write_model",
     "model_to_toml",
+    "edited_model_text",
     "system_from_dict",
     "load_model",
     "builtin_models",
@@ -168,6 +170,65 @@ def model_to_toml(system: System) -> str:
             entry = {"expr": alias.expr, "unit": alias.unit, "description": alias.description}
             lines.append(f"{toml_key(name)} = {toml_value(entry)}")
     return "\n".join(lines) + "\n"
+
+
+def edited_model_text(text: str, system: System, keys: Sequence[str], where: str = "model file") -> str | None:
+    """``text``, the model file ``system`` was read from, with the values of ``keys`` (``"comp.param"``: what was
+    set since) written as ``system`` holds them (in the unit they were given in), and any former type or
+    parameter name written as it is now called; every comment, the order and the layout of the rest are kept.
+
+    None if the file's text does not describe ``system`` after the edit (read back and compared: a value the
+    file cannot hold where it is, such as a stroke written on another component), so that the caller writes the
+    whole model instead (:func:`model_to_toml`).
+    """
+    import tomllib
+    import warnings
+
+    from hydroservo.io.toml import edit_toml
+
+    try:
+        components = tomllib.loads(text).get("components", {})
+    except tomllib.TOMLDecodeError:
+        return None
+    changes: dict[tuple[str, ...], str | None] = {}
+    renames: dict[tuple[str, ...], str] = {}
+    for cname, entry in components.items():
+        comp = system.components.get(cname)
+        if comp is None or not isinstance(entry, dict):
+            return None
+        if REGISTRY.renamed.get(str(entry.get("type")), "") == type(comp).__name__:
+            changes[("components", cname, "type")] = toml_string(type(comp).__name__)
+        for old, new in comp.RENAMED.items():
+            if old in entry and new not in entry:
+                renames[("components", cname, old)] = new
+    for key in keys:
+        cname, pname = key.split(".", 1)
+        comp = system.components[cname]
+        pname = comp.RENAMED.get(pname, pname) if pname not in comp.PARAMETERS and pname not in comp.OPTIONS else pname
+        if pname in comp.OPTIONS:
+            value = toml_string(comp.option(pname))
+        else:
+            value = toml_quantity(comp.values[pname], comp.PARAMETERS[pname].unit, comp.given.get(pname))
+        written = [old for (_, c, old), new in renames.items() if c == cname and new == pname]
+        changes[("components", cname, written[0] if written else pname)] = value  # renamed after the change
+    edited = edit_toml(text, changes, renames)
+    try:
+        with warnings.catch_warnings():  # the read-back is a check: what it would warn of was said at loading
+            warnings.simplefilter("ignore")
+            again = system_from_dict(tomllib.loads(edited), where=where, base=_base(system))
+    except HydroservoError:
+        return None
+    same = again.parameter_values() == system.parameter_values() and all(
+        again.components[c].option_values == comp.option_values for c, comp in system.components.items()
+        if c in again.components
+    ) and list(again.components) == list(system.components)
+    return edited if same else None
+
+
+def _base(system: System) -> Path | None:
+    """The folder a model file's relative paths (tables) are read from: the file's."""
+    source = str(system.source or "")
+    return None if not source or source.startswith("built-in:") else Path(source).parent
 
 
 def write_model(system: System, path: str | Path) -> Path:

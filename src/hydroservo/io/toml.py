@@ -1,4 +1,8 @@
-"""TOML: the one reader of TOML files and the one writer of TOML values, for every file hydroservo writes."""
+"""TOML: the one reader of TOML files and the one writer of TOML values, for every file hydroservo writes.
+
+Values are written by tomlkit, which escapes and formats them as TOML requires; :func:`edit_toml` changes
+values of a file's text with everything else in it kept (its comments, order and layout).
+"""
 
 from __future__ import annotations
 
@@ -12,7 +16,7 @@ from hydroservo.errors import HydroservoError, ParameterError
 from hydroservo.io.files import read_text
 from hydroservo.units import format_quantity
 
-__all__ = ["read_toml", "toml_string", "toml_key", "toml_value", "toml_quantity", "toml_table"]
+__all__ = ["read_toml", "toml_string", "toml_key", "toml_value", "toml_quantity", "toml_table", "edit_toml"]
 
 
 def read_toml(path: str | Path, what: str, error: type[HydroservoError] = ParameterError) -> dict[str, Any]:
@@ -25,29 +29,42 @@ def read_toml(path: str | Path, what: str, error: type[HydroservoError] = Parame
 
 
 def toml_string(s: str) -> str:
-    """A TOML basic string."""
-    return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """A TOML basic string, escaped as TOML requires (quotes, backslashes, newlines and control characters)."""
+    import tomlkit
+
+    return tomlkit.string(s).as_string()
 
 
 def toml_key(k: str) -> str:
     """A TOML key: bare when it can be, quoted otherwise."""
-    return k if k and k.replace("_", "a").replace("-", "a").isalnum() else toml_string(k)
+    import tomlkit
+
+    return tomlkit.key(k).as_string()
 
 
 def toml_value(v: Any) -> str:
     """A TOML value: strings, booleans, numbers (floats at full precision), lists and inline tables."""
-    if isinstance(v, str):
-        return toml_string(v)
-    if isinstance(v, bool):
-        return "true" if v else "false"
+    return _item(v).as_string()
+
+
+def _item(v: Any) -> Any:
+    import tomlkit
+
+    if isinstance(v, (str, bool)):
+        return tomlkit.item(v)
     if isinstance(v, numbers.Integral):  # a count stays whole (a line's segments)
-        return str(int(v))
+        return tomlkit.integer(int(v))
     if isinstance(v, numbers.Real):
-        return repr(float(v))
+        return tomlkit.float_(repr(float(v)))
     if isinstance(v, (list, tuple)):
-        return "[" + ", ".join(toml_value(x) for x in v) + "]"
+        array = tomlkit.array()
+        array.extend(_item(x) for x in v)
+        return array
     if isinstance(v, Mapping):
-        return "{ " + ", ".join(f"{toml_key(k)} = {toml_value(x)}" for k, x in v.items()) + " }"
+        table = tomlkit.inline_table()
+        for key, x in v.items():
+            table[str(key)] = _item(x)
+        return table
     raise TypeError(f"cannot write {type(v).__name__} to TOML")
 
 
@@ -67,3 +84,41 @@ def toml_table(name: str, entries: Mapping[str, Any], comments: Mapping[str, str
         note = (comments or {}).get(key)
         lines.append(f"{toml_key(key)} = {text}" + (f"  # {note}" if note else ""))
     return lines
+
+
+def edit_toml(
+    text: str, changes: Mapping[tuple[str, ...], str | None], renames: Mapping[tuple[str, ...], str] | None = None
+) -> str:
+    """``text`` (a TOML document) with the values at each path of ``changes`` replaced by the TOML value text
+    given (``{("components", "cyl", "A_A"): '"2 in^2"'}``), added at the end of their table if absent, or
+    removed (None), and the keys at the paths of ``renames`` renamed where they stand (after the changes); every
+    comment, the order and the layout of the rest are kept.
+
+    >>> print(edit_toml('[load]  # the mass\\nm = "20 kg"  # loaded\\n', {("load", "m"): '"25 kg"'}), end="")
+    [load]  # the mass
+    m = "25 kg"  # loaded
+    """
+    import tomlkit
+
+    doc = tomlkit.parse(text)
+    for path, value in changes.items():
+        table: Any = doc
+        for key in path[:-1]:
+            if key not in table:
+                table[key] = tomlkit.table()
+            table = table[key]
+        if value is None:
+            if path[-1] in table:
+                del table[path[-1]]
+        else:
+            table[path[-1]] = tomlkit.value(value)
+    for path, name in (renames or {}).items():
+        table = doc
+        for key in path[:-1]:
+            table = table[key]
+        container = getattr(table, "value", table)
+        try:  # in place, with its comment (tomlkit's container has no public rename)
+            container._replace(path[-1], name, table[path[-1]])
+        except (AttributeError, KeyError):
+            table[name] = table.pop(path[-1])
+    return tomlkit.dumps(doc)

@@ -44,12 +44,16 @@ class ModelFileReport(Report):
 
 @dataclass
 class ExportModel(Workflow):
-    """``model`` (a name, a file or a system) with ``sets`` applied, as a model file."""
+    """``model`` (a name, a file or a system) with ``sets`` applied, as a model file: the model's own file with
+    the values set written in (its comments, order and layout kept; former type and parameter names written as
+    they are now called), or with ``full`` every parameter of every component with its description."""
 
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
 
     model: str | Path | System
     sets: Sequence[str] | Mapping[str, Any] | None = None
+    #: every component's every parameter, as the system holds it, instead of the model's own file edited
+    full: bool = False
 
     def __post_init__(self) -> None:
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
@@ -57,12 +61,38 @@ class ExportModel(Workflow):
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> ModelFileReport:
         from hydroservo.io.model_file import model_to_toml
 
-        return ModelFileReport(self.system, model_to_toml(self.system))
+        text = None if self.full else self._edited()
+        return ModelFileReport(self.system, text if text is not None else model_to_toml(self.system))
+
+    def _edited(self) -> str | None:
+        """The file the model was read from (a model file, a built-in model's), its comments and layout kept, with
+        the values set written in; None for a system made in Python or a file that cannot hold them."""
+        from hydroservo.data import model_text
+        from hydroservo.io.files import read_text
+        from hydroservo.io.model_file import edited_model_text
+        from hydroservo.system.system import System
+        from hydroservo.workflows.base import parse_sets
+
+        if isinstance(self.model, System):  # made or changed in Python: its file may no longer describe it
+            return None
+        source = str(self.system.source or "")
+        if source.startswith("built-in:"):
+            text = model_text(source.removeprefix("built-in:"))
+        elif source:
+            text = read_text(source, "model file")
+        else:
+            return None
+        keys = [key for key, _ in parse_sets(self.sets, self.name("sets"))]
+        return edited_model_text(text, self.system, keys, where=source)
 
 
-def model_file(model: str | Path | System, sets: Sequence[str] | Mapping[str, Any] | None = None) -> ModelFileReport:
-    """``model`` as a model file's text (:class:`ModelFileReport`)."""
-    return ExportModel(model, sets).run()
+def model_file(
+    model: str | Path | System, sets: Sequence[str] | Mapping[str, Any] | None = None, full: bool = False
+) -> ModelFileReport:
+    """``model`` as a model file's text (:class:`ModelFileReport`): the model's own file with ``sets`` written in,
+    its comments and layout kept, or with ``full`` (or for a system made in Python) every parameter of every
+    component, each with its description."""
+    return ExportModel(model, sets, full=full).run()
 
 
 # -- C code with a real-time stepper ------------------------------------------------------------
