@@ -24,9 +24,13 @@ def read_toml(path: str | Path, what: str, error: type[HydroservoError] = Parame
         raise error(f"{what} {str(path)!r}: malformed TOML: {exc}") from None
 
 
+_ESCAPES = {"\\": "\\\\", '"': '\\"', "\n": "\\n", "\r": "\\r", "\t": "\\t", "\b": "\\b", "\f": "\\f"}
+
+
 def toml_string(s: str) -> str:
-    """A TOML basic string."""
-    return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    """A TOML basic string: backslashes, quotes and control characters escaped (a Hopsan model's description
+    holds line breaks)."""
+    return '"' + "".join(_ESCAPES.get(ch) or (f"\\u{ord(ch):04x}" if ord(ch) < 0x20 or ord(ch) == 0x7F else ch) for ch in s) + '"'
 
 
 def toml_key(k: str) -> str:
