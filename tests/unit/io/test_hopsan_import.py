@@ -324,7 +324,7 @@ def test_signal_filters_sources_and_routes_map_with_hopsans_parameters(tmp_path:
         ("SignalQuadRoute", "R4", {"limit12": v("0.5"), "limit23": v("1.5"), "limit34": v("2.5")}),
         *[("SignalConstant", f"C{i}", {"y#Value": v(str(10 * i))}) for i in (1, 2, 3, 4)],
     ]
-    connections = [(f"Step.out", f"{f}.in") for f in ("HP", "LL", "LP2", "TF1", "TF2")]
+    connections = [("Step.out", f"{f}.in") for f in ("HP", "LL", "LP2", "TF1", "TF2")]
     for route, n in (("R2", 2), ("R3", 3), ("R4", 4)):
         connections += [("St.out", f"{route}.route"), *((f"C{i}.y", f"{route}.in{i}") for i in range(1, n + 1))]
     path = tmp_path / "signals.hmf"
