@@ -17,9 +17,11 @@ module                 components
                        PressureReducingValve, CounterbalanceValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
-:mod:`.signals`        Constant, Step, SoftStep, Pulse, Ramp, Sine, Square, Table
+:mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
+                       Staircase, Ramp, Sine, Square, Table
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Gain, Lag,
-                       Integrator, Saturation, PID, Amplifier, Transducer
+                       TransferFunction, Integrator, Saturation, Selector, PID,
+                       Amplifier, Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -51,8 +53,10 @@ from hydroservo.components.control import (
     Product,
     Quotient,
     Saturation,
+    Selector,
     Sum,
     Transducer,
+    TransferFunction,
 )
 from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
@@ -60,7 +64,19 @@ from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
 from hydroservo.components.pumps import Motor, Pump, VariablePump
-from hydroservo.components.signals import Constant, Pulse, Ramp, Sine, SoftStep, Square, Step, Table
+from hydroservo.components.signals import (
+    Constant,
+    DecayingStep,
+    Pulse,
+    PulseWave,
+    Ramp,
+    Sine,
+    SoftStep,
+    Square,
+    Staircase,
+    Step,
+    Table,
+)
 from hydroservo.components.sources import ConstantPressure, FlowSource, PressureSource, PressureTable, Tank
 from hydroservo.components.spools import (
     FlapperNozzleSpool,
@@ -140,7 +156,10 @@ __all__ = [
     "TorqueMotor",
     "FlapperNozzleSpool",
     "Step",
+    "DecayingStep",
     "Pulse",
+    "PulseWave",
+    "Staircase",
     "Ramp",
     "Sine",
     "Square",
@@ -148,7 +167,9 @@ __all__ = [
     "Sum",
     "Gain",
     "Lag",
+    "TransferFunction",
     "Saturation",
+    "Selector",
     "PID",
     "Amplifier",
     "Transducer",

@@ -12,12 +12,15 @@ from dataclasses import replace
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import SIGNAL, Component, Output, Param, Port, State, register
+from hydroservo.components.base import SIGNAL, Component, Option, Output, Param, Port, State, register
 from hydroservo.components.signals import SIGNAL_OUTPUT
 from hydroservo.errors import ParameterError, UnitError
 from hydroservo.units import coherent_unit, is_absolute_pressure
 
-__all__ = ["Sum", "Product", "Quotient", "Absolute", "Power", "Gain", "Lag", "Integrator", "Saturation", "PID", "Amplifier", "Transducer"]
+__all__ = [
+    "Sum", "Product", "Quotient", "Absolute", "Power", "Gain", "Lag", "TransferFunction", "Integrator", "Saturation",
+    "Selector", "PID", "Amplifier", "Transducer",
+]
 
 
 @register
@@ -193,6 +196,80 @@ class Lag(Component):
 
 
 @register
+class TransferFunction(Component):
+    r"""A transfer function of first or second order,
+    :math:`G(s) = (a_2 s^2 + a_1 s + a_0) / (b_2 s^2 + b_1 s + b_0)` (``a_2 = b_2 = 0`` for option ``order = "1"``).
+
+    The continuous law of Hopsan's filters and transfer functions (SignalFirstOrderFilter, SignalHP1Filter,
+    SignalLP2Filter, SignalFirstOrderTransferFunction, SignalSecondOrderTransferFunction, [Hopsan2026]
+    Signal/Filters/SignalFirstOrderTransferFunction.hpp and the others of that folder), which Hopsan discretises
+    by the bilinear transform at its time step. A first-order lag :math:`K/(\tau s + 1)` is :class:`Lag`.
+
+    Realised as :math:`y = d\,u + x_1` with :math:`d = a_n/b_n` (the direct part) and, for the second order,
+    :math:`\dot x_1 = x_2 + c_1 u`, :math:`\dot x_2 = -\beta_0 x_1 - \beta_1 x_2 + (c_0 - \beta_1 c_1) u`
+    (:math:`\beta_i = b_i/b_2`, :math:`c_i = a_i/b_2 - d\beta_i`); for the first,
+    :math:`\dot x_1 = (a_0/b_1 - d\,b_0/b_1) u - (b_0/b_1) x_1`. The states start at :math:`x_1 = y_0`,
+    :math:`x_2 = 0`: the output at :math:`y_0 + d\,u(0)`, its strictly proper part at rest with the input at 0,
+    as Hopsan's filters start from their output's start value. The coefficients make a dimensionless gain: the output is in the input's unit.
+    """
+
+    PARAMETERS = {
+        "a0": Param(1.0, "", "numerator coefficient of s^0"),
+        "a1": Param(0.0, "s", "numerator coefficient of s^1"),
+        "a2": Param(0.0, "s^2", "numerator coefficient of s^2 (order 2)"),
+        "b0": Param(1.0, "", "denominator coefficient of s^0"),
+        "b1": Param(0.1, "s", "denominator coefficient of s^1"),
+        "b2": Param(0.0, "s^2", "denominator coefficient of s^2 (order 2)"),
+        "y0": Param(0.0, SIGNAL, "initial output of the strictly proper part (the output with the input at 0)"),
+    }
+    STATES = {"x1": State(SIGNAL, "output less the direct part d u", initial="y0", nominal=1.0)}
+    INPUTS = {"u": Port(SIGNAL, "input")}
+    OUTPUTS = SIGNAL_OUTPUT
+    OPTIONS = {"order": Option("1", ("1", "2"), "order of the denominator")}
+
+    def options_changed(self) -> None:
+        """The second order has a second state: the rate of x1 less its direct part c1 u."""
+        cls = type(self)
+        self.STATES = dict(cls.STATES)  # type: ignore[misc]
+        if self.option("order") == "2":
+            self.STATES["x2"] = State(SIGNAL + "/s", "rate of x1 less its direct part c1 u", nominal=1.0)
+
+    def check(self) -> None:
+        v = self.values
+        if self.option("order") == "1":
+            if v["b1"] == 0.0:
+                raise ParameterError(f"{self.name}.b1 = 0: a first-order transfer function needs b1 other than 0")
+            if v["a2"] != 0.0 or v["b2"] != 0.0:
+                raise ParameterError(
+                    f"{self.name}: a2 = {v['a2']:g}, b2 = {v['b2']:g} with order = '1': expected 0, or order = '2'"
+                )
+        elif v["b2"] == 0.0:
+            raise ParameterError(f"{self.name}.b2 = 0: a second-order transfer function needs b2 other than 0")
+
+    def _direct(self, p: Mapping[str, Any]) -> Any:
+        return p["a2"] / p["b2"] if self.option("order") == "2" else p["a1"] / p["b1"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": self._direct(p) * u["u"] + x["x1"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        d = self._direct(p)
+        if self.option("order") == "1":
+            beta0 = p["b0"] / p["b1"]
+            return {"x1": (p["a0"] / p["b1"] - d * beta0) * u["u"] - beta0 * x["x1"]}
+        beta0, beta1 = p["b0"] / p["b2"], p["b1"] / p["b2"]
+        c0, c1 = p["a0"] / p["b2"] - d * beta0, p["a1"] / p["b2"] - d * beta1
+        return {
+            "x1": x["x2"] + c1 * u["u"],
+            "x2": -beta0 * x["x1"] - beta1 * x["x2"] + (c0 - beta1 * c1) * u["u"],
+        }
+
+
+@register
 class Integrator(Component):
     r"""Integrator :math:`\dot y = u`, from ``y0``, without limits (Hopsan's SignalIntegrator2, [Hopsan2026])."""
 
@@ -230,6 +307,39 @@ class Saturation(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"y": bk.fmin(bk.fmax(u["u"], p["lower"]), p["upper"])}
+
+
+@register
+class Selector(Component):
+    """One of up to four inputs, chosen by ``route``: ``u1`` while ``route < limit12``, ``u2`` while
+    ``route < limit23``, ``u3`` while ``route < limit34``, else ``u4`` (Hopsan's SignalDualRoute,
+    SignalTripleRoute and SignalQuadRoute, [Hopsan2026] Signal/SignalRouting/SignalQuadRoute.hpp). Unconnected
+    inputs are 0; a limit of 1e300 leaves the inputs after it unused."""
+
+    PARAMETERS = {
+        "limit12": Param(0.5, "", "route value from which u2 is chosen"),
+        "limit23": Param(1.5, "", "route value from which u3 is chosen"),
+        "limit34": Param(2.5, "", "route value from which u4 is chosen"),
+    }
+    INPUTS = {
+        **{f"u{i}": Port(SIGNAL, f"input {i}", default=0.0) for i in (1, 2, 3, 4)},
+        "route": Port("", "which input: compared with the limits"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        r = u["route"]
+        y = bk.if_else(r < p["limit34"], u["u3"], u["u4"])
+        y = bk.if_else(r < p["limit23"], u["u2"], y)
+        return {"y": bk.if_else(r < p["limit12"], u["u1"], y)}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        r = u["route"]
+        return {"limit12": (r - p["limit12"], 1.0), "limit23": (r - p["limit23"], 1.0), "limit34": (r - p["limit34"], 1.0)}
 
 
 @register

@@ -1,4 +1,4 @@
-"""Signal sources: steps, ramps, sines, square waves and time tables.
+"""Signal sources: steps, ramps, sines, square waves, pulse trains, staircases and time tables.
 
 Signal blocks carry the unit given as ``unit=`` when they are created
 (``Step("vi", unit="V", amplitude="2 V")``); without it they are
@@ -16,7 +16,10 @@ from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Output, Param, register
 from hydroservo.errors import ParameterError
 
-__all__ = ["Constant", "Step", "SoftStep", "Pulse", "Ramp", "Sine", "Square", "Table", "SIGNAL_OUTPUT"]
+__all__ = [
+    "Constant", "Step", "SoftStep", "DecayingStep", "Pulse", "PulseWave", "Staircase", "Ramp", "Sine", "Square", "Table",
+    "SIGNAL_OUTPUT",
+]
 
 #: The output of every signal block.
 SIGNAL_OUTPUT = {"y": Output(SIGNAL, "signal")}
@@ -115,6 +118,92 @@ class Pulse(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, tuple[Any, float]]:
         return {"start": (t - p["t_start"], 1e-3), "end": (t - p["t_start"] - p["duration"], 1e-3)}
+
+
+@register
+class DecayingStep(Component):
+    r"""A step that decays back: ``offset`` before ``t_step``, :math:`offset + A e^{-(t - t_{step})/\tau}` from it
+    on (Hopsan's SignalStepExponentialDelay, [Hopsan2026] Signal/Sources&Sinks/SignalStepExponentialDelay.hpp)."""
+
+    PARAMETERS = {
+        "amplitude": Param(1.0, SIGNAL, "height of the step"),
+        "tau": Param(1.0, "s", "time constant of the decay", min=0.0, min_inclusive=False),
+        "t_step": Param(1.0, "s", "time of the step", min=0.0),
+        "offset": Param(0.0, SIGNAL, "value before the step, and approached after it"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        since = bk.fmax(t - p["t_step"], 0.0)
+        return {"y": p["offset"] + bk.if_else(t >= p["t_step"], p["amplitude"] * bk.exp(-since / p["tau"]), 0.0)}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        return {"step": (t - p["t_step"], 1e-3)}
+
+
+@register
+class PulseWave(Component):
+    """Periodic pulses: ``offset + amplitude`` for the first ``duty`` of each ``period`` from ``t_start`` on,
+    ``offset`` for the rest of it and before ``t_start`` (Hopsan's SignalPulseWave, [Hopsan2026]
+    Signal/Sources&Sinks/SignalPulseWave.hpp). :class:`Square` is the wave about its offset."""
+
+    PARAMETERS = {
+        "amplitude": Param(1.0, SIGNAL, "height of the pulses"),
+        "period": Param(1.0, "s", "period", min=0.0, min_inclusive=False),
+        "duty": Param(0.5, "", "fraction of each period at offset + amplitude", min=0.0, max=1.0),
+        "t_start": Param(0.0, "s", "start of the first pulse", min=0.0),
+        "offset": Param(0.0, SIGNAL, "value between the pulses"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        phase = (t - p["t_start"]) / p["period"]
+        on = bk.if_else(t > p["t_start"], 1.0, 0.0) * bk.if_else(phase - bk.floor(phase) < p["duty"], 1.0, 0.0)
+        return {"y": p["offset"] + p["amplitude"] * on}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        # each pulse's rise (whole periods from t_start) and fall (duty into the period): sines of slope 1 there,
+        # so that an edge is located in time as closely as a step's
+        phase = (t - p["t_start"]) / p["period"]
+        scale = p["period"] / np.pi
+        return {
+            "start": (t - p["t_start"], 1e-3),
+            "rise": (scale * bk.sin(np.pi * phase), 1e-3),
+            "fall": (scale * bk.sin(np.pi * (phase - p["duty"])), 1e-3),
+        }
+
+
+@register
+class Staircase(Component):
+    """Steps of ``height`` every ``width`` from ``t_start``: ``height * floor((t - t_start) / width)``, 0 before
+    (Hopsan's SignalStaircase, [Hopsan2026] Signal/Sources&Sinks/SignalStaircase.hpp)."""
+
+    PARAMETERS = {
+        "height": Param(1.0, SIGNAL, "height of each step"),
+        "width": Param(1.0, "s", "time between steps", min=0.0, min_inclusive=False),
+        "t_start": Param(0.0, "s", "start time (the first step is one width later)", min=0.0),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": p["height"] * bk.floor(bk.fmax(t - p["t_start"], 0.0) / p["width"])}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        # each step, whole widths after t_start: a sine of slope 1 there, located in time as closely as a step
+        edge = p["width"] / np.pi * bk.sin(np.pi * (t - p["t_start"]) / p["width"])
+        return {"start": (t - p["t_start"], 1e-3), "step": (edge, 1e-3)}
 
 
 @register

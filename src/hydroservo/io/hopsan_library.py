@@ -525,6 +525,129 @@ def _low_pass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
 
 
+def _transfer(n: str, par: _Params, num: list[float], den: list[float], limited: bool = True) -> Mapped:
+    """Hopsan's filters and transfer functions (num, den: coefficients of s^0, s^1, s^2) as a TransferFunction,
+    their continuous law (Hopsan discretises it by the bilinear transform); its output starts at Hopsan's start
+    value of ``out``, with the input at its start value ``in`` (Hopsan's FirstOrderTransferFunction.cpp)."""
+    from hydroservo.components import TransferFunction
+
+    if limited and (abs(par("y_min", -1.5e300)) < 1e299 or abs(par("y_max", 1.5e300)) < 1e299):
+        par.problems.append(f"{par.where}: a filter with output limits (y_min, y_max) is not supported yet")
+    num, den = [*num, 0.0, 0.0][:3], [*den, 0.0, 0.0][:3]
+    order = 2 if den[2] != 0.0 else 1
+    if den[order] == 0.0 or (order == 1 and num[2] != 0.0):
+        par.problems.append(f"{par.where}: a transfer function with no s term in its denominator is not supported")
+        return Mapped()
+    d = num[order] / den[order]  # the direct part
+    y0, u0 = par("out", 0.0), par("in", 0.0)
+    comp = TransferFunction(
+        n, order=str(order), a0=num[0], a1=num[1], a2=num[2], b0=den[0], b1=den[1], b2=den[2], y0=y0 - d * u0
+    )
+    initial = {}
+    if order == 2:  # the strictly proper part at rest with the input at u0: its rate x2 + c1 u0 is 0
+        initial[f"{n}.x2"] = -(num[1] / den[2] - d * den[1] / den[2]) * u0
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"}, initial=initial)
+
+
+def _first_order_filter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    # SignalFirstOrderFilter.hpp: k (s/omega_num + 1)/(s/omega_den + 1)
+    k = par("k", 1.0)
+    return _transfer(n, par, [k, k / par("omega_num", 1e10)], [1.0, 1.0 / par("omega_den", 1000.0)])
+
+
+def _high_pass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    # SignalHP1Filter.hpp: (s/omega)/(s/omega + 1)
+    w = par("omega", 1000.0)
+    return _transfer(n, par, [0.0, 1.0 / w], [1.0, 1.0 / w])
+
+
+def _low_pass2(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    # SignalLP2Filter.hpp: 1/(s^2/omega^2 + 2 delta s/omega + 1)
+    w = par("omega", 1000.0)
+    return _transfer(n, par, [1.0], [1.0, 2.0 * par("delta", 1.0) / w, 1.0 / (w * w)])
+
+
+def _first_order_tf(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    # SignalFirstOrderTransferFunction.hpp: (a_1 s + a_0)/(b_1 s + b_0), no output limits
+    num = [par("a_0", 1.0), par("a_1", 1.0)]
+    return _transfer(n, par, num, [par("b_0", 1.0), par("b_1", 1.0)], limited=False)
+
+
+def _second_order_tf(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    # SignalSecondOrderTransferFunction.hpp: (a_2 s^2 + a_1 s + a_0)/(b_2 s^2 + b_1 s + b_0), no output limits
+    num = [par(f"a_{i}", 1.0) for i in range(3)]
+    return _transfer(n, par, num, [par(f"b_{i}", 1.0) for i in range(3)], limited=False)
+
+
+def _route(inputs: int) -> Builder:
+    """SignalDualRoute, SignalTripleRoute, SignalQuadRoute: a Selector with the limits after the last input at
+    1e300 (never reached)."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Selector
+
+        if inputs == 2:
+            limits = [par("limit", 0.5), 1e300, 1e300]
+        else:
+            limits = [par("limit12", 0.5), par("limit23", 1.5), par("limit34", 2.5) if inputs == 4 else 1e300]
+        comp = Selector(n, limit12=limits[0], limit23=limits[1], limit34=limits[2])
+        ports = {f"in{i}": f"{n}.u{i}" for i in range(1, inputs + 1)}
+        return Mapped([comp], inputs={**ports, "route": f"{n}.route"}, outputs={"out": f"{n}.y"})
+
+    return build
+
+
+def _before_start(par: _Params, name: str, t: float) -> None:
+    if t < 0.0:
+        par.problems.append(f"{par.where}: {name} = {t + par.t0:g} s, before the run's start, is not supported")
+
+
+def _square_wave(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Square
+
+    # SignalSquareWave.hpp: y_0 before t_start, then y_0 + y_A while sin(2 pi f (t - t_start)) >= 0, else y_0 - y_A
+    t0 = par.time("t_start", 0.0)
+    _before_start(par, "t_start", t0)
+    comp = Square(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), frequency=par("f", 1.0), t_start=max(t0, 0.0))
+    return Mapped([comp], outputs={"out": f"{n}.y"})
+
+
+def _pulse_wave(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import PulseWave
+
+    t0 = par.time("t_start", 0.0)
+    _before_start(par, "t_start", t0)
+    comp = PulseWave(
+        n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), period=par("dT", 1.0), duty=par("D", 0.5), t_start=max(t0, 0.0)
+    )
+    return Mapped([comp], outputs={"out": f"{n}.y"})
+
+
+def _staircase(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Staircase
+
+    t0 = par.time("T_start", 0.0)
+    _before_start(par, "T_start", t0)
+    comp = Staircase(n, height=par("H_step", 1.0), width=par("W_step", 1.0), t_start=max(t0, 0.0))
+    return Mapped([comp], outputs={"out": f"{n}.y"})
+
+
+def _step_exponential_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import DecayingStep
+
+    t0 = par.time("t_step", 1.0)
+    _before_start(par, "t_step", t0)
+    comp = DecayingStep(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), tau=par("tao", 1.0), t_step=max(t0, 0.0))
+    return Mapped([comp], outputs={"out": f"{n}.y"})
+
+
+def _time(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import Ramp
+
+    # SignalTime.hpp: Hopsan's time, which is hydroservo's plus the model's start time
+    return Mapped([Ramp(n, offset=par.t0, slope=1.0, t_start=0.0)], outputs={"out": f"{n}.y"})
+
+
 def _saturation(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Saturation
 
@@ -586,6 +709,19 @@ LIBRARY: dict[str, Builder] = {
     "SignalSum": _sum,
     "SignalLP1Filter": _low_pass,
     "SignalSaturation": _saturation,
+    "SignalFirstOrderFilter": _first_order_filter,
+    "SignalHP1Filter": _high_pass,
+    "SignalLP2Filter": _low_pass2,
+    "SignalFirstOrderTransferFunction": _first_order_tf,
+    "SignalSecondOrderTransferFunction": _second_order_tf,
+    "SignalSquareWave": _square_wave,
+    "SignalPulseWave": _pulse_wave,
+    "SignalStaircase": _staircase,
+    "SignalStepExponentialDelay": _step_exponential_delay,
+    "SignalTime": _time,
+    "SignalDualRoute": _route(2),
+    "SignalTripleRoute": _route(3),
+    "SignalQuadRoute": _route(4),
     "SignalSink": _sink,
 }
 

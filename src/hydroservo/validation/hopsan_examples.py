@@ -6,11 +6,13 @@ result of the original, run with steps halved until it converged and extrapolate
 (``scripts/hopsan_references.py``; the provenance, the convergence table and the extrapolation's uncertainty are
 in ``hopsan_examples.json``). The imported model runs with the default solver settings on the reference's time
 grid; each row gives the largest deviation, over the run and over every trace of its kind (the positions, the
-velocities, the pressures or the flows of the model's Hopsan nodes), in per cent of that trace's range (at least
-1 % of its largest magnitude and 1 % of the largest range of its kind in the model, so that a nearly constant
-trace is not judged on its noise). Each reference point takes the closest of the model's values at its time and
-one finest reference step either side: a sample at the instant of a step is compared with the same side of it. Flows and forces are compared
-from the second point: at t = 0 Hopsan logs their start values, not the flows and forces.
+velocities, the pressures or the flows of the model's Hopsan nodes, or the outputs of its signal blocks), in per
+cent of that trace's range (at least 1 % of its largest magnitude and 1 % of the largest range of its kind in the
+model, so that a nearly constant trace is not judged on its noise; a signal, which may carry anything, on
+its own). Each reference point takes the closest of the model's values at its time and
+one finest reference step either side: a sample at the instant of a step is compared with the same side of it. Flows, forces and signals are
+compared from the second point: at t = 0 Hopsan logs their start values (the value a block's initialisation
+writes: a square wave's base value), not their values at t = 0.
 """
 
 from __future__ import annotations
@@ -69,12 +71,33 @@ MODELS: dict[str, Spec] = {
             for kind in ("Pressure", "Flow")
         ),
     ),
+    "dynamic-pressure-feedback": Spec(
+        "Example Models/Dynamic Pressure Feedback.hmf",
+        "a position servo commanded by a square wave, its load-pressure feedback routed through a selector (a "
+        "high-pass filter on the third route)",
+        known=tuple(
+            (kind, "the chambers' pressure transients after the square wave's edges differ: peaks of 32.7 MPa where "
+             "Hopsan's are 31.7 MPa (0.55 s), and where Hopsan's chamber dips to 1.3 MPa hydroservo's has cavitated "
+             "to 0 Pa_abs (2.56 s); pressures and the signals that carry them 3.5 % of range, forces 3.0 %, flows "
+             "1.8 %, velocities 1.1 % (positions 0.49 %). The cause is not found yet: it is the same at accuracy 1e-7, "
+             "so not the solver's (docs/validation.md)")
+            for kind in ("Velocity", "Force", "Pressure", "Flow", "Value")
+        ),
+    ),
+    "routing-test": Spec(
+        "Component Test/SignalComponent Test/RoutingTest.hmf",
+        "constants routed by a staircase through selectors of two, three and four inputs",
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.
 TOLERANCE = 0.5
-KINDS = ("Position", "Velocity", "Force", "Pressure", "Flow")
-_PLURAL = {"Position": "positions", "Velocity": "velocities", "Force": "forces", "Pressure": "pressures", "Flow": "flows"}
+#: The kinds of trace, by the last part of their aliases; "Value" is a signal block's output (Hopsan's ``out``).
+KINDS = ("Position", "Velocity", "Force", "Pressure", "Flow", "Value")
+_PLURAL = {
+    "Position": "positions", "Velocity": "velocities", "Force": "forces", "Pressure": "pressures", "Flow": "flows",
+    "Value": "signals",
+}
 
 _WHY = (
     "0.5 % of range is the acceptance criterion; the reference is Hopsan's result extrapolated to a vanishing "
@@ -148,16 +171,18 @@ def deviations(name: str) -> dict[str, float]:
         result = system.simulate(t_eval=grid, max_steps=10**6)
     at = [np.searchsorted(grid, np.clip(t + d, 0.0, t[-1])) for d in (-delta, 0.0, delta)]
     columns = [column.split(" [")[0] for column in header[1:]]
-    floors = {kind: 0.01 * max((float(np.ptp(ref[:, i + 1])) for i, c in enumerate(columns) if c.endswith(kind)), default=0.0)
-              for kind in KINDS}
+    # the floor of each kind; signals carry anything (pressures, positions, errors of either): each on its own
+    kinds = [c.rsplit(".", 1)[-1] for c in columns]
+    floors = {kind: 0.0 if kind == "Value" else 0.01 * max(float(np.ptp(ref[:, i + 1])) for i, k in enumerate(kinds) if k == kind)
+              for kind in set(kinds)}
     out = {}
     for i, alias in enumerate(columns, start=1):
         y_ref = ref[:, i]
         y = result[alias]
         err = np.min([np.abs(y[idx] - y_ref) for idx in at], axis=0)
-        if alias.endswith((".Flow", ".Force")):  # at t = 0 Hopsan logs their start values: from the 2nd point
+        if alias.endswith((".Flow", ".Force", ".Value")):  # at t = 0 Hopsan logs start values: from the 2nd point
             err, y_ref = err[1:], y_ref[1:]
-        out[alias] = 100.0 * float(np.max(err)) / _scale(y_ref, floors[alias.rsplit(".", 1)[-1]])
+        out[alias] = 100.0 * float(np.max(err)) / _scale(y_ref, floors[kinds[i - 1]])
     return out
 
 

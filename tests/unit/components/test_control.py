@@ -66,3 +66,71 @@ def test_a_transducer_measures_any_quantity():
     s.connect("supply.p", "pt.u")
     assert s.simulate()["pt.y"][-1] == pytest.approx(0.016)  # A
     assert c.Transducer("fb", G="-0.278 V/in").values["G"] == pytest.approx(-0.278 / 0.0254)  # V/m by default
+
+
+def _step_response(tf: c.TransferFunction, t_step: float, times: np.ndarray) -> np.ndarray:
+    s = hs.System("tf", t_end=float(times[-1]))
+    s.add(c.Step("u", amplitude=1.0, t_step=t_step))
+    s.add(tf)
+    s.connect("u.y", f"{tf.name}.u")
+    return s.simulate(t_eval=times, accuracy=1e-8)[f"{tf.name}.y"]
+
+
+def test_transfer_functions_step_responses_are_their_closed_forms() -> None:
+    """Hopsan's filters as continuous transfer functions (the coefficients as Hopsan's .hpp set them): a
+    first-order high pass s/(s + w) answers a unit step with exp(-w t); a lead-lag k (s/w_n + 1)/(s/w_d + 1)
+    with k (1 + (w_d/w_n - 1) exp(-w_d t)); a second-order low pass of damping 0.5 with the textbook
+    underdamped response."""
+    t = np.linspace(0.0, 0.6, 61)
+    tau = np.clip(t - 0.1, 0.0, None)
+    after = t >= 0.1
+    w = 20.0
+    hp = _step_response(c.TransferFunction("hp", a0=0.0, a1=1.0 / w, b0=1.0, b1=1.0 / w), 0.1, t)
+    np.testing.assert_allclose(hp, np.where(after, np.exp(-w * tau), 0.0), atol=1e-6)
+    k, wn, wd = 2.0, 5.0, 30.0
+    ll = _step_response(c.TransferFunction("ll", a0=k, a1=k / wn, b0=1.0, b1=1.0 / wd), 0.1, t)
+    np.testing.assert_allclose(ll, np.where(after, k * (1 + (wd / wn - 1) * np.exp(-wd * tau)), 0.0), atol=1e-5)
+    d = 0.5
+    lp2 = c.TransferFunction("lp2", order="2", a0=1.0, a1=0.0, b0=1.0, b1=2 * d / w, b2=1.0 / w**2)
+    wdamp = w * np.sqrt(1 - d * d)
+    closed = 1 - np.exp(-d * w * tau) * (np.cos(wdamp * tau) + d / np.sqrt(1 - d * d) * np.sin(wdamp * tau))
+    np.testing.assert_allclose(_step_response(lp2, 0.1, t), np.where(after, closed, 0.0), atol=1e-5)
+
+
+def test_a_second_order_transfer_function_with_a_direct_part_and_a_start_value() -> None:
+    """G = (2 s^2 + 3 s + 4)/(s^2 + 5 s + 6) from y(0) = 0.5 at rest: the step response is d u + x1 with the
+    partial fractions of (G - 2)/s = (-7 s - 8)/(s (s + 2)(s + 3)), -4/3 s^-1 - 3 (s + 2)^-1 + 13/3 (s + 3)^-1, and the free response of x1 from 0.5 with
+    zero rate, 0.5 (3 e^{-2t} - 2 e^{-3t})."""
+    t = np.linspace(0.0, 3.0, 31)
+    tf = c.TransferFunction("g", order="2", a2=2.0, a1=3.0, a0=4.0, b2=1.0, b1=5.0, b0=6.0, y0=0.5)
+    y = _step_response(tf, 0.0, t)
+    forced = 2.0 - 4.0 / 3.0 - 3.0 * np.exp(-2 * t) + (13.0 / 3.0) * np.exp(-3 * t)
+    free = 0.5 * (3 * np.exp(-2 * t) - 2 * np.exp(-3 * t))
+    np.testing.assert_allclose(y, forced + free, atol=1e-6)
+
+
+def test_a_transfer_function_refuses_coefficients_its_order_cannot_have() -> None:
+    s = hs.System("tf")
+    s.add(c.TransferFunction("g", a2=1.0))
+    with pytest.raises(ParameterError, match=r"g: a2 = 1, b2 = 0 with order = '1'"):
+        s.simulate()
+    s.replace(c.TransferFunction("g", order="2"))
+    with pytest.raises(ParameterError, match=r"g.b2 = 0"):
+        s.simulate()
+    assert list(c.TransferFunction("g", order="2").STATES) == ["x1", "x2"]
+
+
+def test_a_selector_routes_the_input_its_route_chooses() -> None:
+    s = hs.System("route", t_end=3.5)
+    s.add(c.Staircase("stairs", height=1.0, width=1.0))
+    for i in (1, 2, 3, 4):
+        s.add(c.Constant(f"c{i}", value=10.0 * i))
+    s.add(c.Selector("sel"))
+    s.add(c.Selector("dual", limit12=1.5, limit23=1e300, limit34=1e300))
+    for name in ("sel", "dual"):
+        s.connect("stairs.y", f"{name}.route")
+        for i in (1, 2, 3, 4):
+            s.connect(f"c{i}.y", f"{name}.u{i}")
+    r = s.simulate(t_eval=[0.5, 1.5, 2.5, 3.5])
+    np.testing.assert_allclose(r["sel.y"], [10, 20, 30, 40])
+    np.testing.assert_allclose(r["dual.y"], [10, 10, 20, 20])

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
 import hydroservo as hs
 from hydroservo import components as c
@@ -29,3 +30,30 @@ def test_sources() -> None:
     np.testing.assert_allclose(r["sine.y"], np.sin(4 * np.pi * r.t), atol=1e-12)
     np.testing.assert_allclose(r["square.y"], [1, -1, -1, 1, -1, 1])  # 2 Hz: + on the first half of each 0.5 s period
     np.testing.assert_allclose(r["table.y"], 10 * r.t)
+
+
+def test_pulse_wave_staircase_and_decaying_step_at_known_times() -> None:
+    """Hopsan's SignalPulseWave (D = 0.6 of a 1 s period from 1 s), SignalStaircase and
+    SignalStepExponentialDelay (offset + A exp(-(t - t_step)/tau) from t_step) at times between their edges."""
+    s = hs.System("sources", t_end=4.0)
+    s.add(c.PulseWave("pw", amplitude=2.0, period=1.0, duty=0.6, t_start=1.0, offset=-1.0))
+    s.add(c.Staircase("st", height=0.5, width=0.8, t_start=0.2))
+    s.add(c.DecayingStep("ds", amplitude=3.0, tau=0.5, t_step=1.0, offset=1.0))
+    t = np.array([0.5, 1.1, 1.55, 1.65, 2.05, 2.7, 3.3, 3.9])
+    r = s.simulate(t_eval=t)
+    np.testing.assert_allclose(r["pw.y"], [-1, 1, 1, -1, 1, -1, 1, -1])
+    np.testing.assert_allclose(r["st.y"], 0.5 * np.floor(np.clip(t - 0.2, 0, None) / 0.8))
+    np.testing.assert_allclose(r["ds.y"], np.where(t >= 1.0, 1.0 + 3.0 * np.exp(-(t - 1.0) / 0.5), 1.0), atol=1e-12)
+
+
+def test_an_integrator_does_not_step_blindly_across_a_staircases_edges() -> None:
+    """The staircase's edges are events of the compiled solvers: each of the 9 edges ends a step, and the integral
+    of a staircase of 1 every 0.1 s, 0.1 * (0 + 1 + ... + 9) = 4.5 at 1 s, is within the run's relative
+    tolerance (1e-5 at accuracy 1e-3) times the 9 edges."""
+    s = hs.System("stairs", t_end=1.0)
+    s.add(c.Staircase("st", height=1.0, width=0.1))
+    s.add(c.Integrator("i"))
+    s.connect("st.y", "i.u")
+    r = s.simulate(accuracy=1e-3, method="rodas3")
+    assert r.stats["nevents"] == 9
+    assert r["i.y"][-1] == pytest.approx(4.5, rel=9e-5)

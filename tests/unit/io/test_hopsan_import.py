@@ -154,10 +154,10 @@ def test_imported_model_file_round_trips(servo_file: Path, tmp_path: Path) -> No
 
 
 def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> None:
-    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalPulseWave", "Wave", {})]
+    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalUnitDelay", "Wave", {})]
     path = tmp_path / "m.hmf"
     path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
-    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalPulseWave\)"):
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalUnitDelay\)"):
         read_hopsan(path)
 
 
@@ -183,9 +183,9 @@ def test_cli_writes_the_model_and_refuses_what_it_cannot_map(servo_file: Path, t
     data = json.loads(done.stdout)
     assert Path(data["files"]["model"]).is_file() and len(data["components"]) == len(COMPONENTS)
     bad = tmp_path / "bad.hmf"
-    bad.write_text(_hmf([*COMPONENTS, ("SignalPulseWave", "Wave", {})], CONNECTIONS), encoding="utf-8")
+    bad.write_text(_hmf([*COMPONENTS, ("SignalUnitDelay", "Wave", {})], CONNECTIONS), encoding="utf-8")
     done = subprocess.run([*run, str(bad), "--out", str(tmp_path / "b")], capture_output=True, text=True)
-    assert done.returncode == 2 and "Wave (SignalPulseWave)" in done.stderr and "Traceback" not in done.stderr
+    assert done.returncode == 2 and "Wave (SignalUnitDelay)" in done.stderr and "Traceback" not in done.stderr
     assert not (tmp_path / "b").exists()
 
 
@@ -289,3 +289,86 @@ def test_small_circuits_match_hopsan(name: str) -> None:
         assert np.max(np.abs(y - y_ref)) <= 0.005 * scale, column
         compared += 1
     assert compared >= 8
+
+
+def _value(text: str, unit: str = "") -> tuple[str, str]:
+    return (text, unit)
+
+
+def test_signal_filters_sources_and_routes_map_with_hopsans_parameters(tmp_path: Path) -> None:
+    """Each filter, source and route of Hopsan's signal library mapped so far, with its parameters by Hopsan's
+    names and its ports (in, out, in1..in4, route), checked at known times against Hopsan's laws: a high pass
+    answers a step at 1 s with exp(-omega (t - 1)); the lead-lag k (s/w_n + 1)/(s/w_d + 1) with
+    k (1 + (w_d/w_n - 1) exp(-w_d (t - 1))); the transfer functions' coefficients a_i, b_i; a square wave is
+    y_0 + y_A on the first half of each period; a pulse wave y_0 + y_A on the first D of each dT; a staircase
+    H_step per W_step; a step with exponential delay y_0 + y_A exp(-(t - t_step)/tao); the time is Hopsan's
+    (the model starts at -1 s); the routes choose in1, in2, ... as route passes each limit."""
+    v = _value
+    components = [
+        ("SignalStep", "Step", {"y_0#Value": v("0"), "y_A#Value": v("1"), "t_step#Value": v("0")}),
+        ("SignalHP1Filter", "HP", {"omega": v("5")}),
+        ("SignalFirstOrderFilter", "LL", {"k": v("2"), "omega_num": v("5"), "omega_den": v("30")}),
+        ("SignalLP2Filter", "LP2", {"omega": v("20"), "delta": v("0.5")}),
+        ("SignalFirstOrderTransferFunction", "TF1", {"a_1": v("0"), "a_0": v("3"), "b_1": v("0.1"), "b_0": v("1")}),
+        ("SignalSecondOrderTransferFunction", "TF2", {"a_2": v("2"), "a_1": v("3"), "a_0": v("4"), "b_2": v("1"),
+                                                      "b_1": v("5"), "b_0": v("6")}),
+        ("SignalSquareWave", "Sq", {"y_0#Value": v("1"), "y_A#Value": v("2"), "f#Value": v("0.5"), "t_start#Value": v("0")}),
+        ("SignalPulseWave", "PW", {"y_0#Value": v("0"), "y_A#Value": v("1"), "t_start#Value": v("0"), "dT#Value": v("2"),
+                                   "D#Value": v("0.25")}),
+        ("SignalStaircase", "St", {"T_start#Value": v("0"), "H_step#Value": v("1"), "W_step#Value": v("1")}),
+        ("SignalStepExponentialDelay", "SE", {"y_0#Value": v("1"), "y_A#Value": v("2"), "tao#Value": v("0.5"),
+                                              "t_step#Value": v("0")}),
+        ("SignalTime", "Time", {}),
+        ("SignalDualRoute", "R2", {"limit": v("1.5")}),
+        ("SignalTripleRoute", "R3", {"limit12": v("0.5"), "limit23": v("1.5")}),
+        ("SignalQuadRoute", "R4", {"limit12": v("0.5"), "limit23": v("1.5"), "limit34": v("2.5")}),
+        *[("SignalConstant", f"C{i}", {"y#Value": v(str(10 * i))}) for i in (1, 2, 3, 4)],
+    ]
+    connections = [("Step.out", f"{f}.in") for f in ("HP", "LL", "LP2", "TF1", "TF2")]
+    for route, n in (("R2", 2), ("R3", 3), ("R4", 4)):
+        connections += [("St.out", f"{route}.route"), *((f"C{i}.y", f"{route}.in{i}") for i in range(1, n + 1))]
+    path = tmp_path / "signals.hmf"
+    path.write_text(_hmf(components, connections).replace('start="0"', 'start="-1"'), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["HP"] == "TransferFunction HP" and kinds["R4"] == "Selector R4" and kinds["Sq"] == "Square Sq"
+    assert kinds["PW"] == "PulseWave PW" and kinds["St"] == "Staircase St" and kinds["SE"] == "DecayingStep SE"
+    t = np.array([0.5, 1.25, 1.75, 2.5, 3.2])  # hydroservo's time: Hopsan's plus 1 s, the step at 1 s
+    r = imp.system.simulate(t_eval=t, accuracy=1e-8)
+    tau = t - 1.0
+    np.testing.assert_allclose(r["HP.out.Value"], np.where(tau >= 0, np.exp(-5 * tau), 0.0), atol=1e-6)
+    ll = 2 * (1 + (30 / 5 - 1) * np.exp(-30 * tau))
+    np.testing.assert_allclose(r["LL.out.Value"], np.where(tau >= 0, ll, 0.0), atol=1e-5)
+    wd = 20 * np.sqrt(0.75)
+    lp2 = 1 - np.exp(-10 * tau) * (np.cos(wd * tau) + np.sin(wd * tau) / np.sqrt(3))
+    np.testing.assert_allclose(r["LP2.out.Value"], np.where(tau >= 0, lp2, 0.0), atol=1e-5)
+    np.testing.assert_allclose(r["TF1.out.Value"], np.where(tau >= 0, 3 * (1 - np.exp(-10 * tau)), 0.0), atol=1e-5)
+    tf2 = 2 - 4 / 3 - 3 * np.exp(-2 * tau) + 13 / 3 * np.exp(-3 * tau)
+    np.testing.assert_allclose(r["TF2.out.Value"], np.where(tau >= 0, tf2, 0.0), atol=1e-5)
+    hopsan_t = t - 1.0
+    np.testing.assert_allclose(r["Time.out.Value"], hopsan_t, atol=1e-12)
+    np.testing.assert_allclose(r["Sq.out.Value"], np.where(hopsan_t < 0, 1, np.where(hopsan_t % 2 < 1, 3, -1)))
+    np.testing.assert_allclose(r["PW.out.Value"], np.where((hopsan_t > 0) & (hopsan_t % 2 < 0.5), 1, 0))
+    np.testing.assert_allclose(r["St.out.Value"], np.floor(np.clip(hopsan_t, 0, None)))
+    np.testing.assert_allclose(r["SE.out.Value"], np.where(hopsan_t >= 0, 1 + 2 * np.exp(-hopsan_t / 0.5), 1), atol=1e-12)
+    stairs = np.floor(np.clip(hopsan_t, 0, None))  # 0, 0, 0, 1, 2
+    np.testing.assert_allclose(r["R2.out.Value"], np.where(stairs < 1.5, 10, 20))
+    np.testing.assert_allclose(r["R3.out.Value"], np.choose(np.minimum(stairs, 2).astype(int), [10, 20, 30]))
+    np.testing.assert_allclose(r["R4.out.Value"], np.choose(np.minimum(stairs, 3).astype(int), [10, 20, 30, 40]))
+
+
+def test_filters_with_output_limits_and_sources_before_the_start_are_refused(tmp_path: Path) -> None:
+    v = _value
+    components = [
+        ("SignalHP1Filter", "HP", {"omega": v("5"), "y_max": v("1")}),
+        ("SignalSquareWave", "Sq", {"t_start#Value": v("-2")}),
+        ("SignalSecondOrderTransferFunction", "TF2", {"b_2": v("0"), "b_1": v("0"), "a_2": v("0")}),
+    ]
+    path = tmp_path / "limits.hmf"
+    path.write_text(_hmf(components, []), encoding="utf-8")
+    with pytest.raises(ModelFileError) as err:
+        read_hopsan(path)
+    text = str(err.value)
+    assert "HP (SignalHP1Filter): a filter with output limits" in text
+    assert "Sq (SignalSquareWave): t_start = -2 s, before the run's start" in text
+    assert "TF2 (SignalSecondOrderTransferFunction): a transfer function with no s term" in text

@@ -51,3 +51,14 @@ def test_notes_are_read_written_and_printed_with_every_run(tmp_path) -> None:
     bad.write_text(path.read_text(encoding="utf-8").replace("notes = [", "notes = 3 # [", 1), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"\[model\] notes = 3: expected a list of texts"):
         read_model(bad)
+
+
+def test_a_description_with_line_breaks_and_control_characters_is_written_as_valid_toml() -> None:
+    """Hopsan's Dynamic Pressure Feedback describes itself in lines ending in CR: written raw they made the
+    model file malformed TOML."""
+    import tomllib
+
+    from hydroservo.io.toml import toml_string
+
+    for text in ('quote " and \\ backslash', "line 1\r\nline 2\ttab \x01 \x7f", "plain é"):
+        assert tomllib.loads(f"k = {toml_string(text)}")["k"] == text
