@@ -11,7 +11,6 @@ when given; the phase column may be missing or empty (gain-only data).
 
 from __future__ import annotations
 
-import csv
 import math
 from pathlib import Path
 
@@ -19,7 +18,7 @@ import numpy as np
 
 from hydroservo.analysis.frequency import FrequencyResponse
 from hydroservo.errors import ParameterError
-from hydroservo.io.files import read_text
+from hydroservo.io.files import csv_rows, read_text
 
 __all__ = ["read_bode", "write_bode"]
 
@@ -40,7 +39,7 @@ def read_bode(path: str | Path) -> FrequencyResponse:
 
     path = Path(path)
     text = read_text(path, "Bode file")
-    reader = csv.reader(line for line in text.splitlines() if line.strip() and not line.startswith("#"))
+    reader = iter(csv_rows(text))
     try:
         header = next(reader)
     except StopIteration:

@@ -21,7 +21,6 @@ comment lines::
 
 from __future__ import annotations
 
-import csv
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 
@@ -29,7 +28,7 @@ import numpy as np
 
 from hydroservo.analysis.static_bench import Bench, BenchCurves
 from hydroservo.errors import ParameterError
-from hydroservo.io.files import read_text
+from hydroservo.io.files import csv_rows, read_text
 from hydroservo.units import from_si, to_si
 
 __all__ = [
@@ -58,7 +57,7 @@ def read_csv_table(
         if line.startswith("#") and "=" in line:
             key, _, value = line[1:].partition("=")
             meta[key.strip()] = value.split("#")[0].strip()
-    rows = list(csv.reader(line for line in lines if not line.startswith("#")))
+    rows = csv_rows("\n".join(lines))
     if len(rows) < 2:
         raise ParameterError(f"{where}: expected a header and data rows")
     cols: dict[str, tuple[int, str]] = {}

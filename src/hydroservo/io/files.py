@@ -23,7 +23,7 @@ from types import TracebackType
 
 from hydroservo.errors import HydroservoError, ParameterError
 
-__all__ = ["read_text", "safe_name", "OutputFolder"]
+__all__ = ["read_text", "csv_rows", "safe_name", "OutputFolder"]
 
 
 def read_text(path: str | Path, what: str, error: type[HydroservoError] = ParameterError) -> str:
@@ -41,6 +41,21 @@ def read_text(path: str | Path, what: str, error: type[HydroservoError] = Parame
         return data.decode("utf-8-sig")
     except UnicodeDecodeError as exc:
         raise error(f"{what} {str(path)!r}: not UTF-8 text (byte {exc.start + 1}); expected UTF-8 text") from None
+
+
+def csv_rows(text: str) -> list[list[str]]:
+    """The rows of a CSV text as every CSV reader of hydroservo takes them (the csv module parses quoting):
+    blank lines and whole-line comments (``#`` first) left out. A ``#`` inside a line is data, as in Hopsan's
+    variable names (``Valve#PA#Pressure``), which is why no reader cuts lines at a ``#`` (pandas' ``comment``
+    would).
+
+    >>> csv_rows('# a comment\\n\\nt [s],"Valve#PA#Pressure [Pa]"\\n0,1e5\\n')
+    [['t [s]', 'Valve#PA#Pressure [Pa]'], ['0', '1e5']]
+    """
+    import csv
+
+    lines = [line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")]
+    return [row for row in csv.reader(lines) if any(cell.strip() for cell in row)]
 
 
 _UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")

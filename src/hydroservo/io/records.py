@@ -17,7 +17,6 @@ unit of their header: the record is converted where it meets a model.
 
 from __future__ import annotations
 
-import csv
 import io
 from collections.abc import Sequence
 from pathlib import Path
@@ -26,7 +25,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError, UnitError
 from hydroservo.identification.records import Channel, Record
-from hydroservo.io.files import OutputFolder, read_text
+from hydroservo.io.files import OutputFolder, csv_rows, read_text
 from hydroservo.io.results import parseable_unit
 from hydroservo.units import check_unit, same_dimension, si_definition
 
@@ -51,8 +50,7 @@ def _header(cell: str, where: str, k: int) -> tuple[str, str]:
 def _read_file(path: Path) -> dict[str, Channel]:
     where = f"record {str(path)!r}"
     text = read_text(path, "record")
-    rows = [r for r in csv.reader(io.StringIO(text.lstrip("\ufeff"))) if r and not r[0].lstrip().startswith("#")]
-    rows = [r for r in rows if any(c.strip() for c in r)]
+    rows = csv_rows(text)
     if not rows:
         raise ParameterError(f"{where}: no header; expected a first line such as 't [s],load.x [mm]'")
     header = [_header(c, where, k) for k, c in enumerate(rows[0])]

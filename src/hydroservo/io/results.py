@@ -160,20 +160,19 @@ def read_csv(path: str | Path, model: str | None = None) -> Any:
     in SI as every result is inside (each column converted from its unit; the units it was written in are kept
     as the result's :attr:`~hydroservo.system.result.Result.unit_choice`).
 
-    Empty cells and ``nan`` are NaN. ``model`` names the result (default: the file's name).
+    Empty cells and ``nan`` are NaN; lines starting with ``#`` are comments. ``model`` names the result (default:
+    the file's name).
     """
-    import csv
-    import io
 
     import numpy as np
 
     from hydroservo.errors import HydroservoError, ParameterError
-    from hydroservo.io.files import read_text
+    from hydroservo.io.files import csv_rows, read_text
     from hydroservo.system.result import Result as RunResult
 
     path = Path(path)
     text = read_text(path, "result file")
-    rows = list(csv.reader(io.StringIO(text)))
+    rows = csv_rows(text)
     if len(rows) < 3:
         raise ParameterError(f"result file {str(path)!r}: {max(len(rows) - 1, 0)} row(s); expected a header and at "
                              "least two times")

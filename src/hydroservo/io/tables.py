@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-import csv
 from pathlib import Path
 
 import numpy as np
 
 from hydroservo.errors import ParameterError
-from hydroservo.io.files import read_text
+from hydroservo.io.files import csv_rows, read_text
 
 __all__ = ["read_time_table"]
 
@@ -21,7 +20,7 @@ def read_time_table(path: str | Path, column: str | int = 1, what: str = "table"
     """
     path = Path(path)
     text = read_text(path, f"{what}.file")
-    rows = [r for r in csv.reader(text.splitlines()) if r and not r[0].lstrip().startswith("#")]
+    rows = csv_rows(text)
     if not rows:
         raise ParameterError(f"{what}.file: {str(path)!r} is empty")
     header = rows[0]
