@@ -75,14 +75,6 @@ MODELS: dict[str, Spec] = {
         "Example Models/Dynamic Pressure Feedback.hmf",
         "a position servo commanded by a square wave, its load-pressure feedback routed through a selector (a "
         "high-pass filter on the third route)",
-        known=tuple(
-            (kind, "the chambers' pressure transients after the square wave's edges differ: peaks of 32.7 MPa where "
-             "Hopsan's are 31.7 MPa (0.55 s), and where Hopsan's chamber dips to 1.3 MPa hydroservo's has cavitated "
-             "to 0 Pa_abs (2.56 s); pressures and the signals that carry them 3.5 % of range, forces 3.0 %, flows "
-             "1.8 %, velocities 1.1 % (positions 0.49 %). The cause is not found yet: it is the same at accuracy 1e-7, "
-             "so not the solver's (docs/validation.md)")
-            for kind in ("Velocity", "Force", "Pressure", "Flow", "Value")
-        ),
     ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
