@@ -5,8 +5,15 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, State, register
-from hydroservo.laws.displacement import compensator_displacement, displaced_flow, leakage_flow, motor_torque
+from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
+from hydroservo.laws.displacement import (
+    compensator_displacement,
+    displaced_flow,
+    floored_port_flow,
+    leakage_flow,
+    motor_torque,
+)
+from hydroservo.units import VACUUM
 
 __all__ = ["Pump", "VariablePump", "Motor"]
 
@@ -33,7 +40,20 @@ class Pump(Component):
     displacement: a variable pump driven by a signal, without a controller
     (Hopsan's HydraulicVariableDisplacementPump, [Hopsan2026]). Outputs: the
     delivered flow ``QP`` and the shaft torque the pump takes.
+
+    Option ``inlet``: ``free`` (default) delivers the flow above whatever the
+    pressure at the inlet, so a pump drawing from a closed volume empties it
+    (a volume or cylinder with a cavity floor then holds a cavity); ``floor``
+    draws no port below ``p_floor``: the flow falls to what flows into the
+    inlet, the inlet held within ``p_reg`` of the floor
+    (:func:`~hydroservo.laws.displacement.floored_port_flow`), as Hopsan's pumps
+    clamp their flow ([Hopsan2026]).
     """
+
+    OPTIONS = {
+        "inlet": Option("free", ("free", "floor"),
+                        "the displacement flow whatever the inlet pressure, or no port drawn below p_floor (Hopsan)"),
+    }
 
     PARAMETERS = {
         "D": Param(25e-6 / 6.283185307179586, "m^3/rad", "displacement per radian (write '25 cm^3/rev')", min=0.0),
@@ -42,6 +62,9 @@ class Pump(Component):
         "p_rated": Param(
             350e5, "Pa", "rated pressure: the highest it is built to deliver against", min=0.0, min_inclusive=False
         ),
+        "p_floor": Param(VACUUM, "Pa", "lowest pressure a port is drawn to (option floor)", min=VACUUM),
+        "p_reg": Param(100.0, "Pa", "pressure over which the flow falls to nothing at the floor (option floor)",
+                       min=0.0, min_inclusive=False),
     }
     INPUTS = {
         **_PUMP_INPUTS,
@@ -61,6 +84,8 @@ class Pump(Component):
     def _delivery(self, u: Mapping[str, Any], p: Mapping[str, Any], eps: Any = 1.0) -> dict[str, Any]:
         dp = u["pP"] - u["pS"]
         q = displaced_flow(p["D"], p["omega"], eps) - leakage_flow(p["C_leak"], dp)
+        if self.option("inlet") == "floor":
+            q = floored_port_flow(q, u["pS"], u["pP"], p["p_floor"], p["p_reg"])
         return {"QP": q, "QS": q, "T": motor_torque(eps * p["D"], dp), "p_rated": p["p_rated"]}
 
     def output_equations(

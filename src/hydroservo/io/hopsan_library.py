@@ -215,7 +215,8 @@ def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
-    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("n_p", 250.0), C_leak=par("C_lp", 1e-12))
+    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("n_p", 250.0), C_leak=par("C_lp", 1e-12),
+                inlet="floor", p_floor=_abs(0.0))
     return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"})
 
 
@@ -319,7 +320,8 @@ def _turbulent_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
-    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("omega_p", 50.0), C_leak=par("K_cp", 1e-12))
+    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("omega_p", 50.0), C_leak=par("K_cp", 1e-12),
+                inlet="floor", p_floor=_abs(0.0))
     return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"}, inputs={"eps": f"{n}.eps"})
 
 

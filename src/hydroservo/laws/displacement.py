@@ -17,7 +17,7 @@ from typing import Any
 
 from hydroservo import backend as bk
 
-__all__ = ["displaced_flow", "leakage_flow", "motor_torque", "compensator_displacement"]
+__all__ = ["displaced_flow", "leakage_flow", "motor_torque", "compensator_displacement", "floored_port_flow"]
 
 
 def displaced_flow(D: Any, omega: Any, eps: Any = 1.0) -> Any:
@@ -140,3 +140,49 @@ def compensator_displacement(p: Any, p_c: Any, dp_band: Any) -> Any:
     [1.0, 0.5, 0.0]
     """
     return bk.fmin(bk.fmax((p_c + dp_band - p) / dp_band, 0.0), 1.0)
+
+
+def floored_port_flow(q: Any, p_in: Any, p_out: Any, p_floor: Any, p_reg: Any) -> Any:
+    r"""The flow of a machine that cannot draw a port below ``p_floor``: the flow :math:`Q` from port 1 to port 2
+    (positive: port 1 is the inlet) scaled by a gate of the inlet's pressure,
+
+    .. math:: Q_{floor} = \max(Q, 0)\,g(p_1) + \min(Q, 0)\,g(p_2), \qquad
+              g(p) = s\!\left(\frac{p - p_{floor}}{p_{reg}}\right),\ s(x) = x^2 (3 - 2x) \text{ on } [0, 1]
+
+    so that a machine drawing from an emptied volume takes only what flows into it, the volume held within
+    ``p_reg`` of the floor. The continuous form of Hopsan's pumps, which clamp their flow so that neither port's
+    pressure falls below zero ([Hopsan2026] Hydraulic/Pumps/HydraulicFixedDisplacementPump.hpp and
+    HydraulicVariableDisplacementPump.hpp: ``q2 = min(max(q2, -c2/Zc2), c1/Zc1)``); the gate rises from 0 to 1
+    over ``p_reg`` with a continuous slope, as an implicit solver needs.
+
+    Parameters
+    ----------
+    q : array_like
+        Flow the machine would deliver, port 1 to port 2 [m^3/s].
+    p_in, p_out : array_like
+        Pressures at port 1 and port 2 [Pa].
+    p_floor : array_like
+        Pressure below which a port cannot be drawn [Pa] (vacuum: -101325 Pa gauge).
+    p_reg : array_like
+        Pressure over which the gate opens [Pa].
+
+    Returns
+    -------
+    array_like
+        Flow [m^3/s].
+
+    Examples
+    --------
+    >>> float(floored_port_flow(1e-3, 2e5, 1e6, -101325.0, 100.0))  # the inlet well above the floor: all of it
+    0.001
+    >>> float(floored_port_flow(1e-3, -101325.0 + 50.0, 1e6, -101325.0, 100.0))  # half-way up the gate
+    0.0005
+    >>> abs(float(floored_port_flow(-1e-3, 2e5, -101325.0, -101325.0, 100.0)))  # reversed, port 2 at its floor
+    0.0
+    """
+
+    def gate(p: Any) -> Any:
+        x = bk.clip((p - p_floor) / p_reg, 0.0, 1.0)
+        return x * x * (3.0 - 2.0 * x)
+
+    return bk.fmax(q, 0.0) * gate(p_in) + bk.fmin(q, 0.0) * gate(p_out)

@@ -63,13 +63,6 @@ MODELS: dict[str, Spec] = {
         "Component Test/HydraulicComponent Test/HydraulicVariableDisplacementPumpTest.hmf",
         "a variable pump whose displacement setting is ramped from -1 to 1, in a closed loop through a laminar "
         "orifice between two volumes",
-        known=tuple(
-            (kind, "Hopsan's pump limits its flow so that neither port falls below 0 Pa (it stops drawing from a "
-             "suction that has emptied); hydroservo's Pump keeps its displacement flow and the emptied volume holds a "
-             "cavity, so near full displacement either way the loaded side rises to 2.64 bar, not 2.0 bar. While "
-             "neither volume is empty (Hopsan's 2 to 8 s) the traces agree within 0.0001 % (docs/validation.md)")
-            for kind in ("Pressure", "Flow")
-        ),
     ),
     "dynamic-pressure-feedback": Spec(
         "Example Models/Dynamic Pressure Feedback.hmf",

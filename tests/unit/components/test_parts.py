@@ -128,3 +128,29 @@ def test_an_empty_accumulator_is_only_the_oil_in_its_port():
     s.connect("o.B", "acc.P")
     r = s.simulate()
     assert r["acc.V_oil"][-1] == 0.0 and r["acc.p"][-1] == pytest.approx(1e5, rel=1e-3)
+
+
+@pytest.mark.parametrize("inlet", ["free", "floor"])
+def test_a_pump_drawing_from_a_starved_volume_empties_it_or_takes_only_what_flows_in(inlet: str) -> None:
+    # a 37.5 L/min pump draws from a 1 L volume fed from tank through a laminar orifice that passes at most
+    # G (p_tank - p_floor) = 1e-9 * 101325 m^3/s (6.1 L/min); it delivers into a volume drained to tank
+    s = System("starved", t_end=1.0)
+    s.add(c.Tank("tank"))
+    s.add(c.LaminarOrifice("feed", G_lam="1e-9 m^3/s/Pa"))
+    s.add(c.Volume("suction", V="1 L", pressure_floor="cavity", p0=0.0))
+    s.add(c.Pump("pump", D="25 cm^3/rev", omega="1500 rpm", inlet=inlet, p_floor="0 Pa_abs"))
+    s.add(c.Volume("out", V="1 L"))
+    s.add(c.LaminarOrifice("drain", G_lam="1e-10 m^3/s/Pa"))
+    s.connect("tank.P", "feed.A", "drain.B")
+    s.connect("feed.B", "suction.P", "pump.S")
+    s.connect("pump.P", "out.P", "drain.A")
+    r = s.simulate()
+    fed = 1e-9 * ABS  # the feed's largest flow, the suction at vacuum [m^3/s]
+    if inlet == "floor":  # Hopsan's clamp: the suction held at the floor, the pump passing what the feed gives
+        assert r["suction.p"][-1] == pytest.approx(-ABS, abs=100.0)  # within p_reg of vacuum
+        assert r["pump.QP"][-1] == pytest.approx(fed, rel=1e-3)
+        assert r["out.p"][-1] == pytest.approx(fed / 1e-10, rel=1e-3)  # the drain passes what the pump delivers
+    else:  # the displacement flow goes on: the suction holds a growing cavity, the outlet climbs past that
+        assert r["pump.QP"][-1] == pytest.approx(25e-6 * 1500 / 60, rel=1e-3)
+        assert r["suction.p"][-1] == pytest.approx(-ABS, abs=1.0)
+        assert r["out.p"][-1] > 2 * fed / 1e-10
