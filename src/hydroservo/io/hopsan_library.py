@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 
 from hydroservo.components import base as cbase
 from hydroservo.errors import ModelError, ModelFileError
-from hydroservo.io.hopsan import HopsanComponent, HopsanModel, read_hmf
+from hydroservo.io.hopsan import HopsanComponent, HopsanModel, HopsanParameter, read_hmf
 
 if TYPE_CHECKING:
     from hydroservo.system.system import System
@@ -92,8 +92,11 @@ class _Params:
         problems: list[str],
         node_start: dict[str, dict[str, float]] | None = None,
         driven: frozenset[str] = frozenset(),
+        fan_in: dict[str, int] | None = None,
     ) -> None:
         self.hc, self.where, self.problems = hc, where, problems
+        #: how many signals Hopsan connects to each of the component's ports (a multiport sum's inputs)
+        self.fan_in = fan_in or {}
         self.node_start = node_start or {}
         #: Hopsan's start time: hydroservo's runs start at 0, so Hopsan's times are shifted by it (``time``)
         self.t0 = 0.0
@@ -512,10 +515,22 @@ def _power(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
 
 def _sum(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Hopsan's multiport sum: one ``Sum`` of three inputs, chained through further ones (``n_sum2``, ...) where
+    more signals are connected (each further sum adds two inputs and passes its total on)."""
     from hydroservo.components import Sum
 
-    comp = Sum(n, gain1=1.0, gain2=1.0, gain3=1.0)
-    return Mapped([comp], multi={"in": [f"{n}.u1", f"{n}.u2", f"{n}.u3"]}, outputs={"out": f"{n}.y"})
+    count = max(par.fan_in.get("in", 0), 3)
+    sums: list[cbase.Component] = [Sum(n, gain1=1.0, gain2=1.0, gain3=1.0)]
+    inputs = [f"{n}.u1", f"{n}.u2"]
+    internal = []
+    while len(inputs) + 1 < count:
+        nxt = Sum(f"{n}_sum{len(sums) + 1}", gain1=1.0, gain2=1.0, gain3=1.0)
+        internal.append((f"{nxt.name}.y", f"{sums[-1].name}.u3"))
+        sums.append(nxt)
+        inputs += [f"{nxt.name}.u1", f"{nxt.name}.u2"]
+    inputs.append(f"{sums[-1].name}.u3")
+    return Mapped(sums, multi={"in": inputs}, outputs={"out": f"{n}.y"}, internal=internal,
+                  note="" if len(sums) == 1 else f"{len(sums)} Sums chained ({n}, ...), {len(inputs)} inputs")
 
 
 def _low_pass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -786,9 +801,15 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     multiports = {(c.full_name, p) for c in model.components for p in MULTIPORTS.get(c.typename, ())}
     node_start = _node_starts(model, by_name, multiports)
     connected: dict[str, frozenset[str]] = {}
+    fan_in: dict[str, dict[str, int]] = {}
     for connection in model.connections:
         for owner, port in (_end(e) for e in connection):
             connected[owner] = connected.get(owner, frozenset()) | {port}
+            counts = fan_in.setdefault(owner, {})
+            counts[port] = counts.get(port, 0) + 1
+    folded = _fold_constant_drives(model, by_name)  # parameters set by constant signals take their values
+    for c, ports in folded.items():
+        connected[c] = connected.get(c, frozenset()) - ports
     for hc in model.components:
         name = safe_name("_".join((*hc.path, hc.name)))
         base, k = name, 1
@@ -800,7 +821,8 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         where = f"{source}: {hc.full_name} ({hc.typename})"
         try:
             starts = {port: values for (c, port), values in node_start.items() if c == hc.full_name}
-            params = _Params(hc, where, problems, starts, connected.get(hc.full_name, frozenset()))
+            params = _Params(hc, where, problems, starts, connected.get(hc.full_name, frozenset()),
+                             fan_in.get(hc.full_name))
             params.t0 = model.start
             m = LIBRARY[hc.typename](hc, name, params)
         except Exception as exc:  # a value out of a component's range: named with the Hopsan component
@@ -818,7 +840,8 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         f"Imported from the Hopsan model {Path(source).name}, which Hopsan runs from {model.start:g} s to "
         f"{model.stop:g} s at a fixed step of {model.timestep:g} s; hydroservo chooses its steps by the accuracy "
         f"asked for. Hopsan's port variables are aliases named with dots (Mass#P2#Position is Mass.P2.Position)."
-        + (f" Hydroservo's time is Hopsan's less {model.start:g} s: its runs start at 0." if model.start else "")
+        + (f" Hydroservo's time is Hopsan's {'less' if model.start > 0 else 'plus'} {abs(model.start):g} s: its runs "
+           "start at 0." if model.start else "")
     )
     system.source = source
     for m in mapped.values():
@@ -836,7 +859,9 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     power_groups: list[list[tuple[str, str]]] = []
     signal_groups: list[list[tuple[str, str]]] = []
     for connection in model.connections:
-        ends = [_end(e) for e in connection]
+        ends = [e for e in (_end(e) for e in connection) if e[1] not in folded.get(e[0], ())]
+        if len(ends) < 2:
+            continue  # a constant's value folded into the parameter it drove
         unknown = [(c, p) for c, p in ends if _port_kind(mapped.get(c), p) == "none" and not _is_input_variable(by_name[c], p)]
         if unknown and all(_port_kind(mapped.get(c), p) in ("dropped", "none") for c, p in ends):
             continue  # a scope showing a variable hydroservo does not name (a relief valve's own xv)
@@ -984,6 +1009,74 @@ def _node_starts(
             if end not in multiports:
                 out[end] = values
     return out
+
+
+#: Hopsan's signal blocks whose output is constant when their inputs are: type -> (output, inputs, function)
+_CONSTANT_BLOCKS: dict[str, tuple[str, tuple[str, ...], Callable[..., float]]] = {
+    "SignalConstant": ("y", (), lambda par: par("y")),
+    "SignalGain": ("out", ("in",), lambda par, u: par("k") * u),
+}
+
+
+def _fold_constant_drives(model: Any, by_name: dict[str, HopsanComponent]) -> dict[str, frozenset[str]]:
+    """Parameters of Hopsan's components that a constant signal drives (a valve's diameter set by a
+    ``SignalConstant``, through gains): their values set to the signal's, in the components' parameters, and the
+    driven ports returned (component -> ports) so that the connections are dropped. Hopsan evaluates such a
+    signal at every step, to the same value; hydroservo holds the parameter at it. A parameter that a mapped
+    component takes as an input (a pressure source's ``p``) is left to be connected."""
+    ends = [[_end(e) for e in connection] for connection in model.connections]
+    values: dict[tuple[str, str], float] = {}
+    for _ in range(len(model.components) + 1):  # through chains of gains, one block a pass
+        grew = False
+        for hc in model.components:
+            block = _CONSTANT_BLOCKS.get(hc.typename)
+            if block is None or (hc.full_name, block[0]) in values:
+                continue
+            out, inputs, function = block
+            def par(name: str, hc: HopsanComponent = hc) -> float:
+                found = hc.parameters.get(f"{name}#Value") or hc.parameters.get(name)
+                return float("nan") if found is None or found.value is None else float(found.value)
+            args = []
+            for port in inputs:
+                sources = [values.get(e) for group in ends if (hc.full_name, port) in group for e in group
+                           if e != (hc.full_name, port)]
+                known = [v for v in sources if v is not None]
+                if sources and len(known) != 1:
+                    break
+                args.append(known[0] if sources else par(port))
+            else:
+                value = function(par, *args)
+                if math.isfinite(value):
+                    values[(hc.full_name, out)] = value
+                    grew = True
+        if not grew:
+            break
+    folded: dict[str, set[str]] = {}
+    for group in ends:
+        source = [values[e] for e in group if e in values]
+        if len(source) != 1:
+            continue
+        for c, port in group:
+            hc = by_name.get(c)
+            if hc is None or (c, port) in values or hc.typename in _CONSTANT_BLOCKS or hc.typename == "SignalSink":
+                continue
+            if not _is_input_variable(hc, port) or _takes_as_input(hc, port):
+                continue
+            key = f"{port}#Value" if f"{port}#Value" in hc.parameters else port
+            hc.parameters[key] = HopsanParameter(key, repr(source[0]), hc.parameters[key].unit, source[0])
+            folded.setdefault(c, set()).add(port)
+    return {c: frozenset(ports) for c, ports in folded.items()}
+
+
+def _takes_as_input(hc: HopsanComponent, port: str) -> bool:
+    """Whether hydroservo's mapping of ``hc`` reads Hopsan's input variable ``port`` as a signal input (a
+    pressure source's ``p``, a signal block's ``in``) rather than a parameter."""
+    probe = _Params(hc, "", [], driven=frozenset({port}))
+    try:
+        m = LIBRARY[hc.typename](hc, "probe", probe)
+    except Exception:  # noqa: BLE001 - a component that cannot be mapped is refused later, with its message
+        return True
+    return _port_kind(m, port) != "none"
 
 
 def _is_input_variable(hc: HopsanComponent, port: str) -> bool:

@@ -69,6 +69,11 @@ MODELS: dict[str, Spec] = {
         "a position servo commanded by a square wave, its load-pressure feedback routed through a selector (a "
         "high-pass filter on the third route)",
     ),
+    "servo-optimization": Spec(
+        "Example Models/ServoOptimization.hmf",
+        "a position servo whose valve size, laps and piston area are set by constant signals, with an objective "
+        "function of integrated errors summed from five signals",
+    ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",

@@ -255,10 +255,45 @@ def test_a_sum_reads_each_signal_connected_to_its_one_port_and_time_starts_at_ho
     r = system.simulate(t_eval=[0.0, 1.4, 1.6])
     assert list(r["Sum.out.Value"]) == pytest.approx([3.5, 3.5, 7.5])
     assert system.t_end == pytest.approx(4.0) and system.plots == [["Sum.out.Value"]]
+    # more than three: further sums chained, each adding two inputs (six signals: two chained)
+    more = [("SignalConstant", k, {"y#Value": (v, "")}) for k, v in (("D", "0.25"), ("E", "0.5"), ("F", "8"))]
     path.write_text(
-        _hmf([*components, ("SignalConstant", "D", {})], [*connections, ("D.y", "Sum.in")]), encoding="utf-8"
+        _hmf([*components, *more], [*connections, ("D.y", "Sum.in"), ("E.y", "Sum.in"), ("F.y", "Sum.in")]),
+        encoding="utf-8",
     )
-    with pytest.raises(ModelFileError, match=r"Sum\.in reads more than 3 signals"):
+    system = read_hopsan(path)
+    assert [n for n in system.components if n.startswith("Sum")] == ["Sum", "Sum_sum2", "Sum_sum3"]
+    assert system.simulate(t_eval=[0.0, 1.0])["Sum.out.Value"][-1] == pytest.approx(1.5 + 2 + 4 + 0.25 + 0.5 + 8)
+
+
+def test_parameters_set_by_constant_signals_take_their_values_and_others_are_refused(tmp_path: Path) -> None:
+    """ServoOptimization sets its valve's diameter and stroke, its laps (through a gain of -1) and its piston's
+    areas by constant signals: hydroservo holds the parameters at the signals' values. A parameter driven by a
+    signal that varies (a step) is still refused."""
+    components = [
+        ("SignalConstant", "dv", {"y#Value": ("0.003", "")}),
+        ("SignalConstant", "xol", {"y#Value": ("0.0001", "")}),
+        ("SignalGain", "neg", {"k#Value": ("-1", ""), "in#Value": ("0", "")}),
+        ("Hydraulic43Valve", "V", {"d#Value": ("0.01", "m"), "x_vmax#Value": ("0.01", "m"), "x_pa#Value": ("0", "m"),
+                                   "x_pb#Value": ("0", "m"), "x_at#Value": ("0", "m"), "x_bt#Value": ("0", "m"),
+                                   "C_q#Value": ("0.67", ""), "rho#Value": ("890", "kg/m^3")}),
+        ("HydraulicPressureSourceC", "S", {"p#Value": ("1e7", "Pa")}),
+        ("HydraulicTankC", "T", {}),
+        ("HydraulicVolume", "VA", {}),
+        ("HydraulicVolume", "VB", {}),
+    ]
+    connections = [("dv.y", "V.d"), ("dv.y", "V.x_vmax"), ("xol.y", "neg.in"), ("neg.out", "V.x_pa"),
+                   ("neg.out", "V.x_bt"), ("S.P1", "V.PP"), ("T.P1", "V.PT"), ("VA.P1", "V.PA"), ("VB.P1", "V.PB")]
+    path = tmp_path / "driven.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = read_hopsan(path)
+    valve = system["V"]
+    assert valve.values["c_v"] == pytest.approx(0.67 * np.pi * 0.003 * np.sqrt(2 / 890))
+    assert valve.values["x_PA"] == pytest.approx(-1e-4) and valve.values["x_BT"] == pytest.approx(-1e-4)
+    assert valve.values["x_PB"] == 0.0 and system["V_spool"].values["xv_max"] == pytest.approx(0.003)
+    step = ("SignalStep", "st", {"y_0#Value": ("0.003", ""), "y_A#Value": ("0.001", ""), "t_step#Value": ("1", "s")})
+    path.write_text(_hmf([*components, step], [*connections[1:], ("st.out", "V.d")]), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V\.d driven by a signal is not supported yet"):
         read_hopsan(path)
 
 
