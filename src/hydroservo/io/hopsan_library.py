@@ -310,14 +310,17 @@ def _turbulent_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Orifice
 
     area = abs(par("A", 1e-5))
+    # Hopsan's A is an input: the area, or, driven by a signal, the signal (option area = input)
+    driven = "A" in par.driven
     comp = Orifice(
         n,
-        d=math.sqrt(4.0 * area / math.pi),
+        d=math.sqrt(4.0 * area / math.pi) if area > 0 else 1e-3,  # driven: the transition's diameter only
         Cd=par("C_q", 0.67),
         rho=par("rho", 870.0),
         lambda_crit=10.0,  # turbulent down to a few Pa, as Hopsan's
+        area="input" if driven else "bore",
     )
-    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"}, inputs={"A": f"{n}.A_in"} if driven else {})
 
 
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:

@@ -74,6 +74,11 @@ MODELS: dict[str, Spec] = {
         "a position servo whose valve size, laps and piston area are set by constant signals, with an objective "
         "function of integrated errors summed from five signals",
     ),
+    "pressure-relief-valve-characteristics": Spec(
+        "Example Models/Pressure Relief Valve Characteristics.hmf",
+        "a flow source into a volume protected by a relief valve, drained through an orifice whose area a step "
+        "changes",
+    ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",

@@ -154,3 +154,18 @@ def test_a_pump_drawing_from_a_starved_volume_empties_it_or_takes_only_what_flow
         assert r["pump.QP"][-1] == pytest.approx(25e-6 * 1500 / 60, rel=1e-3)
         assert r["suction.p"][-1] == pytest.approx(-ABS, abs=1.0)
         assert r["out.p"][-1] > 2 * fed / 1e-10
+
+
+def test_an_orifice_whose_area_is_an_input_follows_the_signal() -> None:
+    # Hopsan's turbulent orifice takes its area as an input (Pressure Relief Valve Characteristics steps it)
+    s = System("area", t_end=1.0)
+    s.add(c.ConstantPressure("a", p="100 bar"))
+    s.add(c.Tank("b"))
+    s.add(c.Orifice("o", d="1 mm", Cd=0.67, rho=890.0, lambda_crit=10.0, area="input"))
+    s.add(c.Step("A", unit="m^2", offset="1e-6 m^2", amplitude="-7e-7 m^2", t_step=0.5))
+    s.connect("a.P", "o.A")
+    s.connect("o.B", "b.P")
+    s.connect("A.y", "o.A_in")
+    r = s.simulate(t_eval=[0.25, 0.75])
+    root = np.sqrt(2 * 100e5 / 890.0)
+    assert list(r["o.Q"]) == pytest.approx([0.67 * 1e-6 * root, 0.67 * 3e-7 * root], rel=1e-6)

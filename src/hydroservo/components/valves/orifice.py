@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Output, Param, Port, register
+from hydroservo.components.base import Component, Option, Output, Param, Port, register
 from hydroservo.components.valves.ports import FLUID_PARAMETERS, TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
 from hydroservo.laws.orifice import DISCHARGE_COEFFICIENT, laminar_flow, orifice_flow, transition_pressure
 
@@ -28,14 +28,21 @@ class Orifice(Component):
     with the bore as hydraulic diameter, reaches ``lambda_crit``
     (:func:`hydroservo.laws.orifice.transition_pressure`). Below it the flow is
     proportional to the drop, as laminar flow is.
+
+    Option ``area``: ``bore`` (default), :math:`A = \pi d^2/4`; ``input``,
+    :math:`A = |A_{in}|`, the input ``A_in`` (a signal that opens and closes
+    the orifice, as Hopsan's HydraulicTurbulentOrifice takes its area
+    ([Hopsan2026] Hydraulic/Restrictors/HydraulicTurbulentOrifice.hpp); ``d``
+    then sets only the laminar transition).
     """
 
+    OPTIONS = {"area": Option("bore", ("bore", "input"), "the bore's area, or the input A_in's")}
     PARAMETERS = {
         "d": Param(1e-3, "m", "bore diameter", min=0.0, min_inclusive=False),
         "Cd": Param(DISCHARGE_COEFFICIENT, "", "discharge coefficient", min=0.0, max=1.0, min_inclusive=False),
         **FLUID_PARAMETERS,
     }
-    INPUTS = dict(TWO_PORT_PRESSURES)
+    INPUTS = {**TWO_PORT_PRESSURES, "A_in": Port("m^2", "the orifice's area (option area = input)", default=0.0)}
     OUTPUTS = {"Q": Output("m^3/s", "flow from A to B")}
     HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
 
@@ -43,7 +50,7 @@ class Orifice(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         p_tr = transition_pressure(p["d"], p["rho"], p["nu"], p["lambda_crit"])
-        area = np.pi * p["d"] ** 2 / 4.0
+        area = bk.fabs(u["A_in"]) if self.option("area") == "input" else np.pi * p["d"] ** 2 / 4.0
         return {"Q": orifice_flow(area, u["pA"] - u["pB"], p["rho"], p["Cd"], p_tr)}
 
 

@@ -6,7 +6,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Hydraulic, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, State, register
 from hydroservo.components.valves.ports import TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
 from hydroservo.laws.orifice import turbulent_flow
 from hydroservo.laws.pressure_valve import limited_lag_rate, opening_fraction, pressure_valve_coefficient
@@ -92,8 +92,18 @@ class ReliefValve(_PressureControl):
         "p_crack": Param(200e5, "Pa", "cracking pressure (setting)"),
         **SPOOL_PARAMETERS,
     }
+    OUTPUTS = {**_PressureControl.OUTPUTS, "p_crack": Output("Pa", "cracking pressure (setting)")}
+    #: the setting bounds the line it protects: a circuit's pressure ceiling (plausibility), as a pump's rating is;
+    #: a line fed by a flow source and protected by the valve is not flagged at the valve's override
+    LIMITS = {"p_crack": Limit("source")}
+
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         return u["pA"] - p["p_crack"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {**super().output_equations(t, x, u, p), "p_crack": p["p_crack"]}
 
 
 @register
