@@ -155,7 +155,8 @@ def describe(metric: Metric) -> str:
 
 def default_metrics(system: Any, t_end: float) -> list[Metric]:
     """The system's declared metrics (model file ``[model] metrics``), else the final value and peak of
-    the signals of its first plot panels and the step metrics of the first."""
+    the signals of its first plot panels and the step metrics of its response (a load's position if one is
+    plotted, else the first signal that is not a command), from the time of the command's step if it has one."""
     model = system.build()
     units = {**model.units}
     if system.metrics:
@@ -163,7 +164,34 @@ def default_metrics(system: Any, t_end: float) -> list[Metric]:
     names = [s for panel in system.default_panels() for s in panel][:4]
     out = [parse_metric(f"final({n})", units) for n in names]
     out += [parse_metric(f"peak({n})", units) for n in names[1:]]
-    if names:
-        out += [parse_metric(f"{k}({names[0]})", units) for k in ("rise_time", "settling_time", "overshoot")]
+    # the step metrics of the response: a load's position if one is plotted, else the first signal that is not a
+    # command (a source's output has no rise time of its own)
+    plotted = [s for panel in system.default_panels() for s in panel]
+    loads = [n for n in plotted if _is_load_position(system, n)]
+    responses = loads or [n for n in names if not _is_command(system, n)] or names
+    if responses:
+        # from the command's step, where the model has one (position-servo's comes at 1 s)
+        steps = [c.values["t_step"] for c in system.components.values() if type(c).__name__ == "Step"]
+        at = f", {steps[0]:g} s" if steps and 0.0 < steps[0] < t_end else ""
+        out += [parse_metric(f"{k}({responses[0]}{at})", units, t_end)
+                for k in ("rise_time", "settling_time", "overshoot")]
     return out
+
+
+def _is_load_position(system: Any, name: str) -> bool:
+    """Whether signal ``name`` is a mass's position (``load.x``), or an alias of it alone (``y = -load.x``)."""
+    alias = system.aliases.get(name)
+    refs = re.findall(r"[A-Za-z_]\w*\.\w+", alias.expr) if alias is not None else [name]
+    return len(refs) == 1 and refs[0].endswith(".x") and type(system.components.get(refs[0][:-2])).__name__ == "Mass"
+
+
+def _is_command(system: Any, name: str, depth: int = 0) -> bool:
+    """Whether signal ``name`` is a command: the output of a source (a block without states or inputs: a step,
+    a sine, a table), or an alias of such outputs alone."""
+    alias = system.aliases.get(name)
+    if alias is not None:
+        refs = re.findall(r"[A-Za-z_]\w*\.\w+", alias.expr)
+        return bool(refs) and depth < 10 and all(_is_command(system, r, depth + 1) for r in refs)
+    component = system.components.get(name.partition(".")[0])
+    return component is not None and not component.STATES and not component.INPUTS
 

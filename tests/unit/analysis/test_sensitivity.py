@@ -182,3 +182,16 @@ def test_a_run_the_solver_gives_up_on_is_tried_again_tighter() -> None:
     assert list(runs.table["status"]) == ["ok", "failed"]
     assert runs.table.loc[0, "reason"].startswith("solved at rtol 1e-07 after:")
     assert np.isfinite(runs.values()[0, 0])
+
+
+def test_default_step_metrics_measure_the_loads_position_from_the_commands_step() -> None:
+    # the first plotted signal of flight-simulator is its command (vi, a step): its rise time is NaN, so the
+    # default step metrics took it before; they measure the load's position, and from the step's time
+    import hydroservo as hs
+    from hydroservo.analysis.metrics import default_metrics
+
+    fs = hs.load_model("flight-simulator")
+    names = [m.name for m in default_metrics(fs, fs.t_end)]
+    assert "rise_time(y)" in names and not any(n.endswith("(vi)") and "time" in n for n in names)
+    ps = hs.load_model("position-servo")
+    assert "overshoot(load.x,1s)" in [m.name for m in default_metrics(ps, ps.t_end)]
