@@ -58,7 +58,7 @@ def test_sensitivity_metrics_in_the_models_units_in_table_csv_and_json(tmp_path,
     x_in = float(lines["in"][1].split(",")[2])
     x_m = float(lines["si"][1].split(",")[2])
     assert x_in == pytest.approx(x_m / 0.0254, rel=1e-9)
-    code, text, _ = cli(*args, "--json", "--units", "x=mm")
+    code, text, _ = cli(*args, "--json", "--units", "x=mm", "--out", str(tmp_path / "mm"))
     row = json.loads(text)["table"][0]
     assert row["final(xv) [mm]"] == pytest.approx(1e3 * x_m, rel=1e-9)
 
@@ -71,7 +71,7 @@ def test_ladder_displacements_in_the_unit_asked_for(tmp_path, cli) -> None:
     assert shown is not None
     header, first = (tmp_path / "a" / "ladder.csv").read_text().splitlines()[:2]
     assert "displacement 36.8 % [in]" in header
-    code, text, _ = cli(*args, "--json")
+    code, text, _ = cli(*args, "--json", "--out", str(tmp_path / "b"))
     mm = json.loads(text)["models"][0]["displacement 36.8 % [mm]"]
     assert float(first.split(",")[1]) == pytest.approx(mm / 25.4, rel=1e-9)
 
