@@ -538,6 +538,21 @@ def _turbulent_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
+def _check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValve.hpp: q = K_s √(p_1 - p_2) while p_1 > p_2, none
+    otherwise: a CheckValve with option opening = "seat" at p_crack 0 (no spring), its bore from K_s = C_d A √(2/ρ)
+    (C_d 0.67, ρ 870 kg/m³: only their product with A matters); turbulent down to some 50 Pa (lambda_crit 10)."""
+    from hydroservo.components import CheckValve
+
+    cd, rho = 0.67, 870.0
+    area = abs(par("K_s", 5e-7)) / (cd * math.sqrt(2.0 / rho))
+    comp = CheckValve(
+        n, opening="seat", p_crack=0.0, d=math.sqrt(4.0 * area / math.pi), Cd=cd, rho=rho, lambda_crit=10.0
+    )
+    # Hopsan's output x (1 open, 0 closed, for its animation) is the CheckValve's s: not aliased
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -897,6 +912,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicFlowSourceQ": _flow_source,
     "HydraulicLaminarOrifice": _laminar_orifice,
     "HydraulicTurbulentOrifice": _turbulent_orifice,
+    "HydraulicCheckValve": _check_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,

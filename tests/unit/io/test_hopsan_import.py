@@ -491,3 +491,31 @@ def test_valves_hopsan_has_that_hydroservo_cannot_follow_are_refused(tmp_path: P
     text = str(err.value)
     assert "V (Hydraulic22Valve): delta_h = 0.7 < 1" in text
     assert "W (Hydraulic42Valve2): the edges' area fractions f_pa, f_pb, f_at, f_bt differ (1, 0.5, 1, 1)" in text
+
+
+def test_hopsans_check_valve_passes_k_s_root_dp_one_way(tmp_path: Path) -> None:
+    """[Hopsan2026] Restrictors/HydraulicCheckValve.hpp: q = K_s √(p_1 - p_2) while p_1 > p_2, none the other way
+    (P2's pressure swept by a ramp from 5 bar below P1's to 5 bar above)."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    v = _value
+    components = [
+        ("HydraulicCheckValve", "CV", {"K_s#Value": v("2e-8")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("0", "Pa")}),
+        ("SignalRamp", "Ramp", {"y_0#Value": v("5e5"), "y_A#Value": v("1e6"), "t_start#Value": v("0"),
+                                "t_end#Value": v("1")}),
+    ]
+    connections = [("CV.P1", "S1.P1"), ("CV.P2", "S2.P1"), ("Ramp.out", "S2.p")]
+    path = tmp_path / "cv.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    comp = imp.system["CV"]
+    assert comp.option("opening") == "seat"
+    t = np.array([0.0, 0.25, 0.49, 0.75, 1.0])
+    r = imp.system.simulate(t_eval=t)
+    dp = 1e6 - (5e5 + 1e6 * t)
+    p_tr = transition_pressure(float(comp.values["d"]), 870.0, 32e-6, 10.0)
+    expected = np.where(dp > 0, 2e-8 * dp / (dp * dp + p_tr * p_tr) ** 0.25, 0.0)
+    np.testing.assert_allclose(r["CV.P2.Flow"], expected, rtol=1e-9, atol=1e-15)
+    assert p_tr < 100.0  # Pa: turbulent down to some 50 Pa (Hopsan: to the null)
