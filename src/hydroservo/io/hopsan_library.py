@@ -412,7 +412,7 @@ def _valve22(command: str, ports: tuple[str, str]) -> Builder:
     """Hopsan's 2/2 valves ([Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic22Valve.hpp, ports PP and PA,
     the desired position ``in`` limited to [0, x_vmax]; Hydraulic/Valves/DirectionalValves/
     Hydraulic22DirectionalValve.hpp, ports P1 and P2, on/off): one edge that opens as the spool x_v in
-    [0, x_vmax], a TwoWayValve with x_0 = 0."""
+    [0, x_vmax], a TwoWayValve with x_AB = 0."""
 
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         from hydroservo.components import TwoWayValve
@@ -421,7 +421,7 @@ def _valve22(command: str, ports: tuple[str, str]) -> Builder:
         x_vmax = par("x_vmax", 0.01)
         spool = _spool(n, par, x_vmax, command, par("xv", 0.0))
         valve = TwoWayValve(
-            n, c_v=_edge_coefficient(par, par("f", 1.0), rho), x_0=0.0, rho=rho, D_h="1 mm", lambda_crit=10.0
+            n, c_v=_edge_coefficient(par, par("f", 1.0), rho), x_AB=0.0, rho=rho, D_h="1 mm", lambda_crit=10.0
         )
         return Mapped(
             [*spool.components, valve],

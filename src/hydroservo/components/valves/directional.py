@@ -72,10 +72,10 @@ class ThreeWayValve(Component):
 class TwoWayValve(Component):
     r"""Two-way spool valve: one sharp edge from A to B that opens as the spool travels past its overlap.
 
-    .. math:: Q = c_v f(x_v - x_0)\,g(p_A - p_B)
+    .. math:: Q = c_v f(x_v - x_{AB})\,g(p_A - p_B)
 
     (:func:`hydroservo.laws.four_way.edge_flow`), closed for
-    :math:`x_v \le x_0`; flow in either direction once open. The turbulent
+    :math:`x_v \le x_{AB}`; flow in either direction once open. The turbulent
     law is regularised as in :class:`ThreeWayValve`. Hopsan's Hydraulic22Valve
     and Hydraulic22DirectionalValve ([Hopsan2026]) import as this valve
     (docs/hopsan.md).
@@ -83,7 +83,7 @@ class TwoWayValve(Component):
 
     PARAMETERS = {
         "c_v": Param(3.56e-4, "m^2/s/Pa^0.5", "flow coefficient of the edge, Efe2014 eq. 3.9", min=0.0),
-        "x_0": Param(0.0, "m", "overlap: the spool position at which the edge opens (negative: underlap)"),
+        "x_AB": Param(0.0, "m", "overlap of edge A-B: the spool position at which it opens (negative: underlap)"),
         **FLUID_PARAMETERS,
         "D_h": _D_H,
     }
@@ -95,4 +95,4 @@ class TwoWayValve(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         p_tr = transition_pressure(p["D_h"], p["rho"], p["nu"], p["lambda_crit"])
-        return {"Q": edge_flow(p["c_v"], u["xv"] - p["x_0"], u["pA"] - u["pB"], p_tr)}
+        return {"Q": edge_flow(p["c_v"], u["xv"] - p["x_AB"], u["pA"] - u["pB"], p_tr)}

@@ -39,7 +39,7 @@ def test_three_way_valve_edges_laps_and_coefficients() -> None:
 
 def test_two_way_valve_opens_past_its_overlap_in_a_circuit() -> None:
     s = hs.System("v22")
-    s.add(c.TwoWayValve("valve", c_v=5e-4, x_0=1e-4))
+    s.add(c.TwoWayValve("valve", c_v=5e-4, x_AB=1e-4))
     s.add(c.Step("xv", unit="m", offset=5e-5, amplitude=3e-4, t_step=0.05))
     s.add(c.ConstantPressure("sup", p=100e5))
     s.add(c.Tank("tank"))
