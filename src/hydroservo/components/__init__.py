@@ -12,7 +12,7 @@ module                 components
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
 :mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
-:mod:`.valves`         FourWayValve, PseudoSectionValve, ServoSolenoidValve,
+:mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
@@ -97,7 +97,9 @@ from hydroservo.components.valves import (
     ReliefValve,
     ServoSolenoidValve,
     StagedSlotValve,
+    ThreeWayValve,
     TwoStageServovalve,
+    TwoWayValve,
 )
 from hydroservo.components.volume import Volume
 
@@ -140,6 +142,8 @@ __all__ = [
     "VariablePump",
     "Motor",
     "FourWayValve",
+    "ThreeWayValve",
+    "TwoWayValve",
     "PseudoSectionValve",
     "ServoSolenoidValve",
     "StagedSlotValve",

@@ -223,21 +223,88 @@ def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"})
 
 
-def _valve43(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    from hydroservo.components import FourWayValve, Gain, SpoolSecondOrder
+def _edge_coefficient(par: _Params, f: float, rho: float, d: str = "d", c_q: str = "C_q") -> float:
+    """Hopsan's flow coefficient of a spool edge, C_q f π d √(2/ρ) [m^2/s/Pa^0.5] (Kc = c_v times the opening)."""
+    return par(c_q, 0.67) * f * math.pi * par(d, 0.01) * math.sqrt(2.0 / rho)
 
-    problems = par.problems
-    f = {edge: par(f"f_{edge}", 1.0) for edge in ("pa", "pb", "at", "bt")}
-    if len(set(f.values())) > 1:
-        problems.append(
-            f"{par.where}: the edges' area fractions f_pa, f_pb, f_at, f_bt differ ({', '.join(f'{v:g}' for v in f.values())}); "
+
+def _equal_fractions(par: _Params, names: tuple[str, ...]) -> float:
+    """The edges' common fraction of the circumference; unequal ones are refused (FourWayValve has one c_v)."""
+    f = [par(name, 1.0) for name in names]
+    if len(set(f)) > 1:
+        par.problems.append(
+            f"{par.where}: the edges' area fractions {', '.join(names)} differ ({', '.join(f'{v:g}' for v in f)}); "
             "FourWayValve has one flow coefficient for all four edges"
         )
-    rho = par("rho", 870.0)
-    c_v = par("C_q", 0.67) * f["pa"] * math.pi * par("d", 0.01) * math.sqrt(2.0 / rho)
-    x_vmax = par("x_vmax", 0.01)
+    return f[0]
+
+
+@dataclass
+class _Spool:
+    """A Hopsan valve's spool as hydroservo blocks: what drives SpoolSecondOrder ``{n}_spool``, and its outputs."""
+
+    components: list[cbase.Component]
+    inputs: dict[str, str]
+    internal: list[tuple[str, str]]
+    initial: dict[str, float]
+
+
+def _spool(n: str, par: _Params, x_vmax: float, command: str, start: float = 0.0) -> _Spool:
+    """Hopsan's spool of the flow-control and directional valves ([Hopsan2026] Hydraulic/Valves/FlowControlValves/
+    Hydraulic43Valve.hpp and its siblings): a second-order filter 1/(s²/ω_h² + 2δ_h s/ω_h + 1) of the desired
+    position ``in`` [m], its output limited to the stroke; the continuous law is SpoolSecondOrder (ω_n = omega_h,
+    ζ = delta_h) on the fraction of the stroke x_v/x_vmax.
+
+    ``command``: "symmetric", ``in`` limited to ±x_vmax (SpoolSecondOrder saturates its command to ±1);
+    "one-sided", ``in`` limited to [0, x_vmax] (a Saturation in front); "on-off", the spool driven to x_vmax
+    while ``in`` > 0.5 and to 0 otherwise (Hopsan's doubleToBool; a Selector between 0 and a Constant 1). The
+    one-sided and on-off spools are limited to [0, x_vmax] in Hopsan, SpoolSecondOrder to ±x_vmax: the same
+    spool while it cannot overshoot its command, that is for delta_h >= 1 (its impulse response is then never
+    negative, so a command within [0, 1] keeps it within [0, 1]); a smaller delta_h is refused.
+    """
+    from hydroservo.components import Constant, Gain, Saturation, Selector, SpoolSecondOrder
+
+    omega, delta = par("omega_h", 100.0), par("delta_h", 1.0)
+    if command != "symmetric" and delta < 1.0:
+        par.problems.append(
+            f"{par.where}: delta_h = {delta:g} < 1: Hopsan limits this spool to [0, x_vmax], SpoolSecondOrder to "
+            "±x_vmax, and the two differ once the spool overshoots; set delta_h >= 1"
+        )
+    spool = SpoolSecondOrder(f"{n}_spool", omega_n=omega, zeta=delta, xv_max=x_vmax)
+    low = -1.0 if command == "symmetric" else 0.0
+    initial = {f"{n}_spool.s": min(max(start / x_vmax, low), 1.0)}
+    if command == "on-off":
+        # u1 (closed) is left at 0; route == 0.5 is closed, as in Hopsan (in > 0.5 opens)
+        sel = Selector(f"{n}_on", limit12=math.nextafter(0.5, math.inf), limit23=1e300, limit34=1e300)
+        one = Constant(f"{n}_open", value=1.0)
+        return _Spool(
+            [sel, one, spool], {"in": f"{n}_on.route"}, [(f"{n}_open.y", f"{n}_on.u2"), (f"{n}_on.y", f"{n}_spool.u")],
+            initial,
+        )
     gain = Gain(f"{n}_stroke", input_unit="m", K=f"{1.0 / x_vmax!r} 1/m")
-    spool = SpoolSecondOrder(f"{n}_spool", omega_n=par("omega_h", 100.0), zeta=par("delta_h", 1.0), xv_max=x_vmax)
+    if command == "symmetric":
+        return _Spool([gain, spool], {"in": f"{n}_stroke.u"}, [(f"{n}_stroke.y", f"{n}_spool.u")], initial)
+    limit = Saturation(f"{n}_in", unit="m", lower=0.0, upper=x_vmax)
+    return _Spool(
+        [limit, gain, spool], {"in": f"{n}_in.u"},
+        [(f"{n}_in.y", f"{n}_stroke.u"), (f"{n}_stroke.y", f"{n}_spool.u")], initial,
+    )
+
+
+_NOTE = {
+    "symmetric": "a Gain (reference in m to a fraction of the stroke), a SpoolSecondOrder and a {valve}",
+    "one-sided": "a Saturation (reference limited to [0, x_vmax]), a Gain, a SpoolSecondOrder and a {valve}",
+    "on-off": "a Selector (open while in > 0.5), a SpoolSecondOrder and a {valve}",
+}
+
+
+def _valve43(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import FourWayValve
+
+    rho = par("rho", 870.0)
+    c_v = _edge_coefficient(par, _equal_fractions(par, ("f_pa", "f_pb", "f_at", "f_bt")), rho)
+    x_vmax = par("x_vmax", 0.01)
+    spool = _spool(n, par, x_vmax, "symmetric", par("xv", 0.0))  # Hopsan's start value of the spool's position
     valve = FourWayValve(
         n,
         c_v=c_v,
@@ -250,13 +317,168 @@ def _valve43(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         lambda_crit=10.0,  # turbulent down to about 40 Pa: Hopsan's orifices are turbulent to the null
     )
     return Mapped(
-        [gain, spool, valve],
+        [*spool.components, valve],
         power={"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.A", "PB": f"{n}.B"},
-        inputs={"in": f"{n}_stroke.u"},
+        inputs=spool.inputs,
         values={"xv": Var(1.0, f"{n}_spool.xv")},
-        initial={f"{n}_spool.s": par("xv", 0.0) / x_vmax},  # Hopsan's start value of the spool's position
-        internal=[(f"{n}_stroke.y", f"{n}_spool.u"), (f"{n}_spool.xv", f"{n}.xv"), (f"{n}_spool.vv", f"{n}.vv")],
-        note="a Gain (reference in m to a fraction of the stroke), a SpoolSecondOrder and a FourWayValve",
+        initial=spool.initial,
+        internal=[*spool.internal, (f"{n}_spool.xv", f"{n}.xv"), (f"{n}_spool.vv", f"{n}.vv")],
+        note=_NOTE["symmetric"].format(valve="FourWayValve"),
+    )
+
+
+def _valve42(command: str, all_edges: bool) -> Builder:
+    """Hopsan's 4/2 valves ([Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic42Valve.hpp,
+    Hydraulic42Valve2.hpp, Hydraulic/Valves/DirectionalValves/Hydraulic42DirectionalValve.hpp): a spool in
+    [0, x_vmax] whose edges P-A and B-T open as x_v, and (Hydraulic42Valve2, the directional valve) P-B and A-T as
+    x_vmax - x_v. A FourWayValve on that spool with laps x_PA = x_BT = 0 and x_PB = x_AT = -x_vmax (FourWayValve
+    opens P-B and A-T as -x_v - lap), or, for Hydraulic42Valve, whose P-B and A-T never open, x_PB = x_AT = +x_vmax
+    (covered over the whole stroke)."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import FourWayValve
+
+        rho = par("rho", 870.0)
+        fractions = ("f_pa", "f_pb", "f_at", "f_bt") if all_edges else ("f_pa", "f_bt")
+        c_v = _edge_coefficient(par, _equal_fractions(par, fractions), rho)
+        x_vmax = par("x_vmax", 0.01)
+        # Hopsan's filter starts at its output's start value (the directional valve: at its input's)
+        start = par("in", 0.0) if command == "on-off" else par("xv", 0.0)
+        spool = _spool(n, par, x_vmax, command, start)
+        other = -x_vmax if all_edges else x_vmax
+        valve = FourWayValve(
+            n, c_v=c_v, x_PA=0.0, x_BT=0.0, x_PB=other, x_AT=other, rho=rho, D_h="1 mm", lambda_crit=10.0
+        )
+        return Mapped(
+            [*spool.components, valve],
+            power={"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.A", "PB": f"{n}.B"},
+            inputs=spool.inputs,
+            values={"xv": Var(1.0, f"{n}_spool.xv")},
+            initial=spool.initial,
+            internal=[*spool.internal, (f"{n}_spool.xv", f"{n}.xv"), (f"{n}_spool.vv", f"{n}.vv")],
+            note=_NOTE[command].format(valve="FourWayValve"),
+        )
+
+    return build
+
+
+def _valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic33Valve.hpp: P-A opens as x_v - x_pa, A-T as
+    -x_v - x_at, each edge with its fraction of the circumference; the spool as the 4/3 valve's."""
+    from hydroservo.components import ThreeWayValve
+
+    rho = par("rho", 870.0)
+    x_vmax = par("x_vmax", 0.01)
+    spool = _spool(n, par, x_vmax, "symmetric", par("xv", 0.0))
+    valve = ThreeWayValve(
+        n,
+        c_PA=_edge_coefficient(par, par("f_pa", 1.0), rho),
+        c_AT=_edge_coefficient(par, par("f_at", 1.0), rho),
+        x_PA=par("x_pa", -1e-6),
+        x_AT=par("x_at", -1e-6),
+        rho=rho,
+        D_h="1 mm",
+        lambda_crit=10.0,
+    )
+    return Mapped(
+        [*spool.components, valve],
+        power={"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.A"},
+        inputs=spool.inputs,
+        values={"xv": Var(1.0, f"{n}_spool.xv")},
+        initial=spool.initial,
+        internal=[*spool.internal, (f"{n}_spool.xv", f"{n}.xv")],
+        note=_NOTE["symmetric"].format(valve="ThreeWayValve"),
+    )
+
+
+def _valve32_directional(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/DirectionalValves/Hydraulic32DirectionalValve.hpp: an on/off spool in
+    [0, x_vmax]; P-A opens as x_v, A-T as x_vmax - x_v: a ThreeWayValve with x_PA = 0 and x_AT = -x_vmax."""
+    from hydroservo.components import ThreeWayValve
+
+    rho = par("rho", 870.0)
+    x_vmax = par("x_vmax", 0.01)
+    c_v = _edge_coefficient(par, par("f", 1.0), rho)
+    spool = _spool(n, par, x_vmax, "on-off", par("xv", 0.0))
+    valve = ThreeWayValve(n, c_PA=c_v, c_AT=c_v, x_PA=0.0, x_AT=-x_vmax, rho=rho, D_h="1 mm", lambda_crit=10.0)
+    return Mapped(
+        [*spool.components, valve],
+        power={"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.A"},
+        inputs=spool.inputs,
+        values={"xv": Var(1.0, f"{n}_spool.xv")},
+        initial=spool.initial,
+        internal=[*spool.internal, (f"{n}_spool.xv", f"{n}.xv")],
+        note=_NOTE["on-off"].format(valve="ThreeWayValve"),
+    )
+
+
+def _valve22(command: str, ports: tuple[str, str]) -> Builder:
+    """Hopsan's 2/2 valves ([Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic22Valve.hpp, ports PP and PA,
+    the desired position ``in`` limited to [0, x_vmax]; Hydraulic/Valves/DirectionalValves/
+    Hydraulic22DirectionalValve.hpp, ports P1 and P2, on/off): one edge that opens as the spool x_v in
+    [0, x_vmax], a TwoWayValve with x_AB = 0."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import TwoWayValve
+
+        rho = par("rho", 870.0)
+        x_vmax = par("x_vmax", 0.01)
+        spool = _spool(n, par, x_vmax, command, par("xv", 0.0))
+        valve = TwoWayValve(
+            n, c_v=_edge_coefficient(par, par("f", 1.0), rho), x_AB=0.0, rho=rho, D_h="1 mm", lambda_crit=10.0
+        )
+        return Mapped(
+            [*spool.components, valve],
+            power={ports[0]: f"{n}.A", ports[1]: f"{n}.B"},
+            inputs=spool.inputs,
+            values={"xv": Var(1.0, f"{n}_spool.xv")},
+            initial=spool.initial,
+            internal=[*spool.internal, (f"{n}_spool.xv", f"{n}.xv")],
+            note=_NOTE[command].format(valve="TwoWayValve"),
+        )
+
+    return build
+
+
+def _valve33_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicValve33.hpp: a 3/3 valve whose spool position xv [m] is its input
+    (no spool dynamics). Its edges' conductances are Ks π Fr Sd limit(Xap0 ± xv, 0, X0 + Xvmax) with
+    Ks = Cq √(2/ρ), and the flows Ks·signedSquareL(Δp, plam) = Δp/(Δp² + plam²)^(1/4) (Hopsan's equation system,
+    solved by Newton iterations each step, stands for these algebraic flows): a ThreeWayValve with the overlaps
+    -Xap0 (Xap0 is an underlap), the transition pressure plam (D_h chosen so that p_tr = plam) and xv limited to
+    ±Xvmax (a Saturation: the upper limits of the openings). Hopsan's A-T edge opens as Xap0 - xv, not Xat0 - xv
+    (Xat0 enters only its upper limit): a valve with Xat0 different from Xap0 is refused."""
+    from hydroservo.components import Saturation, ThreeWayValve
+
+    rho = par("rho", 870.0)
+    x0, x_vmax, plam = par("Xap0", 0.0), par("Xvmax", 0.01), par("plam", 1e4)
+    if par("Xat0", 0.0) != x0:
+        par.problems.append(
+            f"{par.where}: Xat0 = {par('Xat0', 0.0):g} m differs from Xap0 = {x0:g} m: Hopsan's A-T edge opens as "
+            "Xap0 - xv with its limit at Xat0 + Xvmax, which a ThreeWayValve of one underlap per edge does not have"
+        )
+    if plam <= 0.0:
+        par.problems.append(f"{par.where}: plam = {plam:g} Pa; a turbulence onset pressure above 0 is supported")
+        plam = 1e4
+    nu, lambda_crit = 32e-6, 1000.0
+    valve = ThreeWayValve(
+        n,
+        c_PA=_edge_coefficient(par, par("Frap", 1.0), rho, d="Sd", c_q="Cq"),
+        c_AT=_edge_coefficient(par, par("Frat", 1.0), rho, d="Sd", c_q="Cq"),
+        x_PA=-x0,
+        x_AT=-x0,
+        rho=rho,
+        nu=nu,
+        lambda_crit=lambda_crit,
+        D_h=lambda_crit * nu * math.sqrt(rho / (2.0 * plam)),  # transition_pressure(D_h) = plam
+    )
+    limit = Saturation(f"{n}_xv", unit="m", lower=-x_vmax, upper=x_vmax)
+    return Mapped(
+        [limit, valve],
+        power={"Pp": f"{n}.P", "Pt": f"{n}.T", "Pa": f"{n}.A"},
+        inputs={"xv": f"{n}_xv.u"},
+        internal=[(f"{n}_xv.y", f"{n}.xv")],
+        note="a Saturation (xv limited to ±Xvmax) and a ThreeWayValve",
     )
 
 
@@ -321,6 +543,21 @@ def _turbulent_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         area="input" if driven else "bore",
     )
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"}, inputs={"A": f"{n}.A_in"} if driven else {})
+
+
+def _check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValve.hpp: q = K_s √(p_1 - p_2) while p_1 > p_2, none
+    otherwise: a CheckValve with option opening = "seat" at p_crack 0 (no spring), its bore from K_s = C_d A √(2/ρ)
+    (C_d 0.67, ρ 870 kg/m³: only their product with A matters); turbulent down to some 50 Pa (lambda_crit 10)."""
+    from hydroservo.components import CheckValve
+
+    cd, rho = 0.67, 870.0
+    area = abs(par("K_s", 5e-7)) / (cd * math.sqrt(2.0 / rho))
+    comp = CheckValve(
+        n, opening="seat", p_crack=0.0, d=math.sqrt(4.0 * area / math.pi), Cd=cd, rho=rho, lambda_crit=10.0
+    )
+    # Hopsan's output x (1 open, 0 closed, for its animation) is the CheckValve's s: not aliased
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -695,6 +932,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicFlowSourceQ": _flow_source,
     "HydraulicLaminarOrifice": _laminar_orifice,
     "HydraulicTurbulentOrifice": _turbulent_orifice,
+    "HydraulicCheckValve": _check_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,
@@ -702,6 +940,14 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureReliefValve": _relief,
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
+    "Hydraulic42Valve": _valve42("one-sided", all_edges=False),
+    "Hydraulic42Valve2": _valve42("one-sided", all_edges=True),
+    "Hydraulic42DirectionalValve": _valve42("on-off", all_edges=True),
+    "Hydraulic33Valve": _valve33,
+    "HydraulicValve33": _valve33_special,
+    "Hydraulic32DirectionalValve": _valve32_directional,
+    "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),
+    "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
     "HydraulicPressureSensor": _pressure_sensor,
     "HydraulicFlowSensor": _flow_sensor,

@@ -5,7 +5,9 @@ Wheatstone bridge of [MareAttarND] Fig. 1: supply S to port A (edge PA, the
 paper's orifice a), A to tank T (AT, b), S to B (PB, c), B to T (BT, d).
 :func:`bridge_flows` turns the four edge flows into the port flows;
 :func:`four_way_valve_flows` is the bridge with sharp-edged spool edges and
-per-edge laps ([Efe2014] eqs. 3.18-3.23); the pseudo-section valve
+per-edge laps ([Efe2014] eqs. 3.18-3.23), each edge's flow :func:`edge_flow`; the
+three-way valve (:func:`three_way_valve_flows`: supply, tank and one use port)
+is the A half of the bridge, with the same edge law; the pseudo-section valve
 (:func:`hydroservo.laws.pseudo_section.valve_flows`) and the staged-slot valve
 (:func:`hydroservo.laws.staged_slot.staged_slot_valve_flows`) use the same assembly.
 
@@ -20,7 +22,7 @@ from typing import Any
 from hydroservo import backend as bk
 from hydroservo.laws.orifice import opening, turbulent_flow
 
-__all__ = ["EDGES", "bridge_flows", "four_way_valve_flows", "valve_coefficients"]
+__all__ = ["EDGES", "bridge_flows", "edge_flow", "four_way_valve_flows", "three_way_valve_flows", "valve_coefficients"]
 
 #: The four metering edges: name -> (upstream node, downstream node, +1 if the edge opens with positive spool travel).
 #: Nodes: S supply, T tank (the paper's return R), A and B the use ports (the paper's 1 and 2).
@@ -59,6 +61,47 @@ def bridge_flows(q_PA: Any, q_AT: Any, q_PB: Any, q_BT: Any) -> tuple[Any, Any, 
     (2.0, -1.5, 3.5, 3.0)
     """
     return q_PA - q_AT, q_PB - q_BT, q_PA + q_PB, q_AT + q_BT
+
+
+def edge_flow(c_v: Any, x: Any, dp: Any, p_tr: Any = 0.0, G_leak: Any = 0.0) -> Any:
+    r"""Flow through one sharp metering edge of a spool valve, :math:`q = c_v f(x)\,g(\Delta p) + G_{leak}\,\Delta p`.
+
+    :math:`f` is the edge's opening (:func:`~hydroservo.laws.orifice.opening`, 0 while the edge is covered) and
+    :math:`g(\Delta p) = \operatorname{sign}(\Delta p)\sqrt{|\Delta p|}` regularised below ``p_tr``
+    (:func:`~hydroservo.laws.orifice.turbulent_flow`). Every spool valve of hydroservo with sharp edges (four-,
+    three- and two-way) is made of it.
+
+    Parameters
+    ----------
+    c_v : array_like
+        Flow coefficient of the edge [m^2/s/Pa^0.5]: :math:`C_d\,w\sqrt{2/\rho}` for an area gradient ``w``
+        (:math:`\pi d` for a full annulus of spool diameter d).
+    x : array_like
+        Edge position [m]: the spool position less the edge's overlap, positive when open.
+    dp : array_like
+        Pressure drop across the edge, upstream minus downstream [Pa].
+    p_tr : array_like
+        Transition pressure of the regularisation [Pa]; 0 for the law as published (NumPy input only).
+    G_leak : array_like
+        Laminar clearance leakage conductance of the edge [m^3/s/Pa].
+
+    Returns
+    -------
+    array_like
+        Flow from upstream to downstream [m^3/s].
+
+    References
+    ----------
+    [Efe2014] eqs. (3.18), (3.21).
+
+    Examples
+    --------
+    An edge opened 0.1 mm under 100 bar, :math:`c_v` = 1e-3 m^2/s/Pa^0.5 (3.16e-4 m^3/s):
+
+    >>> round(float(edge_flow(1e-3, 1e-4, 100e5)), 7), float(edge_flow(1e-3, -1e-4, 100e5))
+    (0.0003162, 0.0)
+    """
+    return turbulent_flow(c_v * opening(x), dp, p_tr) + G_leak * dp
 
 
 def four_way_valve_flows(
@@ -131,11 +174,67 @@ def four_way_valve_flows(
     (17.41, -11.74)
     """
     cvk = c_v * K
-    q_PA = turbulent_flow(cvk * opening(x_v - x_PA), p_S - p_A, p_tr) + G_leak * (p_S - p_A)
-    q_AT = turbulent_flow(cvk * opening(-x_v - x_AT), p_A - p_T, p_tr) + G_leak * (p_A - p_T)
-    q_PB = turbulent_flow(cvk * opening(-x_v - x_PB), p_S - p_B, p_tr) + G_leak * (p_S - p_B)
-    q_BT = turbulent_flow(cvk * opening(x_v - x_BT), p_B - p_T, p_tr) + G_leak * (p_B - p_T)
+    q_PA = edge_flow(cvk, x_v - x_PA, p_S - p_A, p_tr, G_leak)
+    q_AT = edge_flow(cvk, -x_v - x_AT, p_A - p_T, p_tr, G_leak)
+    q_PB = edge_flow(cvk, -x_v - x_PB, p_S - p_B, p_tr, G_leak)
+    q_BT = edge_flow(cvk, x_v - x_BT, p_B - p_T, p_tr, G_leak)
     return bridge_flows(q_PA, q_AT, q_PB, q_BT)
+
+
+def three_way_valve_flows(
+    x_v: Any,
+    p_S: Any,
+    p_T: Any,
+    p_A: Any,
+    c_PA: Any,
+    c_AT: Any,
+    x_PA: Any = 0.0,
+    x_AT: Any = 0.0,
+    p_tr: Any = 0.0,
+) -> tuple[Any, Any, Any]:
+    r"""Flows of a three-way spool valve (supply, tank, one use port A): the A half of the four-way bridge.
+
+    .. math::
+        q_{PA} = c_{PA} f(x_v - x_{PA})\,g(p_S - p_A), \quad q_{AT} = c_{AT} f(-x_v - x_{AT})\,g(p_A - p_T)
+
+    each edge by :func:`edge_flow`, and :math:`Q_A = q_{PA} - q_{AT}`, :math:`Q_S = q_{PA}`,
+    :math:`Q_T = q_{AT}` (:func:`bridge_flows` with B's edges closed). Positive ``x_v`` connects P to A; each
+    edge has its own coefficient (a fraction of the circumference may be cut for one edge only).
+
+    Parameters
+    ----------
+    x_v : array_like
+        Spool position [m].
+    p_S, p_T, p_A : array_like
+        Supply, tank and use-port pressures [Pa].
+    c_PA, c_AT : array_like
+        Flow coefficients of edges P-A and A-T [m^2/s/Pa^0.5].
+    x_PA, x_AT : array_like
+        Overlap of each edge [m]; negative for underlap.
+    p_tr : array_like
+        Transition pressure of the regularisation [Pa].
+
+    Returns
+    -------
+    (Q_A, Q_S, Q_T) : tuple of array_like
+        Flow out of the valve into line A, into the valve from supply, out of the valve to tank [m^3/s].
+
+    References
+    ----------
+    [Efe2014] eqs. (3.18)-(3.21) (the edges of port A).
+
+    Examples
+    --------
+    Opened 0.25 mm towards A, A at 100 bar, 210 bar supply: A receives :math:`c_v x\sqrt{110\,\mathrm{bar}}`
+    (L/min), and nothing goes to tank:
+
+    >>> QA, QS, QT = three_way_valve_flows(2.5e-4, 210e5, 0.0, 100e5, 3.5e-4, 3.5e-4)
+    >>> round(float(QA) * 6e4, 2), float(QT)
+    (17.41, 0.0)
+    """
+    q_PA = edge_flow(c_PA, x_v - x_PA, p_S - p_A, p_tr)
+    q_AT = edge_flow(c_AT, -x_v - x_AT, p_A - p_T, p_tr)
+    return q_PA - q_AT, q_PA, q_AT
 
 
 def valve_coefficients(

@@ -19,7 +19,7 @@ from typing import Any
 
 from hydroservo import backend as bk
 
-__all__ = ["opening_fraction", "linear_opening", "pressure_valve_coefficient", "limited_lag_rate", "STOP_RELAXATION"]
+__all__ = ["opening_fraction", "linear_opening", "seat_opening", "pressure_valve_coefficient", "limited_lag_rate", "STOP_RELAXATION"]
 
 #: The time constant with which :func:`limited_lag_rate` settles on a bound, as a fraction of the lag's own [-]:
 #: small enough that the lag reaches its bound within 0.1 % of ``tau`` later than in finite time, large enough
@@ -87,6 +87,39 @@ def opening_fraction(p: Any, p_c: Any, dp_o: Any) -> Any:
     """
     s = linear_opening(p, p_c, dp_o)
     return s * s * (3.0 - 2.0 * s)
+
+
+def seat_opening(p: Any, p_c: Any) -> Any:
+    r"""Opening of a seat that opens fully once the pilot pressure exceeds cracking: 1 for :math:`p > p_c`, else 0 [-].
+
+    The limit :math:`\Delta p_o \to 0` of :func:`linear_opening`: Hopsan's check valves open so
+    ([Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValve.hpp, flow :math:`K_s\sqrt{p_1 - p_2}` while
+    :math:`p_1 > p_2`, none otherwise; their wave variables stand for the port pressures). With
+    :math:`p_c = 0` and the turbulent law the flow is still continuous (it vanishes as
+    :math:`\sqrt{\Delta p}` at the seat); with :math:`p_c > 0` it jumps at cracking.
+
+    Parameters
+    ----------
+    p : array_like
+        Pilot pressure (the pressure drop over a check valve) [Pa].
+    p_c : array_like
+        Cracking pressure [Pa].
+
+    Returns
+    -------
+    array_like
+        0 closed, 1 fully open.
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValve.hpp.
+
+    Examples
+    --------
+    >>> [float(seat_opening(p, 0.0)) for p in (-1.0, 0.0, 1.0)]
+    [0.0, 0.0, 1.0]
+    """
+    return bk.if_else(p > p_c, 1.0, 0.0)
 
 
 def pressure_valve_coefficient(over: Any, dp: Any, k_cs: Any, k_cf: Any, p_nom: Any = 7e6) -> Any:

@@ -79,6 +79,14 @@ MODELS: dict[str, Spec] = {
         "a flow source into a volume protected by a relief valve, drained through an orifice whose area a step "
         "changes",
     ),
+    "hydraulic-33-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/Hydraulic33ValveTest.hmf",
+        "a 3/3 spool valve (second-order spool) ramped through its stroke between pressure sources",
+    ),
+    "hydraulic-valve-33-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicValve33Test.hmf",
+        "a 3/3 valve with its spool position as input and a laminar onset, ramped between pressure sources",
+    ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",

@@ -169,3 +169,20 @@ def test_an_orifice_whose_area_is_an_input_follows_the_signal() -> None:
     r = s.simulate(t_eval=[0.25, 0.75])
     root = np.sqrt(2 * 100e5 / 890.0)
     assert list(r["o.Q"]) == pytest.approx([0.67 * 1e-6 * root, 0.67 * 3e-7 * root], rel=1e-6)
+
+
+def test_check_valve_seat_opens_fully_at_cracking() -> None:
+    """Option opening = "seat" (Hopsan's check valves): no flow up to p_crack, the full bore's turbulent flow
+    just above it, none backwards."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    cv = c.CheckValve("cv", opening="seat", d="2 mm", p_crack="3 bar", Cd=0.6, rho=870.0)
+    p_tr = transition_pressure(2e-3, 870.0, 32e-6, 1000.0)
+    area = np.pi * 2e-3**2 / 4.0
+
+    def q(dp: float) -> float:
+        return float(cv.output_equations(0.0, {}, {"pA": 1e5 + dp, "pB": 1e5}, cv.values)["Q"])
+
+    assert q(2.99e5) == 0.0 and q(-5e5) == 0.0
+    for dp in (3.01e5, 50e5):
+        assert q(dp) == pytest.approx(0.6 * area * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p_tr * p_tr) ** 0.25, rel=1e-12)

@@ -407,3 +407,150 @@ def test_filters_with_output_limits_and_sources_before_the_start_are_refused(tmp
     assert "HP (SignalHP1Filter): a filter with output limits" in text
     assert "Sq (SignalSquareWave): t_start = -2 s, before the run's start" in text
     assert "TF2 (SignalSecondOrderTransferFunction): a transfer function with no s term" in text
+
+
+def _valve_circuit(kind: str, ports: dict[str, float], params: dict, command: str | None) -> tuple[str, list, list]:
+    """A Hopsan valve of type ``kind`` named V, each port on a pressure source of its own (absolute Pa), its
+    input ``in`` driven by a constant ``command`` (None: left at its start value)."""
+    components: list = [(kind, "V", params)]
+    connections: list = []
+    for port, p in ports.items():
+        components.append(("HydraulicPressureSourceC", f"S{port}", {"p#Value": (repr(p), "Pa")}))
+        connections.append((f"V.{port}", f"S{port}.P1"))
+    if command is not None:
+        components.append(("SignalConstant", "Cmd", {"y#Value": (command, "")}))
+        connections.append(("Cmd.y", "V.in"))
+    return kind, components, connections
+
+
+def test_spool_valves_map_to_the_four_way_valves_edges_with_hopsans_laps_and_spool(tmp_path: Path) -> None:
+    """Hopsan's 2/2, 3/2, 3/3 and 4/2 spool valves ([Hopsan2026] FlowControlValves/, DirectionalValves/), each
+    held 0.3 s (the spool settled: omega_h 100 rad/s, critically damped) at a command, against Hopsan's law
+    q = C_q f π d x √(2/ρ) √Δp per open edge (x its opening; turbulent to about 45 Pa, D_h 1 mm at flow number 10).
+    The 2/2 valve's desired position -1 mm is limited to 0 (closed, xv 0); the on/off valves open fully for in
+    above 0.5 and close at 0.5; Hydraulic42Valve never opens P-B or A-T; Hydraulic42Valve2 at half stroke opens all
+    four edges by half of it."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    p_tr = transition_pressure(1e-3, 870.0, 32e-6, 10.0)
+
+    def q(f: float, d: float, x: float, dp: float) -> float:
+        return 0.67 * f * np.pi * d * x * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p_tr * p_tr) ** 0.25
+
+    v = _value
+    pa, pb, ps, pt = 60e5, 30e5, 100e5, 1e5
+    cases = [
+        (_valve_circuit("Hydraulic22Valve", {"PP": ps, "PA": pa}, {"x_vmax#Value": v("0.002")}, "-0.001"),
+         {"V.PA.Flow": 0.0, "V.xv.Value": 0.0}),
+        (_valve_circuit("Hydraulic22Valve", {"PP": ps, "PA": pa}, {"x_vmax#Value": v("0.002"), "f#Value": v("0.5")},
+                        "0.0015"),
+         {"V.PA.Flow": q(0.5, 0.01, 0.0015, ps - pa), "V.xv.Value": 0.0015}),
+        (_valve_circuit("Hydraulic22DirectionalValve", {"P1": ps, "P2": pa}, {"d#Value": v("0.02")}, "1"),
+         {"V.P2.Flow": q(1.0, 0.02, 0.01, ps - pa), "V.xv.Value": 0.01}),
+        (_valve_circuit("Hydraulic22DirectionalValve", {"P1": ps, "P2": pa}, {}, "0.5"),
+         {"V.P2.Flow": 0.0, "V.xv.Value": 0.0}),
+        (_valve_circuit("Hydraulic32DirectionalValve", {"PP": ps, "PT": pt, "PA": pa}, {}, "0"),
+         {"V.PA.Flow": -q(1.0, 0.01, 0.01, pa - pt), "V.PT.Flow": q(1.0, 0.01, 0.01, pa - pt), "V.PP.Flow": 0.0}),
+        (_valve_circuit("Hydraulic33Valve", {"PP": ps, "PT": pt, "PA": pa},
+                        {"f_pa#Value": v("0.5"), "x_pa#Value": v("0.001")}, "0.004"),
+         {"V.PA.Flow": q(0.5, 0.01, 0.003, ps - pa), "V.PT.Flow": 0.0, "V.xv.Value": 0.004}),
+        (_valve_circuit("Hydraulic33Valve", {"PP": ps, "PT": pt, "PA": pa}, {"x_at#Value": v("-0.001")}, "-0.02"),
+         {"V.PA.Flow": -q(1.0, 0.01, 0.011, pa - pt), "V.xv.Value": -0.01}),
+        (_valve_circuit("Hydraulic42Valve", {"PP": ps, "PT": pt, "PA": pa, "PB": pb}, {}, "0.004"),
+         {"V.PA.Flow": q(1.0, 0.01, 0.004, ps - pa), "V.PB.Flow": -q(1.0, 0.01, 0.004, pb - pt)}),
+        (_valve_circuit("Hydraulic42Valve2", {"PP": ps, "PT": pt, "PA": pa, "PB": pb}, {}, "0.005"),
+         {"V.PA.Flow": q(1.0, 0.01, 0.005, ps - pa) - q(1.0, 0.01, 0.005, pa - pt),
+          "V.PB.Flow": q(1.0, 0.01, 0.005, ps - pb) - q(1.0, 0.01, 0.005, pb - pt)}),
+        (_valve_circuit("Hydraulic42DirectionalValve", {"PP": ps, "PT": pt, "PA": pa, "PB": pb}, {}, "0"),
+         {"V.PA.Flow": -q(1.0, 0.01, 0.01, pa - pt), "V.PB.Flow": q(1.0, 0.01, 0.01, ps - pb), "V.xv.Value": 0.0}),
+    ]
+    for i, ((kind, components, connections), expected) in enumerate(cases):
+        path = tmp_path / f"valve{i}.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        imp = import_hopsan(path)
+        assert dict((h, t) for h, t, _ in imp.mapping)["V"] == kind
+        r = imp.system.simulate(t_eval=[0.0, 0.3], accuracy=1e-8)
+        for alias, value in expected.items():
+            assert float(r[alias][-1]) == pytest.approx(value, rel=1e-6, abs=1e-12), (kind, alias)
+
+
+def test_hopsans_valve33_is_a_three_way_valve_with_its_underlap_and_laminar_onset(tmp_path: Path) -> None:
+    """[Hopsan2026] Special/HydraulicValve33.hpp: the position xv is the input (no spool), limited to ±Xvmax;
+    each edge passes Cq √(2/ρ) π Fr Sd (Xap0 ± xv) Δp/(Δp² + plam²)^(1/4). A valve whose Xat0 is not its Xap0
+    (Hopsan's A-T edge opens as Xap0 - xv all the same) is refused."""
+    v = _value
+    params = {"Xap0#Value": v("0.0002"), "Xat0#Value": v("0.0002"), "Xvmax#Value": v("0.001"), "plam#Value": v("2e5"),
+              "Frap#Value": v("0.5")}
+    components = [
+        ("HydraulicValve33", "V", params),
+        ("HydraulicPressureSourceC", "SP", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "ST", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "SA", {"p#Value": v("4e5", "Pa")}),
+        ("SignalRamp", "Ramp", {"y_0#Value": v("0"), "y_A#Value": v("0.004"), "t_start#Value": v("0"),
+                                "t_end#Value": v("1")}),
+    ]
+    connections = [("V.Pp", "SP.P1"), ("V.Pt", "ST.P1"), ("V.Pa", "SA.P1"), ("Ramp.out", "V.xv")]
+    path = tmp_path / "v33.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 0.1, 0.5])
+    ks = 0.67 * np.sqrt(2.0 / 870.0) * np.pi * 0.01
+
+    def g(dp: float) -> float:
+        return dp / (dp * dp + 2e5**2) ** 0.25
+
+    x = np.array([0.0, 0.0004, 0.001])  # the ramp's 4 mm/s, limited to Xvmax
+    q_pa = ks * 0.5 * (0.0002 + x) * g(1e7 - 4e5)
+    q_at = ks * np.clip(0.0002 - x, 0.0, None) * g(4e5 - 1e5)
+    np.testing.assert_allclose(r["V.Pp.Flow"], -q_pa, rtol=1e-9)
+    np.testing.assert_allclose(r["V.Pa.Flow"], q_pa - q_at, rtol=1e-9)
+    np.testing.assert_allclose(r["V.Pt.Flow"], q_at, rtol=1e-9, atol=1e-15)
+    path.write_text(_hmf([(k, n, {**p, "Xat0#Value": v("0")} if k == "HydraulicValve33" else p)
+                          for k, n, p in components], connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicValve33\): Xat0 = 0 m differs from Xap0"):
+        read_hopsan(path)
+
+
+def test_valves_hopsan_has_that_hydroservo_cannot_follow_are_refused(tmp_path: Path) -> None:
+    """A one-sided spool that would overshoot (delta_h < 1) and a 4/2 valve with unequal edges are refused,
+    each named."""
+    v = _value
+    _, a, ca = _valve_circuit("Hydraulic22Valve", {"PP": 1e7, "PA": 1e5}, {"delta_h": v("0.7")}, "0.001")
+    _, b, cb = _valve_circuit("Hydraulic42Valve2", {"PP": 1e7, "PT": 1e5, "PA": 1e5, "PB": 1e5},
+                              {"f_pb#Value": v("0.5")}, None)
+    b = [(k, n.replace("V", "W") if n == "V" else f"W{n}", p) for k, n, p in b]
+    cb = [(x.replace("V.", "W.").replace("S", "WS"), y.replace("S", "WS")) for x, y in cb]
+    path = tmp_path / "refused.hmf"
+    path.write_text(_hmf(a + b, ca + cb), encoding="utf-8")
+    with pytest.raises(ModelFileError) as err:
+        read_hopsan(path)
+    text = str(err.value)
+    assert "V (Hydraulic22Valve): delta_h = 0.7 < 1" in text
+    assert "W (Hydraulic42Valve2): the edges' area fractions f_pa, f_pb, f_at, f_bt differ (1, 0.5, 1, 1)" in text
+
+
+def test_hopsans_check_valve_passes_k_s_root_dp_one_way(tmp_path: Path) -> None:
+    """[Hopsan2026] Restrictors/HydraulicCheckValve.hpp: q = K_s √(p_1 - p_2) while p_1 > p_2, none the other way
+    (P2's pressure swept by a ramp from 5 bar below P1's to 5 bar above)."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    v = _value
+    components = [
+        ("HydraulicCheckValve", "CV", {"K_s#Value": v("2e-8")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("0", "Pa")}),
+        ("SignalRamp", "Ramp", {"y_0#Value": v("5e5"), "y_A#Value": v("1e6"), "t_start#Value": v("0"),
+                                "t_end#Value": v("1")}),
+    ]
+    connections = [("CV.P1", "S1.P1"), ("CV.P2", "S2.P1"), ("Ramp.out", "S2.p")]
+    path = tmp_path / "cv.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    comp = imp.system["CV"]
+    assert comp.option("opening") == "seat"
+    t = np.array([0.0, 0.25, 0.49, 0.75, 1.0])
+    r = imp.system.simulate(t_eval=t)
+    dp = 1e6 - (5e5 + 1e6 * t)
+    p_tr = transition_pressure(float(comp.values["d"]), 870.0, 32e-6, 10.0)
+    expected = np.where(dp > 0, 2e-8 * dp / (dp * dp + p_tr * p_tr) ** 0.25, 0.0)
+    np.testing.assert_allclose(r["CV.P2.Flow"], expected, rtol=1e-9, atol=1e-15)
+    assert p_tr < 100.0  # Pa: turbulent down to some 50 Pa (Hopsan: to the null)

@@ -1,7 +1,7 @@
 """Valves: components that turn a spool position and port pressures into flows.
 
 One file per valve kind: :mod:`.four_way` (sharp edges, per-edge laps,
-[Efe2014]), :mod:`.pseudo_section` (the servo-solenoid valve of
+[Efe2014]), :mod:`.directional` (three- and two-way spool valves, of the same edges), :mod:`.pseudo_section` (the servo-solenoid valve of
 [FerreiraND]), :mod:`.staged_slot` (the staged-slot valve across temperature
 of [MareAttarND]), :mod:`.orifice` (the fixed orifice), :mod:`.check` (check
 valves), :mod:`.pressure_control` (relief, pressure-reducing and counterbalance
@@ -11,6 +11,7 @@ valves), :mod:`.two_stage` (the first-principles two-stage servovalve of
 
 from hydroservo.components.valves.catalogue import CatalogueServovalve
 from hydroservo.components.valves.check import CheckValve
+from hydroservo.components.valves.directional import ThreeWayValve, TwoWayValve
 from hydroservo.components.valves.four_way import FourWayValve
 from hydroservo.components.valves.orifice import LaminarOrifice, Orifice
 from hydroservo.components.valves.pressure_control import CounterbalanceValve, PressureReducingValve, ReliefValve
@@ -20,6 +21,8 @@ from hydroservo.components.valves.two_stage import TwoStageServovalve
 
 __all__ = [
     "FourWayValve",
+    "ThreeWayValve",
+    "TwoWayValve",
     "PseudoSectionValve",
     "ServoSolenoidValve",
     "StagedSlotValve",

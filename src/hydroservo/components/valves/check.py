@@ -7,10 +7,10 @@ from typing import Any
 
 import numpy as np
 
-from hydroservo.components.base import Component, Output, Param, register
+from hydroservo.components.base import Component, Option, Output, Param, register
 from hydroservo.components.valves.ports import FLUID_PARAMETERS, TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
 from hydroservo.laws.orifice import DISCHARGE_COEFFICIENT, orifice_flow, transition_pressure
-from hydroservo.laws.pressure_valve import opening_fraction
+from hydroservo.laws.pressure_valve import opening_fraction, seat_opening
 
 __all__ = ["CheckValve"]
 
@@ -29,6 +29,11 @@ class CheckValve(Component):
     (:func:`hydroservo.laws.orifice.orifice_flow`). The poppet is taken as
     fast against the circuit (no dynamics). ``G_leak`` is the leakage of the
     closed seat, in both directions (0: tight).
+
+    Option ``opening``: ``"ramp"`` (the default, above) or ``"seat"``, a seat that opens fully once
+    :math:`p_A - p_B` exceeds ``p_crack`` (:func:`hydroservo.laws.pressure_valve.seat_opening`, ``dp_open``
+    unused): Hopsan's HydraulicCheckValve ([Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValve.hpp), whose
+    flow is :math:`K_s\sqrt{p_A - p_B}` while :math:`p_A > p_B`.
     """
 
     PARAMETERS = {
@@ -38,6 +43,9 @@ class CheckValve(Component):
         "dp_open": Param(2e5, "Pa", "pressure rise over cracking to full opening", min=0.0, min_inclusive=False),
         "G_leak": Param(0.0, "m^3/s/Pa", "leakage conductance of the closed seat", min=0.0),
         **FLUID_PARAMETERS,
+    }
+    OPTIONS = {
+        "opening": Option("ramp", ("ramp", "seat"), "opening from p_crack over dp_open, or fully at p_crack (Hopsan)"),
     }
     INPUTS = dict(TWO_PORT_PRESSURES)
     OUTPUTS = {
@@ -50,7 +58,10 @@ class CheckValve(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         dp = u["pA"] - u["pB"]
-        s = opening_fraction(dp, p["p_crack"], p["dp_open"])
+        if self.option("opening") == "seat":
+            s = seat_opening(dp, p["p_crack"])
+        else:
+            s = opening_fraction(dp, p["p_crack"], p["dp_open"])
         p_tr = transition_pressure(p["d"], p["rho"], p["nu"], p["lambda_crit"])
         area = s * np.pi * p["d"] ** 2 / 4.0
         return {"Q": orifice_flow(area, dp, p["rho"], p["Cd"], p_tr) + p["G_leak"] * dp, "s": s}
