@@ -211,6 +211,11 @@ class Limit:
 
     * ``"source"``: a pressure a source imposes; the highest of all sources over
       the run is the circuit's pressure ceiling;
+    * ``"relief"``: a relief valve's setting, which bounds a circuit fed by a
+      flow source (a source of flow whatever the pressure): with one in the
+      circuit, the highest setting joins the sources for the ceiling;
+    * ``"flow-source"``: a flow imposed whatever the pressure (its presence is
+      what counts);
     * ``"pressure"``: the pressure of a closed volume, flagged above the ceiling
       or below vacuum by more than the margins;
     * ``"travel"``: a position between the parameters named ``lower`` and
@@ -227,7 +232,7 @@ class Limit:
     hint: str = ""
 
     def __post_init__(self) -> None:
-        if self.kind not in ("source", "pressure", "travel", "volume"):
+        if self.kind not in ("source", "relief", "flow-source", "pressure", "travel", "volume"):
             raise ValueError(f"Limit kind {self.kind!r}: expected source, pressure, travel or volume")
         if (self.kind == "travel") != (self.lower is not None and self.upper is not None):
             raise ValueError("a travel limit needs lower and upper parameters, and only a travel limit has them")

@@ -113,6 +113,8 @@ class FlowSource(Component):
     }
     OUTPUTS = {"Q": Output("m^3/s", "flow delivered into the circuit at P")}
     HYDRAULIC = {"P": Hydraulic("p", "Q", "flow port", into=False)}
+    #: a flow whatever the pressure: the circuit's relief valves bound it (plausibility)
+    LIMITS = {"Q": Limit("flow-source")}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]

@@ -51,7 +51,7 @@ class Watched:
     """A signal of the model under a :class:`~hydroservo.components.base.Limit`."""
 
     signal: str  #: the result's signal name
-    kind: str  #: "source", "pressure", "travel" or "volume"
+    kind: str  #: "source", "relief", "flow-source", "pressure", "travel" or "volume"
     owner: str  #: the component that declared the limit
     lower: str | None = None  #: parameter of the lower bound (travel)
     upper: str | None = None  #: parameter of the upper bound (travel)
@@ -102,6 +102,8 @@ def check(
     """
     found: list[Implausible] = []
     sources = [i for i, w in enumerate(watched) if w.kind == "source"]
+    if any(w.kind == "flow-source" for w in watched):  # a flow whatever the pressure: relief valves bound it
+        sources += [i for i, w in enumerate(watched) if w.kind == "relief"]
     ceiling = source = None
     if sources:
         peaks = [float(np.max(values[i])) for i in sources]

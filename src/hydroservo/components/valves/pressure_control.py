@@ -93,9 +93,9 @@ class ReliefValve(_PressureControl):
         **SPOOL_PARAMETERS,
     }
     OUTPUTS = {**_PressureControl.OUTPUTS, "p_crack": Output("Pa", "cracking pressure (setting)")}
-    #: the setting bounds the line it protects: a circuit's pressure ceiling (plausibility), as a pump's rating is;
-    #: a line fed by a flow source and protected by the valve is not flagged at the valve's override
-    LIMITS = {"p_crack": Limit("source")}
+    #: the setting bounds a circuit fed by a flow source (plausibility: a flow source's line is not flagged at the
+    #: valve's override); with pumps and pressure sources their ratings are the ceiling, whatever the setting
+    LIMITS = {"p_crack": Limit("relief")}
 
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         return u["pA"] - p["p_crack"]
