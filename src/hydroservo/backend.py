@@ -45,6 +45,17 @@ tanh = _elementwise(ca.tanh, np.tanh)
 cos = _elementwise(ca.cos, np.cos)
 fabs = _elementwise(ca.fabs, np.abs)
 sign = _elementwise(ca.sign, np.sign)
+log = _elementwise(ca.log, np.log)
+tan = _elementwise(ca.tan, np.tan)
+asin = _elementwise(ca.asin, np.arcsin)
+acos = _elementwise(ca.acos, np.arccos)
+sinh = _elementwise(ca.sinh, np.sinh)
+cosh = _elementwise(ca.cosh, np.cosh)
+
+
+def atan2(y: Any, x: Any) -> Any:
+    """The angle of the point (x, y), in (-pi, pi]."""
+    return ca.atan2(y, x) if is_symbolic(y, x) else np.arctan2(y, x)
 
 
 def fmax(a: Any, b: Any) -> Any:

@@ -19,9 +19,9 @@ module                 components
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
                        Staircase, Ramp, Sine, Square, Table
-:mod:`.control`        Sum, Product, Quotient, Absolute, Power, Gain, Lag,
-                       TransferFunction, Integrator, Saturation, Selector, PID,
-                       Amplifier, Transducer
+:mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
+                       Lag, TransferFunction, Integrator, Saturation, DeadZone,
+                       RateLimiter, Selector, PID, Amplifier, Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -46,12 +46,15 @@ from hydroservo.components.control import (
     PID,
     Absolute,
     Amplifier,
+    DeadZone,
+    Function,
     Gain,
     Integrator,
     Lag,
     Power,
     Product,
     Quotient,
+    RateLimiter,
     Saturation,
     Selector,
     Sum,
@@ -131,6 +134,7 @@ __all__ = [
     "Quotient",
     "Absolute",
     "Power",
+    "Function",
     "ConstantPressure",
     "Tank",
     "PressureTable",
@@ -173,6 +177,8 @@ __all__ = [
     "Lag",
     "TransferFunction",
     "Saturation",
+    "DeadZone",
+    "RateLimiter",
     "Selector",
     "PID",
     "Amplifier",

@@ -18,8 +18,8 @@ from hydroservo.errors import ParameterError, UnitError
 from hydroservo.units import coherent_unit, is_absolute_pressure
 
 __all__ = [
-    "Sum", "Product", "Quotient", "Absolute", "Power", "Gain", "Lag", "TransferFunction", "Integrator", "Saturation",
-    "Selector", "PID", "Amplifier", "Transducer",
+    "Sum", "Product", "Quotient", "Absolute", "Power", "Function", "Gain", "Lag", "TransferFunction", "Integrator",
+    "Saturation", "DeadZone", "RateLimiter", "Selector", "PID", "Amplifier", "Transducer",
 ]
 
 
@@ -92,6 +92,76 @@ class Power(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"y": bk.fabs(u["u"]) ** p["n"]}
+
+
+#: The functions of :class:`Function` (its option ``function``).
+FUNCTIONS = (
+    "sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh",
+    "square", "sign",
+)
+
+
+@register
+class Function(Component):
+    r"""``y = f(u)`` of a dimensionless signal, ``f`` the function named by option ``function``: Hopsan's math
+    blocks ([Hopsan2026] Signal/MathFunctions/SignalSqrt.hpp and the others of that folder;
+    Signal/Arithmetics/SignalSquare.hpp and SignalSign.hpp).
+
+    Outside its domain a function gives Hopsan's value and ``error = 1`` (0 inside): :math:`\sqrt{u}` of
+    :math:`u < 0` is 0; :math:`\ln u` and :math:`\log_{10} u` of :math:`u \le 0` are 0; :math:`\arcsin` and
+    :math:`\arccos` of :math:`|u| > 1` are those of :math:`\pm 1`. The other functions have no domain to leave
+    (``error`` is 0). ``atan2`` is the angle of the point ``(u2, u)`` in :math:`(-\pi, \pi]` (Hopsan's inY is
+    ``u``, inX ``u2``); ``sign`` is 1 for :math:`u \ge 0` and -1 below, as Hopsan's (not 0 at 0); ``square`` is
+    :math:`u^2`. Where the output or the error jumps or has a kink (the domain's edges, the sign's and atan2's
+    jumps at :math:`u = 0`, the tangent's poles), a switch event.
+    """
+
+    INPUTS = {
+        "u": Port("", "argument"),
+        "u2": Port("", "second argument (atan2: the x of the point (u2, u))", default=1.0),
+    }
+    OUTPUTS = {
+        "y": Output("", "f(u)"),
+        "error": Output("", "1 where u is outside the function's domain (y is then Hopsan's value there), else 0"),
+    }
+    OPTIONS = {"function": Option("sqrt", FUNCTIONS, "the function")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        a, f = u["u"], self.option("function")
+        error = 0.0 * a
+        if f == "sqrt":
+            error = bk.if_else(a < 0.0, 1.0, 0.0)
+            y = bk.sqrt(bk.fmax(a, 0.0))
+        elif f in ("log", "log10"):
+            error = bk.if_else(a <= 0.0, 1.0, 0.0)
+            law = bk.log if f == "log" else bk.log10
+            y = bk.if_else(a <= 0.0, 0.0, law(bk.fmax(a, 1e-300)))
+        elif f in ("asin", "acos"):
+            error = bk.if_else(bk.fabs(a) > 1.0, 1.0, 0.0)
+            y = (bk.asin if f == "asin" else bk.acos)(bk.clip(a, -1.0, 1.0))
+        elif f == "atan2":
+            y = bk.atan2(a, u["u2"])
+        elif f == "square":
+            y = a * a
+        elif f == "sign":
+            y = bk.if_else(a >= 0.0, 1.0, -1.0)
+        else:
+            y = getattr(bk, f)(a)
+        return {"y": y, "error": error}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        a, f = u["u"], self.option("function")
+        if f in ("sqrt", "log", "log10", "sign", "atan2"):
+            return {"zero": (a, 1.0)}
+        if f in ("asin", "acos"):
+            return {"upper": (a - 1.0, 1.0), "lower": (a + 1.0, 1.0)}
+        if f == "tan":
+            return {"pole": (bk.cos(a), 1.0)}
+        return {}
 
 
 #: Placeholder unit of a gain's input (``input_unit``); the output keeps ``SIGNAL`` (``unit``).
@@ -307,6 +377,79 @@ class Saturation(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"y": bk.fmin(bk.fmax(u["u"], p["lower"]), p["upper"])}
+
+
+@register
+class DeadZone(Component):
+    """``y = u - u_dstart`` below ``u_dstart``, 0 between the two, ``u - u_dend`` above ``u_dend`` (Hopsan's
+    SignalDeadZone, [Hopsan2026] Signal/Non-Linearities/SignalDeadZone.hpp, and its names). Continuous, with a
+    kink at each edge (a switch event)."""
+
+    PARAMETERS = {
+        "u_dstart": Param(-1.0, SIGNAL, "start of the dead zone"),
+        "u_dend": Param(1.0, SIGNAL, "end of the dead zone"),
+    }
+    INPUTS = {"u": Port(SIGNAL, "input")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def check(self) -> None:
+        if self.values["u_dstart"] > self.values["u_dend"]:
+            raise ParameterError(
+                f"{self.name}.u_dstart = {self.values['u_dstart']:g}: expected at most u_dend = {self.values['u_dend']:g}"
+            )
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": bk.fmin(u["u"] - p["u_dstart"], 0.0) + bk.fmax(u["u"] - p["u_dend"], 0.0)}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        return {"start": (u["u"] - p["u_dstart"], 1.0), "end": (u["u"] - p["u_dend"], 1.0)}
+
+
+@register
+class RateLimiter(Component):
+    r"""The input with its rate limited: the output follows ``u``, but rises at most at ``c_up`` and falls at
+    most at ``|c_down|`` (Hopsan's SignalRateLimiter, [Hopsan2026] Signal/Non-Linearities/SignalRateLimiter.hpp).
+
+    Hopsan's block steps its output by ``c Ts`` towards the input, or onto it when the input is nearer than
+    that: as the step vanishes, the output follows the input while the input's rate stays within the limits,
+    and ramps at the limit otherwise. Here that law is an ODE,
+    :math:`\dot y = \min(\max((u - y)/\tau, c_{down}), c_{up})`: the output tracks the input with the time
+    constant ``tau`` (a lag of :math:`\tau \dot u` while following; the output's rate settles onto the input's
+    within a few ``tau`` after catching up), and ramps at the limit when the input is further than
+    :math:`\tau |c|` away. ``tau`` is 1 µs by default: far below the time scales of a servo loop (a 0.25 Hz sine
+    of amplitude 1 is followed within 2e-6), and stiff only for an explicit solver. The two switches of the rate
+    are switch events. The output starts at ``y0`` (Hopsan's starts at the input's start value).
+    """
+
+    PARAMETERS = {
+        "c_up": Param(1.0, SIGNAL + "/s", "largest rate of rise", min=0.0),
+        "c_down": Param(-1.0, SIGNAL + "/s", "largest rate of fall (negative, as Hopsan's)", max=0.0),
+        "tau": Param(1e-6, "s", "time constant of the tracking", min=0.0, min_inclusive=False),
+        "y0": Param(0.0, SIGNAL, "initial output"),
+    }
+    STATES = {"y": State(SIGNAL, "output", initial="y0", nominal=1.0)}
+    INPUTS = {"u": Port(SIGNAL, "input")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": x["y"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": bk.clip((u["u"] - x["y"]) / p["tau"], p["c_down"], p["c_up"])}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        rate = (u["u"] - x["y"]) / p["tau"]
+        return {"up": (rate - p["c_up"], 1.0), "down": (rate - p["c_down"], 1.0)}
 
 
 @register

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Mechanical, Option, Output, Param, Port, State, register
 
 __all__ = ["Spring", "Damper", "FixedPosition", "ForceSource", "VelocitySource"]
 
@@ -122,26 +122,38 @@ class ForceSource(Component):
 @register
 class VelocitySource(Component):
     """A velocity from a signal: its port ``P`` moves outward at the input ``u``, from ``x0``, whatever force it
-    takes (Hopsan's MechanicVelocityTransformer with its position input unconnected, [Hopsan2026])."""
+    takes (Hopsan's MechanicVelocityTransformer, [Hopsan2026] Mechanic/Linear/MechanicVelocityTransformer.hpp).
 
-    PARAMETERS = {"x0": Param(0.0, "m", "initial position")}
+    Option ``position``: ``"integral"`` (the default) integrates the velocity from ``x0``, as Hopsan's does with
+    its position input unconnected; ``"input"`` takes the position from the input ``x_in`` instead, as Hopsan's
+    does with it connected (position and velocity are then whatever the two signals are: Hopsan leaves their
+    kinematic relationship to the model's author)."""
+
+    PARAMETERS = {"x0": Param(0.0, "m", "initial position (option position = 'integral')")}
     STATES = {"x": State("m", "position", initial="x0", nominal=0.1)}
     INPUTS = {
         "u": Port("m/s", "velocity imposed outward", default=0.0),
         "F": Port("N", "force acting on port P, outward", default=0.0),
+        "x_in": Port("m", "position imposed outward (option position = 'input')", default=0.0),
     }
     MECHANICAL = {"P": Mechanical("x", "v", "F", "the moving point (outward)")}
     OUTPUTS = {
         "x": Output("m", "position"),
         "v": Output("m/s", "velocity"),
     }
+    OPTIONS = {"position": Option("integral", ("integral", "input"), "the position: the velocity's integral, or the input x_in")}
+
+    def options_changed(self) -> None:
+        """With the position an input, no state."""
+        self.STATES = {} if self.option("position") == "input" else dict(type(self).STATES)  # type: ignore[misc]
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"x": x["x"], "v": u["u"]}
+        position = u["x_in"] if self.option("position") == "input" else x["x"]
+        return {"x": position, "v": u["u"]}
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"x": u["u"]}
+        return {"x": u["u"]} if self.option("position") == "integral" else {}

@@ -579,7 +579,7 @@ def _flow_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 # -- mechanic -------------------------------------------------------------------------------------------------
 
 
-def _mass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+def _mass(hc: HopsanComponent, n: str, par: _Params, B: float | None = None, k_spring: float | None = None) -> Mapped:
     from hydroservo.components import Mass
 
     x_min, x_max = par("x_min", -1e300), par("x_max", 1e300)
@@ -587,8 +587,8 @@ def _mass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     comp = Mass(
         n,
         m=par("m", 100.0),
-        B=par("B", 10.0),
-        k_spring=par("k", 0.0),
+        B=par("B", 10.0) if B is None else B,
+        k_spring=par("k", 0.0) if k_spring is None else k_spring,
         incline=0.0,
         length=x1 + x2,  # Hopsan keeps the ends' start positions apart by this (its mLength)
         x0=x2,
@@ -597,6 +597,24 @@ def _mass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     if abs(x_min) < 1e299 or abs(x_max) < 1e299:  # Hopsan's inelastic stops, as stiff ones
         comp.set(x_min=max(x_min, -1e30), x_max=min(x_max, 1e30), k_stop=1e9, c_stop=1e6)
     return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _mass_coulomb(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """MechanicTranslationalMassWithCoulombFriction.hpp: a mass that sticks while the force on it stays below
+    f_s, and slides against f_k (and b v) once it moves; Hopsan stops it whenever its velocity would change sign.
+    That law is the limit of the Stribeck law (laws.friction.stribeck) with F_c0 = f_k and F_s0 = f_s - f_k as
+    its velocity scales vanish: here v_reg = 1e-5 m/s (a stuck mass creeps at v_reg atanh(F/f_s), under 3e-5 m/s
+    below 0.99 f_s) and c_s = 1e-3 m/s (the friction falls from f_s to f_k over about 3 c_s)."""
+    f_s, f_k = par("f_s", 50.0), par("f_k", 45.0)
+    if f_s < f_k or f_k < 0.0:
+        par.problems.append(
+            f"{par.where}: f_s = {f_s:g} N, f_k = {f_k:g} N: a static friction below the kinetic one (or a negative "
+            "one) is not supported (Mass's friction falls from F_c0 + F_s0 at rest to F_c0)"
+        )
+        return Mapped()
+    m = _mass(hc, n, par, B=par("b", 10.0), k_spring=0.0)
+    m.components[0].set(F_c0=f_k, F_s0=f_s - f_k, v_reg=1e-5, c_s=1e-3)
+    return m
 
 
 def _spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -631,8 +649,11 @@ def _force_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import VelocitySource
 
+    # MechanicVelocityTransformer.hpp: the position integrates the velocity, or, its input x connected, is that
+    if "x" in par.driven:
+        comp = VelocitySource(n, position="input")
+        return Mapped([comp], power={"Pm1": f"{n}.P"}, inputs={"v": f"{n}.u", "x": f"{n}.x_in"})
     comp = VelocitySource(n, x0=par("x", 0.0))
-    # the position input, when connected, sets the position apart from the velocity: not supported (refused)
     return Mapped([comp], power={"Pm1": f"{n}.P"}, inputs={"v": f"{n}.u"})
 
 
@@ -752,6 +773,45 @@ def _power(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Power
 
     return Mapped([Power(n, n=par("x", 0.0))], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
+def _function(function: str) -> Builder:
+    """Hopsan's math blocks (Signal/MathFunctions/Signal<Name>.hpp, Signal/Arithmetics/SignalSquare.hpp and
+    SignalSign.hpp) as a Function with that option; their ``error`` output where they have one (sqrt, log,
+    log10, asin, acos), atan2's inputs ``inY`` and ``inX``."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Function
+
+        outputs = {"out": f"{n}.y"}
+        if function in ("sqrt", "log", "log10", "asin", "acos"):
+            outputs["error"] = f"{n}.error"
+        inputs = {"inY": f"{n}.u", "inX": f"{n}.u2"} if function == "atan2" else {"in": f"{n}.u"}
+        return Mapped([Function(n, function=function)], inputs=inputs, outputs=outputs)
+
+    return build
+
+
+def _rate_limiter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import RateLimiter
+
+    # SignalRateLimiter.hpp: the output steps by c Ts towards the input (c_up rising, c_down falling), or onto it
+    c_up, c_down = par("c_up", 1.0), par("c_down", -1.0)
+    if c_up < 0.0 or c_down > 0.0:
+        par.problems.append(
+            f"{par.where}: c_up = {c_up:g}, c_down = {c_down:g}: expected c_up >= 0 and c_down <= 0 (a limit of the "
+            "wrong sign makes Hopsan's output move away from its input)"
+        )
+        return Mapped()
+    comp = RateLimiter(n, c_up=c_up, c_down=c_down, y0=par("in", 0.0))  # Hopsan's output starts at its input
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
+def _dead_zone(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    from hydroservo.components import DeadZone
+
+    comp = DeadZone(n, u_dstart=par("u_dstart", -1.0), u_dend=par("u_dend", 1.0))
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
 
 
 def _sum(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -952,6 +1012,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureSensor": _pressure_sensor,
     "HydraulicFlowSensor": _flow_sensor,
     "MechanicTranslationalMass": _mass,
+    "MechanicTranslationalMassWithCoulombFriction": _mass_coulomb,
     "MechanicTranslationalSpring": _spring,
     "MechanicFixedPosition": _fixed_position,
     "MechanicForceTransformer": _force_source,
@@ -989,6 +1050,12 @@ LIBRARY: dict[str, Builder] = {
     "SignalTripleRoute": _route(3),
     "SignalQuadRoute": _route(4),
     "SignalSink": _sink,
+    **{f"Signal{name}": _function(name.lower()) for name in (
+        "Sqrt", "Exp", "Log", "Log10", "Sin", "Cos", "Tan", "Asin", "Acos", "Atan", "Atan2", "Sinh", "Cosh", "Tanh",
+        "Square", "Sign",
+    )},
+    "SignalRateLimiter": _rate_limiter,
+    "SignalDeadZone": _dead_zone,
 }
 
 

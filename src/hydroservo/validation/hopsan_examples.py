@@ -91,6 +91,31 @@ MODELS: dict[str, Spec] = {
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",
     ),
+    "signal-math-functions-test": Spec(
+        "Component Test/SignalComponent Test/MathFunctions/SignalMathFunctionsTest.hmf",
+        "ramps through sqrt, log, log10, asin, acos (their error outputs too), atan, atan2, sinh, cosh, tanh, exp "
+        "and a power",
+        known=(
+            ("Value", "one sample: at t = 5 s the ramps into log and log10 cross 0, where Hopsan's accumulated time "
+             "makes its ramp 5.5e-13 rather than 0, so its log is -25.6 (log10 -11.3) where hydroservo's ramp is 0 "
+             "and the block's law gives 0: 69.6 % of the log's range. Every other sample of every trace is within "
+             "0.0032 % (the log's and log10's within 0.00002 % of their ranges without that sample; "
+             "docs/validation.md)"),
+        ),
+    ),
+    "translational-mass-with-coulomb-friction-test": Spec(
+        "Component Test/MechanicComponent Test/TranslationalMassWithCoulombFrictionTest.hmf",
+        "a mass with Coulomb friction pulled through a stiff spring by a velocity source that speeds up, slows "
+        "down and reverses: it sticks and breaks away",
+    ),
+    "rate-limiter-test": Spec(
+        "Component Test/SignalComponent Test/Non-linear/RateLimiterTest.hmf",
+        "a sine and a pulse wave through rate limiters, and their outputs' rates through first-order derivative "
+        "filters",
+        # the derivative filters (0.1 ms) at the pulse wave's edges converge only below 1e-5 s: Hopsan's value at
+        # the instant of an edge is 0.56 at 2.5e-5 s, 0.76 at 1.25e-5 s, 0.98 at 1e-6 s (the limit is 1)
+        timestep=1e-6,
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.

@@ -134,3 +134,71 @@ def test_a_selector_routes_the_input_its_route_chooses() -> None:
     r = s.simulate(t_eval=[0.5, 1.5, 2.5, 3.5])
     np.testing.assert_allclose(r["sel.y"], [10, 20, 30, 40])
     np.testing.assert_allclose(r["dual.y"], [10, 10, 20, 20])
+
+
+def test_each_function_is_its_closed_form_and_flags_its_domain() -> None:
+    """Function against NumPy's functions on a ramp from -2 to 2; outside a domain Hopsan's values (sqrt and log
+    of what is not positive: 0; asin and acos clamped at +-1) with error = 1; sign is 1 at 0, as Hopsan's."""
+    t = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0])
+    u = t - 2.0
+    expected = {
+        "sqrt": (np.sqrt(np.clip(u, 0, None)), u < 0),
+        "exp": (np.exp(u), 0 * u),
+        "log": (np.log(np.where(u > 0, u, 1.0)), u <= 0),
+        "log10": (np.log10(np.where(u > 0, u, 1.0)), u <= 0),
+        "sin": (np.sin(u), 0 * u),
+        "cos": (np.cos(u), 0 * u),
+        "tan": (np.tan(u), 0 * u),
+        "asin": (np.arcsin(np.clip(u, -1, 1)), np.abs(u) > 1),
+        "acos": (np.arccos(np.clip(u, -1, 1)), np.abs(u) > 1),
+        "atan": (np.arctan(u), 0 * u),
+        "atan2": (np.arctan2(u, -1.0), 0 * u),
+        "sinh": (np.sinh(u), 0 * u),
+        "cosh": (np.cosh(u), 0 * u),
+        "tanh": (np.tanh(u), 0 * u),
+        "square": (u * u, 0 * u),
+        "sign": (np.where(u >= 0, 1.0, -1.0), 0 * u),
+    }
+    assert set(expected) == set(c.Function.OPTIONS["function"].choices)
+    s = hs.System("functions", t_end=4.0)
+    s.add(c.Ramp("r", offset=-2.0, slope=1.0))
+    s.add(c.Constant("x", value=-1.0))
+    for f in expected:
+        s.add(c.Function(f"f_{f}", function=f))
+        s.connect("r.y", f"f_{f}.u")
+    s.connect("x.y", "f_atan2.u2")
+    r = s.simulate(t_eval=t)
+    for f, (y, error) in expected.items():
+        np.testing.assert_allclose(r[f"f_{f}.y"], y, atol=1e-12, err_msg=f)
+        np.testing.assert_array_equal(r[f"f_{f}.error"], np.asarray(error, dtype=float), err_msg=f)
+
+
+def test_a_dead_zone_subtracts_its_edges_outside_and_is_zero_inside() -> None:
+    s = hs.System("dead zone", t_end=4.0)
+    s.add(c.Ramp("r", offset=-2.0, slope=1.0))
+    s.add(c.DeadZone("dz", u_dstart=-0.5, u_dend=1.0))
+    s.connect("r.y", "dz.u")
+    t = np.linspace(0.0, 4.0, 9)
+    u = t - 2.0
+    r = s.simulate(t_eval=t)
+    np.testing.assert_allclose(r["dz.y"], np.where(u < -0.5, u + 0.5, np.where(u > 1.0, u - 1.0, 0.0)), atol=1e-12)
+    with pytest.raises(ParameterError, match="u_dstart = 1: expected at most u_dend = 0"):
+        c.DeadZone("bad", u_dstart=1.0, u_dend=0.0).check()
+
+
+def test_a_rate_limiter_ramps_at_its_limits_and_follows_a_slow_input() -> None:
+    """A unit step at 0.5 s is reached at the rising limit (1/s, so at 1.5 s), the step back at 2 s at the falling
+    limit (2/s, back at 0 by 2.5 s); a sine slower than the limits (amplitude 0.1 at 1 Hz: 0.63/s) is followed
+    within tau times its rate."""
+    s = hs.System("rate limiter", t_end=4.0)
+    s.add(c.Pulse("p", amplitude=1.0, t_start=0.5, duration=1.5))
+    s.add(c.RateLimiter("rl", c_up=1.0, c_down=-2.0))
+    s.add(c.Sine("slow", amplitude=0.1, frequency=1.0))
+    s.add(c.RateLimiter("follow", c_up=1.0, c_down=-1.0))
+    s.connect("p.y", "rl.u")
+    s.connect("slow.y", "follow.u")
+    t = np.array([0.5, 1.0, 1.4, 1.6, 2.0, 2.25, 2.6, 3.3])
+    r = s.simulate(t_eval=t, accuracy=1e-8)
+    expected = np.array([0.0, 0.5, 0.9, 1.0, 1.0, 0.5, 0.0, 0.0])
+    np.testing.assert_allclose(r["rl.y"], expected, atol=1e-5)
+    np.testing.assert_allclose(r["follow.y"], 0.1 * np.sin(2 * np.pi * t), atol=1e-5)

@@ -145,3 +145,37 @@ def test_volume_with_a_cavity_holds_its_floor_and_refills_it_first() -> None:
     assert r["v.V_cav"][1] == pytest.approx(1e-3 * (1e7 - 2e5) / 1e9, rel=1e-6)
     # refilled for 0.9 s: 0.9e7 Pa of the 0.98e7 below the floor; still 0.8 cm^3 of cavity, still at the floor
     assert r["v.p"][2] == pytest.approx(-101325.0) and r["v.V_cav"][2] == pytest.approx(1e-3 * 0.8e6 / 1e9, rel=1e-4)
+
+
+def test_a_velocity_source_takes_its_position_from_an_input_with_option_position_input() -> None:
+    """Hopsan's velocity transformer with its position input connected: the position is the input, whatever the
+    velocity (here 0.3 m held while moving at 0.2 m/s), so a spring to a fixed point is stretched by it alone."""
+    s = System("positioned")
+    s.add(c.VelocitySource("src", position="input"))
+    s.add(c.Constant("v", unit="m/s", value=0.2))
+    s.add(c.Constant("x", unit="m", value=0.3))
+    s.add(c.Spring("k", k_spring=500.0))
+    s.add(c.FixedPosition("g"))
+    s.connect("v.y", "src.u")
+    s.connect("x.y", "src.x_in")
+    s.connect("src.P", "k.P1")
+    s.connect("k.P2", "g.P")
+    assert "x" not in s["src"].STATES
+    r = s.simulate(t_eval=[0.0, 1.0])
+    assert list(r["src.x"]) == pytest.approx([0.3, 0.3]) and list(r["src.v"]) == pytest.approx([0.2, 0.2])
+    assert r["k.F"][1] == pytest.approx(-500.0 * 0.3)
+
+
+def test_a_mass_with_coulomb_friction_sticks_below_its_static_force_and_slides_against_the_kinetic_one() -> None:
+    """The Stribeck law as Hopsan's Coulomb friction (F_c0 = f_k, F_s0 = f_s - f_k, small v_reg and c_s): a
+    force of 40 N on a 10 kg mass with f_s = 50 N leaves it (nearly) at rest; 80 N against f_k = 45 N and
+    b = 10 N s/m gives v = (80 - 45)/10 (1 - exp(-t b/m)) from rest."""
+    s = System("friction", t_end=2.0)
+    for name, force in (("stuck", 40.0), ("sliding", 80.0)):
+        s.add(c.Mass(name, m=10.0, B=10.0, F_c0=45.0, F_s0=5.0, v_reg=1e-5, c_s=1e-3, incline=0.0))
+        s.add(c.Constant(f"F_{name}", unit="N", value=force))
+        s.connect(f"F_{name}.y", f"{name}.F_ext")
+    t = np.array([0.0, 0.5, 1.0, 2.0])
+    r = s.simulate(t_eval=t, accuracy=1e-8)
+    assert np.max(np.abs(r["stuck.x"])) < 1e-4 and np.max(np.abs(r["stuck.v"])) < 2e-5
+    np.testing.assert_allclose(r["sliding.v"], 3.5 * (1.0 - np.exp(-t)), atol=2e-3)

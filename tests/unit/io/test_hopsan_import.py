@@ -554,3 +554,102 @@ def test_hopsans_check_valve_passes_k_s_root_dp_one_way(tmp_path: Path) -> None:
     expected = np.where(dp > 0, 2e-8 * dp / (dp * dp + p_tr * p_tr) ** 0.25, 0.0)
     np.testing.assert_allclose(r["CV.P2.Flow"], expected, rtol=1e-9, atol=1e-15)
     assert p_tr < 100.0  # Pa: turbulent down to some 50 Pa (Hopsan: to the null)
+
+
+def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path: Path) -> None:
+    """Hopsan's math blocks become one Function each, with the option naming the function, their ``error``
+    output where Hopsan's has one and atan2's inputs inY and inX (an unconnected inX takes its start value);
+    SignalSquare and SignalSign too. The rate limiter keeps c_up and c_down; the dead zone u_dstart and u_dend."""
+    v = _value
+    ramp = {"y_0#Value": v("-2"), "y_A#Value": v("4"), "t_start#Value": v("0"), "t_end#Value": v("4")}
+    components = [
+        ("SignalRamp", "Ramp", ramp),
+        ("SignalSqrt", "Sqrt", {}),
+        ("SignalAcos", "Acos", {}),
+        ("SignalAtan2", "Atan2", {"inX#Value": v("-1")}),
+        ("SignalSquare", "Square", {}),
+        ("SignalSign", "Sign", {}),
+        ("SignalCosh", "Cosh", {}),
+        ("SignalDeadZone", "DZ", {"u_dstart#Value": v("-0.5"), "u_dend#Value": v("1")}),
+        ("SignalRateLimiter", "RL", {"c_up#Value": v("0.5"), "c_down#Value": v("-2"), "in#Value": v("-2")}),
+        ("SignalSink", "Scope", {}),
+    ]
+    connections = [("Ramp.out", f"{b}.in") for b in ("Sqrt", "Acos", "Square", "Sign", "Cosh", "DZ", "RL")]
+    connections += [("Ramp.out", "Atan2.inY"), ("Sqrt.error", "Scope.in")]
+    path = tmp_path / "math.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["Sqrt"] == "Function Sqrt" and kinds["RL"] == "RateLimiter RL" and kinds["DZ"] == "DeadZone DZ"
+    system = imp.system
+    assert system["Atan2"].option("function") == "atan2" and system["Sign"].option("function") == "sign"
+    assert system["RL"].values["c_up"] == 0.5 and system["RL"].values["c_down"] == -2.0
+    assert system.plots == [["Sqrt.error.Value"]]
+    t = np.array([0.0, 0.5, 1.0, 1.5, 2.5, 3.0, 3.5])
+    u = t - 2.0
+    r = system.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["Sqrt.out.Value"], np.sqrt(np.clip(u, 0, None)), atol=1e-12)
+    np.testing.assert_allclose(r["Sqrt.error.Value"], (u < 0).astype(float))
+    np.testing.assert_allclose(r["Acos.out.Value"], np.arccos(np.clip(u, -1, 1)), atol=1e-12)
+    np.testing.assert_allclose(r["Acos.error.Value"], (np.abs(u) > 1).astype(float))
+    np.testing.assert_allclose(r["Atan2.out.Value"], np.arctan2(u, -1.0), atol=1e-12)
+    np.testing.assert_allclose(r["Square.out.Value"], u * u, atol=1e-12)
+    np.testing.assert_allclose(r["Sign.out.Value"], np.where(u >= 0, 1.0, -1.0))
+    np.testing.assert_allclose(r["Cosh.out.Value"], np.cosh(u), atol=1e-12)
+    np.testing.assert_allclose(r["DZ.out.Value"], np.where(u < -0.5, u + 0.5, np.where(u > 1, u - 1, 0.0)), atol=1e-12)
+    # from -2 (its input's start) the limiter rises at 0.5/s behind the ramp of 1/s
+    np.testing.assert_allclose(r["RL.out.Value"], -2.0 + 0.5 * t, atol=1e-5)
+
+
+def test_rate_limits_of_the_wrong_sign_and_static_friction_below_the_kinetic_are_refused(tmp_path: Path) -> None:
+    v = _value
+    components = [
+        ("SignalRateLimiter", "RL", {"c_up#Value": v("1"), "c_down#Value": v("1")}),
+        ("MechanicTranslationalMassWithCoulombFriction", "M", {"f_s#Value": v("40"), "f_k#Value": v("45")}),
+    ]
+    path = tmp_path / "refused.hmf"
+    path.write_text(_hmf(components, []), encoding="utf-8")
+    with pytest.raises(ModelFileError) as err:
+        read_hopsan(path)
+    text = str(err.value)
+    assert "RL (SignalRateLimiter): c_up = 1, c_down = 1: expected c_up >= 0 and c_down <= 0" in text
+    assert "M (MechanicTranslationalMassWithCoulombFriction): f_s = 40 N, f_k = 45 N" in text
+
+
+def test_a_mass_with_coulomb_friction_maps_to_the_stribeck_law_and_a_positioned_velocity_source(tmp_path: Path) -> None:
+    """MechanicTranslationalMassWithCoulombFriction: m, b, f_s, f_k as Mass's m, B, F_c0 + F_s0 and F_c0 with
+    stated velocity scales; a velocity transformer whose position input is connected takes its position from it
+    (option position = 'input'). Pushed by 30 N (below f_s = 50 N) the mass stays; by 100 N it slides against
+    f_k = 45 N and b = 10 N s/m: v = (100 - 45)/10 (1 - exp(-t b/m))."""
+    v = _value
+    components = [
+        ("MechanicTranslationalMassWithCoulombFriction", "Stuck", {"m": v("10"), "b#Value": v("10"), "f_s#Value": v("50"),
+                                                                   "f_k#Value": v("45")}),
+        ("MechanicTranslationalMassWithCoulombFriction", "Slides", {"m": v("10"), "b#Value": v("10"),
+                                                                    "f_s#Value": v("50"), "f_k#Value": v("45")}),
+        ("MechanicForceTransformer", "F30", {"F#Value": v("30")}),
+        ("MechanicForceTransformer", "F100", {"F#Value": v("100")}),
+        ("MechanicVelocityTransformer", "VS", {}),
+        ("SignalConstant", "X", {"y#Value": v("0.25")}),
+        ("SignalConstant", "V", {"y#Value": v("0.1")}),
+        ("MechanicTranslationalSpring", "K", {"k#Value": v("1000")}),
+        ("MechanicFixedPosition", "G", {}),
+    ]
+    connections = [
+        ("F30.P1", "Stuck.P1"), ("F100.P1", "Slides.P1"),
+        ("X.y", "VS.x"), ("V.y", "VS.v"), ("VS.Pm1", "K.P1"), ("K.P2", "G.Pm1"),
+    ]
+    path = tmp_path / "coulomb.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    mass = imp.system["Slides"]
+    assert (mass.values["B"], mass.values["F_c0"], mass.values["F_s0"], mass.values["k_spring"]) == (10.0, 45.0, 5.0, 0.0)
+    assert imp.system["VS"].option("position") == "input"
+    t = np.array([0.0, 0.5, 1.0, 2.0])
+    r = imp.system.simulate(t_eval=t, accuracy=1e-8)
+    assert np.max(np.abs(r["Stuck.P1.Velocity"])) < 2e-5  # creeping at most at about v_reg
+    # Hopsan's force at P1 pushes the mass towards +x at P2: P1 moves outward at -v
+    np.testing.assert_allclose(r["Slides.P1.Velocity"], -5.5 * (1.0 - np.exp(-t)), atol=2e-3)
+    np.testing.assert_allclose(r["VS.Pm1.Position"], 0.25)
+    np.testing.assert_allclose(r["VS.Pm1.Velocity"], 0.1)
+    np.testing.assert_allclose(r["K.P1.Force"], 1000.0 * 0.25, rtol=1e-9)  # Hopsan's k (x1 + x2), ends outward
