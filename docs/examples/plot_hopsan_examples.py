@@ -34,6 +34,11 @@ TRACES = {
     "hydraulic-variable-displacement-pump-test": ["Laminar_Orifice_2.P1.Pressure", "Hydraulic_Volume_4.P2.Pressure"],
     "dynamic-pressure-feedback": ["Position_Sensor.out.Value", "Pressure_Sensor_1.P1.Pressure"],
     "routing-test": ["Staircase.out.Value", "Route_With_Four_Inputs.out.Value"],
+    "pressure-relief-valve-characteristics": ["Pressure_Relief_Valve.P1.Flow", "Turbulent_Orifice.P1.Flow"],
+    "hydraulic-22-valve-test": ["Rate_limiter_1.out.Value", "2_2_Directional_Valve.PP.Flow"],
+    "hydraulic-22-on-off-valve-test": ["Rate_limiter_2.out.Value", "Flow_Rate_Transducer.P1.Flow"],
+    "hydraulic-32-on-off-valve-test": ["Rate_limiter_2.out.Value", "Flow_Rate_Transducer.P1.Flow"],
+    "hydraulic-42-on-off-valve-test": ["Flow_Rate_Transducer.P1.Flow", "Flow_Rate_Transducer_1.P1.Flow"],
     "signal-math-functions-test": ["Atan2.out.Value", "Log_1.out.Value"],
     "translational-mass-with-coulomb-friction-test": [
         "Translational_Mass_With_Coulomb_Friction.P2.Velocity", "Force_Transducer.P1.Force",

@@ -80,6 +80,10 @@ class Mapped:
     initial: dict[str, float] = field(default_factory=dict)
     #: signals joining the components it became: (output, input)
     internal: list[tuple[str, str]] = field(default_factory=list)
+    #: parameters or states that start at (a function of) the value of an input at the start ("comp.y0" ->
+    #: ("comp.u", f)), as Hopsan's blocks that take their input's value when the model is initialised (a rate
+    #: limiter's output, a directional valve's spool)
+    start_from_input: dict[str, tuple[str, Callable[[float], float]]] = field(default_factory=dict)
 
 
 class _Params:
@@ -342,9 +346,13 @@ def _valve42(command: str, all_edges: bool) -> Builder:
         fractions = ("f_pa", "f_pb", "f_at", "f_bt") if all_edges else ("f_pa", "f_bt")
         c_v = _edge_coefficient(par, _equal_fractions(par, fractions), rho)
         x_vmax = par("x_vmax", 0.01)
-        # Hopsan's filter starts at its output's start value (the directional valve: at its input's)
+        # Hopsan's filter starts at its output's start value (the directional valve: at its input's, the value
+        # driving it at the start if a signal does, limited to the stroke)
         start = par("in", 0.0) if command == "on-off" else par("xv", 0.0)
         spool = _spool(n, par, x_vmax, command, start)
+        follows = {}
+        if command == "on-off" and "in" in par.driven:
+            follows = {f"{n}_spool.s": (spool.inputs["in"], lambda v: min(max(v, 0.0), x_vmax) / x_vmax)}
         other = -x_vmax if all_edges else x_vmax
         valve = FourWayValve(
             n, c_v=c_v, x_PA=0.0, x_BT=0.0, x_PB=other, x_AT=other, rho=rho, D_h="1 mm", lambda_crit=10.0
@@ -357,6 +365,7 @@ def _valve42(command: str, all_edges: bool) -> Builder:
             initial=spool.initial,
             internal=[*spool.internal, (f"{n}_spool.xv", f"{n}.xv"), (f"{n}_spool.vv", f"{n}.vv")],
             note=_NOTE[command].format(valve="FourWayValve"),
+            start_from_input=follows,
         )
 
     return build
@@ -803,8 +812,10 @@ def _rate_limiter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
             "wrong sign makes Hopsan's output move away from its input)"
         )
         return Mapped()
-    comp = RateLimiter(n, c_up=c_up, c_down=c_down, y0=par("in", 0.0))  # Hopsan's output starts at its input
-    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+    # Hopsan's output starts at its input: the file's start value of 'in', or what drives it at the start
+    comp = RateLimiter(n, c_up=c_up, c_down=c_down, y0=par("in", 0.0))
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                  start_from_input={f"{n}.y0": (f"{n}.u", float)})
 
 
 def _dead_zone(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1293,7 +1304,34 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     if not system.plots:  # no scope: what an engineer looks at first, not the first of Hopsan's many variables
         system.plots = system.default_panels(aliases=False)
     system.display_units = ["Pa_abs"]  # pressures shown absolute, as Hopsan shows them
+    _start_from_inputs(system, {k: v for m in mapped.values() for k, v in m.start_from_input.items()})
     return HopsanImport(system, model, mapping, names, hopsan_names)
+
+
+def _start_from_inputs(system: System, starts: dict[str, tuple[str, Callable[[float], float]]]) -> None:
+    """Set each parameter or initial state of ``starts`` to (a function of) the value its input takes at the
+    start, where a signal drives it (what feeds the input, evaluated at t = 0 from the initial states); one that
+    nothing drives keeps the file's start value."""
+    import warnings
+
+    driven = {key: (system.connections[inp], f) for key, (inp, f) in starts.items() if inp in system.connections}
+    if not driven:
+        return
+    values: dict[str, float] = {}
+    for _ in range(len(driven)):  # a start that feeds another (a rate limiter's into a valve's spool): again
+        with warnings.catch_warnings():  # one instant of the model: its plausibility is the run's business
+            warnings.simplefilter("ignore")
+            first = system.simulate(t_eval=[0.0, 1e-12], method="cvodes")
+        now = {key: f(float(first[source][0])) for key, (source, f) in driven.items()}
+        if now == values:
+            break
+        values = now
+        for key, value in values.items():
+            cname, name = key.split(".", 1)
+            if name in system.components[cname].STATES:
+                system.set_initial(key, value)
+            else:
+                system.set(key, value)
 
 
 def _node_starts(

@@ -83,6 +83,19 @@ MODELS: dict[str, Spec] = {
         "Component Test/HydraulicComponent Test/Hydraulic33ValveTest.hmf",
         "a 3/3 spool valve (second-order spool) ramped through its stroke between pressure sources",
     ),
+    "hydraulic-22-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/Hydraulic22VavleTest.hmf",
+        "a 2/2 spool valve (second-order spool, opening one way) driven through its stroke",
+    ),
+    "hydraulic-22-on-off-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/Hydraulic22OnOffValveTest.hmf", "a 2/2 on/off directional valve switched"
+    ),
+    "hydraulic-32-on-off-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/Hydraulic32OnOffValveTest.hmf", "a 3/2 on/off directional valve switched"
+    ),
+    "hydraulic-42-on-off-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/Hydraulic42OnOffValveTest.hmf", "a 4/2 on/off directional valve switched"
+    ),
     "hydraulic-valve-33-test": Spec(
         "Component Test/HydraulicComponent Test/HydraulicValve33Test.hmf",
         "a 3/3 valve with its spool position as input and a laminar onset, ramped between pressure sources",

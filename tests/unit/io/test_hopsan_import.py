@@ -653,3 +653,26 @@ def test_a_mass_with_coulomb_friction_maps_to_the_stribeck_law_and_a_positioned_
     np.testing.assert_allclose(r["VS.Pm1.Position"], 0.25)
     np.testing.assert_allclose(r["VS.Pm1.Velocity"], 0.1)
     np.testing.assert_allclose(r["K.P1.Force"], 1000.0 * 0.25, rtol=1e-9)  # Hopsan's k (x1 + x2), ends outward
+
+
+def test_blocks_that_start_at_their_input_take_the_value_driving_it_at_the_start(tmp_path: Path) -> None:
+    """Hopsan initialises a rate limiter's output to its input, and a 4/2 on/off valve's spool to its input
+    limited to the stroke: driven by a step of 1.1 before its edge, the limiter starts at 1.1 (not the file's
+    start value of 'in', 0) and the spool fully open. Hydraulic42OnOffValveTest differed by 40 % otherwise."""
+    components = [
+        ("SignalStep", "Step", {"y_0#Value": ("1.1", ""), "y_A#Value": ("-1.2", ""), "t_step#Value": ("1", "s")}),
+        ("SignalRateLimiter", "RL", {"c_up#Value": ("0.2", ""), "c_down#Value": ("-0.2", ""), "in#Value": ("0", "")}),
+        ("Hydraulic42DirectionalValve", "V", {"in#Value": ("0", ""), "x_vmax#Value": ("0.01", "m"),
+                                              "d#Value": ("0.01", "m"), "C_q#Value": ("0.67", "")}),
+        ("HydraulicPressureSourceC", "S", {"p#Value": ("1e6", "Pa")}),
+        ("HydraulicTankC", "T", {}),
+        ("HydraulicTankC", "TA", {}),
+        ("HydraulicTankC", "TB", {}),
+    ]
+    connections = [("Step.out", "RL.in"), ("RL.out", "V.in"), ("S.P1", "V.PP"), ("T.P1", "V.PT"),
+                   ("TA.P1", "V.PA"), ("TB.P1", "V.PB")]
+    path = tmp_path / "starts.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = read_hopsan(path)
+    assert system["RL"].values["y0"] == pytest.approx(1.1)
+    assert system.initial["V_spool.s"] == pytest.approx(1.0)
