@@ -674,16 +674,19 @@ class UnitChoice:
                 dims = _dimension_key(unit)
             except UnitError as exc:
                 raise UnitError(f"{what}: {exc}") from None
-            if key is None:
-                choice.dimensions.setdefault(dims, unit)  # the first unit given for a dimension holds
-            elif key in QUANTITIES:
-                if dims != _dimension_key(QUANTITIES[key]):
-                    raise UnitError(
-                        f"{what}: {key}={unit}: {unit!r} is not a unit of {key} (expected one like {QUANTITIES[key]!r})"
-                    )
-                choice.dimensions[dims] = unit
-            else:
+            if key is not None and key in QUANTITIES and dims != _dimension_key(QUANTITIES[key]):
+                raise UnitError(
+                    f"{what}: {key}={unit}: {unit!r} is not a unit of {key} (expected one like {QUANTITIES[key]!r})"
+                )
+            if key is not None and key not in QUANTITIES:
+                before, thing = choice.signals.get(key), f"signal {key!r}"
                 choice.signals[key] = unit
+            else:
+                before, thing = choice.dimensions.get(dims), "quantity"
+                choice.dimensions[dims] = unit
+            if before is not None and before != unit:  # two units for one thing: which one was meant?
+                raise UnitError(f"{what}: {shorten(str(spec))!r}: two units for the same {thing}, {before!r} and "
+                                f"{unit!r}; give one")
         _derive_speeds(choice.dimensions)
         return choice
 

@@ -124,3 +124,21 @@ def test_export_of_a_system_changed_in_python_writes_the_whole_model() -> None:
     system.set("load.m", 31.0)
     text = model_file(system).text
     assert text.startswith("# hydroservo model file") and "31" in text
+
+
+@pytest.mark.parametrize("units", ["bar,psi", "p=bar,p=psi", "cyl.pA=psi,cyl.pA=bar"])
+def test_two_units_for_one_quantity_or_signal_are_refused(units: str, cli) -> None:
+    # 'bar,psi' showed bar (the first won) and 'p=bar,p=psi' psi (the last won)
+    code, _, err = cli("linearize", "robot-arm", "--units", units)
+    assert code == 2 and "two units for the same" in err
+
+
+def test_sobol_names_its_metrics_in_the_units_shown_and_ladder_json_alone_writes_nothing(tmp_path, cli,
+                                                                                          monkeypatch) -> None:
+    code, out, _ = cli("sensitivity", "robot-arm", "--method", "sobol", "--n", "4", "--vary", "valve.c_v=1e-4..2e-4",
+                       "--vary", "load.m=15 kg..35 kg", "--units", "p=psi", "--out", str(tmp_path / "s"))
+    assert code == 0 and "peak(cyl.pB) [psi]" in out and "[Pa]" not in out
+    assert "peak(cyl.pB) [psi]" in (tmp_path / "s" / "indices.csv").read_text()
+    monkeypatch.chdir(tmp_path)
+    code, _, _ = cli("ladder", "robot-arm", "--steps", "36.8", "--models", "nonlinear", "--points", "101", "--json")
+    assert code == 0 and not list(tmp_path.glob("hydroservo-*"))

@@ -155,18 +155,19 @@ def describe(metric: Metric) -> str:
 
 def default_metrics(system: Any, t_end: float) -> list[Metric]:
     """The system's declared metrics (model file ``[model] metrics``), else the final value and peak of
-    the signals of its first plot panels and the step metrics of its response (a load's position if one is
+    the first four signals of its plot panels that are not commands (a source's output) and the step metrics of its response (a load's position if one is
     plotted, else the first signal that is not a command), from the time of the command's step if it has one."""
     model = system.build()
     units = {**model.units}
     if system.metrics:
         return [parse_metric(text, units, t_end) for text in system.metrics]
-    names = [s for panel in system.default_panels() for s in panel][:4]
+    plotted = [s for panel in system.default_panels() for s in panel]
+    # what the model does, not what it is told: a command (a source's output) is known before the run
+    names = ([s for s in plotted if not _is_command(system, s)] or plotted)[:4]
     out = [parse_metric(f"final({n})", units) for n in names]
-    out += [parse_metric(f"peak({n})", units) for n in names[1:]]
+    out += [parse_metric(f"peak({n})", units) for n in names]
     # the step metrics of the response: a load's position if one is plotted, else the first signal that is not a
     # command (a source's output has no rise time of its own)
-    plotted = [s for panel in system.default_panels() for s in panel]
     loads = [n for n in plotted if _is_load_position(system, n)]
     responses = loads or [n for n in names if not _is_command(system, n)] or names
     if responses:

@@ -63,14 +63,16 @@ def component_inputs(text: str | None, what: str = "--inputs") -> list[str]:
     return names
 
 
-def add_unit_options(p: Any, csv: bool = True) -> None:
-    """``--units``, ``--si`` and (with ``csv``) ``--ascii``: the units results are shown and written in."""
+def add_unit_options(p: Any, csv: bool = True, note: str = "") -> None:
+    """``--units``, ``--si`` and (with ``csv``) ``--ascii``: the units results are shown and written in; ``note``
+    ends the help of ``--units`` (what they do not apply to)."""
     p.add_argument(
         "--units",
         default=None,
         metavar="LIST",
         help="units to show results in, over the model's own: a unit for every signal of its dimension (bar), "
-        "a quantity's (p=bar, x=mm, v=mm/s, Q=L/min, F=kN) or a signal's (cyl.pA=psi), comma-separated",
+        "a quantity's (p=bar, x=mm, v=mm/s, Q=L/min, F=kN) or a signal's (cyl.pA=psi), comma-separated"
+        + (f"; {note}" if note else ""),
     )
     p.add_argument("--si", action="store_true", help="show and write every result in SI units instead")
     if csv:

@@ -41,6 +41,7 @@ def cmd_ladder(args: argparse.Namespace) -> int:
         output=args.output, t=args.t, free=[s.strip() for s in args.free.split(",") if s.strip()]
         if args.free is not None else None, models=[k.strip() for k in args.models.split(",")] if args.models
         else None, measured=_measured(args.measured), points=args.points, units=args.units, si=args.si,
+        write=args.out is not None or not args.json,  # --json alone writes nothing, as simulate and linearize
         cli=True,
     )
     return execute(job, args, progress_bars(args))

@@ -61,7 +61,7 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--simulate", default=None, metavar="A1,A2,...",
                    help="also run the nonlinear system with sines of these amplitudes (the first input's unit) about "
                    "the operating point: its gain beside the linear one, for the first output, shows where linearity ends")
-    add_unit_options(p, csv=False)
+    add_unit_options(p, csv=False, note="the JSON stays SI, as the linear model's matrices are")
     add_output_options(p, "hydroservo-NAME-linear")
     p.add_argument("--json", action="store_true",
                    help="print the matrices with their names, the modes and the valve coefficients as JSON "

@@ -56,7 +56,7 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--chunk", type=int, default=None, help="runs per chunk (default 128)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS",
                    help="run the chunks on this Dask scheduler, e.g. tcp://10.0.0.5:8786")
-    add_unit_options(p, csv=False)
+    add_unit_options(p, csv=False, note="the levels and ranges varied are shown as given")
     add_output_options(p, "hydroservo-NAME-sensitivity")
     p.add_argument("--json", action="store_true", help="print the indices with their confidence intervals as JSON")
     p.set_defaults(func=cmd_sensitivity)

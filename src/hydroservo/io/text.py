@@ -25,10 +25,12 @@ def text_table(
     align: Sequence[str] | None = None,
 ) -> list[str]:
     """The lines of a table of ``rows`` under ``header`` (none: no header line), each indented by ``indent``
-    spaces; numbers with ``digits`` significant digits (one for all columns, or one per column: a count or a
-    format such as ``".2f"``), None as ``-``,
-    ``align`` per column (``"left"``, ``"right"``, ``"decimal"``, ``"center"``; default: numbers on their
-    decimal point, text left)."""
+    spaces. Numbers get ``digits`` significant digits: one count for all columns, or one per column (a count or a
+    format such as ``".2f"``). None and NaN (no number) are shown as ``-``, -0 as 0. ``align`` gives each column's
+    alignment (``"left"``, ``"right"``, ``"decimal"``, ``"center"``; default: numbers on their decimal point, text
+    left)."""
+    import math
+
     from tabulate import tabulate
 
     ncols = max([len(header), *(len(r) for r in rows)], default=0)
@@ -39,6 +41,18 @@ def text_table(
         floatfmt = f".{digits}g"
     else:
         floatfmt = [d if isinstance(d, str) else f".{d}g" for d in digits] + [".5g"] * (ncols - len(digits))
+    formats = floatfmt if isinstance(floatfmt, list) else [floatfmt] * ncols
+
+    def cell(value: Any, fmt: str) -> Any:
+        if isinstance(value, float) and not isinstance(value, bool):
+            if math.isnan(value):
+                return None  # shown as the missing value: no number
+            if fmt.endswith("f"):  # fixed decimals: what rounds to zero is 0, not -0.000
+                value = round(value, int(fmt[1:-1] or 6))
+            return value + 0.0  # -0.0 shown as 0
+        return value
+
+    rows = [[cell(v, formats[k] if k < len(formats) else ".5g") for k, v in enumerate(row)] for row in rows]
     text = tabulate(
         [list(r) for r in rows],
         list(header) if header else (),

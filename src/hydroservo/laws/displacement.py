@@ -171,6 +171,11 @@ def floored_port_flow(q: Any, p_in: Any, p_out: Any, p_floor: Any, p_reg: Any) -
     array_like
         Flow [m^3/s].
 
+    References
+    ----------
+    [Hopsan2026] (Hydraulic/Pumps/HydraulicFixedDisplacementPump.hpp, HydraulicVariableDisplacementPump.hpp: the
+    flow limited so that no port's pressure falls below zero).
+
     Examples
     --------
     >>> float(floored_port_flow(1e-3, 2e5, 1e6, -101325.0, 100.0))  # the inlet well above the floor: all of it

@@ -41,6 +41,8 @@ class LadderReport(Report):
     unit: str  #: the output's unit (SI)
     #: the units the displacements are shown in (None: the model's)
     units: UnitChoice | None = None
+    #: whether :meth:`artifacts` names the files (the CSV and the plots)
+    write_files: bool = True
 
     def _shown(self) -> tuple[float, str]:
         """The factor from SI to the unit the output's displacements (changes) are shown in, and that unit."""
@@ -58,6 +60,9 @@ class LadderReport(Report):
             if str(column).startswith("displacement "):
                 table[column] = table[column] * factor
                 renamed[column] = f"{column} [{si_unit(unit) or '-'}]"
+        for count in ("states", "solver steps"):  # counts, whole
+            if count in table:
+                table[count] = [None if v != v else int(v) for v in table[count]]
         return table.rename(columns=renamed)
 
     def title(self) -> str:
@@ -71,6 +76,8 @@ class LadderReport(Report):
         from hydroservo.plotting.ladder import plot_ladder_classes, plot_ladder_responses
 
         lad = self.ladder
+        if not self.write_files:
+            return []
         return [
             Artifact("ladder.csv", "ladder.csv", lambda p: write_frame(self.table(), p, index=True)),
             Artifact("ladder-responses.png", "ladder-responses.png", lambda p: plot_ladder_responses(
@@ -102,7 +109,7 @@ class LadderReport(Report):
             for s in lad.steps:
                 cls = str(row[f"class {100 * s:g} %"])
                 mark = short.get(cls.split(" ")[0], "?") + ("*" if "implausible" in cls else "")
-                cells.append(f"{row[f'error {100 * s:g} % [%]']:+.1f} {mark}")
+                cells.append(f"{round(row[f'error {100 * s:g} % [%]'], 1) + 0.0:+.1f} {mark}")  # no -0.0
             rows.append([model, *cells, f"{int(row['states'])} states, {row['solver steps']:.0f} steps, "
                          f"{row['wall time [ms]']:.1f} ms"])
         out += text_table(rows, ["model", *(f"{100 * s:g} %" for s in lad.steps), "cost"], indent=4,
@@ -178,6 +185,8 @@ class Ladder(Workflow):
         :class:`~hydroservo.units.UnitChoice`): the table, the CSV, the JSON and the plots.
     si : bool
         Show them in SI instead.
+    write : bool
+        Whether the report writes its files (the table as CSV, the responses and the classes as PNG).
     """
 
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set"}
@@ -194,6 +203,7 @@ class Ladder(Workflow):
     points: int = 301
     units: str | Mapping[str, str] | None = None
     si: bool = False
+    write: bool = True
 
     def __post_init__(self) -> None:
         from hydroservo.analysis.ladder import RUNGS, STEPS, ladder_defaults
@@ -244,7 +254,7 @@ class Ladder(Workflow):
         return f"hydroservo-{safe_name(self.system.name)}-ladder"
 
     def planned(self) -> list[str]:
-        return ["ladder.csv", "ladder-responses.png", "ladder-classes.png"]
+        return ["ladder.csv", "ladder-responses.png", "ladder-classes.png"] if self.write else []
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> LadderReport:
         from hydroservo.analysis.ladder import build_ladder, ladder_table
@@ -257,7 +267,9 @@ class Ladder(Workflow):
         table = ladder_table(rungs, self.step_values, parameter=self.stepped, output=self.compared,
                              n_points=self.points, reference=self.reference)
         unit = self.system.build().units.get(self.compared, "")
-        return LadderReport(self.system, table, self.time, self.free_states, unit, self.unit_choice)
+        report = LadderReport(self.system, table, self.time, self.free_states, unit, self.unit_choice)
+        report.write_files = self.write
+        return report
 
 
 def run(model: str | Path | System, **inputs: Any) -> LadderReport:

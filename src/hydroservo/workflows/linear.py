@@ -50,6 +50,10 @@ def operating_point(at: str | Mapping[str, Any] | Path, what: str = "--at") -> A
     return read_operating_point(text)
 
 
+#: the units of the valve coefficients in the JSON, which is SI as the linear model's matrices are
+_SI_COEFFICIENTS = {"K_Qx": "m^2/s", "K_Qp": "m^3/(s*Pa)", "K_px": "Pa/m"}
+
+
 @dataclass
 class LinearReport(Report):
     """A linear model with its modes, the valves' coefficients, and optionally the simulated sines beside it."""
@@ -94,8 +98,8 @@ class LinearReport(Report):
             return (f"({si_unit(a)})/{si_unit(b)}" if "/" in a else f"{si_unit(a)}/{si_unit(b)}"), fa / fb
 
         return [
-            ("K_Qx", *ratio(q, x, fq, fx, "m^2/s")),
-            ("K_Qp", *ratio(q, p, fq, fp, "m^3/(s Pa)")),
+            ("K_Qx", *ratio(q, x, fq, fx, "m²/s")),
+            ("K_Qp", *ratio(q, p, fq, fp, "m³/(s·Pa)")),
             ("K_px", *ratio(p, x, fp, fx, "Pa/m")),
         ]
 
@@ -128,7 +132,7 @@ class LinearReport(Report):
         pairs = [(i, o) for i in lin.inputs[:1] for o in lin.outputs[:4]]
         out = [
             Artifact("json", f"{name}-linear.json",
-                     lambda p: write_linear_model(lin, p, {"valves": [v.to_dict() for v in self.valves]})),
+                     lambda p: write_linear_model(lin, p, {"valves": self.to_dict()["valves"]})),
             Artifact("poles", f"{name}-poles.png", lambda p: plot_poles(lin, file=p)),
             Artifact("bode", f"{name}-bode.png", lambda p: plot_linear_bode(lin, grid, pairs, file=p)),
         ]
@@ -144,7 +148,7 @@ class LinearReport(Report):
 
     def to_dict(self) -> dict[str, Any]:
         lin, f, sim = self.model, self.frequencies, self.simulated
-        report = {**lin.to_dict(), "valves": [v.to_dict() for v in self.valves]}
+        report = {**lin.to_dict(), "valves": [{**v.to_dict(), "units": _SI_COEFFICIENTS} for v in self.valves]}
         if f is not None:
             report["frequency_response"] = [
                 {"input": i, "output": o, "frequencies_Hz": f.tolist(),

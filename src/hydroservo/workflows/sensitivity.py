@@ -203,13 +203,14 @@ class GlobalReport(Report):
         named in the ``metric`` column (Sobol's indices have no unit)."""
         study = self.study
         table = study.indices.copy()
-        if study.method != "morris" or table.empty:
+        if table.empty:
             return table
         shown = _shown_metrics(self.system, list(dict.fromkeys(table["metric"])),
                                self.units if self.units is not None else self.system.unit_choice())
-        for key in ("mu_star", "mu_star_conf", "sigma", "mu"):
-            if key in table:
-                table[key] = [v * shown[m].factor for v, m in zip(table[key], table["metric"], strict=True)]
+        if study.method == "morris":  # effects in the metric's unit; Sobol's indices have none
+            for key in ("mu_star", "mu_star_conf", "sigma", "mu"):
+                if key in table:
+                    table[key] = [v * shown[m].factor for v, m in zip(table[key], table["metric"], strict=True)]
         table["metric"] = [shown[m].name for m in table["metric"]]
         return table
 

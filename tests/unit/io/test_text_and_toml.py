@@ -40,3 +40,8 @@ def test_edit_toml_changes_adds_removes_and_renames_keeping_comments() -> None:
     assert "# head" in out and "# table a" in out and "x = 10  # the x" in out and "# between" in out
     assert "new = 4  # renamed" in out and "y =" not in out
     assert tomllib.loads(out) == {"a": {"x": 10, "new": 4}, "b": {"z": "q", "w": "new"}}
+
+
+def test_text_table_shows_no_negative_zero_and_nan_as_missing() -> None:
+    lines = text_table([["a", -0.0, -0.00004, float("nan")]], ["n", "x", "y", "z"], digits=[5, 5, ".3f", 4])
+    assert lines[2].split() == ["a", "0", "0.000", "-"]
