@@ -43,12 +43,13 @@ def test_close_names_find_typos_and_other_cases_and_nothing_far() -> None:
         (["export-fmu", "flight-simulator", "--methd", "rk4"], "(did you mean '--method'?)"),
         (["simulate", "flight-simulatr"], "(did you mean 'flight-simulator'?)"),
         (["describe", "cylinder"], "component type 'cylinder': unknown (did you mean 'Cylinder'?)"),
+        (["describe", "flight-simulator"], "'flight-simulator' is a built-in model, not a component type"),
         (["simulate", "flight-simulator", "--set", "lod.W=3"], "no component 'lod' (did you mean 'load'?)"),
         (["simulate", "flight-simulator", "--set", "load.WW=3"], "no parameter 'WW' (did you mean 'W'?)"),
         (["simulate", "flight-simulator", "--method", "rodas"], "(did you mean 'rodas3'?)"),
     ],
-    ids=["command", "option", "option-of-another-command", "model", "component-type", "component", "parameter",
-         "method"],
+    ids=["command", "option", "option-of-another-command", "model", "component-type", "model-as-component-type",
+         "component", "parameter", "method"],
 )
 def test_a_mistyped_name_gets_its_closest_matches(argv: list[str], expected: str, cli) -> None:
     code, out, err = cli(*argv)

@@ -215,6 +215,14 @@ def reference(type_name: str | type[Component]) -> Reference:
     if isinstance(type_name, str):
         cls = REGISTRY.resolve(type_name)
         if cls is None:
+            from hydroservo.data import model_names
+
+            if type_name in model_names():
+                raise ParameterError(
+                    f"{type_name!r} is a built-in model, not a component type: `hydroservo simulate {type_name}` runs "
+                    f"it, `hydroservo draw {type_name}` draws its circuit; component types: "
+                    f"{', '.join(sorted(REGISTRY.types))}"
+                )
             raise ParameterError(
                 f"component type {type_name!r}: unknown{did_you_mean(type_name, REGISTRY.types)}; known: "
                 f"{', '.join(sorted(REGISTRY.types))}"
