@@ -308,8 +308,9 @@ def _component_spec(spec: Any, ctx: str, base: Path | None) -> dict[str, Any]:
         # a time table of a Table component
         column = spec.get("column", 1)
         times, values = read_time_table(file, column, what=ctx)
-    except HydroservoError as exc:
-        raise ModelFileError(f"{ctx}: {exc}") from None
+    except HydroservoError as exc:  # the table's reader names the component already (what=ctx)
+        text = str(exc)
+        raise ModelFileError(text if text.startswith(ctx) else f"{ctx}: {text}") from None
     rest = {k: v for k, v in spec.items() if k not in ("file", "column")}
     source = {"file": str(spec["file"]), "column": column}
     return {**rest, "times": times, "values": values, "source": source}
