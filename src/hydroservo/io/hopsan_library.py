@@ -219,6 +219,66 @@ def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
+def _pressure_valve_g(reducing: bool) -> Builder:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
+    a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
+    p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
+    x_v, its opening x_v in [0, Xvmax] (Hopsan limits the bilinear transform of B_v ẋ_v = A_v Δp_over - k_e x_v,
+    the law it stands for, and its memory: no wind-up), the flow Cq w x_v √(2/ρ) signedSquareL(p_1 - p_2, p0) with
+    w = π Dv frac sin φ. That is ReliefValve or PressureReducingValve with ``spool = "balance"``
+    (:func:`hydroservo.laws.pressure_valve.spool_balance_rate`): K = Cq w √(2/ρ) x_v, C_s = ks/(Cq w √(2/ρ) A_v),
+    C_f = 2 cos φ/(√(2/ρ) A_v), tau = Bv/ks, K at most Cq w √(2/ρ) Xvmax, p_tr = p0 (signedSquareL is
+    hydroservo's regularised turbulent law exactly). The relief valve's setting is a drop (``pilot = "drop"``), the
+    reducing valve's an absolute pressure. π where Hopsan writes 3.14159 and 0.785398 (1e-6 apart); visc is
+    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import PressureReducingValve, ReliefValve
+
+        rho, dv, frac, phi = par("rho", 870.0), par("Dv", 0.01), par("frac", 0.1), par("phi", 1.17)
+        ks, bv, x_vmax, cq = par("ks", 1e4), par("Bv", 1000.0), par("Xvmax", 0.002), par("Cq", 0.67)
+        before = len(par.problems)
+        for name, value in (("rho", rho), ("Dv", dv), ("frac", frac), ("ks", ks), ("Bv", bv), ("Xvmax", x_vmax),
+                            ("Cq", cq), ("p0", par("p0", 1e5))):
+            if value <= 0.0:
+                par.problems.append(f"{par.where}: {name} = {value:g}; only a value above 0 is supported")
+        if not 0.0 < phi < math.pi / 2:
+            par.problems.append(
+                f"{par.where}: stream angle phi = {phi:g} rad; only an angle in (0, π/2) is supported (a jet that "
+                "opens the valve and a flow force that closes it)"
+            )
+        if len(par.problems) > before:
+            return Mapped()
+        root = math.sqrt(2.0 / rho)
+        c = cq * math.pi * dv * frac * math.sin(phi) * root  # K per metre of opening
+        area = math.pi * dv * dv / 4.0
+        p_nom = 7e6  # any nominal drop: the characteristics below are scaled by it
+        c_s = ks / (c * area)
+        c_f = 2.0 * math.cos(phi) / (root * area)
+        spool: dict[str, Any] = {
+            "spool": "balance",
+            "tau": bv / ks,
+            "k_cs": math.sqrt(p_nom) / c_s,
+            "k_cf": 1.0 / (c_f * math.sqrt(p_nom)),
+            "q_nom": c * x_vmax * math.sqrt(p_nom),
+            "p_nom": p_nom,
+            "p_tr": par("p0", 1e5),
+        }
+        comp: cbase.Component
+        if reducing:
+            comp = PressureReducingValve(n, p_set=_abs(par("pref", 1e7)), **spool)
+        else:
+            comp = ReliefValve(n, p_crack=par("pref", 1e7), pilot="drop", **spool)
+        return Mapped(
+            [comp],
+            power={"P1": f"{n}.A", "P2": f"{n}.B"},
+            values={"xv": Var(x_vmax, f"{n}.s")},
+            initial={f"{n}.K": c * min(max(par("xv", 0.0), 0.0), x_vmax)},
+        )
+
+    return build
+
+
 def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -1009,6 +1069,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
     "HydraulicPressureReliefValve": _relief,
+    "HydraulicPressureReliefValveG": _pressure_valve_g(reducing=False),
+    "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),

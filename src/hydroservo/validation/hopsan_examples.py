@@ -100,6 +100,16 @@ MODELS: dict[str, Spec] = {
         "Component Test/HydraulicComponent Test/HydraulicValve33Test.hmf",
         "a 3/3 valve with its spool position as input and a laminar onset, ramped between pressure sources",
     ),
+    "hydraulic-pressure-relief-valve-g-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureReliefValveGTest.hmf",
+        "two spool relief valves (force balance with flow forces) protecting volumes fed by flow sources, one "
+        "drained by an orifice that a step closes, the other fed by a soft-step flow",
+    ),
+    "hydraulic-pressure-reducing-valve-g-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureReducingValveGTest.hmf",
+        "a spool pressure-reducing valve (force balance with flow forces) feeding a volume drained by a laminar "
+        "orifice whose coefficient is ramped",
+    ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",

@@ -556,6 +556,42 @@ def test_hopsans_check_valve_passes_k_s_root_dp_one_way(tmp_path: Path) -> None:
     assert p_tr < 100.0  # Pa: turbulent down to some 50 Pa (Hopsan: to the null)
 
 
+def test_hopsans_g_pressure_valves_settle_on_their_spools_force_balance(tmp_path: Path) -> None:
+    """[Hopsan2026] Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp: at rest the
+    spool sits where A_v Δp_over = (ks + 2 Cq w cos φ (p_1 - p_2)) x_v (relief: Δp_over = p_1 - p_2 - pref,
+    reducing: pref - p_2, absolute), and passes Cq w x_v √(2/ρ) signedSquareL(p_1 - p_2, p0), w = π Dv frac sin φ;
+    its xv is logged. A stream angle outside (0, π/2) is refused."""
+    v = _value
+    components = [
+        ("HydraulicPressureReliefValveG", "RV", {"pref#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureReducingValveG", "RD", {"pref#Value": v("2e6", "Pa"), "p0#Value": v("3e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1.05e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S3", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S4", {"p#Value": v("1.5e6", "Pa")}),
+    ]
+    connections = [("RV.P1", "S1.P1"), ("RV.P2", "S2.P1"), ("RD.P1", "S3.P1"), ("RD.P2", "S4.P1")]
+    path = tmp_path / "g.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["RV"].option("spool") == "balance" and imp.system["RV"].option("pilot") == "drop"
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-8)
+    w = np.pi * 0.01 * 0.1 * np.sin(1.17)
+    area = np.pi * 0.01**2 / 4.0
+    for name, p1, p2, over, p0 in (("RV", 1.05e7, 1e5, 1.05e7 - 1e5 - 1e7, 1e5), ("RD", 1e7, 1.5e6, 2e6 - 1.5e6, 3e5)):
+        dp = p1 - p2
+        x = area * over / (1e4 + 2.0 * 0.67 * w * np.cos(1.17) * dp)
+        assert 0.0 < x < 0.002  # within the stroke
+        q = 0.67 * w * x * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p0 * p0) ** 0.25
+        assert r[f"{name}.xv.Value"][-1] == pytest.approx(x, rel=1e-6)
+        assert r[f"{name}.P2.Flow"][-1] == pytest.approx(q, rel=1e-6)
+        assert r[f"{name}.xv.Value"][0] == 0.0  # from Hopsan's start value
+    path.write_text(_hmf([(k, n, {**p, "phi#Value": v("2")} if n == "RV" else p) for k, n, p in components],
+                         connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"RV \(HydraulicPressureReliefValveG\): stream angle phi = 2 rad"):
+        read_hopsan(path)
+
+
 def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path: Path) -> None:
     """Hopsan's math blocks become one Function each, with the option naming the function, their ``error``
     output where Hopsan's has one and atan2's inputs inY and inX (an unconnected inX takes its start value);
