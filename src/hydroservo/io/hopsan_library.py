@@ -509,6 +509,79 @@ def _valve22(command: str, ports: tuple[str, str]) -> Builder:
     return build
 
 
+def _pressure_controlled(kind: str) -> Builder:
+    """Hopsan's pressure-controlled valves ([Hopsan2026] Hydraulic/Valves/PressureControlled/
+    HydraulicPressureControlled22Valve.hpp, ...22Valve2, ...42Valve, ...42Valve2, ...42Valve3): the spool of the
+    one-sided 2/2 and 4/2 valves (its second-order filter, limited to [0, x_vmax], starting at 0 as Hopsan's
+    filter does whatever the file's x_v), commanded by the pilot pressure at PC (absolute, as Hopsan's Fs_min and
+    Fs_max), x_vmax·limit((p_C - Fs_min)/(Fs_max - Fs_min), 0, 1). PC takes no flow: a Sum reads its node (as a
+    sensor does), a Sum takes Fs_min off, a Gain scales to metres. The edges (turbulent, as the 2/2 and 4/2
+    valves'):
+
+    * 22Valve (default closed): PP-PA opens as x_v, a TwoWayValve with x_AB = 0;
+    * 22Valve2 (default open): PP-PA opens as x_vmax - x_v, a TwoWayValve on -x_v (a Gain of -1) with
+      x_AB = -x_vmax;
+    * 42Valve: P-A and B-T open as x_v, P-B and A-T never (Hydraulic42Valve's FourWayValve);
+    * 42Valve2: P-A and B-T open as x_vmax - x_v, P-B and A-T never: a FourWayValve with Hopsan's PA on its B
+      and PB on its A, whose P-B and A-T open as x_vmax - x_v (laps -x_vmax), P-A and B-T covered (+x_vmax);
+    * 42Valve3: P-A and B-T as x_vmax - x_v, P-B and A-T as x_v: Hydraulic42Valve2's FourWayValve with PA and
+      PB swapped.
+
+    Fs_max <= Fs_min, unequal fractions of the edges used and delta_h < 1 (a spool that overshoots) are refused."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import FourWayValve, Gain, Sum, TwoWayValve
+
+        rho, x_vmax = par("rho", 870.0), par("x_vmax", 0.01)
+        fs_min, fs_max = par("Fs_min", 1e5), par("Fs_max", 1e6)
+        if fs_max <= fs_min:
+            par.problems.append(
+                f"{par.where}: Fs_max = {fs_max:g} Pa is not above Fs_min = {fs_min:g} Pa; the spool opens between them"
+            )
+            fs_max = fs_min + 1.0
+        spool = _spool(n, par, x_vmax, "one-sided", 0.0)  # Hopsan's filter starts at 0
+        pilot = Sum(f"{n}_pilot", unit="Pa", gain2=0.0)  # the node's pressure, absolute (set as a sensor's)
+        over = Sum(f"{n}_over", unit="Pa", gain2=0.0, offset=-fs_min)
+        command = Gain(f"{n}_cmd", unit="m", input_unit="Pa", K=f"{x_vmax / (fs_max - fs_min)!r} m/Pa")
+        blocks: list[cbase.Component] = [pilot, over, command, *spool.components]
+        internal = [(f"{n}_pilot.y", f"{n}_over.u1"), (f"{n}_over.y", f"{n}_cmd.u"),
+                    (f"{n}_cmd.y", spool.inputs["in"]), *spool.internal]
+        power: dict[str, str]
+        valve: cbase.Component
+        if kind.startswith("22"):
+            c_v = _edge_coefficient(par, par("f_pa", 1.0), rho)
+            if kind == "22":
+                valve = TwoWayValve(n, c_v=c_v, x_AB=0.0, rho=rho, D_h="1 mm", lambda_crit=10.0)
+                internal.append((f"{n}_spool.xv", f"{n}.xv"))
+            else:
+                valve = TwoWayValve(n, c_v=c_v, x_AB=-x_vmax, rho=rho, D_h="1 mm", lambda_crit=10.0)
+                flip = Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0)
+                blocks.append(flip)
+                internal += [(f"{n}_spool.xv", f"{n}_flip.u"), (f"{n}_flip.y", f"{n}.xv")]
+            power = {"PP": f"{n}.A", "PA": f"{n}.B"}
+        else:
+            fractions = ("f_pa", "f_pb", "f_at", "f_bt") if kind == "42-3" else ("f_pa", "f_bt")
+            c_v = _edge_coefficient(par, _equal_fractions(par, fractions), rho)
+            laps = {"42": (0.0, x_vmax), "42-2": (x_vmax, -x_vmax), "42-3": (0.0, -x_vmax)}[kind]
+            valve = FourWayValve(n, c_v=c_v, x_PA=laps[0], x_BT=laps[0], x_PB=laps[1], x_AT=laps[1], rho=rho,
+                                 D_h="1 mm", lambda_crit=10.0)
+            a, b = ("A", "B") if kind == "42" else ("B", "A")  # 42Valve2 and 42Valve3: Hopsan's PA on B
+            power = {"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.{a}", "PB": f"{n}.{b}"}
+            internal += [(f"{n}_spool.xv", f"{n}.xv"), (f"{n}_spool.vv", f"{n}.vv")]
+        return Mapped(
+            [*blocks, valve],
+            power=power,
+            read={"PC": (f"{n}_pilot.u1", "Pressure")},
+            values={"x_v": Var(1.0, f"{n}_spool.xv")},
+            initial=spool.initial,
+            internal=internal,
+            note="a Sum reading the pilot PC, a Sum and a Gain to the spool's command, "
+            + _NOTE["one-sided"].format(valve="TwoWayValve" if kind.startswith("22") else "FourWayValve"),
+        )
+
+    return build
+
+
 def _valve33_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Special/HydraulicValve33.hpp: a 3/3 valve whose spool position xv [m] is its input
     (no spool dynamics). Its edges' conductances are Ks π Fr Sd limit(Xap0 ± xv, 0, X0 + Xvmax) with
@@ -1069,6 +1142,11 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
     "HydraulicPressureReliefValve": _relief,
+    "HydraulicPressureControlled22Valve": _pressure_controlled("22"),
+    "HydraulicPressureControlled22Valve2": _pressure_controlled("22-2"),
+    "HydraulicPressureControlled42Valve": _pressure_controlled("42"),
+    "HydraulicPressureControlled42Valve2": _pressure_controlled("42-2"),
+    "HydraulicPressureControlled42Valve3": _pressure_controlled("42-3"),
     "HydraulicPressureReliefValveG": _pressure_valve_g(reducing=False),
     "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
     "HydraulicFixedDisplacementPump": _fixed_pump,

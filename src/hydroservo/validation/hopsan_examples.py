@@ -110,6 +110,26 @@ MODELS: dict[str, Spec] = {
         "a spool pressure-reducing valve (force balance with flow forces) feeding a volume drained by a laminar "
         "orifice whose coefficient is ramped",
     ),
+    "hydraulic-pressure-controlled-22-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled22ValveTest.hmf",
+        "a 2/2 valve (closed at rest) opened by a ramped pilot pressure between pressure sources",
+    ),
+    "hydraulic-pressure-controlled-22-valve2-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled22Valve2Test.hmf",
+        "a 2/2 valve (open at rest) closed by a ramped pilot pressure between pressure sources",
+    ),
+    "hydraulic-pressure-controlled-42-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled42ValveTest.hmf",
+        "a 4/2 valve (P-A and B-T opening) driven by a ramped pilot pressure between pressure sources",
+    ),
+    "hydraulic-pressure-controlled-42-valve2-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled42Valve2Test.hmf",
+        "a 4/2 valve (P-A and B-T closing) driven by a ramped pilot pressure between pressure sources",
+    ),
+    "hydraulic-pressure-controlled-42-valve3-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled42Valve3Test.hmf",
+        "a 4/2 valve switching P-A, B-T to P-B, A-T as a ramped pilot pressure rises",
+    ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",

@@ -592,6 +592,52 @@ def test_hopsans_g_pressure_valves_settle_on_their_spools_force_balance(tmp_path
         read_hopsan(path)
 
 
+def test_hopsans_pressure_controlled_valves_open_their_edges_as_the_pilot_pressure_sets_the_spool(tmp_path: Path) -> None:
+    """[Hopsan2026] PressureControlled/HydraulicPressureControlled22Valve.hpp, ...22Valve2, ...42Valve3: at rest the
+    spool sits at x_vmax·limit((p_C - Fs_min)/(Fs_max - Fs_min), 0, 1) (p_C absolute); the default-closed 2/2 valve
+    opens PP-PA as x_v, the default-open one as x_vmax - x_v, the 4/2 valve 3 P-A and B-T as x_vmax - x_v and P-B,
+    A-T as x_v, each Cq f π d √(2/ρ) times the opening times √Δp. Fs_max not above Fs_min is refused."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    v = _value
+    sources = {"SP": 2e7, "ST": 1e5, "SA": 1.2e7, "SB": 0.8e7, "SC": 3.25e5, "SD": 7.75e5}
+    components = [
+        ("HydraulicPressureControlled22Valve", "V1", {}),
+        ("HydraulicPressureControlled22Valve2", "V2", {}),
+        ("HydraulicPressureControlled42Valve3", "V3", {"x_vmax#Value": v("0.002")}),
+        *[("HydraulicPressureSourceC", k, {"p#Value": v(repr(p), "Pa")}) for k, p in sources.items()],
+    ]
+    connections = [("V1.PP", "SP.P1"), ("V1.PA", "SA.P1"), ("V1.PC", "SC.P1"),
+                   ("V2.PP", "SP.P1"), ("V2.PA", "SA.P1"), ("V2.PC", "SC.P1"),
+                   ("V3.PP", "SP.P1"), ("V3.PT", "ST.P1"), ("V3.PA", "SA.P1"), ("V3.PB", "SB.P1"), ("V3.PC", "SD.P1")]
+    path = tmp_path / "pc.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 1.0], accuracy=1e-8)
+    p_tr = transition_pressure(1e-3, 870.0, 32e-6, 10.0)
+    kc = 0.67 * np.pi * 0.01 * np.sqrt(2.0 / 870.0)
+
+    def q(opening: float, dp: float) -> float:
+        return kc * opening * dp / (dp * dp + p_tr * p_tr) ** 0.25
+
+    x1 = 0.01 * (3.25e5 - 1e5) / 9e5  # a quarter of the stroke
+    x3 = 0.002 * 0.75
+    assert r["V1.x_v.Value"][-1] == pytest.approx(x1, rel=1e-6) and r["V2.x_v.Value"][-1] == pytest.approx(x1)
+    assert r["V3.x_v.Value"][-1] == pytest.approx(x3, rel=1e-6)
+    assert r["V1.x_v.Value"][0] == 0.0  # Hopsan's spool starts at 0 whatever the pilot
+    # three valves share the node SA: its flow is logged by none of them; their own flows PP to PA
+    assert r["V1.Q"][-1] == pytest.approx(q(x1, 0.8e7), rel=1e-6)
+    assert r["V2.Q"][-1] == pytest.approx(q(0.01 - x1, 0.8e7), rel=1e-6)
+    q_pa, q_pb = q(0.002 - x3, 2e7 - 1.2e7), q(x3, 2e7 - 0.8e7)
+    q_at, q_bt = q(x3, 1.2e7 - 1e5), q(0.002 - x3, 0.8e7 - 1e5)
+    assert r["V3.QB"][-1] == pytest.approx(q_pa - q_at, rel=1e-6)  # Hopsan's PA is the FourWayValve's B
+    assert r["V3.PB.Flow"][-1] == pytest.approx(q_pb - q_bt, rel=1e-6)
+    assert r["V3.PT.Flow"][-1] == pytest.approx(q_at + q_bt, rel=1e-6)
+    path.write_text(_hmf([(k, n, {"Fs_max#Value": v("1e5")} if n == "V1" else p) for k, n, p in components],
+                         connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V1 \(HydraulicPressureControlled22Valve\): Fs_max = 100000 Pa is not"):
+        read_hopsan(path)
+
+
 def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path: Path) -> None:
     """Hopsan's math blocks become one Function each, with the option naming the function, their ``error``
     output where Hopsan's has one and atan2's inputs inY and inX (an unconnected inX takes its start value);
