@@ -5,16 +5,20 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, State, register
-from hydroservo.laws.accumulator import gas_capacitance, gas_volume
+from hydroservo import backend as bk
+from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
+from hydroservo.laws.accumulator import gas_capacitance, gas_pressure, gas_volume
 from hydroservo.laws.chamber import pressure_rate
-from hydroservo.laws.pressure_valve import opening_fraction
+from hydroservo.laws.pressure_valve import limited_rate, opening_fraction
 from hydroservo.units import VACUUM
 
 __all__ = ["Accumulator"]
 
 #: Width of the rounded corner at the pre-charge, as a fraction of the absolute pre-charge pressure.
 CORNER = 0.01
+#: With ``inlet = "laminar"``, the time over which the oil stored settles on a bound (empty, full) [s]: the
+#: oil that passes in it, the flow times 1 µs, is far below what a pressure in the circuit responds to.
+STOP_TIME = 1e-6
 
 
 @register
@@ -33,7 +37,29 @@ class Accumulator(Component):
     the pre-charge over 1 % of its absolute pressure (the gas does not act
     until the pressure exceeds it). Output ``V_oil`` is the oil stored,
     :math:`V_0 - V_g`.
+
+    Option ``inlet``: ``open`` (default), the above; ``laminar``, the oil
+    enters through a laminar inlet of conductance ``K_ca`` and the oil stored
+    is the state:
+
+    .. math:: \dot V_{oil} = Q = K_{ca}\,(p_P - p_g), \qquad
+              p_g = p_0 \Big(\frac{V_0}{\max(V_0 - V_{oil},\, V_{g,min})}\Big)^{\kappa}\ \text{(absolute)}
+
+    with :math:`V_{oil}` held in :math:`[0, V_0]` (empty: no flow out; full:
+    none in; :func:`~hydroservo.laws.pressure_valve.limited_rate`, settling
+    on a bound within 1 µs). Its port then takes the node's pressure and
+    gives the flow; output ``p`` is the gas pressure, ``V_gas`` the gas
+    volume. This is [Hopsan2026] Hydraulic/Volumes&Lines/HydraulicAckumulator.hpp
+    (its state of charge :math:`x = V_{oil}/V_0`, integrated there by the
+    trapezoidal rule and limited to [0, 1], the gas volume to at least
+    0.1 :math:`V_0`). The gas law is the same in both; the laminar inlet
+    makes a Q-type accumulator of it, which is empty below the pre-charge
+    rather than compressing its port's oil.
     """
+
+    OPTIONS = {
+        "inlet": Option("open", ("open", "laminar"), "oil straight into the gas spring, or through a laminar inlet"),
+    }
 
     PARAMETERS = {
         "V0": Param(1e-3, "m^3", "gas volume at pre-charge (nominal size)", min=0.0, min_inclusive=False),
@@ -42,6 +68,10 @@ class Accumulator(Component):
         "V_dead": Param(1e-5, "m^3", "oil volume in the port and connection", min=0.0, min_inclusive=False),
         "beta_e": Param(1.4e9, "Pa", "bulk modulus of the oil in the port", min=0.0, min_inclusive=False, fluid="bulk_modulus"),
         "p_init": Param(0.0, "Pa", "initial oil pressure (gauge)", min=VACUUM),
+        "K_ca": Param(1e-8, "m^3/s/Pa", "conductance of the laminar inlet (option inlet = laminar)", min=0.0,
+                      min_inclusive=False),
+        "V_gmin": Param(1e-4, "m^3", "smallest gas volume (option inlet = laminar; Hopsan's 0.1 V0)", min=0.0,
+                        min_inclusive=False),
     }
     STATES = {"p": State("Pa", "oil pressure", initial="p_init", nominal=1e7)}
     INPUTS = {"Q": Port("m^3/s", "flow into the accumulator through port P", default=0.0)}
@@ -52,14 +82,44 @@ class Accumulator(Component):
     HYDRAULIC = {"P": Hydraulic("p", "Q", "oil port")}
     LIMITS = {"p": Limit("pressure")}
 
+    def options_changed(self) -> None:
+        cls = type(self)
+        if self.option("inlet") == "laminar":
+            self.STATES = {  # type: ignore[misc]
+                "V_oil": State("m^3", "oil stored (V0 minus the gas volume)", nominal=1e-3)
+            }
+            self.INPUTS = {"pP": Port("Pa", "pressure at port P")}  # type: ignore[misc]
+            self.OUTPUTS = {  # type: ignore[misc]
+                "Q": Output("m^3/s", "flow into the accumulator through port P"),
+                "p": Output("Pa", "gas pressure"),
+                "V_oil": Output("m^3", "oil stored (V0 minus the gas volume)"),
+                "V_gas": Output("m^3", "gas volume"),
+            }
+            self.HYDRAULIC = {"P": Hydraulic("pP", "Q", "oil port")}  # type: ignore[misc]
+            self.LIMITS = {}  # type: ignore[misc]
+        else:
+            for key in ("STATES", "INPUTS", "OUTPUTS", "HYDRAULIC", "LIMITS"):
+                setattr(self, key, getattr(cls, key))
+
+    def _gas(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> tuple[Any, Any]:
+        """The gas volume and pressure of the laminar inlet's accumulator."""
+        V_g = bk.fmax(p["V0"] - x["V_oil"], p["V_gmin"])
+        return V_g, gas_pressure(V_g, p["p0"], p["V0"], p["kappa"])
+
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
+        if self.option("inlet") == "laminar":
+            V_g, p_g = self._gas(x, p)
+            Q = limited_rate(x["V_oil"], p["K_ca"] * (u["pP"] - p_g), p["V0"], STOP_TIME)
+            return {"Q": Q, "p": p_g, "V_oil": x["V_oil"], "V_gas": p["V0"] - x["V_oil"]}
         return {"p": x["p"], "V_oil": p["V0"] - gas_volume(x["p"], p["p0"], p["V0"], p["kappa"])}
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
+        if self.option("inlet") == "laminar":
+            return {"V_oil": y["Q"]}
         band = CORNER * (p["p0"] - VACUUM)
         w = opening_fraction(x["p"], p["p0"] - band / 2, band)
         C = p["V_dead"] / p["beta_e"] + w * gas_capacitance(x["p"], p["p0"], p["V0"], p["kappa"])

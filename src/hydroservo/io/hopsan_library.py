@@ -279,6 +279,37 @@ def _pressure_valve_g(reducing: bool) -> Builder:
     return build
 
 
+def _accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Volumes&Lines/HydraulicAckumulator.hpp: a Q-type gas accumulator whose state of charge
+    x = xmp follows V0 ẋ = Kca (p_1 - pa), limited to [0, 1] (its trapezoidal rule and limit stand for that ODE
+    held at its bounds), pa = p0 (1/limit(1 - x, 0.1, 1))^kappa (absolute), q into it V0 ẋ: Accumulator with
+    ``inlet = "laminar"``, K_ca = Kca, V_gmin = 0.1 V0, V_oil starting at xmp V0. Its outputs pa (absolute), Va
+    (V0 (1 - x)), xmp and vmp (ẋ) are the Accumulator's p, V_gas, V_oil/V0 and Q/V0."""
+    from hydroservo.components import Accumulator
+
+    v0, kappa = par("V0", 1e-3), par("kappa", 1.2)
+    if v0 <= 0.0 or par("Kca", 1e-8) <= 0.0:
+        par.problems.append(f"{par.where}: V0 and Kca above 0 are supported")
+        return Mapped()
+    if not 1.0 <= kappa <= 1.67:
+        par.problems.append(f"{par.where}: kappa = {kappa:g}; a polytropic exponent in [1, 1.67] is supported")
+        return Mapped()
+    comp = Accumulator(
+        n, inlet="laminar", V0=v0, K_ca=par("Kca", 1e-8), kappa=kappa, p0=_abs(par("p0", 1e7)), V_gmin=0.1 * v0
+    )
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.P"},
+        values={
+            "pa": Var(1.0, f"{n}.p", absolute=True),
+            "Va": Var(1.0, f"{n}.V_gas"),
+            "xmp": Var(1.0 / v0, f"{n}.V_oil"),
+            "vmp": Var(1.0 / v0, f"{n}.Q"),
+        },
+        initial={f"{n}.V_oil": min(max(par("xmp", 0.0), 0.0), 1.0) * v0},
+    )
+
+
 def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -1142,6 +1173,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
     "HydraulicPressureReliefValve": _relief,
+    "HydraulicAckumulator": _accumulator,
     "HydraulicPressureControlled22Valve": _pressure_controlled("22"),
     "HydraulicPressureControlled22Valve2": _pressure_controlled("22-2"),
     "HydraulicPressureControlled42Valve": _pressure_controlled("42"),

@@ -130,6 +130,10 @@ MODELS: dict[str, Spec] = {
         "Component Test/HydraulicComponent Test/HydraulicPressureControlled42Valve3Test.hmf",
         "a 4/2 valve switching P-A, B-T to P-B, A-T as a ramped pilot pressure rises",
     ),
+    "hydraulic-ackumulator-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicAckumulatorTest.hmf",
+        "a gas accumulator behind a laminar inlet, charged and emptied through a volume by a sine-wave flow source",
+    ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",

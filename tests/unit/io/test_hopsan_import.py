@@ -638,6 +638,31 @@ def test_hopsans_pressure_controlled_valves_open_their_edges_as_the_pilot_pressu
         read_hopsan(path)
 
 
+def test_hopsans_gas_accumulator_charges_through_its_inlet_coefficient(tmp_path: Path) -> None:
+    """[Hopsan2026] Volumes&Lines/HydraulicAckumulator.hpp: q = V0 ẋ = Kca (p_1 - pa), pa = p0/(1 - x)^kappa
+    (absolute), from the start value xmp; its outputs pa, Va = V0 (1 - x), xmp and vmp = ẋ are logged. A
+    polytropic exponent outside [1, 1.67] is refused."""
+    v = _value
+    components = [
+        ("HydraulicAckumulator", "Acc", {"V0#Value": v("0.002"), "Kca#Value": v("2e-9"), "kappa#Value": v("1.3"),
+                                         "p0#Value": v("8e6"), "xmp#Value": v("0.2")}),
+        ("HydraulicPressureSourceC", "S", {"p#Value": v("1.5e7", "Pa")}),
+    ]
+    path = tmp_path / "acc.hmf"
+    path.write_text(_hmf(components, [("Acc.P1", "S.P1")]), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
+    pa = 8e6 / 0.8**1.3
+    assert r["Acc.pa.Value"][0] == pytest.approx(pa, rel=1e-9)
+    assert r["Acc.xmp.Value"][0] == pytest.approx(0.2) and r["Acc.Va.Value"][0] == pytest.approx(0.0016)
+    assert r["Acc.vmp.Value"][0] == pytest.approx(2e-9 * (1.5e7 - pa) / 0.002, rel=1e-9)
+    x_end = 1.0 - (8e6 / 1.5e7) ** (1 / 1.3)  # charged until pa reaches the source's pressure
+    assert r["Acc.xmp.Value"][-1] == pytest.approx(x_end, rel=1e-5)
+    components[0][2]["kappa#Value"] = v("2")
+    path.write_text(_hmf(components, [("Acc.P1", "S.P1")]), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"Acc \(HydraulicAckumulator\): kappa = 2"):
+        read_hopsan(path)
+
+
 def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path: Path) -> None:
     """Hopsan's math blocks become one Function each, with the option naming the function, their ``error``
     output where Hopsan's has one and atan2's inputs inY and inX (an unconnected inX takes its start value);
