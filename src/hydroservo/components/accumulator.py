@@ -10,6 +10,7 @@ from hydroservo.components.base import Component, Hydraulic, Limit, Option, Outp
 from hydroservo.laws.accumulator import gas_capacitance, gas_pressure, gas_volume
 from hydroservo.laws.chamber import pressure_rate
 from hydroservo.laws.pressure_valve import limited_rate, opening_fraction
+from hydroservo.laws.stops import end_stop_force
 from hydroservo.units import VACUUM
 
 __all__ = ["Accumulator"]
@@ -55,10 +56,26 @@ class Accumulator(Component):
     0.1 :math:`V_0`). The gas law is the same in both; the laminar inlet
     makes a Q-type accumulator of it, which is empty below the pre-charge
     rather than compressing its port's oil.
+
+    ``inlet = "piston"``: a piston of area ``A_p`` and mass ``m_p`` separates
+    the oil from the gas; the accumulator's stroke is :math:`V_0/A_p`:
+
+    .. math:: m_p\ddot x_p = A_p (p_P - p_g) - B_p\dot x_p + F_{stop}, \qquad Q = A_p\dot x_p,
+              \qquad V_{oil} = A_p x_p
+
+    with the gas law above and end stops at 0 and the stroke
+    (:func:`~hydroservo.laws.stops.end_stop_force`, ``k_stop``, ``c_stop``).
+    This is [Hopsan2026] Hydraulic/Volumes&Lines/HydraulicPistonAckumulator.hpp
+    (its bilinear transform of the piston's motion, its position clamped to the
+    stroke and its velocity zeroed there: inelastic stops, which the stiff
+    spring-damper approaches; its gas volume at least 0.001 :math:`V_0`).
     """
 
     OPTIONS = {
-        "inlet": Option("open", ("open", "laminar"), "oil straight into the gas spring, or through a laminar inlet"),
+        "inlet": Option(
+            "open", ("open", "laminar", "piston"),
+            "oil straight into the gas spring, through a laminar inlet, or against a piston with mass",
+        ),
     }
 
     PARAMETERS = {
@@ -70,8 +87,13 @@ class Accumulator(Component):
         "p_init": Param(0.0, "Pa", "initial oil pressure (gauge)", min=VACUUM),
         "K_ca": Param(1e-8, "m^3/s/Pa", "conductance of the laminar inlet (option inlet = laminar)", min=0.0,
                       min_inclusive=False),
-        "V_gmin": Param(1e-4, "m^3", "smallest gas volume (option inlet = laminar; Hopsan's 0.1 V0)", min=0.0,
-                        min_inclusive=False),
+        "V_gmin": Param(1e-4, "m^3", "smallest gas volume (options inlet = laminar, piston; Hopsan's 0.1 V0, 0.001 V0)",
+                        min=0.0, min_inclusive=False),
+        "A_p": Param(1e-3, "m^2", "piston area (option inlet = piston)", min=0.0, min_inclusive=False),
+        "m_p": Param(1.0, "kg", "piston mass (option inlet = piston)", min=0.0, min_inclusive=False),
+        "B_p": Param(10.0, "N*s/m", "piston's viscous friction (option inlet = piston)", min=0.0),
+        "k_stop": Param(1e9, "N/m", "stiffness of the piston's end stops (option inlet = piston)", min=0.0),
+        "c_stop": Param(1e6, "N*s/m", "damping of the piston's end stops (option inlet = piston)", min=0.0),
     }
     STATES = {"p": State("Pa", "oil pressure", initial="p_init", nominal=1e7)}
     INPUTS = {"Q": Port("m^3/s", "flow into the accumulator through port P", default=0.0)}
@@ -84,10 +106,16 @@ class Accumulator(Component):
 
     def options_changed(self) -> None:
         cls = type(self)
-        if self.option("inlet") == "laminar":
-            self.STATES = {  # type: ignore[misc]
-                "V_oil": State("m^3", "oil stored (V0 minus the gas volume)", nominal=1e-3)
-            }
+        if self.option("inlet") != "open":
+            if self.option("inlet") == "laminar":
+                self.STATES = {  # type: ignore[misc]
+                    "V_oil": State("m^3", "oil stored (V0 minus the gas volume)", nominal=1e-3)
+                }
+            else:
+                self.STATES = {  # type: ignore[misc]
+                    "x_p": State("m", "piston position from empty", nominal=0.1),
+                    "v_p": State("m/s", "piston velocity (filling)", nominal=0.1),
+                }
             self.INPUTS = {"pP": Port("Pa", "pressure at port P")}  # type: ignore[misc]
             self.OUTPUTS = {  # type: ignore[misc]
                 "Q": Output("m^3/s", "flow into the accumulator through port P"),
@@ -101,18 +129,25 @@ class Accumulator(Component):
             for key in ("STATES", "INPUTS", "OUTPUTS", "HYDRAULIC", "LIMITS"):
                 setattr(self, key, getattr(cls, key))
 
+    def _oil(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return x["V_oil"] if self.option("inlet") == "laminar" else p["A_p"] * x["x_p"]
+
     def _gas(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> tuple[Any, Any]:
-        """The gas volume and pressure of the laminar inlet's accumulator."""
-        V_g = bk.fmax(p["V0"] - x["V_oil"], p["V_gmin"])
+        """The gas volume and pressure of the laminar inlet's or the piston's accumulator."""
+        V_g = bk.fmax(p["V0"] - self._oil(x, p), p["V_gmin"])
         return V_g, gas_pressure(V_g, p["p0"], p["V0"], p["kappa"])
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        if self.option("inlet") == "laminar":
+        if self.option("inlet") != "open":
             V_g, p_g = self._gas(x, p)
-            Q = limited_rate(x["V_oil"], p["K_ca"] * (u["pP"] - p_g), p["V0"], STOP_TIME)
-            return {"Q": Q, "p": p_g, "V_oil": x["V_oil"], "V_gas": p["V0"] - x["V_oil"]}
+            if self.option("inlet") == "laminar":
+                Q = limited_rate(x["V_oil"], p["K_ca"] * (u["pP"] - p_g), p["V0"], STOP_TIME)
+            else:
+                Q = p["A_p"] * x["v_p"]
+            V_oil = self._oil(x, p)
+            return {"Q": Q, "p": p_g, "V_oil": V_oil, "V_gas": p["V0"] - V_oil}
         return {"p": x["p"], "V_oil": p["V0"] - gas_volume(x["p"], p["p0"], p["V0"], p["kappa"])}
 
     def state_equations(
@@ -120,6 +155,11 @@ class Accumulator(Component):
     ) -> dict[str, Any]:
         if self.option("inlet") == "laminar":
             return {"V_oil": y["Q"]}
+        if self.option("inlet") == "piston":
+            force = p["A_p"] * (u["pP"] - y["p"]) - p["B_p"] * x["v_p"] + end_stop_force(
+                x["x_p"], x["v_p"], 0.0, p["V0"] / p["A_p"], p["k_stop"], p["c_stop"]
+            )
+            return {"x_p": x["v_p"], "v_p": force / p["m_p"]}
         band = CORNER * (p["p0"] - VACUUM)
         w = opening_fraction(x["p"], p["p0"] - band / 2, band)
         C = p["V_dead"] / p["beta_e"] + w * gas_capacitance(x["p"], p["p0"], p["V0"], p["kappa"])

@@ -134,6 +134,11 @@ MODELS: dict[str, Spec] = {
         "Component Test/HydraulicComponent Test/HydraulicAckumulatorTest.hmf",
         "a gas accumulator behind a laminar inlet, charged and emptied through a volume by a sine-wave flow source",
     ),
+    "hydraulic-piston-ackumulator-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPistonAckumulatorTest.hmf",
+        "a piston accumulator (piston mass, friction, gas spring) charged and emptied through a volume by a "
+        "sine-wave flow source",
+    ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",

@@ -663,6 +663,35 @@ def test_hopsans_gas_accumulator_charges_through_its_inlet_coefficient(tmp_path:
         read_hopsan(path)
 
 
+def test_hopsans_piston_accumulator_settles_where_its_gas_takes_the_source_pressure(tmp_path: Path) -> None:
+    """[Hopsan2026] Volumes&Lines/HydraulicPistonAckumulator.hpp: ML ẍ = Ap (p_1 - pa) - Bp ẋ, pa =
+    p0 (SL/(SL - x))^kappa (absolute), q = Ap ẋ: from xmp at rest it accelerates at Ap (p_1 - pa)/ML and settles
+    where pa = p_1; its outputs pa, Va = Ap (SL - x), xmp and vmp are logged."""
+    v = _value
+    components = [
+        ("HydraulicPistonAckumulator", "Acc", {"Ap#Value": v("0.002"), "SL#Value": v("0.4"), "Bp#Value": v("400"),
+                                               "ML#Value": v("3"), "kappa#Value": v("1.3"), "p0#Value": v("8e6"),
+                                               "xmp#Value": v("0.1")}),
+        ("HydraulicPressureSourceC", "S", {"p#Value": v("1.5e7", "Pa")}),
+    ]
+    path = tmp_path / "pacc.hmf"
+    path.write_text(_hmf(components, [("Acc.P1", "S.P1")]), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Acc"].option("inlet") == "piston"
+    r = imp.system.simulate(t_eval=[0.0, 3.0], accuracy=1e-8)
+    pa = 8e6 * (0.4 / 0.3) ** 1.3
+    assert r["Acc.pa.Value"][0] == pytest.approx(pa, rel=1e-9)
+    assert r["Acc.xmp.Value"][0] == pytest.approx(0.1) and r["Acc.Va.Value"][0] == pytest.approx(0.002 * 0.3)
+    assert r["Acc.vmp.Value"][0] == 0.0
+    assert imp.system["Acc"].state_equations(  # the acceleration at the start
+        0.0, {"x_p": 0.1, "v_p": 0.0}, {"pP": 1.5e7 - 101325.0}, imp.system["Acc"].values,
+        {"p": pa - 101325.0},
+    )["v_p"] == pytest.approx(0.002 * (1.5e7 - pa) / 3.0, rel=1e-9)
+    x_end = 0.4 * (1.0 - (8e6 / 1.5e7) ** (1 / 1.3))
+    assert r["Acc.xmp.Value"][-1] == pytest.approx(x_end, rel=1e-5)
+    assert r["Acc.pa.Value"][-1] == pytest.approx(1.5e7, rel=1e-6)
+
+
 def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path: Path) -> None:
     """Hopsan's math blocks become one Function each, with the option naming the function, their ``error``
     output where Hopsan's has one and atan2's inputs inY and inX (an unconnected inX takes its start value);
