@@ -265,7 +265,8 @@ def limited_rate(K: Any, rate: Any, K_max: Any, delta: Any) -> Any:
 
     References
     ----------
-    As :func:`limited_lag_rate`.
+    [Hopsan2026] (its limited integrators and filters, which clamp a state and its memory at a bound), as
+    :func:`limited_lag_rate`; the relaxation on the bound is hydroservo's.
 
     Examples
     --------
