@@ -44,6 +44,27 @@ TRACES = {
         "Translational_Mass_With_Coulomb_Friction.P2.Velocity", "Force_Transducer.P1.Force",
     ],
     "rate-limiter-test": ["Rate_limiter.out.Value", "Rate_limiter_1.out.Value"],
+    "hydraulic-pressure-relief-valve-g-test": ["Prescribed_Source_Q.P1.Pressure", "HydraulicPressureReliefValveG.xv.Value"],
+    "hydraulic-pressure-reducing-valve-g-test": [
+        "Pressure_Transducer.P1.Pressure", "HydraulicPressureReducingValveG.xv.Value",
+    ],
+    "hydraulic-pressure-controlled-22-valve-test": [
+        "Pressure_Controlled_2_2_Valve__default_closed_.x_v.Value", "Pressure_Controlled_2_2_Valve__default_closed_.PA.Flow",
+    ],
+    "hydraulic-pressure-controlled-22-valve2-test": [
+        "Pressure_Controlled_2_2_Valve__default_open_.x_v.Value", "Pressure_Controlled_2_2_Valve__default_open_.PP.Flow",
+    ],
+    "hydraulic-pressure-controlled-42-valve-test": [
+        "Pressure_Controlled_4_2_Valve__default_closed_.x_v.Value", "Pressure_Controlled_4_2_Valve__default_closed_.PB.Flow",
+    ],
+    "hydraulic-pressure-controlled-42-valve2-test": ["Flow_Sensor.P1.Flow", "Flow_Sensor_1.P1.Flow"],
+    "hydraulic-pressure-controlled-42-valve3-test": [
+        "Pressure_Controlled_4_2_Valve.PA.Flow", "Pressure_Controlled_4_2_Valve.PB.Flow",
+    ],
+    "hydraulic-ackumulator-test": ["Gas_Accumulator.pa.Value", "Gas_Accumulator.P1.Flow"],
+    "hydraulic-piston-ackumulator-test": [
+        "HydraulicPistonAckumulator.xmp.Value", "HydraulicPistonAckumulator.P1.Flow",
+    ],
 }
 #: how each kind is shown: (factor from SI, unit)
 SHOWN = {

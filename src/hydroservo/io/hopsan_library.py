@@ -219,6 +219,135 @@ def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
+def _pressure_valve_g(reducing: bool) -> Builder:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
+    a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
+    p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
+    x_v, its opening x_v in [0, Xvmax] (Hopsan limits the bilinear transform of B_v ẋ_v = A_v Δp_over - k_e x_v,
+    the law it stands for, and its memory: no wind-up), the flow Cq w x_v √(2/ρ) signedSquareL(p_1 - p_2, p0) with
+    w = π Dv frac sin φ. That is ReliefValve or PressureReducingValve with ``spool = "balance"``
+    (:func:`hydroservo.laws.pressure_valve.spool_balance_rate`): K = Cq w √(2/ρ) x_v, C_s = ks/(Cq w √(2/ρ) A_v),
+    C_f = 2 cos φ/(√(2/ρ) A_v), tau = Bv/ks, K at most Cq w √(2/ρ) Xvmax, p_tr = p0 (signedSquareL is
+    hydroservo's regularised turbulent law exactly). The relief valve's setting is a drop (``pilot = "drop"``), the
+    reducing valve's an absolute pressure. π where Hopsan writes 3.14159 and 0.785398 (1e-6 apart); visc is
+    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import PressureReducingValve, ReliefValve
+
+        rho, dv, frac, phi = par("rho", 870.0), par("Dv", 0.01), par("frac", 0.1), par("phi", 1.17)
+        ks, bv, x_vmax, cq = par("ks", 1e4), par("Bv", 1000.0), par("Xvmax", 0.002), par("Cq", 0.67)
+        before = len(par.problems)
+        for name, value in (("rho", rho), ("Dv", dv), ("frac", frac), ("ks", ks), ("Bv", bv), ("Xvmax", x_vmax),
+                            ("Cq", cq), ("p0", par("p0", 1e5))):
+            if value <= 0.0:
+                par.problems.append(f"{par.where}: {name} = {value:g}; only a value above 0 is supported")
+        if not 0.0 < phi < math.pi / 2:
+            par.problems.append(
+                f"{par.where}: stream angle phi = {phi:g} rad; only an angle in (0, π/2) is supported (a jet that "
+                "opens the valve and a flow force that closes it)"
+            )
+        if len(par.problems) > before:
+            return Mapped()
+        root = math.sqrt(2.0 / rho)
+        c = cq * math.pi * dv * frac * math.sin(phi) * root  # K per metre of opening
+        area = math.pi * dv * dv / 4.0
+        p_nom = 7e6  # any nominal drop: the characteristics below are scaled by it
+        c_s = ks / (c * area)
+        c_f = 2.0 * math.cos(phi) / (root * area)
+        spool: dict[str, Any] = {
+            "spool": "balance",
+            "tau": bv / ks,
+            "k_cs": math.sqrt(p_nom) / c_s,
+            "k_cf": 1.0 / (c_f * math.sqrt(p_nom)),
+            "q_nom": c * x_vmax * math.sqrt(p_nom),
+            "p_nom": p_nom,
+            "p_tr": par("p0", 1e5),
+        }
+        comp: cbase.Component
+        if reducing:
+            comp = PressureReducingValve(n, p_set=_abs(par("pref", 1e7)), **spool)
+        else:
+            comp = ReliefValve(n, p_crack=par("pref", 1e7), pilot="drop", **spool)
+        return Mapped(
+            [comp],
+            power={"P1": f"{n}.A", "P2": f"{n}.B"},
+            values={"xv": Var(x_vmax, f"{n}.s")},
+            initial={f"{n}.K": c * min(max(par("xv", 0.0), 0.0), x_vmax)},
+        )
+
+    return build
+
+
+def _accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Volumes&Lines/HydraulicAckumulator.hpp: a Q-type gas accumulator whose state of charge
+    x = xmp follows V0 ẋ = Kca (p_1 - pa), limited to [0, 1] (its trapezoidal rule and limit stand for that ODE
+    held at its bounds), pa = p0 (1/limit(1 - x, 0.1, 1))^kappa (absolute), q into it V0 ẋ: Accumulator with
+    ``inlet = "laminar"``, K_ca = Kca, V_gmin = 0.1 V0, V_oil starting at xmp V0. Its outputs pa (absolute), Va
+    (V0 (1 - x)), xmp and vmp (ẋ) are the Accumulator's p, V_gas, V_oil/V0 and Q/V0."""
+    from hydroservo.components import Accumulator
+
+    v0, kappa = par("V0", 1e-3), par("kappa", 1.2)
+    if v0 <= 0.0 or par("Kca", 1e-8) <= 0.0:
+        par.problems.append(f"{par.where}: V0 and Kca above 0 are supported")
+        return Mapped()
+    if not 1.0 <= kappa <= 1.67:
+        par.problems.append(f"{par.where}: kappa = {kappa:g}; a polytropic exponent in [1, 1.67] is supported")
+        return Mapped()
+    comp = Accumulator(
+        n, inlet="laminar", V0=v0, K_ca=par("Kca", 1e-8), kappa=kappa, p0=_abs(par("p0", 1e7)), V_gmin=0.1 * v0
+    )
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.P"},
+        values={
+            "pa": Var(1.0, f"{n}.p", absolute=True),
+            "Va": Var(1.0, f"{n}.V_gas"),
+            "xmp": Var(1.0 / v0, f"{n}.V_oil"),
+            "vmp": Var(1.0 / v0, f"{n}.Q"),
+        },
+        initial={f"{n}.V_oil": min(max(par("xmp", 0.0), 0.0), 1.0) * v0},
+    )
+
+
+def _piston_accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Volumes&Lines/HydraulicPistonAckumulator.hpp: a piston of area Ap and mass ML, damped
+    by Bp, between the oil at P1 and a gas pre-charged to p0 in the stroke SL: ML ẍ = Ap (p_1 - pa) - Bp ẋ, x in
+    [0, SL] (Hopsan's bilinear transforms of it, the position clamped and the velocity zeroed at the ends: inelastic
+    stops), pa = p0 (SL/limit(SL - x, 0.001 SL, SL))^kappa (absolute), q into it Ap ẋ: Accumulator with
+    ``inlet = "piston"``, V0 = Ap SL, V_gmin = 0.001 V0, stiff end stops for the inelastic ones: 1e11 N/m rather
+    than the default 1e9, since a piston held on its stop by the pre-charge (1e4 N in Hopsan's test) sinks 10 µm
+    into a 1e9 N/m stop, and the oil that takes (1e-8 m³ there) shifts the instant it breaks away by some 0.5 ms,
+    and with it the phase of the piston's lightly damped oscillation on the oil (flows 12 % of range off on
+    Hopsan's test; 0.41 % at 1e11 N/m). Its outputs pa (absolute), Va, xmp and vmp are the Accumulator's p,
+    V_gas, V_oil/Ap and Q/Ap."""
+    from hydroservo.components import Accumulator
+
+    ap, sl, ml, kappa = par("Ap", 1e-3), par("SL", 0.5), par("ML", 1.0), par("kappa", 1.2)
+    if ap <= 0.0 or sl <= 0.0 or ml <= 0.0 or par("Bp", 10.0) < 0.0:
+        par.problems.append(f"{par.where}: Ap, SL and ML above 0 and Bp at least 0 are supported")
+        return Mapped()
+    if not 1.0 <= kappa <= 1.67:
+        par.problems.append(f"{par.where}: kappa = {kappa:g}; a polytropic exponent in [1, 1.67] is supported")
+        return Mapped()
+    v0 = ap * sl
+    comp = Accumulator(
+        n, inlet="piston", V0=v0, A_p=ap, m_p=ml, B_p=par("Bp", 10.0), kappa=kappa, p0=_abs(par("p0", 1e7)),
+        V_gmin=0.001 * v0, k_stop=1e11, c_stop=1e6,
+    )
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.P"},
+        values={
+            "pa": Var(1.0, f"{n}.p", absolute=True),
+            "Va": Var(1.0, f"{n}.V_gas"),
+            "xmp": Var(1.0 / ap, f"{n}.V_oil"),
+            "vmp": Var(1.0 / ap, f"{n}.Q"),
+        },
+        initial={f"{n}.x_p": min(max(par("xmp", 0.0), 0.0), sl), f"{n}.v_p": par("vmp", 0.0)},
+    )
+
+
 def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -444,6 +573,79 @@ def _valve22(command: str, ports: tuple[str, str]) -> Builder:
             initial=spool.initial,
             internal=[*spool.internal, (f"{n}_spool.xv", f"{n}.xv")],
             note=_NOTE[command].format(valve="TwoWayValve"),
+        )
+
+    return build
+
+
+def _pressure_controlled(kind: str) -> Builder:
+    """Hopsan's pressure-controlled valves ([Hopsan2026] Hydraulic/Valves/PressureControlled/
+    HydraulicPressureControlled22Valve.hpp, ...22Valve2, ...42Valve, ...42Valve2, ...42Valve3): the spool of the
+    one-sided 2/2 and 4/2 valves (its second-order filter, limited to [0, x_vmax], starting at 0 as Hopsan's
+    filter does whatever the file's x_v), commanded by the pilot pressure at PC (absolute, as Hopsan's Fs_min and
+    Fs_max), x_vmax·limit((p_C - Fs_min)/(Fs_max - Fs_min), 0, 1). PC takes no flow: a Sum reads its node (as a
+    sensor does), a Sum takes Fs_min off, a Gain scales to metres. The edges (turbulent, as the 2/2 and 4/2
+    valves'):
+
+    * 22Valve (default closed): PP-PA opens as x_v, a TwoWayValve with x_AB = 0;
+    * 22Valve2 (default open): PP-PA opens as x_vmax - x_v, a TwoWayValve on -x_v (a Gain of -1) with
+      x_AB = -x_vmax;
+    * 42Valve: P-A and B-T open as x_v, P-B and A-T never (Hydraulic42Valve's FourWayValve);
+    * 42Valve2: P-A and B-T open as x_vmax - x_v, P-B and A-T never: a FourWayValve with Hopsan's PA on its B
+      and PB on its A, whose P-B and A-T open as x_vmax - x_v (laps -x_vmax), P-A and B-T covered (+x_vmax);
+    * 42Valve3: P-A and B-T as x_vmax - x_v, P-B and A-T as x_v: Hydraulic42Valve2's FourWayValve with PA and
+      PB swapped.
+
+    Fs_max <= Fs_min, unequal fractions of the edges used and delta_h < 1 (a spool that overshoots) are refused."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import FourWayValve, Gain, Sum, TwoWayValve
+
+        rho, x_vmax = par("rho", 870.0), par("x_vmax", 0.01)
+        fs_min, fs_max = par("Fs_min", 1e5), par("Fs_max", 1e6)
+        if fs_max <= fs_min:
+            par.problems.append(
+                f"{par.where}: Fs_max = {fs_max:g} Pa is not above Fs_min = {fs_min:g} Pa; the spool opens between them"
+            )
+            fs_max = fs_min + 1.0
+        spool = _spool(n, par, x_vmax, "one-sided", 0.0)  # Hopsan's filter starts at 0
+        pilot = Sum(f"{n}_pilot", unit="Pa", gain2=0.0)  # the node's pressure, absolute (set as a sensor's)
+        over = Sum(f"{n}_over", unit="Pa", gain2=0.0, offset=-fs_min)
+        command = Gain(f"{n}_cmd", unit="m", input_unit="Pa", K=f"{x_vmax / (fs_max - fs_min)!r} m/Pa")
+        blocks: list[cbase.Component] = [pilot, over, command, *spool.components]
+        internal = [(f"{n}_pilot.y", f"{n}_over.u1"), (f"{n}_over.y", f"{n}_cmd.u"),
+                    (f"{n}_cmd.y", spool.inputs["in"]), *spool.internal]
+        power: dict[str, str]
+        valve: cbase.Component
+        if kind.startswith("22"):
+            c_v = _edge_coefficient(par, par("f_pa", 1.0), rho)
+            if kind == "22":
+                valve = TwoWayValve(n, c_v=c_v, x_AB=0.0, rho=rho, D_h="1 mm", lambda_crit=10.0)
+                internal.append((f"{n}_spool.xv", f"{n}.xv"))
+            else:
+                valve = TwoWayValve(n, c_v=c_v, x_AB=-x_vmax, rho=rho, D_h="1 mm", lambda_crit=10.0)
+                flip = Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0)
+                blocks.append(flip)
+                internal += [(f"{n}_spool.xv", f"{n}_flip.u"), (f"{n}_flip.y", f"{n}.xv")]
+            power = {"PP": f"{n}.A", "PA": f"{n}.B"}
+        else:
+            fractions = ("f_pa", "f_pb", "f_at", "f_bt") if kind == "42-3" else ("f_pa", "f_bt")
+            c_v = _edge_coefficient(par, _equal_fractions(par, fractions), rho)
+            laps = {"42": (0.0, x_vmax), "42-2": (x_vmax, -x_vmax), "42-3": (0.0, -x_vmax)}[kind]
+            valve = FourWayValve(n, c_v=c_v, x_PA=laps[0], x_BT=laps[0], x_PB=laps[1], x_AT=laps[1], rho=rho,
+                                 D_h="1 mm", lambda_crit=10.0)
+            a, b = ("A", "B") if kind == "42" else ("B", "A")  # 42Valve2 and 42Valve3: Hopsan's PA on B
+            power = {"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.{a}", "PB": f"{n}.{b}"}
+            internal += [(f"{n}_spool.xv", f"{n}.xv"), (f"{n}_spool.vv", f"{n}.vv")]
+        return Mapped(
+            [*blocks, valve],
+            power=power,
+            read={"PC": (f"{n}_pilot.u1", "Pressure")},
+            values={"x_v": Var(1.0, f"{n}_spool.xv")},
+            initial=spool.initial,
+            internal=internal,
+            note="a Sum reading the pilot PC, a Sum and a Gain to the spool's command, "
+            + _NOTE["one-sided"].format(valve="TwoWayValve" if kind.startswith("22") else "FourWayValve"),
         )
 
     return build
@@ -1009,6 +1211,15 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
     "HydraulicPressureReliefValve": _relief,
+    "HydraulicAckumulator": _accumulator,
+    "HydraulicPistonAckumulator": _piston_accumulator,
+    "HydraulicPressureControlled22Valve": _pressure_controlled("22"),
+    "HydraulicPressureControlled22Valve2": _pressure_controlled("22-2"),
+    "HydraulicPressureControlled42Valve": _pressure_controlled("42"),
+    "HydraulicPressureControlled42Valve2": _pressure_controlled("42-2"),
+    "HydraulicPressureControlled42Valve3": _pressure_controlled("42-3"),
+    "HydraulicPressureReliefValveG": _pressure_valve_g(reducing=False),
+    "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),

@@ -24,7 +24,7 @@ from typing import Any
 from hydroservo import backend as bk
 from hydroservo.units import VACUUM
 
-__all__ = ["gas_volume", "gas_capacitance"]
+__all__ = ["gas_volume", "gas_capacitance", "gas_pressure"]
 
 
 def gas_volume(p: Any, p0: Any, V0: Any, kappa: Any) -> Any:
@@ -91,3 +91,37 @@ def gas_capacitance(p: Any, p0: Any, V0: Any, kappa: Any) -> Any:
     7.85
     """
     return gas_volume(p, p0, V0, kappa) / (kappa * (bk.fmax(p, p0) - VACUUM))
+
+
+def gas_pressure(V_g: Any, p0: Any, V0: Any, kappa: Any) -> Any:
+    r"""Gas pressure of an accumulator whose gas occupies ``V_g``, :math:`p_0 (V_0/V_g)^{\kappa}` (absolute) [Pa, gauge].
+
+    The inverse of :func:`gas_volume` above the pre-charge.
+
+    Parameters
+    ----------
+    V_g : array_like
+        Gas volume [m^3], > 0 (at most ``V0``: the gas at pre-charge fills the accumulator).
+    p0 : array_like
+        Gas pre-charge pressure, gauge [Pa].
+    V0 : array_like
+        Gas volume at pre-charge [m^3].
+    kappa : array_like
+        Polytropic exponent [-].
+
+    Returns
+    -------
+    array_like
+        Gas pressure, gauge [Pa].
+
+    References
+    ----------
+    Polytropic process of an ideal gas; [Hopsan2026] Hydraulic/Volumes&Lines/HydraulicAckumulator.hpp.
+
+    Examples
+    --------
+    >>> v = float(gas_volume(180e5, 90e5, 1e-3, 1.2))
+    >>> round(float(gas_pressure(v, 90e5, 1e-3, 1.2)) / 1e5, 6)
+    180.0
+    """
+    return (p0 - VACUUM) * (V0 / V_g) ** kappa + VACUUM

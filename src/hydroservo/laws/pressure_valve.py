@@ -19,7 +19,16 @@ from typing import Any
 
 from hydroservo import backend as bk
 
-__all__ = ["opening_fraction", "linear_opening", "seat_opening", "pressure_valve_coefficient", "limited_lag_rate", "STOP_RELAXATION"]
+__all__ = [
+    "opening_fraction",
+    "linear_opening",
+    "seat_opening",
+    "pressure_valve_coefficient",
+    "spool_balance_rate",
+    "limited_lag_rate",
+    "limited_rate",
+    "STOP_RELAXATION",
+]
 
 #: The time constant with which :func:`limited_lag_rate` settles on a bound, as a fraction of the lag's own [-]:
 #: small enough that the lag reaches its bound within 0.1 % of ``tau`` later than in finite time, large enough
@@ -226,6 +235,106 @@ def limited_lag_rate(K: Any, target: Any, tau: Any, K_max: Any, relax: Any = STO
     >>> round(float(limited_lag_rate(1e-4, -1.0, 1e-3, 2.0)), 6)  # the last 0.1 % of the way: relaxed
     -100.0
     """
-    delta = relax * tau
-    lag = (target - K) / tau
-    return bk.fmin(bk.fmax(lag, -bk.fmax(K, 0.0) / delta), bk.fmax(K_max - K, 0.0) / delta)
+    return limited_rate(K, (target - K) / tau, K_max, relax * tau)
+
+
+def limited_rate(K: Any, rate: Any, K_max: Any, delta: Any) -> Any:
+    r"""A state's rate stopped at its bounds :math:`[0, K_{max}]` without wind-up, relaxed over ``delta`` [unit of K / s].
+
+    .. math:: \dot K = \min\Big(\max\big(r,\; -\tfrac{\max(K, 0)}{\delta}\big),\;
+              \tfrac{\max(K_{max} - K, 0)}{\delta}\Big)
+
+    the clamp of :func:`limited_lag_rate` for any free rate :math:`r` (there
+    :math:`r = (K_s - K)/\tau` and :math:`\delta` = ``relax`` :math:`\tau`).
+
+    Parameters
+    ----------
+    K : array_like
+        The state [any unit].
+    rate : array_like
+        Its rate away from the bounds, :math:`r` [unit of K / s].
+    K_max : array_like
+        Upper bound, > 0 [unit of K].
+    delta : array_like
+        Time constant of the approach to a bound [s], > 0; a small fraction of the state's own time constant.
+
+    Returns
+    -------
+    array_like
+        :math:`\dot K` [unit of K / s].
+
+    References
+    ----------
+    [Hopsan2026] (its limited integrators and filters, which clamp a state and its memory at a bound), as
+    :func:`limited_lag_rate`; the relaxation on the bound is hydroservo's.
+
+    Examples
+    --------
+    >>> [float(limited_rate(K, -5.0, 2.0, 1e-3)) + 0.0 for K in (1.0, 0.0, 2.5)]
+    [-5.0, 0.0, -5.0]
+    """
+    return bk.fmin(bk.fmax(rate, -bk.fmax(K, 0.0) / delta), bk.fmax(K_max - K, 0.0) / delta)
+
+
+def spool_balance_rate(over: Any, dp: Any, K: Any, k_cs: Any, k_cf: Any, p_nom: Any, tau: Any) -> Any:
+    r"""Rate of a pressure-control valve's flow coefficient from the force balance of a damped, massless spool [m^3/s/Pa^0.5/s].
+
+    The spool at opening :math:`x` is pushed by the pilot's excess pressure on
+    its area :math:`A_v`, held by its spring :math:`k_s` and by the steady flow
+    force :math:`2 C_q w \cos\varphi\,\Delta p\,x` of the jet through its
+    opening (port width :math:`w`, jet angle :math:`\varphi`), and damped by
+    :math:`B_v` ([Merritt1967], the steady flow force on a spool; [Hopsan2026]
+    Hydraulic/Special/HydraulicPressureReliefValveG.hpp):
+
+    .. math:: B_v\dot x = A_v\,\Delta p_{over} - (k_s + 2 C_q w\cos\varphi\,\Delta p)\,x
+
+    With the flow coefficient :math:`K = C_q w\sqrt{2/\rho}\,x` of the
+    opening (:math:`Q = K\sqrt{\Delta p}`) this is, in the characteristics of
+    :func:`pressure_valve_coefficient` (:math:`C_s = \sqrt{p_{nom}}/k_{cs}`,
+    :math:`C_f = 1/(k_{cf}\sqrt{p_{nom}})`),
+
+    .. math:: C_s\tau\dot K = \Delta p_{over} - (C_s + C_f\,\Delta p)\,K
+
+    with :math:`C_s = k_s/(C_q w\sqrt{2/\rho}A_v)`,
+    :math:`C_f = 2\cos\varphi/(\sqrt{2/\rho}A_v)` and :math:`\tau = B_v/k_s`:
+    the static opening is :func:`pressure_valve_coefficient`'s, but the
+    spool's time constant :math:`\tau C_s/(C_s + C_f\Delta p)` shortens as
+    the flow forces stiffen it. The drop :math:`\Delta p` is taken with its
+    sign, as Hopsan's law takes it. The caller bounds :math:`K` (:func:`limited_rate`).
+
+    Parameters
+    ----------
+    over : array_like
+        Pilot pressure above the setting [Pa].
+    dp : array_like
+        Pressure drop across the valve [Pa].
+    K : array_like
+        Flow coefficient, the spool's state [m^3/s/Pa^0.5].
+    k_cs, k_cf : array_like
+        Steady-state characteristics of the spring and the flow forces [m^3/s/Pa].
+    p_nom : array_like
+        Nominal pressure drop of the characteristics [Pa].
+    tau : array_like
+        Time constant of the spool against its spring alone, :math:`B_v/k_s` [s].
+
+    Returns
+    -------
+    array_like
+        :math:`\dot K` [m^3/s/Pa^0.5/s] (unbounded).
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp (the
+    spool's equation, discretised there by the bilinear transform); [Merritt1967] (flow forces).
+
+    Examples
+    --------
+    At the static opening the rate vanishes:
+
+    >>> k = pressure_valve_coefficient(10e5, 210e5, 1e-8, 1e-8)
+    >>> abs(float(spool_balance_rate(10e5, 210e5, k, 1e-8, 1e-8, 7e6, 0.01))) < 1e-12
+    True
+    """
+    Cs = bk.sqrt(p_nom) / k_cs
+    Cf = 1.0 / (k_cf * bk.sqrt(p_nom))
+    return (over - (Cs + Cf * dp) * K) / (Cs * tau)

@@ -100,6 +100,45 @@ MODELS: dict[str, Spec] = {
         "Component Test/HydraulicComponent Test/HydraulicValve33Test.hmf",
         "a 3/3 valve with its spool position as input and a laminar onset, ramped between pressure sources",
     ),
+    "hydraulic-pressure-relief-valve-g-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureReliefValveGTest.hmf",
+        "two spool relief valves (force balance with flow forces) protecting volumes fed by flow sources, one "
+        "drained by an orifice that a step closes, the other fed by a soft-step flow",
+    ),
+    "hydraulic-pressure-reducing-valve-g-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureReducingValveGTest.hmf",
+        "a spool pressure-reducing valve (force balance with flow forces) feeding a volume drained by a laminar "
+        "orifice whose coefficient is ramped",
+    ),
+    "hydraulic-pressure-controlled-22-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled22ValveTest.hmf",
+        "a 2/2 valve (closed at rest) opened by a ramped pilot pressure between pressure sources",
+    ),
+    "hydraulic-pressure-controlled-22-valve2-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled22Valve2Test.hmf",
+        "a 2/2 valve (open at rest) closed by a ramped pilot pressure between pressure sources",
+    ),
+    "hydraulic-pressure-controlled-42-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled42ValveTest.hmf",
+        "a 4/2 valve (P-A and B-T opening) driven by a ramped pilot pressure between pressure sources",
+    ),
+    "hydraulic-pressure-controlled-42-valve2-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled42Valve2Test.hmf",
+        "a 4/2 valve (P-A and B-T closing) driven by a ramped pilot pressure between pressure sources",
+    ),
+    "hydraulic-pressure-controlled-42-valve3-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureControlled42Valve3Test.hmf",
+        "a 4/2 valve switching P-A, B-T to P-B, A-T as a ramped pilot pressure rises",
+    ),
+    "hydraulic-ackumulator-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicAckumulatorTest.hmf",
+        "a gas accumulator behind a laminar inlet, charged and emptied through a volume by a sine-wave flow source",
+    ),
+    "hydraulic-piston-ackumulator-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPistonAckumulatorTest.hmf",
+        "a piston accumulator (piston mass, friction, gas spring) charged and emptied through a volume by a "
+        "sine-wave flow source",
+    ),
     "routing-test": Spec(
         "Component Test/SignalComponent Test/RoutingTest.hmf",
         "constants routed by a staircase through selectors of two, three and four inputs",

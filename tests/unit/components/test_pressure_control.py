@@ -146,3 +146,53 @@ def test_hopsans_position_servo_runs_at_tight_accuracy(accuracy):
         tight = system.simulate(t_end="1.2 s", n_points=241, accuracy=accuracy)
         default = system.simulate(t_end="1.2 s", n_points=241)
     assert tight["load.x"][-1] == pytest.approx(default["load.x"][-1], abs=1e-4 * 0.7)
+
+
+def _between(valve: c.Component, pA: str, pB: str, t_end: float) -> System:
+    s = System("between", t_end=t_end)
+    s.add(c.Tank("a", p=pA))
+    s.add(c.Tank("b", p=pB))
+    s.add(valve)
+    s.connect("a.P", f"{valve.name}.A")
+    s.connect("b.P", f"{valve.name}.B")
+    return s
+
+
+def test_a_balanced_spool_reaches_the_static_opening_with_the_time_constant_its_flow_forces_shorten():
+    """spool = "balance": C_s tau dK/dt = over - (C_s + C_f dp) K between fixed pressures is a lag to the static
+    opening over/(C_s + C_f dp) with time constant tau C_s/(C_s + C_f dp); pilot = "drop" sets the relief valve
+    against p_A - p_B (here 210 - 20 - 180 = 10 bar over)."""
+    k_cs, k_cf, tau = 1e-8, 2e-8, 0.02
+    Cs, Cf = np.sqrt(P_NOM) / k_cs, 1.0 / (k_cf * np.sqrt(P_NOM))
+    dp, over = 190e5, 10e5
+    tau_eff = tau * Cs / (Cs + Cf * dp)
+    valve = c.ReliefValve("rv", p_crack="180 bar", pilot="drop", spool="balance", k_cs=k_cs, k_cf=k_cf, tau=tau,
+                          q_nom="1000 L/min")
+    t = np.array([0.0, tau_eff, 3.0 * tau_eff, 20.0 * tau_eff])
+    r = _between(valve, "210 bar", "20 bar", float(t[-1])).simulate(t_eval=t, accuracy=1e-8)
+    K_ss = over / (Cs + Cf * dp)
+    np.testing.assert_allclose(r["rv.K"], K_ss * (1.0 - np.exp(-t / tau_eff)), rtol=1e-5, atol=1e-15)
+    assert tau_eff < 0.5 * tau  # the flow forces stiffen the spool
+    # the default pilot reads the inlet alone: 210 - 180 = 30 bar over
+    inlet = c.ReliefValve("rv", p_crack="180 bar", spool="balance", k_cs=k_cs, k_cf=k_cf, tau=tau, q_nom="1000 L/min")
+    r = _between(inlet, "210 bar", "20 bar", float(t[-1])).simulate(t_eval=t, accuracy=1e-8)
+    assert r["rv.K"][-1] == pytest.approx(30e5 / (Cs + Cf * dp), rel=1e-6)
+
+
+def test_a_balanced_reducing_valve_takes_the_drop_with_its_sign_and_stops_at_full_opening():
+    """Hopsan's flow force 2 Cq w cos(phi) (p_1 - p_2) x takes the drop with its sign: with the outlet above the
+    inlet the static opening over/(C_s + C_f dp) is larger than at dp = 0; an opening beyond q_nom/sqrt(p_nom)
+    stops there."""
+    k_cs, k_cf, tau = 1e-8, 1e-8, 0.01
+    Cs, Cf = np.sqrt(P_NOM) / k_cs, 1.0 / (k_cf * np.sqrt(P_NOM))
+    prv = c.PressureReducingValve("prv", p_set="50 bar", spool="balance", k_cs=k_cs, k_cf=k_cf, tau=tau,
+                                  q_nom="1000 L/min")
+    r = _between(prv, "38 bar", "40 bar", 0.5).simulate(accuracy=1e-8)
+    assert r["prv.K"][-1] == pytest.approx(10e5 / (Cs - Cf * 2e5), rel=1e-6)
+    assert r["prv.K"][-1] > 10e5 / Cs
+    small = c.PressureReducingValve("prv", p_set="50 bar", spool="balance", k_cs=k_cs, k_cf=k_cf, tau=tau,
+                                    q_nom="1 L/min")
+    r = _between(small, "38 bar", "40 bar", 0.5).simulate(accuracy=1e-8)
+    K_max = 1e-3 / 60.0 / np.sqrt(P_NOM)
+    assert r["prv.K"][-1] == pytest.approx(K_max, rel=1e-4)
+    assert r["prv.s"][-1] == pytest.approx(1.0, rel=1e-4)

@@ -556,6 +556,142 @@ def test_hopsans_check_valve_passes_k_s_root_dp_one_way(tmp_path: Path) -> None:
     assert p_tr < 100.0  # Pa: turbulent down to some 50 Pa (Hopsan: to the null)
 
 
+def test_hopsans_g_pressure_valves_settle_on_their_spools_force_balance(tmp_path: Path) -> None:
+    """[Hopsan2026] Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp: at rest the
+    spool sits where A_v Δp_over = (ks + 2 Cq w cos φ (p_1 - p_2)) x_v (relief: Δp_over = p_1 - p_2 - pref,
+    reducing: pref - p_2, absolute), and passes Cq w x_v √(2/ρ) signedSquareL(p_1 - p_2, p0), w = π Dv frac sin φ;
+    its xv is logged. A stream angle outside (0, π/2) is refused."""
+    v = _value
+    components = [
+        ("HydraulicPressureReliefValveG", "RV", {"pref#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureReducingValveG", "RD", {"pref#Value": v("2e6", "Pa"), "p0#Value": v("3e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1.05e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S3", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S4", {"p#Value": v("1.5e6", "Pa")}),
+    ]
+    connections = [("RV.P1", "S1.P1"), ("RV.P2", "S2.P1"), ("RD.P1", "S3.P1"), ("RD.P2", "S4.P1")]
+    path = tmp_path / "g.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["RV"].option("spool") == "balance" and imp.system["RV"].option("pilot") == "drop"
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-8)
+    w = np.pi * 0.01 * 0.1 * np.sin(1.17)
+    area = np.pi * 0.01**2 / 4.0
+    for name, p1, p2, over, p0 in (("RV", 1.05e7, 1e5, 1.05e7 - 1e5 - 1e7, 1e5), ("RD", 1e7, 1.5e6, 2e6 - 1.5e6, 3e5)):
+        dp = p1 - p2
+        x = area * over / (1e4 + 2.0 * 0.67 * w * np.cos(1.17) * dp)
+        assert 0.0 < x < 0.002  # within the stroke
+        q = 0.67 * w * x * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p0 * p0) ** 0.25
+        assert r[f"{name}.xv.Value"][-1] == pytest.approx(x, rel=1e-6)
+        assert r[f"{name}.P2.Flow"][-1] == pytest.approx(q, rel=1e-6)
+        assert r[f"{name}.xv.Value"][0] == 0.0  # from Hopsan's start value
+    path.write_text(_hmf([(k, n, {**p, "phi#Value": v("2")} if n == "RV" else p) for k, n, p in components],
+                         connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"RV \(HydraulicPressureReliefValveG\): stream angle phi = 2 rad"):
+        read_hopsan(path)
+
+
+def test_hopsans_pressure_controlled_valves_open_their_edges_as_the_pilot_pressure_sets_the_spool(tmp_path: Path) -> None:
+    """[Hopsan2026] PressureControlled/HydraulicPressureControlled22Valve.hpp, ...22Valve2, ...42Valve3: at rest the
+    spool sits at x_vmax·limit((p_C - Fs_min)/(Fs_max - Fs_min), 0, 1) (p_C absolute); the default-closed 2/2 valve
+    opens PP-PA as x_v, the default-open one as x_vmax - x_v, the 4/2 valve 3 P-A and B-T as x_vmax - x_v and P-B,
+    A-T as x_v, each Cq f π d √(2/ρ) times the opening times √Δp. Fs_max not above Fs_min is refused."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    v = _value
+    sources = {"SP": 2e7, "ST": 1e5, "SA": 1.2e7, "SB": 0.8e7, "SC": 3.25e5, "SD": 7.75e5}
+    components = [
+        ("HydraulicPressureControlled22Valve", "V1", {}),
+        ("HydraulicPressureControlled22Valve2", "V2", {}),
+        ("HydraulicPressureControlled42Valve3", "V3", {"x_vmax#Value": v("0.002")}),
+        *[("HydraulicPressureSourceC", k, {"p#Value": v(repr(p), "Pa")}) for k, p in sources.items()],
+    ]
+    connections = [("V1.PP", "SP.P1"), ("V1.PA", "SA.P1"), ("V1.PC", "SC.P1"),
+                   ("V2.PP", "SP.P1"), ("V2.PA", "SA.P1"), ("V2.PC", "SC.P1"),
+                   ("V3.PP", "SP.P1"), ("V3.PT", "ST.P1"), ("V3.PA", "SA.P1"), ("V3.PB", "SB.P1"), ("V3.PC", "SD.P1")]
+    path = tmp_path / "pc.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 1.0], accuracy=1e-8)
+    p_tr = transition_pressure(1e-3, 870.0, 32e-6, 10.0)
+    kc = 0.67 * np.pi * 0.01 * np.sqrt(2.0 / 870.0)
+
+    def q(opening: float, dp: float) -> float:
+        return kc * opening * dp / (dp * dp + p_tr * p_tr) ** 0.25
+
+    x1 = 0.01 * (3.25e5 - 1e5) / 9e5  # a quarter of the stroke
+    x3 = 0.002 * 0.75
+    assert r["V1.x_v.Value"][-1] == pytest.approx(x1, rel=1e-6) and r["V2.x_v.Value"][-1] == pytest.approx(x1)
+    assert r["V3.x_v.Value"][-1] == pytest.approx(x3, rel=1e-6)
+    assert r["V1.x_v.Value"][0] == 0.0  # Hopsan's spool starts at 0 whatever the pilot
+    # three valves share the node SA: its flow is logged by none of them; their own flows PP to PA
+    assert r["V1.Q"][-1] == pytest.approx(q(x1, 0.8e7), rel=1e-6)
+    assert r["V2.Q"][-1] == pytest.approx(q(0.01 - x1, 0.8e7), rel=1e-6)
+    q_pa, q_pb = q(0.002 - x3, 2e7 - 1.2e7), q(x3, 2e7 - 0.8e7)
+    q_at, q_bt = q(x3, 1.2e7 - 1e5), q(0.002 - x3, 0.8e7 - 1e5)
+    assert r["V3.QB"][-1] == pytest.approx(q_pa - q_at, rel=1e-6)  # Hopsan's PA is the FourWayValve's B
+    assert r["V3.PB.Flow"][-1] == pytest.approx(q_pb - q_bt, rel=1e-6)
+    assert r["V3.PT.Flow"][-1] == pytest.approx(q_at + q_bt, rel=1e-6)
+    path.write_text(_hmf([(k, n, {"Fs_max#Value": v("1e5")} if n == "V1" else p) for k, n, p in components],
+                         connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V1 \(HydraulicPressureControlled22Valve\): Fs_max = 100000 Pa is not"):
+        read_hopsan(path)
+
+
+def test_hopsans_gas_accumulator_charges_through_its_inlet_coefficient(tmp_path: Path) -> None:
+    """[Hopsan2026] Volumes&Lines/HydraulicAckumulator.hpp: q = V0 ẋ = Kca (p_1 - pa), pa = p0/(1 - x)^kappa
+    (absolute), from the start value xmp; its outputs pa, Va = V0 (1 - x), xmp and vmp = ẋ are logged. A
+    polytropic exponent outside [1, 1.67] is refused."""
+    v = _value
+    components = [
+        ("HydraulicAckumulator", "Acc", {"V0#Value": v("0.002"), "Kca#Value": v("2e-9"), "kappa#Value": v("1.3"),
+                                         "p0#Value": v("8e6"), "xmp#Value": v("0.2")}),
+        ("HydraulicPressureSourceC", "S", {"p#Value": v("1.5e7", "Pa")}),
+    ]
+    path = tmp_path / "acc.hmf"
+    path.write_text(_hmf(components, [("Acc.P1", "S.P1")]), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
+    pa = 8e6 / 0.8**1.3
+    assert r["Acc.pa.Value"][0] == pytest.approx(pa, rel=1e-9)
+    assert r["Acc.xmp.Value"][0] == pytest.approx(0.2) and r["Acc.Va.Value"][0] == pytest.approx(0.0016)
+    assert r["Acc.vmp.Value"][0] == pytest.approx(2e-9 * (1.5e7 - pa) / 0.002, rel=1e-9)
+    x_end = 1.0 - (8e6 / 1.5e7) ** (1 / 1.3)  # charged until pa reaches the source's pressure
+    assert r["Acc.xmp.Value"][-1] == pytest.approx(x_end, rel=1e-5)
+    components[0][2]["kappa#Value"] = v("2")
+    path.write_text(_hmf(components, [("Acc.P1", "S.P1")]), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"Acc \(HydraulicAckumulator\): kappa = 2"):
+        read_hopsan(path)
+
+
+def test_hopsans_piston_accumulator_settles_where_its_gas_takes_the_source_pressure(tmp_path: Path) -> None:
+    """[Hopsan2026] Volumes&Lines/HydraulicPistonAckumulator.hpp: ML ẍ = Ap (p_1 - pa) - Bp ẋ, pa =
+    p0 (SL/(SL - x))^kappa (absolute), q = Ap ẋ: from xmp at rest it accelerates at Ap (p_1 - pa)/ML and settles
+    where pa = p_1; its outputs pa, Va = Ap (SL - x), xmp and vmp are logged."""
+    v = _value
+    components = [
+        ("HydraulicPistonAckumulator", "Acc", {"Ap#Value": v("0.002"), "SL#Value": v("0.4"), "Bp#Value": v("400"),
+                                               "ML#Value": v("3"), "kappa#Value": v("1.3"), "p0#Value": v("8e6"),
+                                               "xmp#Value": v("0.1")}),
+        ("HydraulicPressureSourceC", "S", {"p#Value": v("1.5e7", "Pa")}),
+    ]
+    path = tmp_path / "pacc.hmf"
+    path.write_text(_hmf(components, [("Acc.P1", "S.P1")]), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Acc"].option("inlet") == "piston"
+    r = imp.system.simulate(t_eval=[0.0, 3.0], accuracy=1e-8)
+    pa = 8e6 * (0.4 / 0.3) ** 1.3
+    assert r["Acc.pa.Value"][0] == pytest.approx(pa, rel=1e-9)
+    assert r["Acc.xmp.Value"][0] == pytest.approx(0.1) and r["Acc.Va.Value"][0] == pytest.approx(0.002 * 0.3)
+    assert r["Acc.vmp.Value"][0] == 0.0
+    assert imp.system["Acc"].state_equations(  # the acceleration at the start
+        0.0, {"x_p": 0.1, "v_p": 0.0}, {"pP": 1.5e7 - 101325.0}, imp.system["Acc"].values,
+        {"p": pa - 101325.0},
+    )["v_p"] == pytest.approx(0.002 * (1.5e7 - pa) / 3.0, rel=1e-9)
+    x_end = 0.4 * (1.0 - (8e6 / 1.5e7) ** (1 / 1.3))
+    assert r["Acc.xmp.Value"][-1] == pytest.approx(x_end, rel=1e-5)
+    assert r["Acc.pa.Value"][-1] == pytest.approx(1.5e7, rel=1e-6)
+
+
 def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path: Path) -> None:
     """Hopsan's math blocks become one Function each, with the option naming the function, their ``error``
     output where Hopsan's has one and atan2's inputs inY and inX (an unconnected inX takes its start value);

@@ -6,10 +6,17 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
 from hydroservo.components.valves.ports import TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
 from hydroservo.laws.orifice import turbulent_flow
-from hydroservo.laws.pressure_valve import limited_lag_rate, opening_fraction, pressure_valve_coefficient
+from hydroservo.laws.pressure_valve import (
+    STOP_RELAXATION,
+    limited_lag_rate,
+    limited_rate,
+    opening_fraction,
+    pressure_valve_coefficient,
+    spool_balance_rate,
+)
 
 __all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve"]
 
@@ -39,8 +46,23 @@ class _PressureControl(Component):
     (:func:`hydroservo.laws.pressure_valve.pressure_valve_coefficient`; the state
     stops at its bounds, no wind-up: :func:`~hydroservo.laws.pressure_valve.limited_lag_rate`). Subclasses give the pressure by which the
     pilot exceeds the setting.
+
+    Option ``spool``: ``lag`` (default), the lag above with a constant
+    ``tau`` (Hopsan's HydraulicPressureReliefValve and
+    HydraulicPressureReducingValve); ``balance``, the force balance of a
+    damped, massless spool, :math:`C_s\tau\dot K = \Delta p_{over} - (C_s + C_f\Delta p)K`
+    (:func:`~hydroservo.laws.pressure_valve.spool_balance_rate`): the same
+    static opening, reached with the time constant
+    :math:`\tau C_s/(C_s + C_f\Delta p)` that the flow forces shorten
+    ([Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp,
+    HydraulicPressureReducingValveG.hpp; there ``tau`` is :math:`B_v/k_s`).
     """
 
+    OPTIONS = {
+        "spool": Option(
+            "lag", ("lag", "balance"), "the spool: a lag of constant tau, or the force balance of a damped spool"
+        )
+    }
     STATES = {"K": State("m^3/s/Pa^0.5", "flow coefficient of the spool", nominal=1e-6)}
     INPUTS = dict(TWO_PORT_PRESSURES)
     OUTPUTS = {
@@ -64,8 +86,14 @@ class _PressureControl(Component):
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
-        target = pressure_valve_coefficient(self.over(u, p), u["pA"] - u["pB"], p["k_cs"], p["k_cf"], p["p_nom"])
-        return {"K": limited_lag_rate(x["K"], target, p["tau"], p["q_nom"] / bk.sqrt(p["p_nom"]))}
+        dp, K_max = u["pA"] - u["pB"], p["q_nom"] / bk.sqrt(p["p_nom"])
+        if self.option("spool") == "balance":
+            rate = spool_balance_rate(self.over(u, p), dp, x["K"], p["k_cs"], p["k_cf"], p["p_nom"], p["tau"])
+            # the spool's own time constant, tau C_s/(C_s + C_f dp), sets the approach to a bound
+            tau = p["tau"] / (1.0 + bk.fmax(dp, 0.0) * p["k_cs"] / (p["k_cf"] * p["p_nom"]))
+            return {"K": limited_rate(x["K"], rate, K_max, STOP_RELAXATION * tau)}
+        target = pressure_valve_coefficient(self.over(u, p), dp, p["k_cs"], p["k_cf"], p["p_nom"])
+        return {"K": limited_lag_rate(x["K"], target, p["tau"], K_max)}
 
     def switch_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
@@ -86,7 +114,17 @@ class ReliefValve(_PressureControl):
     ([Hopsan2026]) in the limit of a small time step, with the pressure
     hysteresis left out; the turbulent law is regularised below ``p_tr`` as
     every orifice of the package is (:mod:`hydroservo.laws.orifice`).
+
+    Option ``pilot``: ``inlet`` (default), the spring chamber at the
+    atmosphere, :math:`\Delta p_{over} = p_A - p_{crack}`; ``drop``, the
+    spring chamber drained to the outlet, :math:`\Delta p_{over} = p_A - p_B - p_{crack}`
+    (Hopsan's HydraulicPressureReliefValveG, with ``spool = "balance"``).
     """
+
+    OPTIONS = {
+        **_PressureControl.OPTIONS,
+        "pilot": Option("inlet", ("inlet", "drop"), "the setting against the inlet's pressure, or against the drop A-B"),
+    }
 
     PARAMETERS = {
         "p_crack": Param(200e5, "Pa", "cracking pressure (setting)"),
@@ -98,6 +136,8 @@ class ReliefValve(_PressureControl):
     LIMITS = {"p_crack": Limit("relief")}
 
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        if self.option("pilot") == "drop":
+            return u["pA"] - u["pB"] - p["p_crack"]
         return u["pA"] - p["p_crack"]
 
     def output_equations(
@@ -114,7 +154,8 @@ class PressureReducingValve(_PressureControl):
     :math:`\Delta p_{over} = p_{set} - p_B`: fully open while the outlet is well
     below the setting, throttling as it approaches it, closed above it. The
     law of Hopsan's HydraulicPressureReducingValve ([Hopsan2026]) in the limit
-    of a small time step, hysteresis left out.
+    of a small time step, hysteresis left out; with ``spool = "balance"``,
+    that of its HydraulicPressureReducingValveG.
     """
 
     PARAMETERS = {
