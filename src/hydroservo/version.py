@@ -1,3 +1,3 @@
 """The version of hydroservo (the one place it is written, besides pyproject.toml)."""
 
-__version__ = "0.7.0"
+__version__ = "0.8.0"
