@@ -12,6 +12,7 @@ module                 components
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
 :mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
+:mod:`.rotational`     RotationalInertia, TorqueSource, AngularVelocitySource
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
@@ -67,6 +68,7 @@ from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
 from hydroservo.components.pumps import Motor, Pump, VariablePump
+from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource
 from hydroservo.components.signals import (
     Constant,
     DecayingStep,
@@ -124,6 +126,9 @@ __all__ = [
     "FixedPosition",
     "ForceSource",
     "VelocitySource",
+    "RotationalInertia",
+    "TorqueSource",
+    "AngularVelocitySource",
     "Constant",
     "SoftStep",
     "FlowSource",
