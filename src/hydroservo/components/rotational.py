@@ -26,7 +26,7 @@ __all__ = ["RotationalInertia", "TorqueSource", "AngularVelocitySource"]
 class RotationalInertia(Component):
     r"""Rigid rotating inertia with viscous friction, a torsional spring to ground and end stops.
 
-    .. math:: J\,\ddot\theta = T - T_{P1} - B\,\dot\theta - k\,\theta + T_{stop}
+    .. math:: J\,\ddot\theta = T - T_{P1} - B_{rot}\,\dot\theta - k_{rot}\,\theta + T_{stop}
 
     (:func:`~hydroservo.laws.rigid_body.rigid_body_acceleration`, the law of
     :class:`~hydroservo.components.mass.Mass` on an angle). Its two ends are the rotational ports ``P2`` (at
@@ -34,17 +34,17 @@ class RotationalInertia(Component):
     MechanicRotationalInertia ([Hopsan2026] Mechanic/Rotational/MechanicRotationalInertia.hpp): the torques of
     what is connected at P2 add into ``T``, those at P1 into ``T_P1``. End stops
     (:func:`~hydroservo.laws.stops.end_stop_force` on the angle) act beyond ``theta_min`` and ``theta_max``
-    when ``k_stop`` or ``c_stop`` is set.
+    when ``k_stop_rot`` or ``c_stop_rot`` is set.
     """
 
     PARAMETERS = {
         "J": Param(0.1, "kg*m^2", "moment of inertia", min=0.0, min_inclusive=False),
-        "B": Param(0.0, "N*m*s/rad", "viscous friction coefficient", min=0.0),
-        "k": Param(0.0, "N*m/rad", "stiffness of a torsional spring to ground, relaxed at theta = 0", min=0.0),
+        "B_rot": Param(0.0, "N*m*s/rad", "rotational viscous friction coefficient", min=0.0),
+        "k_rot": Param(0.0, "N*m/rad", "stiffness of a torsional spring to ground, relaxed at theta = 0", min=0.0),
         "theta_min": Param(-1e30, "rad", "end stop, low side"),
         "theta_max": Param(1e30, "rad", "end stop, high side"),
-        "k_stop": Param(0.0, "N*m/rad", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
-        "c_stop": Param(0.0, "N*m*s/rad", "end-stop damping", min=0.0),
+        "k_stop_rot": Param(0.0, "N*m/rad", "end-stop stiffness (0 with c_stop_rot 0: no end stops)", min=0.0),
+        "c_stop_rot": Param(0.0, "N*m*s/rad", "end-stop damping", min=0.0),
         "theta0": Param(0.0, "rad", "initial angle"),
         "omega0": Param(0.0, "rad/s", "initial angular velocity"),
     }
@@ -77,8 +77,9 @@ class RotationalInertia(Component):
     ) -> dict[str, Any]:
         theta, omega = x["theta"], x["omega"]
         load = u["T"] - u["T_P1"]
-        load = load + end_stop_force(theta, omega, p["theta_min"], p["theta_max"], p["k_stop"], p["c_stop"])
-        return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], p["k"], 0.0, p["B"] * omega)}
+        load = load + end_stop_force(theta, omega, p["theta_min"], p["theta_max"], p["k_stop_rot"], p["c_stop_rot"])
+        friction = p["B_rot"] * omega
+        return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], p["k_rot"], 0.0, friction)}
 
 
 @register
@@ -103,14 +104,14 @@ class TorqueSource(ForceSource):
 class AngularVelocitySource(VelocitySource):
     """An angular velocity from a signal: the rotational counterpart of a velocity source.
 
-    Its rotational port ``P`` turns outward at the input ``u``, from ``x0``, whatever torque it takes (Hopsan's MechanicAngularVelocityTransformer and MechanicThetaSource,
+    Its rotational port ``P`` turns outward at the input ``u``, from ``theta0``, whatever torque it takes (Hopsan's MechanicAngularVelocityTransformer and MechanicThetaSource,
     [Hopsan2026] Mechanic/Rotational/MechanicAngularVelocityTransformer.hpp, MechanicThetaSource.hpp). The law of
     :class:`~hydroservo.components.mechanics.VelocitySource` on an angle: option ``position`` ``"integral"``
     integrates the angular velocity, ``"input"`` takes the angle from the input ``x_in`` (the theta source's
     ``thetain`` connected)."""
 
-    PARAMETERS = {"x0": Param(0.0, "rad", "initial angle (option position = 'integral')")}
-    STATES = {"x": State("rad", "angle", initial="x0", nominal=1.0)}
+    PARAMETERS = {"theta0": Param(0.0, "rad", "initial angle (option position = 'integral')")}
+    STATES = {"x": State("rad", "angle", initial="theta0", nominal=1.0)}
     INPUTS = {
         "u": Port("rad/s", "angular velocity imposed outward", default=0.0),
         "F": Port("N*m", "torque acting on port P, outward", default=0.0),

@@ -135,7 +135,7 @@ Builder = Callable[[HopsanComponent, str, _Params], Mapped]
 C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
-    "MechanicForceTransformer",
+    "MechanicForceTransformer", "MechanicTorqueTransformer",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -685,6 +685,106 @@ def _sensor(n: str, variable: str, unit: str) -> Mapped:
     return Mapped([Sum(n, unit=unit, gain2=0.0)], read={"P1": (f"{n}.u1", variable)}, outputs={"out": f"{n}.y"})
 
 
+# -- mechanic, rotational -------------------------------------------------------------------------------------
+
+
+def _rotational_inertia(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertia.hpp: its transfer function 1/(J s² + B s + k)
+    from the torques at its ends (t1 - t2) to the angle of P2 (P1 at minus it) is J θ'' = T1 - T2 - B θ' - k θ, a
+    RotationalInertia; it starts at minus P1's start angle and speed, as Hopsan's filters do; its inelastic stops
+    a_min, a_max as stiff ones (1e9 N m/rad, 1e6 N m s/rad)."""
+    from hydroservo.components import RotationalInertia
+
+    comp = RotationalInertia(
+        n,
+        J=par("J", 0.1),
+        B_rot=par("B", 10.0),
+        k_rot=par("k", 0.0),
+        theta0=-par.start("P1", "Angle"),
+        omega0=-par.start("P1", "AngularVelocity"),
+    )
+    a_min, a_max = par("a_min", -1e300), par("a_max", 1e300)
+    if abs(a_min) < 1e299 or abs(a_max) < 1e299:
+        comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _torque_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicTorqueTransformer.hpp: a C component of wave variable T and no
+    impedance, the torque T on its node: a TorqueSource."""
+    from hydroservo.components import TorqueSource
+
+    return Mapped([TorqueSource(n)], power={"P1": f"{n}.P"}, inputs={"T": f"{n}.u"})
+
+
+def _theta_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicThetaSource.hpp: the speed omega, the angle its integral from
+    thetain, or thetain itself when that input is connected: an AngularVelocitySource (option position)."""
+    from hydroservo.components import AngularVelocitySource
+
+    if "thetain" in par.driven:
+        comp = AngularVelocitySource(n, position="input")
+        return Mapped([comp], power={"Pmr1": f"{n}.P"}, inputs={"omega": f"{n}.u", "thetain": f"{n}.x_in"})
+    comp = AngularVelocitySource(n, theta0=par("thetain", 0.0))
+    return Mapped([comp], power={"Pmr1": f"{n}.P"}, inputs={"omega": f"{n}.u"})
+
+
+def _angular_velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicAngularVelocityTransformer.hpp: the speed omega, the angle its
+    integral from the start angle of its port: an AngularVelocitySource."""
+    from hydroservo.components import AngularVelocitySource
+
+    comp = AngularVelocitySource(n, theta0=par.start("out", "Angle"))
+    return Mapped([comp], power={"out": f"{n}.P"}, inputs={"omega": f"{n}.u"})
+
+
+def _angle_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    return _sensor(n, "Angle", "rad")
+
+
+def _angular_velocity_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    return _sensor(n, "AngularVelocity", "rad/s")
+
+
+def _torque_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    return _sensor(n, "Torque", "N*m")
+
+
+def _motor_q(leakage: str, variable: bool) -> Builder:
+    """Hopsan's Q-type motors ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementMotorQ.hpp, leakage
+    C_lm; HydraulicVariableDisplacementMotorQ.hpp, leakage C_im and the displacement setting eps limited to
+    [-1, 1]): a Motor (D_m per revolution, B_m, J_m; no external leakage, no hydromechanical loss) whose shaft is
+    P3, its flow floored at 0 Pa absolute at either port (option inlet = "floor") as Hopsan clamps it; it starts
+    at rest at angle 0, as Hopsan's integrator does."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Motor, Saturation
+
+        comp = Motor(
+            n,
+            D=f"{par('D_m', 5e-5)!r} m^3/rev",
+            B_m=par("B_m", 0.0),
+            C_im=par(leakage, 1e-12),
+            J=par("J_m", 0.1),
+            inlet="floor",
+            p_floor=_abs(0.0),
+        )
+        m = Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.shaft"})
+        if variable:
+            eps = par("eps", 1.0)
+            if "eps" in par.driven:
+                m.components.append(Saturation(f"{n}_eps", lower=-1.0, upper=1.0))
+                m.internal.append((f"{n}_eps.y", f"{n}.eps"))
+                m.inputs["eps"] = f"{n}_eps.u"
+            else:
+                m.inputs["eps"] = f"{n}.eps"
+                if not -1.0 <= eps <= 1.0:
+                    par.problems.append(f"{par.where}: eps = {eps:g} outside [-1, 1], which Hopsan limits it to")
+        return m
+
+    return build
+
+
 # -- signal ---------------------------------------------------------------------------------------------------
 
 
@@ -1030,6 +1130,15 @@ LIBRARY: dict[str, Builder] = {
     "MechanicPositionSensor": _position_sensor,
     "MechanicSpeedSensor": _velocity_sensor,
     "MechanicForceSensor": _force_sensor,
+    "MechanicRotationalInertia": _rotational_inertia,
+    "MechanicTorqueTransformer": _torque_source,
+    "MechanicThetaSource": _theta_source,
+    "MechanicAngularVelocityTransformer": _angular_velocity_source,
+    "MechanicAngleSensor": _angle_sensor,
+    "MechanicAngularVelocitySensor": _angular_velocity_sensor,
+    "MechanicTorqueSensor": _torque_sensor,
+    "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
+    "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
     "SignalStep": _step,
     "SignalRamp": _ramp,
     "SignalSineWave": _sine,
@@ -1478,7 +1587,7 @@ def _union(groups: list[list[tuple[str, str]]], multiports: set[tuple[str, str]]
 
 def _node_variables(system: System, refs: list[str], port_of: Callable[..., Any]) -> dict[str, Var]:
     """Hopsan's variables of the node the hydroservo ports ``refs`` form: pressure (absolute) and flow, or
-    position, velocity and force, each from the port that gives it."""
+    position, velocity and force (angle, angular velocity and torque), each from the port that gives it."""
     from hydroservo.components.base import Hydraulic, Mechanical
     from hydroservo.system.nodes import is_motion_port, is_pressure_port
 
@@ -1492,11 +1601,13 @@ def _node_variables(system: System, refs: list[str], port_of: Callable[..., Any]
             elif len(refs) == 2:  # a Hopsan node: its flow goes into the C component, out of this one
                 out["Flow"] = Var(-port.sign, f"{cname}.{port.Q}")
         elif isinstance(port, Mechanical):
+            x, v, f = ("Angle", "AngularVelocity", "Torque") if port.kind == "rotational" else (
+                "Position", "Velocity", "Force")
             if is_motion_port(comp, port):  # Hopsan's Q ports count outward
-                out["Position"] = Var(port.sign, f"{cname}.{port.x}")
-                out["Velocity"] = Var(port.sign, f"{cname}.{port.v}")
-            else:  # the force pressing on the node
-                out["Force"] = Var(port.sign, f"{cname}.{port.F}")
+                out[x] = Var(port.sign, f"{cname}.{port.x}")
+                out[v] = Var(port.sign, f"{cname}.{port.v}")
+            else:  # the force (torque) pressing on the node
+                out[f] = Var(port.sign, f"{cname}.{port.F}")
     return out
 
 

@@ -15,7 +15,7 @@ def test_inertia_driven_by_a_torque_spins_up_to_torque_over_damping() -> None:
     """J dω/dt = T - B ω: ω = T/B (1 - exp(-B t / J)); the source at P1 twists its end outward from itself, so
     along +θ (the inertia's P1 counts along -θ), as Hopsan's torque on a Q component's node."""
     s = System("spin")
-    s.add(c.RotationalInertia("j", J=0.5, B=2.0))
+    s.add(c.RotationalInertia("j", J=0.5, B_rot=2.0))
     s.add(c.TorqueSource("t"))
     s.add(c.Constant("T", unit="N*m", value=4.0))
     s.connect("t.P", "j.P1")
@@ -30,7 +30,7 @@ def test_inertia_driven_by_a_torque_spins_up_to_torque_over_damping() -> None:
 
 def test_inertia_on_its_spring_oscillates_at_sqrt_k_over_j() -> None:
     s = System("torsion")
-    s.add(c.RotationalInertia("j", J=0.02, k=50.0, theta0=0.1))
+    s.add(c.RotationalInertia("j", J=0.02, k_rot=50.0, theta0=0.1))
     t = np.linspace(0.0, 0.5, 11)
     r = s.simulate(t_eval=t, accuracy=1e-9)
     assert np.allclose(r["j.theta"], 0.1 * np.cos(np.sqrt(50.0 / 0.02) * t), atol=1e-5)
@@ -39,7 +39,7 @@ def test_inertia_on_its_spring_oscillates_at_sqrt_k_over_j() -> None:
 def test_an_angular_velocity_source_integrates_its_signal_whatever_the_torque_on_it() -> None:
     """From 0.2 rad at 3 rad/s: 3.2 rad after 1 s, with a torque source of 50 N m twisting its port."""
     s = System("driven")
-    s.add(c.AngularVelocitySource("w", x0=0.2))
+    s.add(c.AngularVelocitySource("w", theta0=0.2))
     s.add(c.Constant("u", unit="rad/s", value=3.0))
     s.add(c.TorqueSource("load"))
     s.add(c.Constant("T", unit="N*m", value=50.0))

@@ -676,3 +676,99 @@ def test_blocks_that_start_at_their_input_take_the_value_driving_it_at_the_start
     system = read_hopsan(path)
     assert system["RL"].values["y0"] == pytest.approx(1.1)
     assert system.initial["V_spool.s"] == pytest.approx(1.0)
+
+
+def test_rotational_inertia_torque_and_angular_velocity_sources_and_sensors(tmp_path: Path) -> None:
+    """MechanicRotationalInertia (J, B, k) as RotationalInertia, MechanicTorqueTransformer as TorqueSource, the
+    theta source and the angular-velocity transformer as AngularVelocitySource, the angle, speed and torque
+    sensors reading Hopsan's node variables. A torque T = 4 N m at P1 turns the inertia (J 0.5, B 2) at P2 along
+    +θ: ω = T/B (1 - exp(-B t/J)); a theta source whose thetain is connected takes its angle from it."""
+    v = _value
+    components = [
+        ("MechanicRotationalInertia", "J", {"J": v("0.5"), "B#Value": v("2"), "k#Value": v("0")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("4")}),
+        ("MechanicAngularVelocitySensor", "W", {}),
+        ("MechanicAngleSensor", "A", {}),
+        ("MechanicTorqueSensor", "Q", {}),
+        ("MechanicTorqueTransformer", "T0", {"T#Value": v("0")}),
+        ("MechanicThetaSource", "TS", {"omega#Value": v("3")}),
+        ("SignalConstant", "Th", {"y#Value": v("0.7")}),
+        ("MechanicTorqueTransformer", "T1", {"T#Value": v("0")}),
+        ("MechanicAngularVelocityTransformer", "AV", {"omega#Value": v("-2")}),
+    ]
+    connections = [
+        ("T.P1", "J.P1"), ("T0.P1", "J.P2"), ("W.P1", "J.P2"), ("A.P1", "J.P2"), ("Q.P1", "J.P1"),
+        ("TS.Pmr1", "T1.P1"), ("Th.y", "TS.thetain"), ("AV.out", "T0.P1"),
+    ]
+    path = tmp_path / "rot.hmf"
+    # the angular velocity transformer drives the node of T0 and J.P2 twice: not Hopsan's C/Q alternation
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match="J.P2"):
+        read_hopsan(path)
+    connections[-1] = ("AV.out", "T1.P1")
+    connections[-3] = ("TS.Pmr1", "T2.P1")
+    components.append(("MechanicTorqueTransformer", "T2", {"T#Value": v("0")}))
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert (imp.system["J"].values["J"], imp.system["J"].values["B_rot"]) == (0.5, 2.0)
+    assert imp.system["TS"].option("position") == "input" and imp.system["AV"].option("position") == "integral"
+    t = np.array([0.0, 0.2, 0.5, 1.0])
+    r = imp.system.simulate(t_eval=t, accuracy=1e-9)
+    omega = 2.0 * (1.0 - np.exp(-4.0 * t))
+    np.testing.assert_allclose(r["W.out.Value"], omega, atol=1e-6)
+    np.testing.assert_allclose(r["J.P2.AngularVelocity"], omega, atol=1e-6)
+    np.testing.assert_allclose(r["J.P1.AngularVelocity"], -omega, atol=1e-6)
+    np.testing.assert_allclose(r["A.out.Value"], 2.0 * (t - 0.25 * (1.0 - np.exp(-4.0 * t))), atol=1e-6)
+    np.testing.assert_allclose(r["Q.out.Value"][1:], 4.0)
+    np.testing.assert_allclose(r["TS.Pmr1.Angle"], 0.7)
+    np.testing.assert_allclose(r["TS.Pmr1.AngularVelocity"], 3.0)
+    np.testing.assert_allclose(r["AV.out.Angle"], -2.0 * t, atol=1e-9)
+
+
+def test_hopsans_q_type_motors_turn_against_their_load_with_hopsans_displacement_and_leakage(tmp_path: Path) -> None:
+    """HydraulicVariableDisplacementMotorQ and HydraulicFixedDisplacementMotorQ: J ω' = ε D_m/2π (p1 - p2) - B_m ω
+    - T3, the flow into P1 ε D_m/2π ω + C (p1 - p2) (C_im, C_lm). Between 100 bar and 1 bar (absolute) against
+    a torque source of 20 N m each settles at ω = (ε D Δp - T)/B_m; a driven eps passes a Saturation to [-1, 1]
+    (Hopsan limits it), a constant one outside it is refused."""
+    v = _value
+    D = 5e-5 / (2.0 * np.pi)
+    components = [
+        ("HydraulicVariableDisplacementMotorQ", "MV", {"D_m#Value": v("5e-5"), "B_m#Value": v("0.5"),
+                                                       "C_im#Value": v("1e-11"), "J_m#Value": v("0.01"),
+                                                       "eps#Value": v("0.5")}),
+        ("HydraulicFixedDisplacementMotorQ", "MF", {"D_m#Value": v("5e-5"), "B_m#Value": v("0.5"),
+                                                    "C_lm#Value": v("2e-11"), "J_m#Value": v("0.01")}),
+        ("HydraulicPressureSourceC", "PH", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicTankC", "PL", {"p": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "PH2", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicTankC", "PL2", {"p": v("1e5", "Pa")}),
+        ("MechanicTorqueTransformer", "TV", {"T#Value": v("20")}),
+        ("MechanicTorqueTransformer", "TF", {"T#Value": v("20")}),
+    ]
+    connections = [
+        ("MV.P1", "PH.P1"), ("MV.P2", "PL.P1"), ("MV.P3", "TV.P1"),
+        ("MF.P1", "PH2.P1"), ("MF.P2", "PL2.P1"), ("MF.P3", "TF.P1"),
+    ]
+    path = tmp_path / "motors.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    mv, mf = imp.system["MV"], imp.system["MF"]
+    assert mv.values["D"] == pytest.approx(D) and mv.values["C_im"] == 1e-11 and mf.values["C_im"] == 2e-11
+    assert mv.option("inlet") == "floor" and mv.values["C_em"] == 0.0 and mv.values["eta_hm"] == 1.0
+    r = imp.system.simulate(t_end=1.0)
+    dp = 1e7 - 1e5
+    for name, eps, leak in (("MV", 0.5, 1e-11), ("MF", 1.0, 2e-11)):
+        omega = (eps * D * dp - 20.0) / 0.5
+        assert r[f"{name}.P3.AngularVelocity"][-1] == pytest.approx(omega, rel=1e-6)
+        assert r[f"{name}.P3.Torque"][-1] == pytest.approx(20.0)
+        # Hopsan's flow at P1 counts out of the motor
+        assert r[f"{name}.P1.Flow"][-1] == pytest.approx(-(eps * D * omega + leak * dp), rel=1e-6)
+    bad = [("HydraulicVariableDisplacementMotorQ", "MV", {"eps#Value": v("1.5")}), *components[1:]]
+    path.write_text(_hmf(bad, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"eps = 1\.5 outside \[-1, 1\]"):
+        read_hopsan(path)
+    ramp = ("SignalRamp", "R", {"y_0#Value": v("0"), "y_A#Value": v("3"), "t_start#Value": v("0"), "t_end#Value": v("3")})
+    path.write_text(_hmf([*components, ramp], [*connections, ("R.out", "MV.eps")]), encoding="utf-8")
+    imp = import_hopsan(path)
+    r = imp.system.simulate(t_eval=[0.0, 0.5, 2.0, 3.0])
+    np.testing.assert_allclose(r["MV_eps.y"], [0.0, 0.5, 1.0, 1.0], atol=1e-9)
