@@ -12,7 +12,8 @@ module                 components
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
 :mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
-:mod:`.rotational`     RotationalInertia, TorqueSource, AngularVelocitySource
+:mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
+                       AngularVelocitySource
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
@@ -68,7 +69,7 @@ from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
 from hydroservo.components.pumps import Motor, Pump, VariablePump
-from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource
+from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource, TorsionalSpring
 from hydroservo.components.signals import (
     Constant,
     DecayingStep,
@@ -127,6 +128,7 @@ __all__ = [
     "ForceSource",
     "VelocitySource",
     "RotationalInertia",
+    "TorsionalSpring",
     "TorqueSource",
     "AngularVelocitySource",
     "Constant",

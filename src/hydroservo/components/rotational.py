@@ -1,4 +1,4 @@
-"""Rotational mechanics joined port to port: an inertia, torque and angular-velocity sources.
+"""Rotational mechanics joined port to port: an inertia, a torsional spring, torque and angular-velocity sources.
 
 The rotational counterparts of :mod:`hydroservo.components.mass` and :mod:`hydroservo.components.mechanics`:
 their mechanical ports are of kind ``"rotational"`` (angle [rad], angular velocity [rad/s], torque [N*m]) and
@@ -15,11 +15,11 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
-from hydroservo.components.mechanics import ForceSource, VelocitySource
+from hydroservo.components.mechanics import ForceSource, Spring, VelocitySource
 from hydroservo.laws.rigid_body import rigid_body_acceleration
 from hydroservo.laws.stops import end_stop_force
 
-__all__ = ["RotationalInertia", "TorqueSource", "AngularVelocitySource"]
+__all__ = ["RotationalInertia", "TorsionalSpring", "TorqueSource", "AngularVelocitySource"]
 
 
 @register
@@ -122,3 +122,35 @@ class AngularVelocitySource(VelocitySource):
         "x": Output("rad", "angle"),
         "v": Output("rad/s", "angular velocity"),
     }
+
+
+@register
+class TorsionalSpring(Spring):
+    r"""Linear torsional spring between two ends: the rotational counterpart of a spring.
+
+    :math:`T_1 = T_2 = -k_{rot}\,(\theta_1 + \theta_2 - e_{0,rot})`, with :math:`\theta_1`, :math:`\theta_2` the
+    outward angles of its ends (the law of :class:`~hydroservo.components.mechanics.Spring` on an angle). Output
+    ``F`` is its torque (twisted open positive). Hopsan's MechanicTorsionalSpring, MechanicRotShaft and
+    MechanicRotShaftG ([Hopsan2026] Mechanic/Rotational/) are this law as transmission-line elements.
+    """
+
+    PARAMETERS = {
+        "k_rot": Param(100.0, "N*m/rad", "torsional stiffness", min=0.0),
+        "e0_rot": Param(0.0, "rad", "twist (theta1 + theta2) at which the spring is relaxed"),
+    }
+    INPUTS = {
+        "x1": Port("rad", "outward angle of end 1", default=0.0),
+        "v1": Port("rad/s", "outward angular velocity of end 1", default=0.0),
+        "x2": Port("rad", "outward angle of end 2", default=0.0),
+        "v2": Port("rad/s", "outward angular velocity of end 2", default=0.0),
+    }
+    MECHANICAL = {
+        "P1": Mechanical("x1", "v1", "F1", "end 1 of the spring (outward)", kind="rotational"),
+        "P2": Mechanical("x2", "v2", "F2", "end 2 of the spring (outward)", kind="rotational"),
+    }
+    OUTPUTS = {
+        "F1": Output("N*m", "torque on what end 1 is joined to, outward"),
+        "F2": Output("N*m", "torque on what end 2 is joined to, outward"),
+        "F": Output("N*m", "torque in the spring (twisted open positive)"),
+    }
+    STIFFNESS, RELAXED = "k_rot", "e0_rot"

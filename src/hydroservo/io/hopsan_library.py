@@ -135,7 +135,8 @@ Builder = Callable[[HopsanComponent, str, _Params], Mapped]
 C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
-    "MechanicForceTransformer", "MechanicTorqueTransformer",
+    "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
+    "MechanicRotShaftG",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -629,18 +630,24 @@ def _mass_coulomb(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Spring
 
-    # Hopsan's spring starts at its ends' start positions (inward; hydroservo's are outward) with the start force
-    # of its nodes (a compression: a preload), and adds k times the ends' displacements
     k = par("k", 100.0)
-    e0 = -(par.start("P1", "Position") + par.start("P2", "Position"))
-    preload = par.start("P1", "Force")
-    if preload != par.start("P2", "Force"):
-        par.problems.append(f"{par.where}: start forces at P1 and P2 that differ are not supported")
+    e0 = _relaxed(par, k, ("P1", "P2"), "Position", "Force")
+    return Mapped([Spring(n, k_spring=k, e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _relaxed(par: _Params, k: float, ports: tuple[str, str], position: str, force: str) -> float:
+    """Where a Hopsan spring is relaxed: it starts at its ends' start positions (inward; hydroservo's are outward)
+    with the start force of its nodes (a compression: a preload), and adds k times the ends' displacements."""
+    e0 = -(par.start(ports[0], position) + par.start(ports[1], position))
+    preload = par.start(ports[0], force)
+    if preload != par.start(ports[1], force):
+        par.problems.append(f"{par.where}: start {force.lower()}s at {ports[0]} and {ports[1]} that differ are not "
+                            "supported")
     if preload and k > 0.0:
         e0 += preload / k  # compressed by preload / k at the start
     elif preload:
-        par.problems.append(f"{par.where}: a start force on a spring of zero stiffness is not supported")
-    return Mapped([Spring(n, k_spring=k, e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+        par.problems.append(f"{par.where}: a start {force.lower()} on a spring of zero stiffness is not supported")
+    return e0
 
 
 def _fixed_position(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -707,6 +714,37 @@ def _rotational_inertia(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     if abs(a_min) < 1e299 or abs(a_max) < 1e299:
         comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
     return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _torsional_spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicTorsionalSpring.hpp: a transmission-line element of impedance
+    k Ts, a spring of stiffness k as Ts vanishes: a TorsionalSpring relaxed at its ends' start angles (less a
+    start torque's twist)."""
+    from hydroservo.components import TorsionalSpring
+
+    k = par("k", 100.0)
+    e0 = _relaxed(par, k, ("P1", "P2"), "Angle", "Torque")
+    return Mapped([TorsionalSpring(n, k_rot=k, e0_rot=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _shaft(stiffness: Callable[[_Params], float]) -> Builder:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotShaft.hpp (stiffness Ks) and MechanicRotShaftG.hpp (Ks = π/32
+    (dy⁴ − di⁴) G / len, a hollow shaft of shear modulus G): transmission-line elements of impedance Ks Ts/(1 − α)
+    whose wave variables a first-order filter of α damps; impedance and damping vanish with the step, leaving a
+    spring of stiffness Ks: a TorsionalSpring, relaxed as Hopsan starts it (its ports' start angles and torque).
+    ``alpha`` is numerical only (it acts in the limit no more): values in [0, 1) are accepted and dropped."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import TorsionalSpring
+
+        alpha = par("alpha", 0.1)
+        if not 0.0 <= alpha < 1.0:
+            par.problems.append(f"{par.where}: alpha = {alpha:g} outside [0, 1), where Hopsan's filter is stable")
+        k = stiffness(par)
+        e0 = _relaxed(par, k, ("Pmr1", "Pmr2"), "Angle", "Torque")
+        return Mapped([TorsionalSpring(n, k_rot=k, e0_rot=e0)], power={"Pmr1": f"{n}.P1", "Pmr2": f"{n}.P2"})
+
+    return build
 
 
 def _torque_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1132,6 +1170,11 @@ LIBRARY: dict[str, Builder] = {
     "MechanicForceSensor": _force_sensor,
     "MechanicRotationalInertia": _rotational_inertia,
     "MechanicTorqueTransformer": _torque_source,
+    "MechanicTorsionalSpring": _torsional_spring,
+    "MechanicRotShaft": _shaft(lambda par: par("Ks", 1000.0)),
+    "MechanicRotShaftG": _shaft(
+        lambda par: math.pi / 32.0 * (par("dy", 0.02) ** 4 - par("di", 0.0) ** 4) * par("G", 7.93e10) / par("len", 0.1)
+    ),
     "MechanicThetaSource": _theta_source,
     "MechanicAngularVelocityTransformer": _angular_velocity_source,
     "MechanicAngleSensor": _angle_sensor,

@@ -95,3 +95,24 @@ def test_motor_with_a_floor_draws_no_port_below_it() -> None:
     assert run("floor") == pytest.approx(-101325.0, abs=200.0)
     with pytest.warns(ImplausibleResultWarning, match="below vacuum"):
         assert run("free") < -1e6
+
+
+def test_an_inertia_on_a_torsional_spring_to_a_turning_source_oscillates_about_it() -> None:
+    """A source turning at 2 rad/s drags an inertia through a torsional spring: relative to the source the inertia
+    swings as (ω_s / ω_n) sin(ω_n t) with ω_n = √(k/J), the spring's torque k times the twist."""
+    k, J, w = 200.0, 0.5, 2.0
+    s = System("torsion_drive")
+    s.add(c.AngularVelocitySource("src"))
+    s.add(c.Constant("u", unit="rad/s", value=w))
+    s.add(c.TorsionalSpring("k", k_rot=k))
+    s.add(c.RotationalInertia("j", J=J))
+    s.connect("u.y", "src.u")
+    s.connect("src.P", "k.P1")
+    s.connect("k.P2", "j.P1")
+    t = np.linspace(0.0, 1.0, 21)
+    r = s.simulate(t_eval=t, accuracy=1e-9)
+    wn = np.sqrt(k / J)
+    # the inertia's P1 faces the spring: its +θ is the source's direction, its angle lags the source's by the twist
+    twist = w / wn * np.sin(wn * t)
+    np.testing.assert_allclose(r["j.theta"], w * t - twist, atol=1e-6)
+    np.testing.assert_allclose(r["k.F"], -k * twist, atol=1e-4)

@@ -772,3 +772,41 @@ def test_hopsans_q_type_motors_turn_against_their_load_with_hopsans_displacement
     imp = import_hopsan(path)
     r = imp.system.simulate(t_eval=[0.0, 0.5, 2.0, 3.0])
     np.testing.assert_allclose(r["MV_eps.y"], [0.0, 0.5, 1.0, 1.0], atol=1e-9)
+
+
+def test_hopsans_shafts_and_torsional_spring_are_torsional_springs_in_the_limit_of_a_vanishing_step(
+    tmp_path: Path,
+) -> None:
+    """MechanicRotShaft (Ks), MechanicRotShaftG (Ks = π/32 (dy⁴ − di⁴) G/len) and MechanicTorsionalSpring (k):
+    transmission-line springs whose impedance and numerical damping (alpha) vanish with the step, so
+    TorsionalSprings of that stiffness. A theta source at 2 rad/s drags an inertia (J 0.5, no damping) through
+    the shaft: the twist swings as (ω/ω_n) sin(ω_n t); alpha outside [0, 1) is refused."""
+    v = _value
+    components = [
+        ("MechanicThetaSource", "S", {"omega#Value": v("2")}),
+        ("MechanicRotShaft", "Shaft", {"Ks#Value": v("200"), "alpha#Value": v("0.9")}),
+        ("MechanicRotationalInertia", "J", {"J": v("0.5"), "B#Value": v("0"), "k#Value": v("0")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("0")}),
+        ("MechanicRotShaftG", "G", {"dy#Value": v("0.05"), "di#Value": v("0.01"), "len#Value": v("2"),
+                                    "G#Value": v("8e10")}),
+        ("MechanicTorsionalSpring", "K", {"k": v("300")}),
+        ("MechanicAngularVelocityTransformer", "W1", {}),
+        ("MechanicAngularVelocityTransformer", "W2", {}),
+        ("MechanicAngularVelocityTransformer", "W3", {}),
+    ]
+    connections = [("S.Pmr1", "Shaft.Pmr1"), ("Shaft.Pmr2", "J.P1"), ("J.P2", "T.P1"),
+                   ("G.Pmr1", "W1.out"), ("G.Pmr2", "W2.out"), ("K.P1", "W3.out")]
+    path = tmp_path / "shafts.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Shaft"].values["k_rot"] == 200.0 and imp.system["K"].values["k_rot"] == 300.0
+    assert imp.system["G"].values["k_rot"] == pytest.approx(np.pi / 32.0 * (0.05**4 - 0.01**4) * 8e10 / 2.0)
+    t = np.linspace(0.0, 1.0, 11)
+    r = imp.system.simulate(t_eval=t, accuracy=1e-9)
+    wn = np.sqrt(200.0 / 0.5)
+    np.testing.assert_allclose(r["J.P2.Angle"], 2.0 * t - 2.0 / wn * np.sin(wn * t), atol=1e-6)
+    np.testing.assert_allclose(r["Shaft.Pmr2.Torque"], 200.0 * 2.0 / wn * np.sin(wn * t), atol=1e-4)
+    components[1] = ("MechanicRotShaft", "Shaft", {"Ks#Value": v("200"), "alpha#Value": v("1")})
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"alpha = 1 outside \[0, 1\)"):
+        read_hopsan(path)
