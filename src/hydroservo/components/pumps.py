@@ -1,4 +1,5 @@
-"""Pumps and motors: displacement machines with leakage; a pressure-compensated pump; a motor driving an inertia."""
+"""Pumps and motors: displacement machines with leakage; a pressure-compensated pump; a motor driving an inertia; a
+machine whose shaft what it is joined to turns."""
 
 from __future__ import annotations
 
@@ -26,7 +27,7 @@ from hydroservo.laws.displacement import (
 )
 from hydroservo.units import VACUUM
 
-__all__ = ["Pump", "VariablePump", "Motor"]
+__all__ = ["Pump", "VariablePump", "Motor", "Machine"]
 
 _PUMP_INPUTS = {
     "pS": Port("Pa", "pressure at the suction port S", default=0.0),
@@ -239,3 +240,54 @@ class Motor(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"theta": x["omega"], "omega": (y["T"] - p["B_m"] * x["omega"] - u["T_load"] + u["T_shaft"]) / p["J"]}
+
+
+@register
+class Machine(Component):
+    r"""Displacement machine, pump or motor, whose shaft what it is joined to turns (no inertia of its own).
+
+    .. math::
+        Q_A = Q_B = \varepsilon D\,\omega + C_{im}\,(p_A - p_B), \qquad
+        T = \varepsilon D\,(p_A - p_B) - B_m\,\omega
+
+    ([Merritt1967], hydraulic motors: flow continuity with internal leakage, torque :math:`D_m P_L`;
+    :mod:`hydroservo.laws.displacement`). Flow entering at A turns the shaft in +θ; turned the other way by its
+    load, it pumps from B to A. Its shaft is the rotational port ``shaft`` (counted outward, along +θ), a torque
+    port: it reads the speed ``omega`` of what it is joined to (an inertia, a motor, an angular-velocity source)
+    and twists it with ``T``. The input ``eps`` (default 1) scales the displacement. Hopsan's
+    HydraulicMachineC ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicMachineC.hpp) is this machine between two
+    volumes (its transmission-line port volumes ``V_1``, ``V_2``), its torque characteristic
+    :math:`c_3 = (p_1 - p_2)\,\varepsilon D` with the impedance :math:`B_m + (\varepsilon D)^2 (Z_{c1} + Z_{c2})`, the
+    pressures at least 0 absolute (the volumes' cavity law).
+    """
+
+    PARAMETERS = {
+        "D": Param(50e-6 / 6.283185307179586, "m^3/rad", "displacement per radian (write '50 cm^3/rev')", min=0.0,
+                   min_inclusive=False),
+        "C_im": Param(0.0, "m^3/s/Pa", "internal leakage coefficient, A to B", min=0.0),
+        "B_m": Param(0.0, "N*m*s/rad", "viscous friction coefficient of the shaft", min=0.0),
+    }
+    INPUTS = {
+        "pA": Port("Pa", "pressure at port A"),
+        "pB": Port("Pa", "pressure at port B"),
+        "theta": Port("rad", "angle of the shaft, along +θ", default=0.0),
+        "omega": Port("rad/s", "speed of the shaft, along +θ", default=0.0),
+        "eps": Port("", "displacement setting (1: full; -1: full, reversed)", default=1.0),
+    }
+    OUTPUTS = {
+        "QA": Output("m^3/s", "flow into the machine at A"),
+        "QB": Output("m^3/s", "flow out of the machine at B"),
+        "T": Output("N*m", "torque on what the shaft is joined to, along +θ"),
+    }
+    HYDRAULIC = {
+        "A": Hydraulic("pA", "QA", "port A (inlet for +θ as a motor)", into=True),
+        "B": Hydraulic("pB", "QB", "port B (outlet for +θ as a motor)", into=False),
+    }
+    MECHANICAL = {"shaft": Mechanical("theta", "omega", "T", "the shaft (counted along +θ)", kind="rotational")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        dp = u["pA"] - u["pB"]
+        q = displaced_flow(p["D"], u["omega"], u["eps"]) + leakage_flow(p["C_im"], dp)
+        return {"QA": q, "QB": q, "T": motor_torque(u["eps"] * p["D"], dp) - p["B_m"] * u["omega"]}

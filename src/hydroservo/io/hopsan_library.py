@@ -78,7 +78,7 @@ class Mapped:
     multi: dict[str, list[str]] = field(default_factory=dict)
     #: initial values of states ("comp.state" -> value, SI) taken from Hopsan's start values
     initial: dict[str, float] = field(default_factory=dict)
-    #: signals joining the components it became: (output, input)
+    #: signals (or ports) joining the components it became: (output, input), (port, port)
     internal: list[tuple[str, str]] = field(default_factory=list)
     #: parameters or states that start at (a function of) the value of an input at the start ("comp.y0" ->
     #: ("comp.u", f)), as Hopsan's blocks that take their input's value when the model is initialised (a rate
@@ -136,7 +136,7 @@ C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
-    "MechanicRotShaftG",
+    "MechanicRotShaftG", "HydraulicMachineC",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -796,7 +796,7 @@ def _motor_q(leakage: str, variable: bool) -> Builder:
     at rest at angle 0, as Hopsan's integrator does."""
 
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-        from hydroservo.components import Motor, Saturation
+        from hydroservo.components import Motor
 
         comp = Motor(
             n,
@@ -809,18 +809,48 @@ def _motor_q(leakage: str, variable: bool) -> Builder:
         )
         m = Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.shaft"})
         if variable:
-            eps = par("eps", 1.0)
-            if "eps" in par.driven:
-                m.components.append(Saturation(f"{n}_eps", lower=-1.0, upper=1.0))
-                m.internal.append((f"{n}_eps.y", f"{n}.eps"))
-                m.inputs["eps"] = f"{n}_eps.u"
-            else:
-                m.inputs["eps"] = f"{n}.eps"
-                if not -1.0 <= eps <= 1.0:
-                    par.problems.append(f"{par.where}: eps = {eps:g} outside [-1, 1], which Hopsan limits it to")
+            _displacement_setting(m, n, par)
         return m
 
     return build
+
+
+def _displacement_setting(m: Mapped, n: str, par: _Params) -> None:
+    """A machine's displacement setting ``eps``, which Hopsan limits to [-1, 1]: driven, through a Saturation
+    ``{n}_eps``; constant, refused outside it."""
+    from hydroservo.components import Saturation
+
+    if "eps" in par.driven:
+        m.components.append(Saturation(f"{n}_eps", lower=-1.0, upper=1.0))
+        m.internal.append((f"{n}_eps.y", f"{n}.eps"))
+        m.inputs["eps"] = f"{n}_eps.u"
+        return
+    m.inputs["eps"] = f"{n}.eps"
+    eps = par("eps", 1.0)
+    if not -1.0 <= eps <= 1.0:
+        par.problems.append(f"{par.where}: eps = {eps:g} outside [-1, 1], which Hopsan limits it to")
+
+
+def _machine_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Pumps&Motors/HydraulicMachineC.hpp: a C-type machine, its port volumes V_1, V_2
+    transmission-line elements (at least a volume that keeps the element stable at the step, through J_em: a
+    numerical bound, dropped) and its shaft a torque characteristic (p1 − p2) ε D_m/2π with the impedance B_m +
+    (ε D_m/2π)² (Z_c1 + Z_c2): in the limit a Machine (D_m per revolution, C_lm, B_m, eps limited to [-1, 1])
+    between two Volumes with Hopsan's cavity law (their ports see max(p, 0), as the machine's pressures are
+    floored), each starting at its port's start pressure. Hopsan's flow into P1 is ε D_m/2π times minus its
+    shaft's speed (the Q component's): P1 is the Machine's A."""
+    from hydroservo.components import Machine, Volume
+
+    comp = Machine(n, D=f"{par('D_m', 5e-5)!r} m^3/rev", C_im=par("C_lm", 1e-12), B_m=par("B_m", 0.0))
+    volumes = [
+        Volume(f"{n}_V{i}", V=par(f"V_{i}", 0.005), beta_e=par("Beta_e", 1e9),
+               p0=_abs(par.start(f"P{i}", "Pressure", 1e5)), pressure_floor="cavity", p_floor="0 Pa_abs")
+        for i in (1, 2)
+    ]
+    m = Mapped([comp, *volumes], power={"P1": f"{n}_V1.P", "P2": f"{n}_V2.P", "P3": f"{n}.shaft"})
+    m.internal.extend([(f"{n}_V1.P", f"{n}.A"), (f"{n}_V2.P", f"{n}.B")])
+    _displacement_setting(m, n, par)
+    return m
 
 
 # -- signal ---------------------------------------------------------------------------------------------------
@@ -1181,6 +1211,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicAngularVelocitySensor": _angular_velocity_sensor,
     "MechanicTorqueSensor": _torque_sensor,
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
+    "HydraulicMachineC": _machine_c,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
     "SignalStep": _step,
     "SignalRamp": _ramp,

@@ -152,6 +152,11 @@ MODELS: dict[str, Spec] = {
              "Hopsan is numerical only, so that its reference converges at first order; docs/validation.md)"),
         ),
     ),
+    "hydraulic-machine-c-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicMachineCTest.hmf",
+        "a C-type machine between two pressure sources (through laminar orifices) turning an inertia, its "
+        "displacement setting ramped from 1 to -1",
+    ),
     "hydrostatic-transmission": Spec(
         "Example Models/Hydrostatic Transmission.hmf",
         "a variable pump in a closed loop with a variable motor (Q-type) driving its own inertia, boost check "

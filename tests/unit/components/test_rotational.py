@@ -116,3 +116,26 @@ def test_an_inertia_on_a_torsional_spring_to_a_turning_source_oscillates_about_i
     twist = w / wn * np.sin(wn * t)
     np.testing.assert_allclose(r["j.theta"], w * t - twist, atol=1e-6)
     np.testing.assert_allclose(r["k.F"], -k * twist, atol=1e-4)
+
+
+def test_a_machine_between_pressures_drives_an_inertia_to_torque_balance() -> None:
+    """J dω/dt = ε D Δp - B_m ω - B ω on a Machine turning an inertia through its shaft: ω → ε D Δp/(B_m + B); the
+    flow in at A is ε D ω + C_im Δp. Reversed (ε = -1) it turns the other way."""
+    D = 40e-6 / (2.0 * np.pi)
+    for eps in (0.5, -1.0):
+        s = System("machine")
+        s.add(c.Tank("a", p="50 bar"))
+        s.add(c.Tank("b"))
+        s.add(c.Machine("m", D="40 cm^3/rev", C_im=1e-12, B_m=0.2))
+        s.add(c.RotationalInertia("j", J=0.05, B_rot=0.3))
+        s.add(c.Constant("eps", value=eps))
+        s.connect("a.P", "m.A")
+        s.connect("m.B", "b.P")
+        s.connect("m.shaft", "j.P2")
+        s.connect("eps.y", "m.eps")
+        r = s.simulate(t_end=2.0)
+        omega = eps * D * 50e5 / (0.2 + 0.3)
+        # the inertia's P2 faces the shaft: it turns at minus the shaft's outward speed
+        assert r["j.omega"][-1] == pytest.approx(-omega, rel=1e-6)
+        assert r["m.QA"][-1] == pytest.approx(eps * D * omega + 1e-12 * 50e5, rel=1e-6)
+        assert r["m.T"][-1] == pytest.approx(0.3 * omega, rel=1e-6)

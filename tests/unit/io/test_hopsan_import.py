@@ -810,3 +810,43 @@ def test_hopsans_shafts_and_torsional_spring_are_torsional_springs_in_the_limit_
     path.write_text(_hmf(components, connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"alpha = 1 outside \[0, 1\)"):
         read_hopsan(path)
+
+
+def test_hopsans_c_type_machine_is_a_machine_between_its_port_volumes(tmp_path: Path) -> None:
+    """HydraulicMachineC: a Machine (D_m per revolution, C_lm, B_m) between two cavity Volumes V_1, V_2 starting
+    at their ports' start pressures, its shaft P3 a torque port. Fed through laminar orifices (Kc) from 100 and
+    10 bar and turning an inertia (B = 1), it settles where the orifices' flows are the machine's and the torques
+    balance: Kc (p_s1 − p1) = ε D ω + C (p1 − p2) = Kc (p2 − p_s2), ε D (p1 − p2) = (B_m + B) ω."""
+    v = _value
+    components = [
+        ("HydraulicMachineC", "M", {"P1#Pressure": v("3e6", "Pa"), "P2#Pressure": v("2e6", "Pa"),
+                                    "eps#Value": v("0.5"), "Beta_e#Value": v("1e9"), "V_1#Value": v("0.001"),
+                                    "V_2#Value": v("0.002"), "D_m#Value": v("4e-5"), "C_lm#Value": v("1e-11"),
+                                    "B_m#Value": v("0.2")}),
+        ("MechanicRotationalInertia", "J", {"J": v("0.1"), "B#Value": v("1"), "k#Value": v("0")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("0")}),
+        ("HydraulicLaminarOrifice", "O1", {"Kc#Value": v("1e-9")}),
+        ("HydraulicLaminarOrifice", "O2", {"Kc#Value": v("1e-9")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1e6", "Pa")}),
+    ]
+    connections = [("S1.P1", "O1.P2"), ("O1.P1", "M.P1"), ("S2.P1", "O2.P2"), ("O2.P1", "M.P2"),
+                   ("J.P2", "M.P3"), ("T.P1", "J.P1")]
+    path = tmp_path / "machine.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    sysm = imp.system
+    assert sysm["M_V1"].values["V"] == 0.001 and sysm["M_V2"].values["V"] == 0.002
+    assert sysm["M_V1"].option("pressure_floor") == "cavity"
+    r0 = sysm.simulate(t_eval=[0.0, 1e-9])
+    assert r0["M.P1.Pressure"][0] == pytest.approx(3e6) and r0["M.P2.Pressure"][0] == pytest.approx(2e6)
+    D, C, Kc, B = 0.5 * 4e-5 / (2.0 * np.pi), 1e-11, 1e-9, 1.2
+    # unknowns p1, p2, ω (absolute pressures)
+    a = np.array([[Kc + C, -C, D], [-C, Kc + C, -D], [D, -D, -B]])
+    rhs = np.array([Kc * 1e7, Kc * 1e6, 0.0])
+    p1, p2, omega = np.linalg.solve(a, rhs)
+    r = sysm.simulate(t_end=5.0)
+    assert r["M.P1.Pressure"][-1] == pytest.approx(p1, rel=1e-6) and r["M.P2.Pressure"][-1] == pytest.approx(p2, rel=1e-6)
+    # the inertia's P2 faces the machine's shaft: Hopsan's node speed is the inertia's, minus the shaft's
+    assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-omega, rel=1e-6)
+    assert r["M.P3.Torque"][-1] == pytest.approx(1.0 * omega, rel=1e-6)
