@@ -56,13 +56,11 @@ class Spring(Component):
     INPUTS = _END_INPUTS
     MECHANICAL = _ends("spring")
     OUTPUTS = _END_OUTPUTS
-    #: the names of its stiffness and relaxed extension (a torsional spring's differ: one name, one unit)
-    STIFFNESS, RELAXED = "k_spring", "e0"
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        tension = p[self.STIFFNESS] * (u["x1"] + u["x2"] - p[self.RELAXED])
+        tension = p["k_spring"] * (u["x1"] + u["x2"] - p["e0"])
         return {"F1": -tension, "F2": -tension, "F": tension}
 
 

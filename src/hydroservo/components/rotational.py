@@ -15,7 +15,8 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
-from hydroservo.components.mechanics import ForceSource, Spring, VelocitySource
+from hydroservo.components.mechanics import ForceSource, VelocitySource
+from hydroservo.errors import ParameterError
 from hydroservo.laws.rigid_body import rigid_body_acceleration
 from hydroservo.laws.stops import end_stop_force
 
@@ -125,18 +126,23 @@ class AngularVelocitySource(VelocitySource):
 
 
 @register
-class TorsionalSpring(Spring):
-    r"""Linear torsional spring between two ends: the rotational counterpart of a spring.
+class TorsionalSpring(Component):
+    r"""Linear torsional spring between two ends, through a gear: the rotational counterpart of a spring.
 
-    :math:`T_1 = T_2 = -k_{rot}\,(\theta_1 + \theta_2 - e_{0,rot})`, with :math:`\theta_1`, :math:`\theta_2` the
-    outward angles of its ends (the law of :class:`~hydroservo.components.mechanics.Spring` on an angle). Output
-    ``F`` is its torque (twisted open positive). Hopsan's MechanicTorsionalSpring, MechanicRotShaft and
-    MechanicRotShaftG ([Hopsan2026] Mechanic/Rotational/) are this law as transmission-line elements.
+    .. math:: T_2 = -k_{rot}\,(\theta_1/n + \theta_2 - e_{0,rot}), \qquad T_1 = T_2/n
+
+    with :math:`\theta_1`, :math:`\theta_2` the outward angles of its ends, ``T1``, ``T2`` the torques it exerts
+    outward on what they are joined to, and :math:`n` (``n_gear``) the gear ratio :math:`\omega_1/\omega_2` of an
+    ideal gear at end 1, the spring at end 2 (:math:`T_1 \omega_1 = T_2 \omega_2`). With ``n_gear`` 1 it is the law
+    of :class:`~hydroservo.components.mechanics.Spring` on an angle. Output ``F`` is the spring's torque (twisted
+    open positive). Hopsan's MechanicTorsionalSpring, MechanicRotShaft, MechanicRotShaftG and MechanicGearShaft
+    ([Hopsan2026] Mechanic/Rotational/) are this law as transmission-line elements.
     """
 
     PARAMETERS = {
-        "k_rot": Param(100.0, "N*m/rad", "torsional stiffness", min=0.0),
-        "e0_rot": Param(0.0, "rad", "twist (theta1 + theta2) at which the spring is relaxed"),
+        "k_rot": Param(100.0, "N*m/rad", "torsional stiffness (at end 2)", min=0.0),
+        "e0_rot": Param(0.0, "rad", "twist (theta1/n_gear + theta2) at which the spring is relaxed"),
+        "n_gear": Param(1.0, "", "gear ratio omega1/omega2 (negative: the gear reverses)"),
     }
     INPUTS = {
         "x1": Port("rad", "outward angle of end 1", default=0.0),
@@ -153,4 +159,15 @@ class TorsionalSpring(Spring):
         "F2": Output("N*m", "torque on what end 2 is joined to, outward"),
         "F": Output("N*m", "torque in the spring (twisted open positive)"),
     }
-    STIFFNESS, RELAXED = "k_rot", "e0_rot"
+
+    def check(self) -> None:
+        super().check()
+        if self.values["n_gear"] == 0.0:
+            raise ParameterError(f"{self.name}.n_gear = 0: a gear ratio must not be zero")
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        n = p["n_gear"]
+        torque = p["k_rot"] * (u["x1"] / n + u["x2"] - p["e0_rot"])
+        return {"F1": -torque / n, "F2": -torque, "F": torque}

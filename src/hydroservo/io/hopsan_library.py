@@ -136,7 +136,7 @@ C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
-    "MechanicRotShaftG", "HydraulicMachineC",
+    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -635,14 +635,15 @@ def _spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([Spring(n, k_spring=k, e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
-def _relaxed(par: _Params, k: float, ports: tuple[str, str], position: str, force: str) -> float:
+def _relaxed(par: _Params, k: float, ports: tuple[str, str], position: str, force: str, ratio: float = 1.0) -> float:
     """Where a Hopsan spring is relaxed: it starts at its ends' start positions (inward; hydroservo's are outward)
-    with the start force of its nodes (a compression: a preload), and adds k times the ends' displacements."""
-    e0 = -(par.start(ports[0], position) + par.start(ports[1], position))
-    preload = par.start(ports[0], force)
-    if preload != par.start(ports[1], force):
-        par.problems.append(f"{par.where}: start {force.lower()}s at {ports[0]} and {ports[1]} that differ are not "
-                            "supported")
+    with the start force of its nodes (a compression: a preload), and adds k times the ends' displacements (end 1's
+    through a gear of ``ratio``, whose start force is end 2's over the ratio)."""
+    e0 = -(par.start(ports[0], position) / ratio + par.start(ports[1], position))
+    preload = par.start(ports[1], force)
+    if par.start(ports[0], force) * ratio != preload:
+        par.problems.append(f"{par.where}: start {force.lower()}s at {ports[0]} and {ports[1]} that differ"
+                            + (" other than by the gear ratio" if ratio != 1.0 else "") + " are not supported")
     if preload and k > 0.0:
         e0 += preload / k  # compressed by preload / k at the start
     elif preload:
@@ -745,6 +746,28 @@ def _shaft(stiffness: Callable[[_Params], float]) -> Builder:
         return Mapped([TorsionalSpring(n, k_rot=k, e0_rot=e0)], power={"Pmr1": f"{n}.P1", "Pmr2": f"{n}.P2"})
 
     return build
+
+
+def _gear_shaft(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicGearShaft.hpp: a shaft behind an ideal gear of ratio gearRatio =
+    ω1/ω2 at Pmr1, transmission-line elements of impedances Z/n² and Z = Ks Ts/(1 − α) whose wave variables a
+    filter of α smooths: in the limit T2 = K (θ1/n + θ2 − e0), T1 = T2/n, a TorsionalSpring with n_gear. Its
+    stiffness is not Ks: a transmission line of impedance Z and delay T_d is a spring of stiffness Z/T_d, and
+    Hopsan's gear shaft passes each wave on a step later than its shaft does (it writes the filter's previous
+    value), so T_d = Ts/(1 − α) (the filter's lag included) + Ts and K = Ks/(2 − α), whatever the step (RotShaft's
+    T_d = Ts/(1 − α) gives Ks). ``alpha`` enters only there; values outside [0, 1) are refused."""
+    from hydroservo.components import TorsionalSpring
+
+    alpha, ratio, k = par("alpha", 0.9), par("gearRatio", 1.0), par("Ks", 1000.0)
+    if not 0.0 <= alpha < 1.0:
+        par.problems.append(f"{par.where}: alpha = {alpha:g} outside [0, 1), where Hopsan's filter is stable")
+    if ratio == 0.0:
+        par.problems.append(f"{par.where}: gearRatio = 0 is not a gear")
+        return Mapped()
+    k = k / (2.0 - alpha)  # the stiffness Hopsan's element converges to (docstring)
+    e0 = _relaxed(par, k, ("Pmr1", "Pmr2"), "Angle", "Torque", ratio)
+    comp = TorsionalSpring(n, k_rot=k, e0_rot=e0, n_gear=ratio)
+    return Mapped([comp], power={"Pmr1": f"{n}.P1", "Pmr2": f"{n}.P2"})
 
 
 def _torque_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1201,6 +1224,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicRotationalInertia": _rotational_inertia,
     "MechanicTorqueTransformer": _torque_source,
     "MechanicTorsionalSpring": _torsional_spring,
+    "MechanicGearShaft": _gear_shaft,
     "MechanicRotShaft": _shaft(lambda par: par("Ks", 1000.0)),
     "MechanicRotShaftG": _shaft(
         lambda par: math.pi / 32.0 * (par("dy", 0.02) ** 4 - par("di", 0.0) ** 4) * par("G", 7.93e10) / par("len", 0.1)

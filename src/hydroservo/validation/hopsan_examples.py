@@ -134,6 +134,10 @@ MODELS: dict[str, Spec] = {
         "shafts of given stiffness and of given shear modulus and diameters between angular-velocity sources and "
         "inertias",
     ),
+    "gear-shaft-test": Spec(
+        "Component Test/MechanicComponent Test/GearShaftTest.hmf",
+        "theta sources turning damped inertias through a stiff shaft and through a geared shaft of ratio -1",
+    ),
     "hydraulic-fixed-displacement-motor-q-test": Spec(
         "Component Test/HydraulicComponent Test/HydraulicFixedDisplacementMotorQTest.hmf",
         "Q-type fixed-displacement motors turned through shafts by angular-velocity sources, pumping between "

@@ -139,3 +139,23 @@ def test_a_machine_between_pressures_drives_an_inertia_to_torque_balance() -> No
         assert r["j.omega"][-1] == pytest.approx(-omega, rel=1e-6)
         assert r["m.QA"][-1] == pytest.approx(eps * D * omega + 1e-12 * 50e5, rel=1e-6)
         assert r["m.T"][-1] == pytest.approx(0.3 * omega, rel=1e-6)
+
+
+def test_a_geared_torsional_spring_turns_its_load_at_the_ratio_and_passes_torque_over_it() -> None:
+    """n_gear = ω1/ω2 = -2: a source at 3 rad/s moves end 1 outward at -3 rad/s, so end 2 (x1/n + x2 constant)
+    at -1.5 rad/s outward; the damped inertia's P1 faces end 2, its +θ end 2's outward direction turned: ω = -1.5
+    rad/s. Steady, end 2 holds the inertia's damping, F2 = B ω, and end 1's torque is end 2's over n."""
+    s = System("gear")
+    s.add(c.AngularVelocitySource("src"))
+    s.add(c.Constant("u", unit="rad/s", value=3.0))
+    s.add(c.TorsionalSpring("k", k_rot=5000.0, n_gear=-2.0))
+    s.add(c.RotationalInertia("j", J=0.01, B_rot=0.4))
+    s.connect("u.y", "src.u")
+    s.connect("src.P", "k.P1")
+    s.connect("k.P2", "j.P1")
+    r = s.simulate(t_end=2.0)
+    assert r["j.omega"][-1] == pytest.approx(-1.5, rel=1e-6)
+    assert r["k.F2"][-1] == pytest.approx(0.4 * -1.5, rel=1e-6)
+    assert r["k.F1"][-1] == pytest.approx(0.4 * -1.5 / -2.0, rel=1e-6)
+    with pytest.raises(Exception, match="n_gear = 0"):
+        c.TorsionalSpring("bad", n_gear=0.0).check()

@@ -850,3 +850,27 @@ def test_hopsans_c_type_machine_is_a_machine_between_its_port_volumes(tmp_path: 
     # the inertia's P2 faces the machine's shaft: Hopsan's node speed is the inertia's, minus the shaft's
     assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-omega, rel=1e-6)
     assert r["M.P3.Torque"][-1] == pytest.approx(1.0 * omega, rel=1e-6)
+
+
+def test_hopsans_gear_shaft_is_a_geared_spring_of_the_stiffness_its_element_converges_to(tmp_path: Path) -> None:
+    """MechanicGearShaft: a TorsionalSpring with n_gear = gearRatio and the stiffness Ks/(2 − α) that its
+    transmission-line element (a step more delay than its impedance accounts for) converges to; a theta source
+    at 2 rad/s through gearRatio -1 turns a damped inertia (B 10) at -2 rad/s (through a plain shaft: +2), the
+    torques at its ends opposite."""
+    v = _value
+    components = [
+        ("MechanicThetaSource", "S", {"omega#Value": v("2")}),
+        ("MechanicGearShaft", "G", {"gearRatio#Value": v("-1"), "Ks#Value": v("1e4"), "alpha#Value": v("0.5")}),
+        ("MechanicRotationalInertia", "J", {"J": v("0.1"), "B#Value": v("10"), "k#Value": v("0")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("0")}),
+    ]
+    connections = [("S.Pmr1", "G.Pmr1"), ("G.Pmr2", "J.P1"), ("J.P2", "T.P1")]
+    path = tmp_path / "gear.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    g = imp.system["G"]
+    assert g.values["k_rot"] == pytest.approx(1e4 / 1.5) and g.values["n_gear"] == -1.0
+    r = imp.system.simulate(t_end=1.0)
+    assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-2.0, rel=1e-6)
+    assert r["G.Pmr2.Torque"][-1] == pytest.approx(-20.0, rel=1e-6)
+    assert r["G.Pmr1.Torque"][-1] == pytest.approx(20.0, rel=1e-6)
