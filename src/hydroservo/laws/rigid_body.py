@@ -41,6 +41,12 @@ def rigid_body_acceleration(
     array_like
         Acceleration [m/s^2] ([rad/s^2]).
 
+    References
+    ----------
+    [Merritt1967] (the load's equation of motion: inertia, viscous damping and spring, for a piston's load and
+    a motor's alike); [Hopsan2026] Mechanic/Translational/MechanicTranslationalMass.hpp and
+    Mechanic/Rotational/MechanicRotationalInertia.hpp.
+
     Examples
     --------
     >>> rigid_body_acceleration(10.0, 0.0, 2.0)
