@@ -43,9 +43,9 @@ def rigid_body_acceleration(
 
     References
     ----------
-    [Merritt1967] (the load's equation of motion: inertia, viscous damping and spring, for a piston's load and
-    a motor's alike); [Hopsan2026] Mechanic/Translational/MechanicTranslationalMass.hpp and
-    Mechanic/Rotational/MechanicRotationalInertia.hpp.
+    [Hopsan2026] Mechanic/Translational/MechanicTranslationalMass.hpp and
+    Mechanic/Rotational/MechanicRotationalInertia.hpp (this law, discretised; Newton's second law itself needs
+    no citation).
 
     Examples
     --------
