@@ -70,7 +70,7 @@ def variables(model: Path, logged: set[str]) -> dict[str, str]:
 
 
 #: the kinds of variable compared (the last part of an alias); "Value" is a signal's
-KINDS = ("Position", "Velocity", "Force", "Pressure", "Flow", "Value")
+KINDS = ("Position", "Velocity", "Force", "Angle", "AngularVelocity", "Torque", "Pressure", "Flow", "Value")
 #: Hopsan variable -> the unit of its alias (signals have the unit of what they carry)
 UNITS: dict[str, str] = {}
 
@@ -191,7 +191,8 @@ def _rel(diff: np.ndarray, ref: np.ndarray) -> float:
 
 
 def _unit(var: str) -> str:
-    return {"Position": "m", "Velocity": "m/s", "Force": "N", "Pressure": "Pa", "Flow": "m^3/s"}[var.rsplit("#", 1)[-1]]
+    return {"Position": "m", "Velocity": "m/s", "Force": "N", "Angle": "rad", "AngularVelocity": "rad/s",
+            "Torque": "N*m", "Pressure": "Pa", "Flow": "m^3/s"}[var.rsplit("#", 1)[-1]]
 
 
 if __name__ == "__main__":

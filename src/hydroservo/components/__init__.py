@@ -8,10 +8,12 @@ module                 components
 :mod:`.volume`         Volume
 :mod:`.line`           Line, Hose
 :mod:`.accumulator`    Accumulator
-:mod:`.pumps`          Pump, VariablePump, Motor
+:mod:`.pumps`          Pump, VariablePump, Motor, Machine
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
 :mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
+:mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
+                       AngularVelocitySource
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
@@ -66,7 +68,8 @@ from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
-from hydroservo.components.pumps import Motor, Pump, VariablePump
+from hydroservo.components.pumps import Machine, Motor, Pump, VariablePump
+from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource, TorsionalSpring
 from hydroservo.components.signals import (
     Constant,
     DecayingStep,
@@ -124,6 +127,10 @@ __all__ = [
     "FixedPosition",
     "ForceSource",
     "VelocitySource",
+    "RotationalInertia",
+    "TorsionalSpring",
+    "TorqueSource",
+    "AngularVelocitySource",
     "Constant",
     "SoftStep",
     "FlowSource",
@@ -145,6 +152,7 @@ __all__ = [
     "Pump",
     "VariablePump",
     "Motor",
+    "Machine",
     "FourWayValve",
     "ThreeWayValve",
     "TwoWayValve",

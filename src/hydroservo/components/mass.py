@@ -10,6 +10,7 @@ import numpy as np
 from hydroservo import backend as bk
 from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
 from hydroservo.laws.friction import stribeck
+from hydroservo.laws.rigid_body import rigid_body_acceleration
 from hydroservo.laws.stops import end_stop_force
 
 __all__ = ["Mass"]
@@ -94,6 +95,7 @@ class Mass(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         weight = p["W"] * bk.sin(p["incline"])
-        force = u["F"] - u["F_P1"] + u["F_ext"] - weight - y["F_f"] - p["k_spring"] * (x["x"] - p["x_spring"])
-        force = force + end_stop_force(x["x"], x["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
-        return {"x": x["v"], "v": force / (p["m"] + u["m_add"])}
+        load = u["F"] - u["F_P1"] + u["F_ext"] - weight
+        load = load + end_stop_force(x["x"], x["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
+        a = rigid_body_acceleration(load, x["x"], p["m"] + u["m_add"], p["k_spring"], p["x_spring"], y["F_f"])
+        return {"x": x["v"], "v": a}

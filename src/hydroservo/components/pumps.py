@@ -1,11 +1,23 @@
-"""Pumps and motors: displacement machines with leakage; a pressure-compensated pump; a motor driving an inertia."""
+"""Pumps and motors: displacement machines with leakage; a pressure-compensated pump; a motor driving an inertia; a
+machine whose shaft what it is joined to turns."""
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
+from hydroservo.components.base import (
+    Component,
+    Hydraulic,
+    Limit,
+    Mechanical,
+    Option,
+    Output,
+    Param,
+    Port,
+    State,
+    register,
+)
 from hydroservo.laws.displacement import (
     compensator_displacement,
     displaced_flow,
@@ -15,7 +27,7 @@ from hydroservo.laws.displacement import (
 )
 from hydroservo.units import VACUUM
 
-__all__ = ["Pump", "VariablePump", "Motor"]
+__all__ = ["Pump", "VariablePump", "Motor", "Machine"]
 
 _PUMP_INPUTS = {
     "pS": Port("Pa", "pressure at the suction port S", default=0.0),
@@ -146,7 +158,30 @@ class Motor(Component):
     external leakage coefficients, torque :math:`D_m P_L`). Flow entering at A
     turns the shaft in +θ. ``J`` is the motor's and its load's inertia;
     external leakage goes to the case drain (tank).
+
+    The input ``eps`` (default 1) scales the displacement, :math:`D\,\varepsilon`
+    in flow and torque: a variable motor driven by a signal. The shaft is also
+    the rotational port ``shaft`` (:class:`~hydroservo.components.base.Mechanical`,
+    kind ``"rotational"``, counted along +θ): the motor gives its angle and
+    speed, and what is joined there (a torque source, a shaft) twists it with
+    ``T_shaft`` (along +θ), beside ``T_load``. Hopsan's Q-type motors
+    ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementMotorQ.hpp,
+    HydraulicVariableDisplacementMotorQ.hpp) are this law with ``C_em`` 0 and
+    ``eta_hm`` 1: their damped double integrator of :math:`(c_1 - c_2)\,D\varepsilon - c_3`
+    over ``J`` with the damping :math:`B + (Z_{c1} + Z_{c2}) (D\varepsilon)^2 + Z_{x3}` is
+    the implicit step of :math:`J\dot\omega = D\varepsilon\,(p_1 - p_2) - B\omega - T_3`.
+
+    Option ``inlet``: ``free`` (default) passes the displaced flow whatever the
+    pressures; ``floor`` draws no port below ``p_floor``
+    (:func:`~hydroservo.laws.displacement.floored_port_flow` on :math:`D\varepsilon\omega`),
+    as Hopsan's motors clamp their flow so that neither port's pressure falls
+    below zero.
     """
+
+    OPTIONS = {
+        "inlet": Option("free", ("free", "floor"),
+                        "the displaced flow whatever the port pressures, or no port drawn below p_floor (Hopsan)"),
+    }
 
     PARAMETERS = {
         "D": Param(50e-6 / 6.283185307179586, "m^3/rad", "displacement per radian (write '50 cm^3/rev')", min=0.0, min_inclusive=False),
@@ -157,6 +192,9 @@ class Motor(Component):
         "B_m": Param(0.0, "N*m*s/rad", "viscous friction coefficient of the shaft", min=0.0),
         "omega0": Param(0.0, "rad/s", "initial speed"),
         "theta0": Param(0.0, "rad", "initial angle"),
+        "p_floor": Param(VACUUM, "Pa", "lowest pressure a port is drawn to (option inlet = floor)", min=VACUUM),
+        "p_reg": Param(100.0, "Pa", "pressure over which the flow falls to nothing at the floor (option floor)",
+                       min=0.0, min_inclusive=False),
     }
     STATES = {
         "theta": State("rad", "shaft angle", initial="theta0", nominal=1.0),
@@ -166,6 +204,8 @@ class Motor(Component):
         "pA": Port("Pa", "pressure at port A"),
         "pB": Port("Pa", "pressure at port B"),
         "T_load": Port("N*m", "load torque against +θ", default=0.0),
+        "T_shaft": Port("N*m", "torque of what the port shaft is joined to, along +θ", default=0.0),
+        "eps": Port("", "displacement setting (1: full; -1: full, reversed)", default=1.0),
     }
     OUTPUTS = {
         "QA": Output("m^3/s", "flow into the motor at A"),
@@ -178,16 +218,20 @@ class Motor(Component):
         "A": Hydraulic("pA", "QA", "port A (inlet for +θ)", into=True),
         "B": Hydraulic("pB", "QB", "port B (outlet for +θ)", into=False),
     }
+    MECHANICAL = {"shaft": Mechanical("theta", "omega", "T_shaft", "the shaft (counted along +θ)", kind="rotational")}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         dp = u["pA"] - u["pB"]
-        q = displaced_flow(p["D"], x["omega"]) + leakage_flow(p["C_im"], dp)
+        q = displaced_flow(p["D"], x["omega"], u["eps"])
+        if self.option("inlet") == "floor":
+            q = floored_port_flow(q, u["pA"], u["pB"], p["p_floor"], p["p_reg"])
+        q = q + leakage_flow(p["C_im"], dp)
         return {
             "QA": q + leakage_flow(p["C_em"], u["pA"]),
             "QB": q - leakage_flow(p["C_em"], u["pB"]),
-            "T": motor_torque(p["D"], dp, p["eta_hm"]),
+            "T": motor_torque(u["eps"] * p["D"], dp, p["eta_hm"]),
             "theta": x["theta"],
             "omega": x["omega"],
         }
@@ -195,4 +239,55 @@ class Motor(Component):
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"theta": x["omega"], "omega": (y["T"] - p["B_m"] * x["omega"] - u["T_load"]) / p["J"]}
+        return {"theta": x["omega"], "omega": (y["T"] - p["B_m"] * x["omega"] - u["T_load"] + u["T_shaft"]) / p["J"]}
+
+
+@register
+class Machine(Component):
+    r"""Displacement machine, pump or motor, whose shaft what it is joined to turns (no inertia of its own).
+
+    .. math::
+        Q_A = Q_B = \varepsilon D\,\omega + C_{im}\,(p_A - p_B), \qquad
+        T = \varepsilon D\,(p_A - p_B) - B_m\,\omega
+
+    ([Merritt1967], hydraulic motors: flow continuity with internal leakage, torque :math:`D_m P_L`;
+    :mod:`hydroservo.laws.displacement`). Flow entering at A turns the shaft in +θ; turned the other way by its
+    load, it pumps from B to A. Its shaft is the rotational port ``shaft`` (counted outward, along +θ), a torque
+    port: it reads the speed ``omega`` of what it is joined to (an inertia, a motor, an angular-velocity source)
+    and twists it with ``T``. The input ``eps`` (default 1) scales the displacement. Hopsan's
+    HydraulicMachineC ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicMachineC.hpp) is this machine between two
+    volumes (its transmission-line port volumes ``V_1``, ``V_2``), its torque characteristic
+    :math:`c_3 = (p_1 - p_2)\,\varepsilon D` with the impedance :math:`B_m + (\varepsilon D)^2 (Z_{c1} + Z_{c2})`, the
+    pressures at least 0 absolute (the volumes' cavity law).
+    """
+
+    PARAMETERS = {
+        "D": Param(50e-6 / 6.283185307179586, "m^3/rad", "displacement per radian (write '50 cm^3/rev')", min=0.0,
+                   min_inclusive=False),
+        "C_im": Param(0.0, "m^3/s/Pa", "internal leakage coefficient, A to B", min=0.0),
+        "B_m": Param(0.0, "N*m*s/rad", "viscous friction coefficient of the shaft", min=0.0),
+    }
+    INPUTS = {
+        "pA": Port("Pa", "pressure at port A"),
+        "pB": Port("Pa", "pressure at port B"),
+        "theta": Port("rad", "angle of the shaft, along +θ", default=0.0),
+        "omega": Port("rad/s", "speed of the shaft, along +θ", default=0.0),
+        "eps": Port("", "displacement setting (1: full; -1: full, reversed)", default=1.0),
+    }
+    OUTPUTS = {
+        "QA": Output("m^3/s", "flow into the machine at A"),
+        "QB": Output("m^3/s", "flow out of the machine at B"),
+        "T": Output("N*m", "torque on what the shaft is joined to, along +θ"),
+    }
+    HYDRAULIC = {
+        "A": Hydraulic("pA", "QA", "port A (inlet for +θ as a motor)", into=True),
+        "B": Hydraulic("pB", "QB", "port B (outlet for +θ as a motor)", into=False),
+    }
+    MECHANICAL = {"shaft": Mechanical("theta", "omega", "T", "the shaft (counted along +θ)", kind="rotational")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        dp = u["pA"] - u["pB"]
+        q = displaced_flow(p["D"], u["omega"], u["eps"]) + leakage_flow(p["C_im"], dp)
+        return {"QA": q, "QB": q, "T": motor_torque(u["eps"] * p["D"], dp) - p["B_m"] * u["omega"]}

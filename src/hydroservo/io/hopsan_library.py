@@ -78,7 +78,7 @@ class Mapped:
     multi: dict[str, list[str]] = field(default_factory=dict)
     #: initial values of states ("comp.state" -> value, SI) taken from Hopsan's start values
     initial: dict[str, float] = field(default_factory=dict)
-    #: signals joining the components it became: (output, input)
+    #: signals (or ports) joining the components it became: (output, input), (port, port)
     internal: list[tuple[str, str]] = field(default_factory=list)
     #: parameters or states that start at (a function of) the value of an input at the start ("comp.y0" ->
     #: ("comp.u", f)), as Hopsan's blocks that take their input's value when the model is initialised (a rate
@@ -135,7 +135,8 @@ Builder = Callable[[HopsanComponent, str, _Params], Mapped]
 C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
-    "MechanicForceTransformer",
+    "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
+    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -831,18 +832,25 @@ def _mass_coulomb(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Spring
 
-    # Hopsan's spring starts at its ends' start positions (inward; hydroservo's are outward) with the start force
-    # of its nodes (a compression: a preload), and adds k times the ends' displacements
     k = par("k", 100.0)
-    e0 = -(par.start("P1", "Position") + par.start("P2", "Position"))
-    preload = par.start("P1", "Force")
-    if preload != par.start("P2", "Force"):
-        par.problems.append(f"{par.where}: start forces at P1 and P2 that differ are not supported")
+    e0 = _relaxed(par, k, ("P1", "P2"), "Position", "Force")
+    return Mapped([Spring(n, k_spring=k, e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _relaxed(par: _Params, k: float, ports: tuple[str, str], position: str, force: str, ratio: float = 1.0) -> float:
+    """Where a Hopsan spring is relaxed: it starts at its ends' start positions (inward; hydroservo's are outward)
+    with the start force of its nodes (a compression: a preload), and adds k times the ends' displacements (end 1's
+    through a gear of ``ratio``, whose start force is end 2's over the ratio)."""
+    e0 = -(par.start(ports[0], position) / ratio + par.start(ports[1], position))
+    preload = par.start(ports[1], force)
+    if par.start(ports[0], force) * ratio != preload:
+        par.problems.append(f"{par.where}: start {force.lower()}s at {ports[0]} and {ports[1]} that differ"
+                            + (" other than by the gear ratio" if ratio != 1.0 else "") + " are not supported")
     if preload and k > 0.0:
         e0 += preload / k  # compressed by preload / k at the start
     elif preload:
-        par.problems.append(f"{par.where}: a start force on a spring of zero stiffness is not supported")
-    return Mapped([Spring(n, k_spring=k, e0=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+        par.problems.append(f"{par.where}: a start {force.lower()} on a spring of zero stiffness is not supported")
+    return e0
 
 
 def _fixed_position(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -885,6 +893,189 @@ def _sensor(n: str, variable: str, unit: str) -> Mapped:
     from hydroservo.components import Sum
 
     return Mapped([Sum(n, unit=unit, gain2=0.0)], read={"P1": (f"{n}.u1", variable)}, outputs={"out": f"{n}.y"})
+
+
+# -- mechanic, rotational -------------------------------------------------------------------------------------
+
+
+def _rotational_inertia(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertia.hpp: its transfer function 1/(J s² + B s + k)
+    from the torques at its ends (t1 - t2) to the angle of P2 (P1 at minus it) is J θ'' = T1 - T2 - B θ' - k θ, a
+    RotationalInertia; it starts at minus P1's start angle and speed, as Hopsan's filters do; its inelastic stops
+    a_min, a_max as stiff ones (1e9 N m/rad, 1e6 N m s/rad)."""
+    from hydroservo.components import RotationalInertia
+
+    comp = RotationalInertia(
+        n,
+        J=par("J", 0.1),
+        B_rot=par("B", 10.0),
+        k_rot=par("k", 0.0),
+        theta0=-par.start("P1", "Angle"),
+        omega0=-par.start("P1", "AngularVelocity"),
+    )
+    a_min, a_max = par("a_min", -1e300), par("a_max", 1e300)
+    if abs(a_min) < 1e299 or abs(a_max) < 1e299:
+        comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _torsional_spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicTorsionalSpring.hpp: a transmission-line element of impedance
+    k Ts, a spring of stiffness k as Ts vanishes: a TorsionalSpring relaxed at its ends' start angles (less a
+    start torque's twist)."""
+    from hydroservo.components import TorsionalSpring
+
+    k = par("k", 100.0)
+    e0 = _relaxed(par, k, ("P1", "P2"), "Angle", "Torque")
+    return Mapped([TorsionalSpring(n, k_rot=k, e0_rot=e0)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _shaft(stiffness: Callable[[_Params], float]) -> Builder:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotShaft.hpp (stiffness Ks) and MechanicRotShaftG.hpp (Ks = π/32
+    (dy⁴ − di⁴) G / len, a hollow shaft of shear modulus G): transmission-line elements of impedance Ks Ts/(1 − α)
+    whose wave variables a first-order filter of α damps; impedance and damping vanish with the step, leaving a
+    spring of stiffness Ks: a TorsionalSpring, relaxed as Hopsan starts it (its ports' start angles and torque).
+    ``alpha`` is numerical only (it acts in the limit no more): values in [0, 1) are accepted and dropped."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import TorsionalSpring
+
+        alpha = par("alpha", 0.1)
+        if not 0.0 <= alpha < 1.0:
+            par.problems.append(f"{par.where}: alpha = {alpha:g} outside [0, 1), where Hopsan's filter is stable")
+        k = stiffness(par)
+        e0 = _relaxed(par, k, ("Pmr1", "Pmr2"), "Angle", "Torque")
+        return Mapped([TorsionalSpring(n, k_rot=k, e0_rot=e0)], power={"Pmr1": f"{n}.P1", "Pmr2": f"{n}.P2"})
+
+    return build
+
+
+def _gear_shaft(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicGearShaft.hpp: a shaft behind an ideal gear of ratio gearRatio =
+    ω1/ω2 at Pmr1, transmission-line elements of impedances Z/n² and Z = Ks Ts/(1 − α) whose wave variables a
+    filter of α smooths: in the limit T2 = K (θ1/n + θ2 − e0), T1 = T2/n, a TorsionalSpring with n_gear. Its
+    stiffness is not Ks: a transmission line of impedance Z and delay T_d is a spring of stiffness Z/T_d, and
+    Hopsan's gear shaft passes each wave on a step later than its shaft does (it writes the filter's previous
+    value), so T_d = Ts/(1 − α) (the filter's lag included) + Ts and K = Ks/(2 − α), whatever the step (RotShaft's
+    T_d = Ts/(1 − α) gives Ks). ``alpha`` enters only there; values outside [0, 1) are refused."""
+    from hydroservo.components import TorsionalSpring
+
+    alpha, ratio, k = par("alpha", 0.9), par("gearRatio", 1.0), par("Ks", 1000.0)
+    if not 0.0 <= alpha < 1.0:
+        par.problems.append(f"{par.where}: alpha = {alpha:g} outside [0, 1), where Hopsan's filter is stable")
+    if ratio == 0.0:
+        par.problems.append(f"{par.where}: gearRatio = 0 is not a gear")
+        return Mapped()
+    k = k / (2.0 - alpha)  # the stiffness Hopsan's element converges to (docstring)
+    e0 = _relaxed(par, k, ("Pmr1", "Pmr2"), "Angle", "Torque", ratio)
+    comp = TorsionalSpring(n, k_rot=k, e0_rot=e0, n_gear=ratio)
+    return Mapped([comp], power={"Pmr1": f"{n}.P1", "Pmr2": f"{n}.P2"})
+
+
+def _torque_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicTorqueTransformer.hpp: a C component of wave variable T and no
+    impedance, the torque T on its node: a TorqueSource."""
+    from hydroservo.components import TorqueSource
+
+    return Mapped([TorqueSource(n)], power={"P1": f"{n}.P"}, inputs={"T": f"{n}.u"})
+
+
+def _theta_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicThetaSource.hpp: the speed omega, the angle its integral from
+    thetain, or thetain itself when that input is connected: an AngularVelocitySource (option position)."""
+    from hydroservo.components import AngularVelocitySource
+
+    if "thetain" in par.driven:
+        comp = AngularVelocitySource(n, position="input")
+        return Mapped([comp], power={"Pmr1": f"{n}.P"}, inputs={"omega": f"{n}.u", "thetain": f"{n}.x_in"})
+    comp = AngularVelocitySource(n, theta0=par("thetain", 0.0))
+    return Mapped([comp], power={"Pmr1": f"{n}.P"}, inputs={"omega": f"{n}.u"})
+
+
+def _angular_velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicAngularVelocityTransformer.hpp: the speed omega, the angle its
+    integral from the start angle of its port: an AngularVelocitySource."""
+    from hydroservo.components import AngularVelocitySource
+
+    comp = AngularVelocitySource(n, theta0=par.start("out", "Angle"))
+    return Mapped([comp], power={"out": f"{n}.P"}, inputs={"omega": f"{n}.u"})
+
+
+def _angle_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    return _sensor(n, "Angle", "rad")
+
+
+def _angular_velocity_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    return _sensor(n, "AngularVelocity", "rad/s")
+
+
+def _torque_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    return _sensor(n, "Torque", "N*m")
+
+
+def _motor_q(leakage: str, variable: bool) -> Builder:
+    """Hopsan's Q-type motors ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementMotorQ.hpp, leakage
+    C_lm; HydraulicVariableDisplacementMotorQ.hpp, leakage C_im and the displacement setting eps limited to
+    [-1, 1]): a Motor (D_m per revolution, B_m, J_m; no external leakage, no hydromechanical loss) whose shaft is
+    P3, its flow floored at 0 Pa absolute at either port (option inlet = "floor") as Hopsan clamps it; it starts
+    at rest at angle 0, as Hopsan's integrator does."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Motor
+
+        comp = Motor(
+            n,
+            D=f"{par('D_m', 5e-5)!r} m^3/rev",
+            B_m=par("B_m", 0.0),
+            C_im=par(leakage, 1e-12),
+            J=par("J_m", 0.1),
+            inlet="floor",
+            p_floor=_abs(0.0),
+        )
+        m = Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.shaft"})
+        if variable:
+            _displacement_setting(m, n, par)
+        return m
+
+    return build
+
+
+def _displacement_setting(m: Mapped, n: str, par: _Params) -> None:
+    """A machine's displacement setting ``eps``, which Hopsan limits to [-1, 1]: driven, through a Saturation
+    ``{n}_eps``; constant, refused outside it."""
+    from hydroservo.components import Saturation
+
+    if "eps" in par.driven:
+        m.components.append(Saturation(f"{n}_eps", lower=-1.0, upper=1.0))
+        m.internal.append((f"{n}_eps.y", f"{n}.eps"))
+        m.inputs["eps"] = f"{n}_eps.u"
+        return
+    m.inputs["eps"] = f"{n}.eps"
+    eps = par("eps", 1.0)
+    if not -1.0 <= eps <= 1.0:
+        par.problems.append(f"{par.where}: eps = {eps:g} outside [-1, 1], which Hopsan limits it to")
+
+
+def _machine_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Pumps&Motors/HydraulicMachineC.hpp: a C-type machine, its port volumes V_1, V_2
+    transmission-line elements (at least a volume that keeps the element stable at the step, through J_em: a
+    numerical bound, dropped) and its shaft a torque characteristic (p1 − p2) ε D_m/2π with the impedance B_m +
+    (ε D_m/2π)² (Z_c1 + Z_c2): in the limit a Machine (D_m per revolution, C_lm, B_m, eps limited to [-1, 1])
+    between two Volumes with Hopsan's cavity law (their ports see max(p, 0), as the machine's pressures are
+    floored), each starting at its port's start pressure. Hopsan's flow into P1 is ε D_m/2π times minus its
+    shaft's speed (the Q component's): P1 is the Machine's A."""
+    from hydroservo.components import Machine, Volume
+
+    comp = Machine(n, D=f"{par('D_m', 5e-5)!r} m^3/rev", C_im=par("C_lm", 1e-12), B_m=par("B_m", 0.0))
+    volumes = [
+        Volume(f"{n}_V{i}", V=par(f"V_{i}", 0.005), beta_e=par("Beta_e", 1e9),
+               p0=_abs(par.start(f"P{i}", "Pressure", 1e5)), pressure_floor="cavity", p_floor="0 Pa_abs")
+        for i in (1, 2)
+    ]
+    m = Mapped([comp, *volumes], power={"P1": f"{n}_V1.P", "P2": f"{n}_V2.P", "P3": f"{n}.shaft"})
+    m.internal.extend([(f"{n}_V1.P", f"{n}.A"), (f"{n}_V2.P", f"{n}.B")])
+    _displacement_setting(m, n, par)
+    return m
 
 
 # -- signal ---------------------------------------------------------------------------------------------------
@@ -1241,6 +1432,22 @@ LIBRARY: dict[str, Builder] = {
     "MechanicPositionSensor": _position_sensor,
     "MechanicSpeedSensor": _velocity_sensor,
     "MechanicForceSensor": _force_sensor,
+    "MechanicRotationalInertia": _rotational_inertia,
+    "MechanicTorqueTransformer": _torque_source,
+    "MechanicTorsionalSpring": _torsional_spring,
+    "MechanicGearShaft": _gear_shaft,
+    "MechanicRotShaft": _shaft(lambda par: par("Ks", 1000.0)),
+    "MechanicRotShaftG": _shaft(
+        lambda par: math.pi / 32.0 * (par("dy", 0.02) ** 4 - par("di", 0.0) ** 4) * par("G", 7.93e10) / par("len", 0.1)
+    ),
+    "MechanicThetaSource": _theta_source,
+    "MechanicAngularVelocityTransformer": _angular_velocity_source,
+    "MechanicAngleSensor": _angle_sensor,
+    "MechanicAngularVelocitySensor": _angular_velocity_sensor,
+    "MechanicTorqueSensor": _torque_sensor,
+    "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
+    "HydraulicMachineC": _machine_c,
+    "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
     "SignalStep": _step,
     "SignalRamp": _ramp,
     "SignalSineWave": _sine,
@@ -1689,7 +1896,7 @@ def _union(groups: list[list[tuple[str, str]]], multiports: set[tuple[str, str]]
 
 def _node_variables(system: System, refs: list[str], port_of: Callable[..., Any]) -> dict[str, Var]:
     """Hopsan's variables of the node the hydroservo ports ``refs`` form: pressure (absolute) and flow, or
-    position, velocity and force, each from the port that gives it."""
+    position, velocity and force (angle, angular velocity and torque), each from the port that gives it."""
     from hydroservo.components.base import Hydraulic, Mechanical
     from hydroservo.system.nodes import is_motion_port, is_pressure_port
 
@@ -1703,11 +1910,13 @@ def _node_variables(system: System, refs: list[str], port_of: Callable[..., Any]
             elif len(refs) == 2:  # a Hopsan node: its flow goes into the C component, out of this one
                 out["Flow"] = Var(-port.sign, f"{cname}.{port.Q}")
         elif isinstance(port, Mechanical):
+            x, v, f = ("Angle", "AngularVelocity", "Torque") if port.kind == "rotational" else (
+                "Position", "Velocity", "Force")
             if is_motion_port(comp, port):  # Hopsan's Q ports count outward
-                out["Position"] = Var(port.sign, f"{cname}.{port.x}")
-                out["Velocity"] = Var(port.sign, f"{cname}.{port.v}")
-            else:  # the force pressing on the node
-                out["Force"] = Var(port.sign, f"{cname}.{port.F}")
+                out[x] = Var(port.sign, f"{cname}.{port.x}")
+                out[v] = Var(port.sign, f"{cname}.{port.v}")
+            else:  # the force (torque) pressing on the node
+                out[f] = Var(port.sign, f"{cname}.{port.F}")
     return out
 
 

@@ -39,6 +39,7 @@ module                  laws
 :mod:`.pressure_valve`  spring-loaded valves: opening against pressure,
                         the relief/reducing spool's flow coefficient
 :mod:`.friction`        Stribeck friction
+:mod:`.rigid_body`      Newton's second law on one axis: a mass, an inertia
 ======================  =======================================================
 """
 
@@ -56,6 +57,7 @@ from hydroservo.laws import (
     orifice,
     pressure_valve,
     pseudo_section,
+    rigid_body,
     servo_spool,
     spool_dynamics,
     staged_slot,
@@ -76,6 +78,7 @@ __all__ = [
     "orifice",
     "pressure_valve",
     "pseudo_section",
+    "rigid_body",
     "servo_spool",
     "spool_dynamics",
     "staged_slot",

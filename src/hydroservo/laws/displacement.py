@@ -151,7 +151,7 @@ def floored_port_flow(q: Any, p_in: Any, p_out: Any, p_floor: Any, p_reg: Any) -
 
     so that a machine drawing from an emptied volume takes only what flows into it, the volume held within
     ``p_reg`` of the floor. The continuous form of Hopsan's pumps, which clamp their flow so that neither port's
-    pressure falls below zero ([Hopsan2026] Hydraulic/Pumps/HydraulicFixedDisplacementPump.hpp and
+    pressure falls below zero ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementPump.hpp and
     HydraulicVariableDisplacementPump.hpp: ``q2 = min(max(q2, -c2/Zc2), c1/Zc1)``); the gate rises from 0 to 1
     over ``p_reg`` with a continuous slope, as an implicit solver needs.
 
@@ -173,8 +173,8 @@ def floored_port_flow(q: Any, p_in: Any, p_out: Any, p_floor: Any, p_reg: Any) -
 
     References
     ----------
-    [Hopsan2026] (Hydraulic/Pumps/HydraulicFixedDisplacementPump.hpp, HydraulicVariableDisplacementPump.hpp: the
-    flow limited so that no port's pressure falls below zero).
+    [Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementPump.hpp,
+    HydraulicVariableDisplacementPump.hpp (the flow clamp whose continuous form this is).
 
     Examples
     --------

@@ -812,3 +812,201 @@ def test_blocks_that_start_at_their_input_take_the_value_driving_it_at_the_start
     system = read_hopsan(path)
     assert system["RL"].values["y0"] == pytest.approx(1.1)
     assert system.initial["V_spool.s"] == pytest.approx(1.0)
+
+
+def test_rotational_inertia_torque_and_angular_velocity_sources_and_sensors(tmp_path: Path) -> None:
+    """MechanicRotationalInertia (J, B, k) as RotationalInertia, MechanicTorqueTransformer as TorqueSource, the
+    theta source and the angular-velocity transformer as AngularVelocitySource, the angle, speed and torque
+    sensors reading Hopsan's node variables. A torque T = 4 N m at P1 turns the inertia (J 0.5, B 2) at P2 along
+    +θ: ω = T/B (1 - exp(-B t/J)); a theta source whose thetain is connected takes its angle from it."""
+    v = _value
+    components = [
+        ("MechanicRotationalInertia", "J", {"J": v("0.5"), "B#Value": v("2"), "k#Value": v("0")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("4")}),
+        ("MechanicAngularVelocitySensor", "W", {}),
+        ("MechanicAngleSensor", "A", {}),
+        ("MechanicTorqueSensor", "Q", {}),
+        ("MechanicTorqueTransformer", "T0", {"T#Value": v("0")}),
+        ("MechanicThetaSource", "TS", {"omega#Value": v("3")}),
+        ("SignalConstant", "Th", {"y#Value": v("0.7")}),
+        ("MechanicTorqueTransformer", "T1", {"T#Value": v("0")}),
+        ("MechanicAngularVelocityTransformer", "AV", {"omega#Value": v("-2")}),
+    ]
+    connections = [
+        ("T.P1", "J.P1"), ("T0.P1", "J.P2"), ("W.P1", "J.P2"), ("A.P1", "J.P2"), ("Q.P1", "J.P1"),
+        ("TS.Pmr1", "T1.P1"), ("Th.y", "TS.thetain"), ("AV.out", "T0.P1"),
+    ]
+    path = tmp_path / "rot.hmf"
+    # the angular velocity transformer drives the node of T0 and J.P2 twice: not Hopsan's C/Q alternation
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match="J.P2"):
+        read_hopsan(path)
+    connections[-1] = ("AV.out", "T1.P1")
+    connections[-3] = ("TS.Pmr1", "T2.P1")
+    components.append(("MechanicTorqueTransformer", "T2", {"T#Value": v("0")}))
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert (imp.system["J"].values["J"], imp.system["J"].values["B_rot"]) == (0.5, 2.0)
+    assert imp.system["TS"].option("position") == "input" and imp.system["AV"].option("position") == "integral"
+    t = np.array([0.0, 0.2, 0.5, 1.0])
+    r = imp.system.simulate(t_eval=t, accuracy=1e-9)
+    omega = 2.0 * (1.0 - np.exp(-4.0 * t))
+    np.testing.assert_allclose(r["W.out.Value"], omega, atol=1e-6)
+    np.testing.assert_allclose(r["J.P2.AngularVelocity"], omega, atol=1e-6)
+    np.testing.assert_allclose(r["J.P1.AngularVelocity"], -omega, atol=1e-6)
+    np.testing.assert_allclose(r["A.out.Value"], 2.0 * (t - 0.25 * (1.0 - np.exp(-4.0 * t))), atol=1e-6)
+    np.testing.assert_allclose(r["Q.out.Value"][1:], 4.0)
+    np.testing.assert_allclose(r["TS.Pmr1.Angle"], 0.7)
+    np.testing.assert_allclose(r["TS.Pmr1.AngularVelocity"], 3.0)
+    np.testing.assert_allclose(r["AV.out.Angle"], -2.0 * t, atol=1e-9)
+
+
+def test_hopsans_q_type_motors_turn_against_their_load_with_hopsans_displacement_and_leakage(tmp_path: Path) -> None:
+    """HydraulicVariableDisplacementMotorQ and HydraulicFixedDisplacementMotorQ: J ω' = ε D_m/2π (p1 - p2) - B_m ω
+    - T3, the flow into P1 ε D_m/2π ω + C (p1 - p2) (C_im, C_lm). Between 100 bar and 1 bar (absolute) against
+    a torque source of 20 N m each settles at ω = (ε D Δp - T)/B_m; a driven eps passes a Saturation to [-1, 1]
+    (Hopsan limits it), a constant one outside it is refused."""
+    v = _value
+    D = 5e-5 / (2.0 * np.pi)
+    components = [
+        ("HydraulicVariableDisplacementMotorQ", "MV", {"D_m#Value": v("5e-5"), "B_m#Value": v("0.5"),
+                                                       "C_im#Value": v("1e-11"), "J_m#Value": v("0.01"),
+                                                       "eps#Value": v("0.5")}),
+        ("HydraulicFixedDisplacementMotorQ", "MF", {"D_m#Value": v("5e-5"), "B_m#Value": v("0.5"),
+                                                    "C_lm#Value": v("2e-11"), "J_m#Value": v("0.01")}),
+        ("HydraulicPressureSourceC", "PH", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicTankC", "PL", {"p": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "PH2", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicTankC", "PL2", {"p": v("1e5", "Pa")}),
+        ("MechanicTorqueTransformer", "TV", {"T#Value": v("20")}),
+        ("MechanicTorqueTransformer", "TF", {"T#Value": v("20")}),
+    ]
+    connections = [
+        ("MV.P1", "PH.P1"), ("MV.P2", "PL.P1"), ("MV.P3", "TV.P1"),
+        ("MF.P1", "PH2.P1"), ("MF.P2", "PL2.P1"), ("MF.P3", "TF.P1"),
+    ]
+    path = tmp_path / "motors.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    mv, mf = imp.system["MV"], imp.system["MF"]
+    assert mv.values["D"] == pytest.approx(D) and mv.values["C_im"] == 1e-11 and mf.values["C_im"] == 2e-11
+    assert mv.option("inlet") == "floor" and mv.values["C_em"] == 0.0 and mv.values["eta_hm"] == 1.0
+    r = imp.system.simulate(t_end=1.0)
+    dp = 1e7 - 1e5
+    for name, eps, leak in (("MV", 0.5, 1e-11), ("MF", 1.0, 2e-11)):
+        omega = (eps * D * dp - 20.0) / 0.5
+        assert r[f"{name}.P3.AngularVelocity"][-1] == pytest.approx(omega, rel=1e-6)
+        assert r[f"{name}.P3.Torque"][-1] == pytest.approx(20.0)
+        # Hopsan's flow at P1 counts out of the motor
+        assert r[f"{name}.P1.Flow"][-1] == pytest.approx(-(eps * D * omega + leak * dp), rel=1e-6)
+    bad = [("HydraulicVariableDisplacementMotorQ", "MV", {"eps#Value": v("1.5")}), *components[1:]]
+    path.write_text(_hmf(bad, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"eps = 1\.5 outside \[-1, 1\]"):
+        read_hopsan(path)
+    ramp = ("SignalRamp", "R", {"y_0#Value": v("0"), "y_A#Value": v("3"), "t_start#Value": v("0"), "t_end#Value": v("3")})
+    path.write_text(_hmf([*components, ramp], [*connections, ("R.out", "MV.eps")]), encoding="utf-8")
+    imp = import_hopsan(path)
+    r = imp.system.simulate(t_eval=[0.0, 0.5, 2.0, 3.0])
+    np.testing.assert_allclose(r["MV_eps.y"], [0.0, 0.5, 1.0, 1.0], atol=1e-9)
+
+
+def test_hopsans_shafts_and_torsional_spring_are_torsional_springs_in_the_limit_of_a_vanishing_step(
+    tmp_path: Path,
+) -> None:
+    """MechanicRotShaft (Ks), MechanicRotShaftG (Ks = π/32 (dy⁴ − di⁴) G/len) and MechanicTorsionalSpring (k):
+    transmission-line springs whose impedance and numerical damping (alpha) vanish with the step, so
+    TorsionalSprings of that stiffness. A theta source at 2 rad/s drags an inertia (J 0.5, no damping) through
+    the shaft: the twist swings as (ω/ω_n) sin(ω_n t); alpha outside [0, 1) is refused."""
+    v = _value
+    components = [
+        ("MechanicThetaSource", "S", {"omega#Value": v("2")}),
+        ("MechanicRotShaft", "Shaft", {"Ks#Value": v("200"), "alpha#Value": v("0.9")}),
+        ("MechanicRotationalInertia", "J", {"J": v("0.5"), "B#Value": v("0"), "k#Value": v("0")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("0")}),
+        ("MechanicRotShaftG", "G", {"dy#Value": v("0.05"), "di#Value": v("0.01"), "len#Value": v("2"),
+                                    "G#Value": v("8e10")}),
+        ("MechanicTorsionalSpring", "K", {"k": v("300")}),
+        ("MechanicAngularVelocityTransformer", "W1", {}),
+        ("MechanicAngularVelocityTransformer", "W2", {}),
+        ("MechanicAngularVelocityTransformer", "W3", {}),
+    ]
+    connections = [("S.Pmr1", "Shaft.Pmr1"), ("Shaft.Pmr2", "J.P1"), ("J.P2", "T.P1"),
+                   ("G.Pmr1", "W1.out"), ("G.Pmr2", "W2.out"), ("K.P1", "W3.out")]
+    path = tmp_path / "shafts.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Shaft"].values["k_rot"] == 200.0 and imp.system["K"].values["k_rot"] == 300.0
+    assert imp.system["G"].values["k_rot"] == pytest.approx(np.pi / 32.0 * (0.05**4 - 0.01**4) * 8e10 / 2.0)
+    t = np.linspace(0.0, 1.0, 11)
+    r = imp.system.simulate(t_eval=t, accuracy=1e-9)
+    wn = np.sqrt(200.0 / 0.5)
+    np.testing.assert_allclose(r["J.P2.Angle"], 2.0 * t - 2.0 / wn * np.sin(wn * t), atol=1e-6)
+    np.testing.assert_allclose(r["Shaft.Pmr2.Torque"], 200.0 * 2.0 / wn * np.sin(wn * t), atol=1e-4)
+    components[1] = ("MechanicRotShaft", "Shaft", {"Ks#Value": v("200"), "alpha#Value": v("1")})
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"alpha = 1 outside \[0, 1\)"):
+        read_hopsan(path)
+
+
+def test_hopsans_c_type_machine_is_a_machine_between_its_port_volumes(tmp_path: Path) -> None:
+    """HydraulicMachineC: a Machine (D_m per revolution, C_lm, B_m) between two cavity Volumes V_1, V_2 starting
+    at their ports' start pressures, its shaft P3 a torque port. Fed through laminar orifices (Kc) from 100 and
+    10 bar and turning an inertia (B = 1), it settles where the orifices' flows are the machine's and the torques
+    balance: Kc (p_s1 − p1) = ε D ω + C (p1 − p2) = Kc (p2 − p_s2), ε D (p1 − p2) = (B_m + B) ω."""
+    v = _value
+    components = [
+        ("HydraulicMachineC", "M", {"P1#Pressure": v("3e6", "Pa"), "P2#Pressure": v("2e6", "Pa"),
+                                    "eps#Value": v("0.5"), "Beta_e#Value": v("1e9"), "V_1#Value": v("0.001"),
+                                    "V_2#Value": v("0.002"), "D_m#Value": v("4e-5"), "C_lm#Value": v("1e-11"),
+                                    "B_m#Value": v("0.2")}),
+        ("MechanicRotationalInertia", "J", {"J": v("0.1"), "B#Value": v("1"), "k#Value": v("0")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("0")}),
+        ("HydraulicLaminarOrifice", "O1", {"Kc#Value": v("1e-9")}),
+        ("HydraulicLaminarOrifice", "O2", {"Kc#Value": v("1e-9")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1e6", "Pa")}),
+    ]
+    connections = [("S1.P1", "O1.P2"), ("O1.P1", "M.P1"), ("S2.P1", "O2.P2"), ("O2.P1", "M.P2"),
+                   ("J.P2", "M.P3"), ("T.P1", "J.P1")]
+    path = tmp_path / "machine.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    sysm = imp.system
+    assert sysm["M_V1"].values["V"] == 0.001 and sysm["M_V2"].values["V"] == 0.002
+    assert sysm["M_V1"].option("pressure_floor") == "cavity"
+    r0 = sysm.simulate(t_eval=[0.0, 1e-9])
+    assert r0["M.P1.Pressure"][0] == pytest.approx(3e6) and r0["M.P2.Pressure"][0] == pytest.approx(2e6)
+    D, C, Kc, B = 0.5 * 4e-5 / (2.0 * np.pi), 1e-11, 1e-9, 1.2
+    # unknowns p1, p2, ω (absolute pressures)
+    a = np.array([[Kc + C, -C, D], [-C, Kc + C, -D], [D, -D, -B]])
+    rhs = np.array([Kc * 1e7, Kc * 1e6, 0.0])
+    p1, p2, omega = np.linalg.solve(a, rhs)
+    r = sysm.simulate(t_end=5.0)
+    assert r["M.P1.Pressure"][-1] == pytest.approx(p1, rel=1e-6) and r["M.P2.Pressure"][-1] == pytest.approx(p2, rel=1e-6)
+    # the inertia's P2 faces the machine's shaft: Hopsan's node speed is the inertia's, minus the shaft's
+    assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-omega, rel=1e-6)
+    assert r["M.P3.Torque"][-1] == pytest.approx(1.0 * omega, rel=1e-6)
+
+
+def test_hopsans_gear_shaft_is_a_geared_spring_of_the_stiffness_its_element_converges_to(tmp_path: Path) -> None:
+    """MechanicGearShaft: a TorsionalSpring with n_gear = gearRatio and the stiffness Ks/(2 − α) that its
+    transmission-line element (a step more delay than its impedance accounts for) converges to; a theta source
+    at 2 rad/s through gearRatio -1 turns a damped inertia (B 10) at -2 rad/s (through a plain shaft: +2), the
+    torques at its ends opposite."""
+    v = _value
+    components = [
+        ("MechanicThetaSource", "S", {"omega#Value": v("2")}),
+        ("MechanicGearShaft", "G", {"gearRatio#Value": v("-1"), "Ks#Value": v("1e4"), "alpha#Value": v("0.5")}),
+        ("MechanicRotationalInertia", "J", {"J": v("0.1"), "B#Value": v("10"), "k#Value": v("0")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("0")}),
+    ]
+    connections = [("S.Pmr1", "G.Pmr1"), ("G.Pmr2", "J.P1"), ("J.P2", "T.P1")]
+    path = tmp_path / "gear.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    g = imp.system["G"]
+    assert g.values["k_rot"] == pytest.approx(1e4 / 1.5) and g.values["n_gear"] == -1.0
+    r = imp.system.simulate(t_end=1.0)
+    assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-2.0, rel=1e-6)
+    assert r["G.Pmr2.Torque"][-1] == pytest.approx(-20.0, rel=1e-6)
+    assert r["G.Pmr1.Torque"][-1] == pytest.approx(20.0, rel=1e-6)

@@ -1,0 +1,173 @@
+"""Rotational mechanics joined port to port: an inertia, a torsional spring, torque and angular-velocity sources.
+
+The rotational counterparts of :mod:`hydroservo.components.mass` and :mod:`hydroservo.components.mechanics`:
+their mechanical ports are of kind ``"rotational"`` (angle [rad], angular velocity [rad/s], torque [N*m]) and
+join only rotational ports (:mod:`hydroservo.system.nodes`). The laws are the translational ones on an angle:
+an inertia is :func:`~hydroservo.laws.rigid_body.rigid_body_acceleration` as a mass is, a torque source is a
+force source, an angular-velocity source a velocity source. Hopsan's rotational components ([Hopsan2026]
+Mechanic/Rotational/) join the same way, one C component (a torque source, a shaft) to one Q component (an
+inertia, a motor, an angular-velocity source) at each node.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any
+
+from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
+from hydroservo.components.mechanics import ForceSource, VelocitySource
+from hydroservo.errors import ParameterError
+from hydroservo.laws.rigid_body import rigid_body_acceleration
+from hydroservo.laws.stops import end_stop_force
+
+__all__ = ["RotationalInertia", "TorsionalSpring", "TorqueSource", "AngularVelocitySource"]
+
+
+@register
+class RotationalInertia(Component):
+    r"""Rigid rotating inertia with viscous friction, a torsional spring to ground and end stops.
+
+    .. math:: J\,\ddot\theta = T - T_{P1} - B_{rot}\,\dot\theta - k_{rot}\,\theta + T_{stop}
+
+    (:func:`~hydroservo.laws.rigid_body.rigid_body_acceleration`, the law of
+    :class:`~hydroservo.components.mass.Mass` on an angle). Its two ends are the rotational ports ``P2`` (at
+    :math:`\theta`, counted along +θ) and ``P1`` (at :math:`-\theta`, counted the other way), as Hopsan's
+    MechanicRotationalInertia ([Hopsan2026] Mechanic/Rotational/MechanicRotationalInertia.hpp): the torques of
+    what is connected at P2 add into ``T``, those at P1 into ``T_P1``. End stops
+    (:func:`~hydroservo.laws.stops.end_stop_force` on the angle) act beyond ``theta_min`` and ``theta_max``
+    when ``k_stop_rot`` or ``c_stop_rot`` is set.
+    """
+
+    PARAMETERS = {
+        "J": Param(0.1, "kg*m^2", "moment of inertia", min=0.0, min_inclusive=False),
+        "B_rot": Param(0.0, "N*m*s/rad", "rotational viscous friction coefficient", min=0.0),
+        "k_rot": Param(0.0, "N*m/rad", "stiffness of a torsional spring to ground, relaxed at theta = 0", min=0.0),
+        "theta_min": Param(-1e30, "rad", "end stop, low side"),
+        "theta_max": Param(1e30, "rad", "end stop, high side"),
+        "k_stop_rot": Param(0.0, "N*m/rad", "end-stop stiffness (0 with c_stop_rot 0: no end stops)", min=0.0),
+        "c_stop_rot": Param(0.0, "N*m*s/rad", "end-stop damping", min=0.0),
+        "theta0": Param(0.0, "rad", "initial angle"),
+        "omega0": Param(0.0, "rad/s", "initial angular velocity"),
+    }
+    STATES = {
+        "theta": State("rad", "angle", initial="theta0", nominal=1.0),
+        "omega": State("rad/s", "angular velocity", initial="omega0", nominal=10.0),
+    }
+    INPUTS = {
+        "T": Port("N*m", "torque on end 2, along +θ", default=0.0),
+        "T_P1": Port("N*m", "torque on end 1, counted along -θ: what port P1 sums", default=0.0),
+    }
+    MECHANICAL = {
+        "P1": Mechanical("theta_P1", "omega_P1", "T_P1", "end 1 (counted along -θ)", kind="rotational"),
+        "P2": Mechanical("theta", "omega", "T", "end 2 (counted along +θ)", kind="rotational"),
+    }
+    OUTPUTS = {
+        "theta": Output("rad", "angle"),
+        "omega": Output("rad/s", "angular velocity"),
+        "theta_P1": Output("rad", "angle of end 1, counted along -θ: -theta"),
+        "omega_P1": Output("rad/s", "angular velocity of end 1, counted along -θ: -omega"),
+    }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"theta": x["theta"], "omega": x["omega"], "theta_P1": -x["theta"], "omega_P1": -x["omega"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        theta, omega = x["theta"], x["omega"]
+        load = u["T"] - u["T_P1"]
+        load = load + end_stop_force(theta, omega, p["theta_min"], p["theta_max"], p["k_stop_rot"], p["c_stop_rot"])
+        friction = p["B_rot"] * omega
+        return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], p["k_rot"], 0.0, friction)}
+
+
+@register
+class TorqueSource(ForceSource):
+    """A torque from a signal: the rotational counterpart of a force source.
+
+    Its rotational port ``P`` twists what it is joined to with the input ``u``, counted along the port's outward direction (Hopsan's MechanicTorqueTransformer, [Hopsan2026]
+    Mechanic/Rotational/MechanicTorqueTransformer.hpp, whose signal is the torque it presses on its node: a
+    load against the motion of the Q component there). The law of
+    :class:`~hydroservo.components.mechanics.ForceSource` on an angle."""
+
+    INPUTS = {
+        "u": Port("N*m", "torque on what port P is joined to, outward", default=0.0),
+        "x": Port("rad", "outward angle of port P", default=0.0),
+        "v": Port("rad/s", "outward angular velocity of port P", default=0.0),
+    }
+    MECHANICAL = {"P": Mechanical("x", "v", "F", "where the torque acts (outward)", kind="rotational")}
+    OUTPUTS = {"F": Output("N*m", "torque on what port P is joined to, outward")}
+
+
+@register
+class AngularVelocitySource(VelocitySource):
+    """An angular velocity from a signal: the rotational counterpart of a velocity source.
+
+    Its rotational port ``P`` turns outward at the input ``u``, from ``theta0``, whatever torque it takes (Hopsan's MechanicAngularVelocityTransformer and MechanicThetaSource,
+    [Hopsan2026] Mechanic/Rotational/MechanicAngularVelocityTransformer.hpp, MechanicThetaSource.hpp). The law of
+    :class:`~hydroservo.components.mechanics.VelocitySource` on an angle: option ``position`` ``"integral"``
+    integrates the angular velocity, ``"input"`` takes the angle from the input ``x_in`` (the theta source's
+    ``thetain`` connected)."""
+
+    PARAMETERS = {"theta0": Param(0.0, "rad", "initial angle (option position = 'integral')")}
+    STATES = {"x": State("rad", "angle", initial="theta0", nominal=1.0)}
+    INPUTS = {
+        "u": Port("rad/s", "angular velocity imposed outward", default=0.0),
+        "F": Port("N*m", "torque acting on port P, outward", default=0.0),
+        "x_in": Port("rad", "angle imposed outward (option position = 'input')", default=0.0),
+    }
+    MECHANICAL = {"P": Mechanical("x", "v", "F", "the turning point (outward)", kind="rotational")}
+    OUTPUTS = {
+        "x": Output("rad", "angle"),
+        "v": Output("rad/s", "angular velocity"),
+    }
+
+
+@register
+class TorsionalSpring(Component):
+    r"""Linear torsional spring between two ends, through a gear: the rotational counterpart of a spring.
+
+    .. math:: T_2 = -k_{rot}\,(\theta_1/n + \theta_2 - e_{0,rot}), \qquad T_1 = T_2/n
+
+    with :math:`\theta_1`, :math:`\theta_2` the outward angles of its ends, ``T1``, ``T2`` the torques it exerts
+    outward on what they are joined to, and :math:`n` (``n_gear``) the gear ratio :math:`\omega_1/\omega_2` of an
+    ideal gear at end 1, the spring at end 2 (:math:`T_1 \omega_1 = T_2 \omega_2`). With ``n_gear`` 1 it is the law
+    of :class:`~hydroservo.components.mechanics.Spring` on an angle. Output ``F`` is the spring's torque (twisted
+    open positive). Hopsan's MechanicTorsionalSpring, MechanicRotShaft, MechanicRotShaftG and MechanicGearShaft
+    ([Hopsan2026] Mechanic/Rotational/) are this law as transmission-line elements.
+    """
+
+    PARAMETERS = {
+        "k_rot": Param(100.0, "N*m/rad", "torsional stiffness (at end 2)", min=0.0),
+        "e0_rot": Param(0.0, "rad", "twist (theta1/n_gear + theta2) at which the spring is relaxed"),
+        "n_gear": Param(1.0, "", "gear ratio omega1/omega2 (negative: the gear reverses)"),
+    }
+    INPUTS = {
+        "x1": Port("rad", "outward angle of end 1", default=0.0),
+        "v1": Port("rad/s", "outward angular velocity of end 1", default=0.0),
+        "x2": Port("rad", "outward angle of end 2", default=0.0),
+        "v2": Port("rad/s", "outward angular velocity of end 2", default=0.0),
+    }
+    MECHANICAL = {
+        "P1": Mechanical("x1", "v1", "F1", "end 1 of the spring (outward)", kind="rotational"),
+        "P2": Mechanical("x2", "v2", "F2", "end 2 of the spring (outward)", kind="rotational"),
+    }
+    OUTPUTS = {
+        "F1": Output("N*m", "torque on what end 1 is joined to, outward"),
+        "F2": Output("N*m", "torque on what end 2 is joined to, outward"),
+        "F": Output("N*m", "torque in the spring (twisted open positive)"),
+    }
+
+    def check(self) -> None:
+        super().check()
+        if self.values["n_gear"] == 0.0:
+            raise ParameterError(f"{self.name}.n_gear = 0: a gear ratio must not be zero")
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        n = p["n_gear"]
+        torque = p["k_rot"] * (u["x1"] / n + u["x2"] - p["e0_rot"])
+        return {"F1": -torque / n, "F2": -torque, "F": torque}
