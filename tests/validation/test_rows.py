@@ -12,8 +12,9 @@ import pytest
 
 from hydroservo.validation import VALIDATIONS, regressions
 
-#: Validations that take more than about 5 s (the FerreiraND Bode identification and datasheet fits).
-SLOW = {"servo-solenoid-cylinder"}
+#: Validations that take more than about 5 s (the FerreiraND Bode identification and datasheet fits; Hopsan's 34
+#: models, imported and run, about 20 s).
+SLOW = {"servo-solenoid-cylinder", "hopsan-examples"}
 
 
 @pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n in SLOW else n for n in VALIDATIONS])
