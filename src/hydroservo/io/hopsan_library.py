@@ -780,14 +780,6 @@ def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"}, inputs={"eps": f"{n}.eps"})
 
 
-def _pressure_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    return _sensor(n, "Pressure", "Pa")
-
-
-def _flow_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    return _sensor(n, "Flow", "m^3/s")
-
-
 # -- mechanic -------------------------------------------------------------------------------------------------
 
 
@@ -876,23 +868,16 @@ def _velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"Pm1": f"{n}.P"}, inputs={"v": f"{n}.u"})
 
 
-def _position_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    return _sensor(n, "Position", "m")
+def _sensor(variable: str, unit: str) -> Builder:
+    """Hopsan's sensors of a node's ``variable``: a Sum reading it (fed when the node is known), its output Hopsan's
+    ``out``."""
 
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Sum
 
-def _velocity_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    return _sensor(n, "Velocity", "m/s")
+        return Mapped([Sum(n, unit=unit, gain2=0.0)], read={"P1": (f"{n}.u1", variable)}, outputs={"out": f"{n}.y"})
 
-
-def _force_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    return _sensor(n, "Force", "N")
-
-
-def _sensor(n: str, variable: str, unit: str) -> Mapped:
-    """A sensor: a Sum reading the node's variable (fed when the node is known), its output Hopsan's ``out``."""
-    from hydroservo.components import Sum
-
-    return Mapped([Sum(n, unit=unit, gain2=0.0)], read={"P1": (f"{n}.u1", variable)}, outputs={"out": f"{n}.y"})
+    return build
 
 
 # -- mechanic, rotational -------------------------------------------------------------------------------------
@@ -999,18 +984,6 @@ def _angular_velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mappe
 
     comp = AngularVelocitySource(n, theta0=par.start("out", "Angle"))
     return Mapped([comp], power={"out": f"{n}.P"}, inputs={"omega": f"{n}.u"})
-
-
-def _angle_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    return _sensor(n, "Angle", "rad")
-
-
-def _angular_velocity_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    return _sensor(n, "AngularVelocity", "rad/s")
-
-
-def _torque_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    return _sensor(n, "Torque", "N*m")
 
 
 def _motor_q(leakage: str, variable: bool) -> Builder:
@@ -1422,16 +1395,16 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
-    "HydraulicPressureSensor": _pressure_sensor,
-    "HydraulicFlowSensor": _flow_sensor,
+    "HydraulicPressureSensor": _sensor("Pressure", "Pa"),
+    "HydraulicFlowSensor": _sensor("Flow", "m^3/s"),
     "MechanicTranslationalMass": _mass,
     "MechanicTranslationalMassWithCoulombFriction": _mass_coulomb,
     "MechanicTranslationalSpring": _spring,
     "MechanicFixedPosition": _fixed_position,
     "MechanicForceTransformer": _force_source,
-    "MechanicPositionSensor": _position_sensor,
-    "MechanicSpeedSensor": _velocity_sensor,
-    "MechanicForceSensor": _force_sensor,
+    "MechanicPositionSensor": _sensor("Position", "m"),
+    "MechanicSpeedSensor": _sensor("Velocity", "m/s"),
+    "MechanicForceSensor": _sensor("Force", "N"),
     "MechanicRotationalInertia": _rotational_inertia,
     "MechanicTorqueTransformer": _torque_source,
     "MechanicTorsionalSpring": _torsional_spring,
@@ -1442,9 +1415,9 @@ LIBRARY: dict[str, Builder] = {
     ),
     "MechanicThetaSource": _theta_source,
     "MechanicAngularVelocityTransformer": _angular_velocity_source,
-    "MechanicAngleSensor": _angle_sensor,
-    "MechanicAngularVelocitySensor": _angular_velocity_sensor,
-    "MechanicTorqueSensor": _torque_sensor,
+    "MechanicAngleSensor": _sensor("Angle", "rad"),
+    "MechanicAngularVelocitySensor": _sensor("AngularVelocity", "rad/s"),
+    "MechanicTorqueSensor": _sensor("Torque", "N*m"),
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
