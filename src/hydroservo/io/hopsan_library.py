@@ -121,6 +121,14 @@ class _Params:
         """A time parameter on hydroservo's clock, which starts at 0 where Hopsan's starts at its start time."""
         return self(name, default) - self.t0
 
+    def source_time(self, name: str, default: float) -> float:
+        """A source's start or step time on hydroservo's clock (:meth:`time`); one before the run's start is
+        refused (a problem is noted) and 0 returned."""
+        t = self.time(name, default)
+        if t < 0.0:
+            self.problems.append(f"{self.where}: {name} = {t + self.t0:g} s, before the run's start, is not supported")
+        return max(t, 0.0)
+
     def start(self, port: str, variable: str, default: float = 0.0) -> float:
         """A port variable's start value (``P1#Pressure``): the node's, which the component that owns it gives
         (Hopsan's C components write the start values of their nodes, its Q components read them), else this
@@ -1067,8 +1075,8 @@ def _ramp(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
     y0, ya, t0, t1 = par("y_0", 0.0), par("y_A", 1.0), par.time("t_start", 1.0), par.time("t_end", 2.0)
     if t1 <= t0:  # Hopsan jumps at t_start
-        return Mapped([Step(n, offset=y0, amplitude=ya, t_step=max(t0, 0.0))], outputs={"out": f"{n}.y"})
-    comp = Ramp(n, offset=y0, slope=ya / (t1 - t0), t_start=max(t0, 0.0), limit=abs(ya))
+        return Mapped([Step(n, offset=y0, amplitude=ya, t_step=t0)], outputs={"out": f"{n}.y"})
+    comp = Ramp(n, offset=y0, slope=ya / (t1 - t0), t_start=t0, limit=abs(ya))
     if t0 < 0.0:
         par.problems.append(f"{par.where}: a ramp that starts before the run (t_start = {t0 + par.t0:g} s) is not supported")
     return Mapped([comp], outputs={"out": f"{n}.y"})
@@ -1081,7 +1089,7 @@ def _sine(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     t0 = par.time("t_start", 0.0)
     # Hopsan's wave is 0 before t_start and sin(2 pi f (t - t_start - y_offset)) from it
     phase = -2.0 * math.pi * f * (par("y_offset", 0.0) + max(-t0, 0.0))
-    comp = Sine(n, amplitude=par("y_A", 1.0), frequency=f, phase=phase, t_start=max(t0, 0.0))
+    comp = Sine(n, amplitude=par("y_A", 1.0), frequency=f, phase=phase, t_start=t0)
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
@@ -1089,7 +1097,7 @@ def _pulse(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pulse
 
     t0, t1 = par.time("t_start", 1.0), par.time("t_end", 2.0)
-    comp = Pulse(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=max(t0, 0.0), duration=max(t1 - max(t0, 0.0), 0.0))
+    comp = Pulse(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=t0, duration=max(t1 - max(t0, 0.0), 0.0))
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
@@ -1099,7 +1107,7 @@ def _soft_step(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     t0, t1 = par.time("t_start", 1.0), par.time("t_end", 2.0)
     if t0 < 0.0:
         par.problems.append(f"{par.where}: a soft step that starts before the run (t_start = {t0 + par.t0:g} s) is not supported")
-    comp = SoftStep(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=max(t0, 0.0), t_end=t1)
+    comp = SoftStep(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), t_start=t0, t_end=t1)
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
@@ -1291,28 +1299,23 @@ def _route(inputs: int) -> Builder:
     return build
 
 
-def _before_start(par: _Params, name: str, t: float) -> None:
-    if t < 0.0:
-        par.problems.append(f"{par.where}: {name} = {t + par.t0:g} s, before the run's start, is not supported")
 
 
 def _square_wave(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Square
 
     # SignalSquareWave.hpp: y_0 before t_start, then y_0 + y_A while sin(2 pi f (t - t_start)) >= 0, else y_0 - y_A
-    t0 = par.time("t_start", 0.0)
-    _before_start(par, "t_start", t0)
-    comp = Square(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), frequency=par("f", 1.0), t_start=max(t0, 0.0))
+    t0 = par.source_time("t_start", 0.0)
+    comp = Square(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), frequency=par("f", 1.0), t_start=t0)
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
 def _pulse_wave(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import PulseWave
 
-    t0 = par.time("t_start", 0.0)
-    _before_start(par, "t_start", t0)
+    t0 = par.source_time("t_start", 0.0)
     comp = PulseWave(
-        n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), period=par("dT", 1.0), duty=par("D", 0.5), t_start=max(t0, 0.0)
+        n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), period=par("dT", 1.0), duty=par("D", 0.5), t_start=t0
     )
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
@@ -1320,18 +1323,16 @@ def _pulse_wave(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _staircase(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Staircase
 
-    t0 = par.time("T_start", 0.0)
-    _before_start(par, "T_start", t0)
-    comp = Staircase(n, height=par("H_step", 1.0), width=par("W_step", 1.0), t_start=max(t0, 0.0))
+    t0 = par.source_time("T_start", 0.0)
+    comp = Staircase(n, height=par("H_step", 1.0), width=par("W_step", 1.0), t_start=t0)
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 
 def _step_exponential_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import DecayingStep
 
-    t0 = par.time("t_step", 1.0)
-    _before_start(par, "t_step", t0)
-    comp = DecayingStep(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), tau=par("tao", 1.0), t_step=max(t0, 0.0))
+    t0 = par.source_time("t_step", 1.0)
+    comp = DecayingStep(n, offset=par("y_0", 0.0), amplitude=par("y_A", 1.0), tau=par("tao", 1.0), t_step=t0)
     return Mapped([comp], outputs={"out": f"{n}.y"})
 
 

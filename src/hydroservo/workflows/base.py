@@ -365,3 +365,9 @@ def output_folder(out: str | Path | None, default: str, *, force: bool = False, 
 def finite_or_none(value: float | None) -> float | None:
     """``value``, or None where it is missing or not finite (for JSON)."""
     return None if value is None or not math.isfinite(value) else float(value)
+
+
+def json_records(frame: Any) -> list[dict[str, Any]]:
+    """The rows of a DataFrame as JSON records: a number that is not finite (a failed run's metric) as None."""
+    return [{k: finite_or_none(v) if isinstance(v, float) else v for k, v in row.items()}
+            for row in frame.to_dict(orient="records")]

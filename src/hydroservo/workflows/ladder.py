@@ -14,7 +14,16 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ParameterError
-from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, asked_units, load_with_sets, safe_name
+from hydroservo.workflows.base import (
+    Artifact,
+    Progress,
+    Report,
+    Workflow,
+    asked_units,
+    json_records,
+    load_with_sets,
+    safe_name,
+)
 
 if TYPE_CHECKING:
     from hydroservo.analysis.ladder import LadderTable
@@ -87,12 +96,8 @@ class LadderReport(Report):
         ]
 
     def to_dict(self) -> dict[str, Any]:
-        import math
-
-        rows = self.table().reset_index().to_dict(orient="records")
-        clean = [{k: (None if isinstance(v, float) and not math.isfinite(v) else v) for k, v in r.items()} for r in rows]
         return {"model": self.system.name, "operating_point": {"t": self.t, "free": self.free},
-                **self.ladder.to_dict(), "models": clean, "files": self.files}
+                **self.ladder.to_dict(), "models": json_records(self.table().reset_index()), "files": self.files}
 
     def lines(self) -> list[str]:
         from hydroservo.io.text import text_table
@@ -267,9 +272,7 @@ class Ladder(Workflow):
         table = ladder_table(rungs, self.step_values, parameter=self.stepped, output=self.compared,
                              n_points=self.points, reference=self.reference)
         unit = self.system.build().units.get(self.compared, "")
-        report = LadderReport(self.system, table, self.time, self.free_states, unit, self.unit_choice)
-        report.write_files = self.write
-        return report
+        return LadderReport(self.system, table, self.time, self.free_states, unit, self.unit_choice, self.write)
 
 
 def run(model: str | Path | System, **inputs: Any) -> LadderReport:

@@ -19,7 +19,16 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ParameterError, shorten
-from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, asked_units, load_with_sets, safe_name
+from hydroservo.workflows.base import (
+    Artifact,
+    Progress,
+    Report,
+    Workflow,
+    asked_units,
+    json_records,
+    load_with_sets,
+    safe_name,
+)
 
 if TYPE_CHECKING:
     from hydroservo.analysis.sensitivity import GlobalStudy, OneAtATime
@@ -131,11 +140,7 @@ class OneAtATimeReport(Report):
         return out
 
     def to_dict(self) -> dict[str, Any]:
-        import math
-
-        rows = self.table().to_dict(orient="records")
-        clean = [{k: (None if isinstance(v, float) and not math.isfinite(v) else v) for k, v in r.items()} for r in rows]
-        return {"method": "oat", "table": clean, "files": self.files}
+        return {"method": "oat", "table": json_records(self.table()), "files": self.files}
 
     def lines(self) -> list[str]:
         """A table per factor: a row per metric (its unit in brackets), a column per level."""
@@ -227,11 +232,8 @@ class GlobalReport(Report):
         return self.files | ({"runs": str(self.runs_folder)} if self.runs_folder is not None else {})
 
     def to_dict(self) -> dict[str, Any]:
-        import math
-
-        rows = self.indices().to_dict(orient="records")
-        clean = [{k: (None if isinstance(v, float) and not math.isfinite(v) else v) for k, v in r.items()} for r in rows]
-        return {**self.study.to_dict(), "indices": clean, "wall_time_s": self.wall_time, "files": self._files()}
+        return {**self.study.to_dict(), "indices": json_records(self.indices()), "wall_time_s": self.wall_time,
+                "files": self._files()}
 
     def lines(self) -> list[str]:
         from hydroservo.io.text import text_table
