@@ -7,15 +7,15 @@ from typing import Any
 
 from hydroservo import backend as bk
 from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
-from hydroservo.errors import ParameterError
 from hydroservo.components.valves.ports import TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
+from hydroservo.errors import ParameterError
 from hydroservo.laws.orifice import turbulent_flow
 from hydroservo.laws.pressure_valve import (
     STOP_RELAXATION,
+    hysteresis_half_width,
     limited_lag_rate,
     limited_rate,
     opening_fraction,
-    hysteresis_half_width,
     pressure_valve_coefficient,
     spool_balance_rate,
     valve_hysteresis,
