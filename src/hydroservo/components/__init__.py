@@ -16,7 +16,7 @@ module                 components
                        AngularVelocitySource
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
-                       PressureReducingValve, CounterbalanceValve
+                       PressureReducingValve, CounterbalanceValve, PilotedValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
@@ -98,6 +98,7 @@ from hydroservo.components.valves import (
     FourWayValve,
     LaminarOrifice,
     Orifice,
+    PilotedValve,
     PressureReducingValve,
     PseudoSectionValve,
     ReliefValve,
@@ -166,6 +167,7 @@ __all__ = [
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
+    "PilotedValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",

@@ -206,25 +206,69 @@ def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power=ports)
 
 
+def _spool_valve_parameters(par: _Params) -> dict[str, Any] | None:
+    """The spool of Hopsan's HydraulicPressureReliefValve family (relief, reducing, drop, controlled valves): its
+    lag, characteristics and hysteresis; None (problems noted) for a negative hysteresis."""
+    if par("p_h", 5e5) < 0.0:
+        par.problems.append(f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa; expected 0 or more")
+        return None
+    return {
+        "tau": par("tao", 0.01),
+        "k_cs": par("k_cs", 1e-8),
+        "k_cf": par("k_cf", 1e-8),
+        "q_nom": par("q_nom", 0.001),
+        "p_nom": par("p_nom", 7e6),  # a constant 7 MPa in all but HydraulicPressureControlledValve, a parameter there
+        "p_tr": 1e3,
+        "p_h": par("p_h", 5e5),  # Hopsan's ValveHysteresis, its default 5 bar
+    }
+
+
 def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import ReliefValve
 
-    if par("p_h", 5e5) < 0.0:
-        par.problems.append(f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa; expected 0 or more")
+    spool = _spool_valve_parameters(par)
+    if spool is None:
         return Mapped()
-    comp = ReliefValve(
-        n,
-        p_crack=_abs(par("p_max", 2e7)),
-        tau=par("tao", 0.01),
-        k_cs=par("k_cs", 1e-8),
-        k_cf=par("k_cf", 1e-8),
-        q_nom=par("q_nom", 0.001),
-        p_nom=7e6,  # Hopsan's fixed nominal pressure drop (HydraulicPressureReliefValve.hpp)
-        p_tr=1e3,
-        p_h=par("p_h", 5e5),  # Hopsan's ValveHysteresis, its default 5 bar
-    )
+    comp = ReliefValve(n, p_crack=_abs(par("p_max", 2e7)), **spool)
     # Hopsan's output xv (its spool's filtered position, in its own scaling) has no counterpart: not aliased
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _pressure_drop_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureDropValve.hpp: the relief valve's law
+    set on the drop, ``xs = (p1 - p2 - p_ref)/b1``: ReliefValve with ``pilot = "drop"``, ``p_crack = p_ref``."""
+    from hydroservo.components import ReliefValve
+
+    spool = _spool_valve_parameters(par)
+    if spool is None:
+        return Mapped()
+    comp = ReliefValve(n, p_crack=par("p_ref", 2e6), pilot="drop", **spool)
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _reducing_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureReducingValve.hpp: the relief valve's
+    law piloted by the outlet, ``xs = (p_ref - p2)/b1``: PressureReducingValve with ``p_set = p_ref`` (absolute)."""
+    from hydroservo.components import PressureReducingValve
+
+    spool = _spool_valve_parameters(par)
+    if spool is None:
+        return Mapped()
+    comp = PressureReducingValve(n, p_set=_abs(par("p_ref", 2e6)), **spool)
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _pressure_controlled_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureControlledValve.hpp: the relief valve's
+    law piloted by two lines, ``xs = (p_open - p_ref - p_close)/b1``, the pilots taking no flow: PilotedValve, X
+    the opening pilot P_OPEN, Y the closing one P_CLOSE. Its output x0 has no counterpart: not aliased."""
+    from hydroservo.components import PilotedValve
+
+    spool = _spool_valve_parameters(par)
+    if spool is None:
+        return Mapped()
+    comp = PilotedValve(n, p_ref=par("p_ref", 2e6), **spool)
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_OPEN": f"{n}.X", "P_CLOSE": f"{n}.Y"})
 
 
 def _pressure_valve_g(reducing: bool) -> Builder:
@@ -1375,6 +1419,9 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
     "HydraulicPressureReliefValve": _relief,
+    "HydraulicPressureDropValve": _pressure_drop_valve,
+    "HydraulicPressureReducingValve": _reducing_valve,
+    "HydraulicPressureControlledValve": _pressure_controlled_valve,
     "HydraulicAckumulator": _accumulator,
     "HydraulicPistonAckumulator": _piston_accumulator,
     "HydraulicPressureControlled22Valve": _pressure_controlled("22"),

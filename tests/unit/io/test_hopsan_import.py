@@ -1010,3 +1010,42 @@ def test_hopsans_gear_shaft_is_a_geared_spring_of_the_stiffness_its_element_conv
     assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-2.0, rel=1e-6)
     assert r["G.Pmr2.Torque"][-1] == pytest.approx(-20.0, rel=1e-6)
     assert r["G.Pmr1.Torque"][-1] == pytest.approx(20.0, rel=1e-6)
+
+
+def test_hopsans_reducing_drop_and_pressure_controlled_valves_settle_on_the_relief_valves_law(tmp_path: Path) -> None:
+    """[Hopsan2026] Valves/PressureControlValves/HydraulicPressureReducingValve.hpp, HydraulicPressureDropValve.hpp
+    and HydraulicPressureControlledValve.hpp: the relief valve's spool, settled at xs = Δp_over/b1 with
+    b1 = √p_nom/k_cs + (p_1 - p_2)/(k_cf √p_nom), passing x0 √(p_1 - p_2); Δp_over = p_ref - p_2 (reducing,
+    absolute), p_1 - p_2 - p_ref (drop), p_open - p_close - p_ref (controlled, its pilots taking no flow). Each
+    valve sits between two fixed pressures, partly open (the hysteresis, 5 bar by default, only delays it)."""
+    v = _value
+    components = [
+        ("HydraulicPressureReducingValve", "RD", {"p_ref#Value": v("5e6", "Pa"), "p_h#Value": v("0", "Pa")}),
+        ("HydraulicPressureDropValve", "DR", {"p_ref#Value": v("4.1e6", "Pa")}),
+        ("HydraulicPressureControlledValve", "PC", {"p_ref#Value": v("4e6", "Pa"), "p_nom": v("5e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("4.9e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S3", {"p#Value": v("4e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S4", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S5", {"p#Value": v("6e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S6", {"p#Value": v("1.5e6", "Pa")}),
+    ]
+    connections = [("RD.P1", "S1.P1"), ("RD.P2", "S2.P1"), ("DR.P1", "S5.P1"), ("DR.P2", "S6.P1"),
+                   ("PC.P1", "S1.P1"), ("PC.P2", "S4.P1"), ("PC.P_OPEN", "S5.P1"), ("PC.P_CLOSE", "S6.P1")]
+    path = tmp_path / "pressure_valves.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert type(imp.system["PC"]).__name__ == "PilotedValve" and imp.system["DR"].option("pilot") == "drop"
+    assert imp.system["DR"].values["p_h"] == 5e5 and imp.system["RD"].values["p_h"] == 0.0
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
+    for name, p1, p2, over, p_nom in (("RD", 1e7, 4.9e6, 5e6 - 4.9e6, 7e6),
+                                      ("DR", 6e6, 1.5e6, 6e6 - 1.5e6 - 4.1e6, 7e6),
+                                      ("PC", 1e7, 1e5, 6e6 - 1.5e6 - 4e6, 5e6)):
+        dp = p1 - p2
+        b1 = np.sqrt(p_nom) / 1e-8 + dp / (1e-8 * np.sqrt(p_nom))
+        hysteresis = imp.system[name].values["p_h"] / 2.0  # the spool stops half the band short of xs
+        x0 = (over - hysteresis) / b1
+        assert 0.0 < x0 < 0.001 / np.sqrt(p_nom)  # partly open
+        assert r[f"{name}.Q"][-1] == pytest.approx(x0 * np.sqrt(dp), rel=1e-5)
+    assert r["RD.P2.Flow"][-1] == r["RD.Q"][-1]  # Hopsan's flow out of P2: the flow through
+    assert r["PC.QX"][-1] == 0.0 and r["PC.QY"][-1] == 0.0

@@ -14,7 +14,12 @@ from hydroservo.components.valves.check import CheckValve
 from hydroservo.components.valves.directional import ThreeWayValve, TwoWayValve
 from hydroservo.components.valves.four_way import FourWayValve
 from hydroservo.components.valves.orifice import LaminarOrifice, Orifice
-from hydroservo.components.valves.pressure_control import CounterbalanceValve, PressureReducingValve, ReliefValve
+from hydroservo.components.valves.pressure_control import (
+    CounterbalanceValve,
+    PilotedValve,
+    PressureReducingValve,
+    ReliefValve,
+)
 from hydroservo.components.valves.pseudo_section import PseudoSectionValve, ServoSolenoidValve
 from hydroservo.components.valves.staged_slot import StagedSlotValve
 from hydroservo.components.valves.two_stage import TwoStageServovalve
@@ -32,6 +37,7 @@ __all__ = [
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
+    "PilotedValve",
     "TwoStageServovalve",
     "CatalogueServovalve",
 ]
