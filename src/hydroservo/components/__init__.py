@@ -16,7 +16,7 @@ module                 components
                        AngularVelocitySource
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
-                       PressureReducingValve, CounterbalanceValve, PilotedValve
+                       PressureReducingValve, CounterbalanceValve, PilotedValve, PilotCheckValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
@@ -98,6 +98,7 @@ from hydroservo.components.valves import (
     FourWayValve,
     LaminarOrifice,
     Orifice,
+    PilotCheckValve,
     PilotedValve,
     PressureReducingValve,
     PseudoSectionValve,
@@ -164,6 +165,7 @@ __all__ = [
     "CatalogueServovalve",
     "Orifice",
     "CheckValve",
+    "PilotCheckValve",
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",

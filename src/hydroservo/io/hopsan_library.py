@@ -823,6 +823,27 @@ def _check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
+def _pilot_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicPilotControlledCheckValve.hpp: open while p_1 + φ p_pilot - p_2
+    > p_f, then q = K_s √(p_1 - p_2) both ways, the pilot taking no flow: a PilotCheckValve with option opening =
+    "seat", r_p = φ, its bore from K_s as the check valve's. Hopsan's condition reads absolute pressures: in
+    hydroservo's gauge pressures the cracking pressure is p_f - φ p_atm."""
+    from hydroservo.components import PilotCheckValve
+
+    cd, rho = 0.67, 870.0
+    phi = par("phi", 3.5)
+    if phi < 0.0:
+        par.problems.append(f"{par.where}: pilot ratio phi = {phi:g}; expected 0 or more")
+        return Mapped()
+    area = abs(par("K_s", 5e-7)) / (cd * math.sqrt(2.0 / rho))
+    comp = PilotCheckValve(
+        n, opening="seat", p_crack=par("p_f", 1e5) - phi * 101325.0, r_p=phi,
+        d=math.sqrt(4.0 * area / math.pi), Cd=cd, rho=rho, lambda_crit=10.0,
+    )
+    # Hopsan's output x (1 open, 0 closed) is the valve's s: not aliased
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_PILOT": f"{n}.X"})
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -1414,6 +1435,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicLaminarOrifice": _laminar_orifice,
     "HydraulicTurbulentOrifice": _turbulent_orifice,
     "HydraulicCheckValve": _check_valve,
+    "HydraulicPilotControlledCheckValve": _pilot_check_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,

@@ -115,6 +115,10 @@ MODELS: dict[str, Spec] = {
         "relief valves with hysteresis and a spool relief valve on volumes fed by pulsed and soft-step flows, "
         "drained through 2/2 valves",
     ),
+    "hydraulic-pilot-controlled-check-valve": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPilotControlledCheckValve.hmf",
+        "a pilot-operated check valve between two pressure sources, its pilot and inlet pressures ramped",
+    ),
     "hydraulic-pressure-reducing-valve-g-test": Spec(
         "Component Test/HydraulicComponent Test/HydraulicPressureReducingValveGTest.hmf",
         "a spool pressure-reducing valve (force balance with flow forces) feeding a volume drained by a laminar "

@@ -1049,3 +1049,33 @@ def test_hopsans_reducing_drop_and_pressure_controlled_valves_settle_on_the_reli
         assert r[f"{name}.Q"][-1] == pytest.approx(x0 * np.sqrt(dp), rel=1e-5)
     assert r["RD.P2.Flow"][-1] == r["RD.Q"][-1]  # Hopsan's flow out of P2: the flow through
     assert r["PC.QX"][-1] == 0.0 and r["PC.QY"][-1] == 0.0
+
+
+def test_hopsans_pilot_controlled_check_valve_opens_on_its_absolute_pilot_and_then_flows_both_ways(
+    tmp_path: Path,
+) -> None:
+    """[Hopsan2026] Restrictors/HydraulicPilotControlledCheckValve.hpp: open while p_1 + φ p_pilot - p_2 > p_f
+    (absolute pressures), then q = K_s √(p_1 - p_2) signed; closed otherwise. Reverse flow (p_2 > p_1) passes only
+    while the pilot holds the seat open."""
+    v = _value
+
+    def flow(p1: float, p2: float, pilot: float) -> float:
+        components = [
+            ("HydraulicPilotControlledCheckValve", "CV", {"phi#Value": v("3.5"), "p_f#Value": v("1e6", "Pa"),
+                                                          "K_s": v("5e-7")}),
+            ("HydraulicPressureSourceC", "S1", {"p#Value": v(repr(p1), "Pa")}),
+            ("HydraulicPressureSourceC", "S2", {"p#Value": v(repr(p2), "Pa")}),
+            ("HydraulicPressureSourceC", "S3", {"p#Value": v(repr(pilot), "Pa")}),
+        ]
+        path = tmp_path / "pcv.hmf"
+        path.write_text(_hmf(components, [("CV.P1", "S1.P1"), ("CV.P2", "S2.P1"), ("CV.P_PILOT", "S3.P1")]),
+                        encoding="utf-8")
+        imp = import_hopsan(path)
+        assert imp.system["CV"].values["p_crack"] == pytest.approx(1e6 - 3.5 * 101325.0)
+        return float(imp.system.simulate(t_eval=[0.0, 0.1])["CV.Q"][-1])
+
+    # p1 - p2 + 3.5 p_pilot (absolute) against 1 MPa
+    assert flow(2e6, 1e6, 1e5) == pytest.approx(5e-7 * np.sqrt(1e6), rel=1e-6)  # 1.35 MPa: open forwards
+    assert flow(1.2e6, 1e6, 1e5) == 0.0  # 0.55 MPa: closed
+    assert flow(1e6, 2e6, 1e5) == 0.0  # reverse, no pilot: held
+    assert flow(1e6, 2e6, 6e5) == pytest.approx(-5e-7 * np.sqrt(1e6), rel=1e-6)  # 1.1 MPa with the pilot: released

@@ -10,7 +10,7 @@ valves), :mod:`.two_stage` (the first-principles two-stage servovalve of
 """
 
 from hydroservo.components.valves.catalogue import CatalogueServovalve
-from hydroservo.components.valves.check import CheckValve
+from hydroservo.components.valves.check import CheckValve, PilotCheckValve
 from hydroservo.components.valves.directional import ThreeWayValve, TwoWayValve
 from hydroservo.components.valves.four_way import FourWayValve
 from hydroservo.components.valves.orifice import LaminarOrifice, Orifice
@@ -34,6 +34,7 @@ __all__ = [
     "Orifice",
     "LaminarOrifice",
     "CheckValve",
+    "PilotCheckValve",
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",

@@ -1,4 +1,4 @@
-"""Check valves: flow from A to B once the pressure difference passes the cracking pressure."""
+"""Check valves: flow from A to B once the pressure difference (or a pilot) passes the cracking pressure."""
 
 from __future__ import annotations
 
@@ -7,12 +7,12 @@ from typing import Any
 
 import numpy as np
 
-from hydroservo.components.base import Component, Option, Output, Param, register
+from hydroservo.components.base import Component, Hydraulic, Option, Output, Param, Port, register
 from hydroservo.components.valves.ports import FLUID_PARAMETERS, TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
 from hydroservo.laws.orifice import DISCHARGE_COEFFICIENT, orifice_flow, transition_pressure
 from hydroservo.laws.pressure_valve import opening_fraction, seat_opening
 
-__all__ = ["CheckValve"]
+__all__ = ["CheckValve", "PilotCheckValve"]
 
 
 @register
@@ -54,14 +54,61 @@ class CheckValve(Component):
     }
     HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
 
+    def opening_pressure(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        """The pressure that opens the valve against ``p_crack``: the drop A to B."""
+        return u["pA"] - u["pB"]
+
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         dp = u["pA"] - u["pB"]
         if self.option("opening") == "seat":
-            s = seat_opening(dp, p["p_crack"])
+            s = seat_opening(self.opening_pressure(u, p), p["p_crack"])
         else:
-            s = opening_fraction(dp, p["p_crack"], p["dp_open"])
+            s = opening_fraction(self.opening_pressure(u, p), p["p_crack"], p["dp_open"])
         p_tr = transition_pressure(p["d"], p["rho"], p["nu"], p["lambda_crit"])
         area = s * np.pi * p["d"] ** 2 / 4.0
         return {"Q": orifice_flow(area, dp, p["rho"], p["Cd"], p_tr) + p["G_leak"] * dp, "s": s}
+
+
+@register
+class PilotCheckValve(CheckValve):
+    r"""Pilot-operated check valve: a :class:`CheckValve` that a pilot pressure at X also opens, then both ways.
+
+    The poppet opens once :math:`p_A - p_B + r_p\,p_X` passes ``p_crack``
+    (the pilot piston, ``r_p`` times the seat's area, pushing it off its seat):
+    oil flows freely from A to B, and from B to A while the pilot holds it
+    open (the valve that holds a load at B until the pilot releases it). The
+    pilot takes no flow; the flow law is :class:`CheckValve`'s, signed with
+    the drop. ``p_crack`` may be negative: a valve held open at rest until B
+    exceeds A by :math:`-p_{crack}`. With option ``opening = "seat"`` this is
+    Hopsan's HydraulicPilotControlledCheckValve ([Hopsan2026]
+    Hydraulic/Restrictors/HydraulicPilotControlledCheckValve.hpp), whose
+    condition :math:`p_1 + \varphi p_{pilot} - p_2 > p_f` reads absolute
+    pressures: in gauge pressures its cracking pressure is
+    :math:`p_f - \varphi\,p_{atm}`.
+    """
+
+    PARAMETERS = {
+        **CheckValve.PARAMETERS,
+        "p_crack": Param(1e5, "Pa", "cracking pressure (A over B plus r_p times the pilot)"),
+        "r_p": Param(3.5, "", "pilot ratio (pilot piston area over seat area)", min=0.0),
+    }
+    INPUTS = {**TWO_PORT_PRESSURES, "pX": Port("Pa", "pilot pressure", default=0.0)}
+    OUTPUTS = {**CheckValve.OUTPUTS, "QX": Output("m^3/s", "pilot flow (none)")}
+    HYDRAULIC = {**TWO_PORT_HYDRAULIC, "X": Hydraulic("pX", "QX", "pilot port", into=True)}
+
+    def opening_pressure(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        """The drop A to B plus the pilot's push, ``r_p`` times its pressure."""
+        return u["pA"] - u["pB"] + p["r_p"] * u["pX"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {**super().output_equations(t, x, u, p), "QX": 0.0}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        """Cracking: where the seat opens, the flow jumps (the drop is not zero there)."""
+        return {"cracking": (self.opening_pressure(u, p) - p["p_crack"], 1e5)}
