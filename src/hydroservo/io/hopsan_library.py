@@ -808,38 +808,61 @@ def _turbulent_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"}, inputs={"A": f"{n}.A_in"} if driven else {})
 
 
+#: Hopsan's check valves' coefficient K_s = C_d A √(2/ρ) as a bore at these C_d and ρ (only their product with A
+#: matters), turbulent down to some 50 Pa (lambda_crit 10), as Hopsan's turbulent law without regularisation
+_CHECK_CD, _CHECK_RHO = 0.67, 870.0
+
+
+def _check_bore(k_s: float) -> dict[str, Any]:
+    area = abs(k_s) / (_CHECK_CD * math.sqrt(2.0 / _CHECK_RHO))
+    return {"d": math.sqrt(4.0 * area / math.pi), "Cd": _CHECK_CD, "rho": _CHECK_RHO, "lambda_crit": 10.0}
+
+
 def _check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValve.hpp: q = K_s √(p_1 - p_2) while p_1 > p_2, none
-    otherwise: a CheckValve with option opening = "seat" at p_crack 0 (no spring), its bore from K_s = C_d A √(2/ρ)
-    (C_d 0.67, ρ 870 kg/m³: only their product with A matters); turbulent down to some 50 Pa (lambda_crit 10)."""
+    otherwise: a CheckValve with option opening = "seat" at p_crack 0 (no spring), its bore from K_s
+    (:func:`_check_bore`). HydraulicCheckValvePreLoaded.hpp: the same, open while p_1 > p_2 + F_s (p_crack = F_s,
+    a drop)."""
     from hydroservo.components import CheckValve
 
-    cd, rho = 0.67, 870.0
-    area = abs(par("K_s", 5e-7)) / (cd * math.sqrt(2.0 / rho))
-    comp = CheckValve(
-        n, opening="seat", p_crack=0.0, d=math.sqrt(4.0 * area / math.pi), Cd=cd, rho=rho, lambda_crit=10.0
-    )
+    preload = par("F_s", 0.0) if hc.typename == "HydraulicCheckValvePreLoaded" else 0.0
+    if preload < 0.0:
+        par.problems.append(f"{par.where}: pre-load F_s = {preload:g} Pa; expected 0 or more")
+        return Mapped()
+    comp = CheckValve(n, opening="seat", p_crack=preload, **_check_bore(par("K_s", 5e-7)))
     # Hopsan's output x (1 open, 0 closed, for its animation) is the CheckValve's s: not aliased
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _check_valve_with_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValveWithOrifice.hpp: q = K_s √(p_1 - p_2) forwards and
+    K_r √ backwards (turbulent both ways): an Orifice of the smaller coefficient beside a seat CheckValve of the
+    difference, facing the way of the larger (``{n}_orifice`` and ``{n}``)."""
+    from hydroservo.components import CheckValve, Orifice
+
+    k_s, k_r = abs(par("K_s", 5e-7)), abs(par("K_r", 5e-9))
+    forward = k_s >= k_r
+    check = CheckValve(n, opening="seat", p_crack=0.0, **_check_bore(abs(k_s - k_r)))
+    bore = _check_bore(min(k_s, k_r))
+    orifice = Orifice(f"{n}_orifice", d=bore["d"], Cd=_CHECK_CD, rho=_CHECK_RHO, lambda_crit=10.0)
+    a, b = ("A", "B") if forward else ("B", "A")
+    return Mapped([check, orifice], power={"P1": f"{n}.{a}", "P2": f"{n}.{b}"},
+                  internal=[(f"{n}.{a}", f"{n}_orifice.A"), (f"{n}.{b}", f"{n}_orifice.B")])
 
 
 def _pilot_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Restrictors/HydraulicPilotControlledCheckValve.hpp: open while p_1 + φ p_pilot - p_2
     > p_f, then q = K_s √(p_1 - p_2) both ways, the pilot taking no flow: a PilotCheckValve with option opening =
-    "seat", r_p = φ, its bore from K_s as the check valve's. Hopsan's condition reads absolute pressures: in
-    hydroservo's gauge pressures the cracking pressure is p_f - φ p_atm."""
+    "seat", r_p = φ, its bore from K_s as the check valve's. HydraulicPilotClosableCheckValve.hpp: open while
+    p_1 > p_2 + p_pilot, r_p = -1 and p_f = 0. Hopsan's conditions read absolute pressures: in hydroservo's gauge
+    pressures the cracking pressure is p_f - r_p p_atm (the atmosphere once on each side of the drop cancels)."""
     from hydroservo.components import PilotCheckValve
 
-    cd, rho = 0.67, 870.0
-    phi = par("phi", 3.5)
-    if phi < 0.0:
-        par.problems.append(f"{par.where}: pilot ratio phi = {phi:g}; expected 0 or more")
-        return Mapped()
-    area = abs(par("K_s", 5e-7)) / (cd * math.sqrt(2.0 / rho))
-    comp = PilotCheckValve(
-        n, opening="seat", p_crack=par("p_f", 1e5) - phi * 101325.0, r_p=phi,
-        d=math.sqrt(4.0 * area / math.pi), Cd=cd, rho=rho, lambda_crit=10.0,
-    )
+    if hc.typename == "HydraulicPilotClosableCheckValve":
+        phi, p_f = -1.0, 0.0
+    else:
+        phi, p_f = par("phi", 3.5), par("p_f", 1e5)
+    comp = PilotCheckValve(n, opening="seat", p_crack=p_f - phi * 101325.0, r_p=phi, **_check_bore(par("K_s", 5e-7)))
     # Hopsan's output x (1 open, 0 closed) is the valve's s: not aliased
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_PILOT": f"{n}.X"})
 
@@ -1436,6 +1459,9 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicTurbulentOrifice": _turbulent_orifice,
     "HydraulicCheckValve": _check_valve,
     "HydraulicPilotControlledCheckValve": _pilot_check_valve,
+    "HydraulicPilotClosableCheckValve": _pilot_check_valve,
+    "HydraulicCheckValvePreLoaded": _check_valve,
+    "HydraulicCheckValveWithOrifice": _check_valve_with_orifice,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,

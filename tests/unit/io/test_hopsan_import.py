@@ -1079,3 +1079,39 @@ def test_hopsans_pilot_controlled_check_valve_opens_on_its_absolute_pilot_and_th
     assert flow(1.2e6, 1e6, 1e5) == 0.0  # 0.55 MPa: closed
     assert flow(1e6, 2e6, 1e5) == 0.0  # reverse, no pilot: held
     assert flow(1e6, 2e6, 6e5) == pytest.approx(-5e-7 * np.sqrt(1e6), rel=1e-6)  # 1.1 MPa with the pilot: released
+
+
+def test_hopsans_preloaded_orificed_and_pilot_closable_check_valves(tmp_path: Path) -> None:
+    """[Hopsan2026] Restrictors/HydraulicCheckValvePreLoaded.hpp (open while p_1 > p_2 + F_s),
+    HydraulicCheckValveWithOrifice.hpp (K_s √Δp forwards, K_r √Δp backwards) and
+    HydraulicPilotClosableCheckValve.hpp (open while p_1 > p_2 + p_pilot, absolute pressures), each between fixed
+    pressures, their flows from the laws by hand."""
+    v = _value
+
+    def flows(p1: float, p2: float, pilot: float) -> dict[str, float]:
+        components = [
+            ("HydraulicCheckValvePreLoaded", "PL", {"F_s#Value": v("5e5", "Pa"), "K_s#Value": v("4e-7")}),
+            ("HydraulicCheckValveWithOrifice", "WO", {"K_s#Value": v("4e-7"), "K_r#Value": v("1e-7")}),
+            ("HydraulicPilotClosableCheckValve", "PC", {"K_s": v("4e-7")}),
+            ("HydraulicPressureSourceC", "S1", {"p#Value": v(repr(p1), "Pa")}),
+            ("HydraulicPressureSourceC", "S2", {"p#Value": v(repr(p2), "Pa")}),
+            ("HydraulicPressureSourceC", "S3", {"p#Value": v(repr(pilot), "Pa")}),
+        ]
+        connections = [("PL.P1", "S1.P1"), ("PL.P2", "S2.P1"), ("WO.P1", "S1.P1"), ("WO.P2", "S2.P1"),
+                       ("PC.P1", "S1.P1"), ("PC.P2", "S2.P1"), ("PC.P_PILOT", "S3.P1")]
+        path = tmp_path / "checks.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        r = import_hopsan(path).system.simulate(t_eval=[0.0, 0.1])
+        return {k: float(r[f"{k}.Q"][-1]) for k in ("PL", "PC")} | {
+            "WO": float(r["WO.Q"][-1] + r["WO_orifice.Q"][-1])}
+
+    f = flows(2e6, 1e6, 5e5)  # forwards 1 MPa: over the pre-load; the pilot (0.5 MPa) below the drop
+    assert f["PL"] == pytest.approx(4e-7 * 1e3, rel=1e-6)
+    assert f["WO"] == pytest.approx(4e-7 * 1e3, rel=1e-6)
+    assert f["PC"] == pytest.approx(4e-7 * 1e3, rel=1e-6)
+    f = flows(1.3e6, 1e6, 5e5)  # forwards 0.3 MPa: under the pre-load, and under the pilot
+    assert f["PL"] == 0.0 and f["PC"] == 0.0
+    assert f["WO"] == pytest.approx(4e-7 * np.sqrt(3e5), rel=1e-6)
+    f = flows(1e6, 2e6, 1e5)  # backwards 1 MPa: only the orifice of the orificed valve
+    assert f["PL"] == 0.0 and f["PC"] == 0.0
+    assert f["WO"] == pytest.approx(-1e-7 * 1e3, rel=1e-6)

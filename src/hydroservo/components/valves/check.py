@@ -70,6 +70,19 @@ class CheckValve(Component):
         area = s * np.pi * p["d"] ** 2 / 4.0
         return {"Q": orifice_flow(area, dp, p["rho"], p["Cd"], p_tr) + p["G_leak"] * dp, "s": s}
 
+    def jumps(self) -> bool:
+        """Whether the flow jumps where the valve cracks: a seat that opens fully at a cracking pressure not 0
+        (at 0 the flow vanishes as the square root of the drop there)."""
+        return self.option("opening") == "seat" and float(self.values["p_crack"]) != 0.0
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        """Cracking, where the flow of a seat jumps (:meth:`jumps`)."""
+        if not self.jumps():
+            return {}
+        return {"cracking": (self.opening_pressure(u, p) - p["p_crack"], 1e5)}
+
 
 @register
 class PilotCheckValve(CheckValve):
@@ -81,7 +94,10 @@ class PilotCheckValve(CheckValve):
     open (the valve that holds a load at B until the pilot releases it). The
     pilot takes no flow; the flow law is :class:`CheckValve`'s, signed with
     the drop. ``p_crack`` may be negative: a valve held open at rest until B
-    exceeds A by :math:`-p_{crack}`. With option ``opening = "seat"`` this is
+    exceeds A by :math:`-p_{crack}`. A negative ``r_p`` is a pilot that holds
+    the seat closed (Hopsan's HydraulicPilotClosableCheckValve, open while
+    :math:`p_1 > p_2 + p_{pilot}` in absolute pressures: ``r_p`` = -1,
+    ``p_crack`` = :math:`p_{atm}` in gauge). With option ``opening = "seat"`` this is
     Hopsan's HydraulicPilotControlledCheckValve ([Hopsan2026]
     Hydraulic/Restrictors/HydraulicPilotControlledCheckValve.hpp), whose
     condition :math:`p_1 + \varphi p_{pilot} - p_2 > p_f` reads absolute
@@ -92,7 +108,7 @@ class PilotCheckValve(CheckValve):
     PARAMETERS = {
         **CheckValve.PARAMETERS,
         "p_crack": Param(1e5, "Pa", "cracking pressure (A over B plus r_p times the pilot)"),
-        "r_p": Param(3.5, "", "pilot ratio (pilot piston area over seat area)", min=0.0),
+        "r_p": Param(3.5, "", "pilot ratio (pilot piston area over seat area; negative: a pilot that closes it)"),
     }
     INPUTS = {**TWO_PORT_PRESSURES, "pX": Port("Pa", "pilot pressure", default=0.0)}
     OUTPUTS = {**CheckValve.OUTPUTS, "QX": Output("m^3/s", "pilot flow (none)")}
@@ -107,8 +123,6 @@ class PilotCheckValve(CheckValve):
     ) -> dict[str, Any]:
         return {**super().output_equations(t, x, u, p), "QX": 0.0}
 
-    def switch_equations(
-        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
-    ) -> dict[str, tuple[Any, float]]:
-        """Cracking: where the seat opens, the flow jumps (the drop is not zero there)."""
-        return {"cracking": (self.opening_pressure(u, p) - p["p_crack"], 1e5)}
+    def jumps(self) -> bool:
+        """A seat's flow jumps where a pilot opens it, whatever the cracking pressure (the drop is not 0 there)."""
+        return self.option("opening") == "seat"
