@@ -106,6 +106,8 @@ class _Params:
         self.t0 = 0.0
         #: the component's ports Hopsan connects to something (its signal inputs among them are driven)
         self.driven = driven
+        #: the model file's folder: the files a component names (a lookup table's CSV) are read from it
+        self.folder: Path | None = None
 
     def __call__(self, name: str, default: float) -> float:
         for key in (f"{name}#Value", name):
@@ -116,6 +118,11 @@ class _Params:
                     return default
                 return par.value
         return default
+
+    def text(self, name: str, default: str = "") -> str:
+        """A text parameter (a file name, a separator) as the file gives it."""
+        par = self.hc.parameters.get(name)
+        return default if par is None else par.text
 
     def time(self, name: str, default: float) -> float:
         """A time parameter on hydroservo's clock, which starts at 0 where Hopsan's starts at its start time."""
@@ -1356,6 +1363,43 @@ def _integrator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([Integrator(n, y0=par("out", 0.0))], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
 
 
+def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal1DLookupTable (Signal/Non-Linearities/Signal1DLookupTable.hpp): a Table with ``index = "input"``,
+    its breakpoints and values columns ``inid`` and ``outid`` of the CSV file ``filename`` (or of the text
+    ``text``), read at import as Hopsan reads them (``csvsep``, ``numlineskip``, ``comment``). The file is
+    read only inside the model file's folder: a file named by an absolute path or outside it is refused (a
+    model file from someone else reads nothing else of the user's disk); ``reload`` is moot (the table is
+    read once, at import)."""
+    from hydroservo.components import Table
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_lookup_table, read_lookup_table
+
+    inid, outid, skip = int(par("inid", 0)), int(par("outid", 1)), int(par("numlineskip", 0))
+    sep, comment = par.text("csvsep", ","), par.text("comment", "")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            x, y = parse_lookup_table(par.text("text"), inid, outid, sep, skip, comment, what=f"{par.where}: text")
+        else:
+            if not filename:
+                raise ModelFileError(f"{par.where}: no table: neither a file (filename) nor a text (text) given")
+            folder = (par.folder or Path(".")).resolve()
+            file = (folder / filename).resolve()
+            if Path(filename).is_absolute() or not file.is_relative_to(folder):
+                raise ModelFileError(
+                    f"{par.where}: filename = {filename!r}: outside the model file's folder {str(folder)!r}; hydroservo "
+                    "reads a table only beside the model or below its folder (copy it there and name it relative "
+                    "to the model)"
+                )
+            x, y = read_lookup_table(file, inid, outid, sep, skip, comment, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table(n, times=x, values=y, index="input")
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                  note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+
+
 def _sink(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped(note="dropped: a plot window; what it shows is logged at its sources")
 
@@ -1459,6 +1503,7 @@ LIBRARY: dict[str, Builder] = {
     )},
     "SignalRateLimiter": _rate_limiter,
     "SignalDeadZone": _dead_zone,
+    "Signal1DLookupTable": _lookup_table,
 }
 
 
@@ -1543,6 +1588,7 @@ def import_hopsan(path: str | Path) -> HopsanImport:
             params = _Params(hc, where, problems, starts, connected.get(hc.full_name, frozenset()),
                              fan_in.get(hc.full_name))
             params.t0 = model.start
+            params.folder = Path(source).parent
             m = LIBRARY[hc.typename](hc, name, params)
         except Exception as exc:  # a value out of a component's range: named with the Hopsan component
             problems.append(f"{where}: {exc}")

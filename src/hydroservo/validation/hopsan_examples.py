@@ -40,6 +40,9 @@ class Spec:
     timestep: float | None = None
     #: kinds of trace known to differ (kind -> why): their rows expect "NOT reproduced"
     known: tuple[tuple[str, str], ...] = ()
+    #: components renamed (old, new) in the copy Hopsan runs, and its variables named back: today's Hopsan
+    #: reserves names older files use (``Time``), renames such a component on loading and fails to connect it
+    renamed: tuple[tuple[str, str], ...] = ()
 
 
 MODELS: dict[str, Spec] = {
@@ -213,6 +216,12 @@ MODELS: dict[str, Spec] = {
              "of range (the low side 0.41 %, the pump's flows 0.49 % at that sample). Every other sample of every "
              "trace is within 0.0012 % (docs/validation.md)"),
         ),
+    ),
+    "1d-lookup-table": Spec(
+        "Example Models/1D_Lookup_Table.hmf",
+        "Hopsan's time through a 1D lookup table read from its CSV file (the square of 0 to 10, held outside) "
+        "and through a square block",
+        renamed=(("Time", "Time_"),),
     ),
 }
 

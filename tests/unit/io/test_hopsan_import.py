@@ -737,6 +737,61 @@ def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path:
     np.testing.assert_allclose(r["RL.out.Value"], -2.0 + 0.5 * t, atol=1e-5)
 
 
+def _lookup_model(folder: Path, **table: tuple[str, str]) -> Path:
+    """A ramp from -1 to 5 over 6 s through a Signal1DLookupTable with the parameters ``table``."""
+    v = _value
+    ramp = {"y_0#Value": v("-1"), "y_A#Value": v("6"), "t_start#Value": v("0"), "t_end#Value": v("6")}
+    components = [("SignalRamp", "Ramp", ramp), ("Signal1DLookupTable", "LUT", table)]
+    text = _hmf(components, [("Ramp.out", "LUT.in")])
+    for name in ("filename", "csvsep", "comment", "text"):  # Hopsan's text parameters
+        text = text.replace(f'type="double" name="{name}"', f'type="string" name="{name}"')
+    path = folder / "lookup.hmf"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_hopsans_lookup_table_reads_its_csv_beside_the_model_and_interpolates_its_input(tmp_path: Path) -> None:
+    """Signal1DLookupTable: the CSV named relative to the model, read with its separator, lines to skip,
+    comment character and columns (inid, outid); linear between the breakpoints, held outside them, as
+    Hopsan's LookupTable1D."""
+    (tmp_path / "tables").mkdir()
+    (tmp_path / "tables" / "f.csv").write_text("made by hand\n# y;x\n9;3\n1;0\n3;1\n", encoding="utf-8")
+    v = _value
+    path = _lookup_model(tmp_path, filename=v("tables/f.csv"), csvsep=v(";"), numlineskip=v("1"), comment=v("#"),
+                         inid=v("1"), outid=v("0"))
+    imp = import_hopsan(path)
+    table = imp.system["LUT"]
+    assert table.option("index") == "input" and "3 rows of 'tables/f.csv'" in dict(
+        (h, b) for h, _, b in imp.mapping)["LUT"]
+    t = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0])
+    r = imp.system.simulate(t_eval=t)
+    u = t - 1.0
+    np.testing.assert_allclose(r["LUT.out.Value"], np.interp(u, [0.0, 1.0, 3.0], [1.0, 3.0, 9.0]), atol=1e-12)
+    assert r["LUT.out.Value"][0] == 1.0 and r["LUT.out.Value"][-1] == 9.0  # held outside, as Hopsan's
+    table = import_hopsan(_lookup_model(tmp_path, text=v("0,2&#xa;1,4&#xa;"))).system["LUT"]  # the text instead
+    np.testing.assert_array_equal(table.times, [0.0, 1.0])
+    np.testing.assert_array_equal(table.table_values, [2.0, 4.0])
+
+
+def test_hopsans_lookup_table_missing_malformed_or_outside_the_model_folder_is_refused(tmp_path: Path) -> None:
+    v = _value
+    with pytest.raises(ModelFileError, match=r"LUT \(Signal1DLookupTable\): filename: table file .*none\.csv.*cannot read"):
+        import_hopsan(_lookup_model(tmp_path, filename=v("none.csv")))
+    (tmp_path / "bad.csv").write_text("0,0\n1,one\n", encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"LUT \(Signal1DLookupTable\).*line 2, column 1: 'one' is no finite number"):
+        import_hopsan(_lookup_model(tmp_path, filename=v("bad.csv")))
+    (tmp_path / "ok.csv").write_text("0,0\n1,1\n", encoding="utf-8")
+    inner = tmp_path / "model"
+    inner.mkdir()
+    for name in ("../ok.csv", str(tmp_path / "ok.csv")):
+        with pytest.raises(ModelFileError, match="outside the model file's folder"):
+            import_hopsan(_lookup_model(inner, filename=v(name)))
+    with pytest.raises(ModelFileError, match="neither a file"):
+        import_hopsan(_lookup_model(tmp_path))
+    with pytest.raises(ModelFileError, match="out of|column 2"):  # outid beyond the file's columns
+        import_hopsan(_lookup_model(tmp_path, filename=v("ok.csv"), outid=v("2")))
+
+
 def test_rate_limits_of_the_wrong_sign_and_static_friction_below_the_kinetic_are_refused(tmp_path: Path) -> None:
     v = _value
     components = [
