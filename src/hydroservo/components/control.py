@@ -489,10 +489,30 @@ class Selector(Component):
 class PID(Component):
     r"""PID controller on the error ``e`` with filtered derivative and clamped output.
 
-    :math:`y = \operatorname{sat}(K_p e + K_i \int e\,dt + K_d \dot e_f)`, where
-    :math:`e_f` is ``e`` through a first-order filter of time constant ``T_f``.
-    The integrator stops integrating while the output is saturated and the
-    error would drive it further (conditional integration anti-windup).
+    :math:`y = \operatorname{sat}(v)`, :math:`v = K_p e + K_i I + K_d \dot e_f`, where
+    :math:`e_f` is ``e`` through a first-order filter of time constant ``T_f``,
+    :math:`\dot I = e` and :math:`\operatorname{sat}` limits to [``lower``, ``upper``].
+    With option ``derivative = "input"`` the derivative is the input ``de`` instead,
+    :math:`v = K_p e + K_i I + K_d\,de` (no filter: the derivative of ``e``, or of what it
+    is made of, given by the model).
+
+    The integrator's anti-windup is the option ``anti_windup``:
+
+    * ``conditional`` (default): the integrator stops while the output is saturated and the
+      error would drive it further;
+    * ``clamping``: the integrator stops whenever the output is saturated,
+      :math:`\dot I = e` only while ``lower`` < v < ``upper``: Hopsan's SignalPID and
+      SignalPIlead ([Hopsan2026] Signal/Control/SignalPID.hpp, SignalPIlead.hpp, whose
+      integrator's input ``Ierr`` is the error times ``dxLimit`` of the limited output: 1
+      inside the limits, 1e-9 at them, a numerical remnant of 0);
+    * ``tracking`` (back-calculation): :math:`K_i \dot I = K_i e + (\operatorname{sat_t}(v) - v)/T_t`,
+      :math:`\operatorname{sat_t}` limiting to [``track_lower``, ``track_upper``], so that the
+      integral part is pulled back with the time constant ``T_t`` while :math:`v` is outside
+      them (the output is still limited to [``lower``, ``upper``]): Hopsan's SignalPID2
+      ([Hopsan2026] Signal/Control/SignalPID2.hpp, whose explicit step
+      :math:`I \mathrel{+}= T_s/T_t (U_{max} - v)` is that law's Euler step). Needs ``Ki`` > 0.
+
+    The switches of the anti-windup are switch events.
     """
 
     PARAMETERS = {
@@ -502,6 +522,9 @@ class PID(Component):
         "T_f": Param(1e-3, "s", "derivative filter time constant", min=0.0, min_inclusive=False),
         "lower": Param(-1e30, SIGNAL, "output lower limit"),
         "upper": Param(1e30, SIGNAL, "output upper limit"),
+        "T_t": Param(1.0, "s", "tracking time constant (anti_windup = tracking)", min=0.0, min_inclusive=False),
+        "track_lower": Param(-1e30, SIGNAL, "lower limit the integral tracks (anti_windup = tracking)"),
+        "track_upper": Param(1e30, SIGNAL, "upper limit the integral tracks (anti_windup = tracking)"),
     }
     STATES = {
         "I": State(SIGNAL + "*s", "integral of the error", nominal=1.0),
@@ -509,9 +532,39 @@ class PID(Component):
     }
     INPUTS = {"e": Port(SIGNAL, "error")}
     OUTPUTS = SIGNAL_OUTPUT
+    OPTIONS = {
+        "anti_windup": Option(
+            "conditional", ("conditional", "clamping", "tracking"), "how the integrator stops winding up at the limits"
+        ),
+        "derivative": Option("filtered", ("filtered", "input"), "the derivative: e through the filter T_f, or input de"),
+    }
+
+    def options_changed(self) -> None:
+        """With the derivative an input, the input ``de`` and no filter state."""
+        cls = type(self)
+        if self.option("derivative") == "input":
+            self.STATES = {"I": cls.STATES["I"]}  # type: ignore[misc]
+            self.INPUTS = {**cls.INPUTS, "de": Port(SIGNAL + "/s", "derivative of the error (derivative = input)")}  # type: ignore[misc]
+        else:
+            self.STATES, self.INPUTS = dict(cls.STATES), dict(cls.INPUTS)  # type: ignore[misc]
+        # the block's unit, as _bind_signal_unit gave the declarations
+        self.STATES = {k: replace(v, unit=self._unit(v.unit)) for k, v in self.STATES.items()}  # type: ignore[misc]
+        self.INPUTS = {k: replace(v, unit=self._unit(v.unit)) for k, v in self.INPUTS.items()}  # type: ignore[misc]
+
+    def _unit(self, unit: str) -> str:
+        y = self.OUTPUTS["y"].unit
+        if SIGNAL not in unit:
+            return unit
+        if y == "":
+            return unit.replace(SIGNAL + "/", "1/").replace(SIGNAL + "*", "").replace(SIGNAL, "")
+        return unit.replace(SIGNAL, y if y.isidentifier() else f"({y})")
+
+    def check(self) -> None:
+        if self.option("anti_windup") == "tracking" and self.values["Ki"] <= 0.0:
+            raise ParameterError(f"{self.name}.Ki = {self.values['Ki']:g} 1/s: anti_windup = tracking needs Ki > 0")
 
     def _raw(self, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
-        deriv = (u["e"] - x["e_f"]) / p["T_f"]
+        deriv = u["de"] if self.option("derivative") == "input" else (u["e"] - x["e_f"]) / p["T_f"]
         return p["Kp"] * u["e"] + p["Ki"] * x["I"] + p["Kd"] * deriv
 
     def output_equations(
@@ -524,8 +577,27 @@ class PID(Component):
     ) -> dict[str, Any]:
         raw = self._raw(x, u, p)
         e = u["e"]
-        windup = ((raw > p["upper"]) * (e * p["Ki"] > 0)) + ((raw < p["lower"]) * (e * p["Ki"] < 0))
-        return {"I": bk.if_else(windup > 0, 0.0, e), "e_f": (e - x["e_f"]) / p["T_f"]}
+        mode = self.option("anti_windup")
+        if mode == "tracking":
+            rate = e + (bk.fmin(bk.fmax(raw, p["track_lower"]), p["track_upper"]) - raw) / (p["Ki"] * p["T_t"])
+        elif mode == "clamping":
+            rate = bk.if_else((raw > p["lower"]) * (raw < p["upper"]) > 0, e, 0.0)
+        else:
+            windup = ((raw > p["upper"]) * (e * p["Ki"] > 0)) + ((raw < p["lower"]) * (e * p["Ki"] < 0))
+            rate = bk.if_else(windup > 0, 0.0, e)
+        rates = {"I": rate}
+        if self.option("derivative") != "input":
+            rates["e_f"] = (e - x["e_f"]) / p["T_f"]
+        return rates
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        if self.option("anti_windup") == "conditional":
+            return {}
+        raw = self._raw(x, u, p)
+        lo, hi = ("track_lower", "track_upper") if self.option("anti_windup") == "tracking" else ("lower", "upper")
+        return {"lower": (raw - p[lo], 1.0), "upper": (raw - p[hi], 1.0)}
 
 
 @register

@@ -1253,9 +1253,16 @@ def _transfer(n: str, par: _Params, num: list[float], den: list[float], limited:
         n, order=str(order), a0=num[0], a1=num[1], a2=num[2], b0=den[0], b1=den[1], b2=den[2], y0=y0 - d * u0
     )
     initial = {}
+    c1 = num[1] / den[2] - d * den[1] / den[2] if order == 2 else 0.0
     if order == 2:  # the strictly proper part at rest with the input at u0: its rate x2 + c1 u0 is 0
-        initial[f"{n}.x2"] = -(num[1] / den[2] - d * den[1] / den[2]) * u0
-    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"}, initial=initial)
+        initial[f"{n}.x2"] = -c1 * u0
+    # Hopsan's filter starts from the value its input has when the model is initialised (FirstOrderTransferFunction
+    # ::initialize's u0 is *mpIn): where a signal drives the input, that signal's start value, not the file's 'in'
+    starts: dict[str, tuple[str, Callable[[float], float]]] = {f"{n}.y0": (f"{n}.u", lambda u: y0 - d * u)}
+    if order == 2:
+        starts[f"{n}.x2"] = (f"{n}.u", lambda u: -c1 * u)
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"}, initial=initial,
+                  start_from_input=starts)
 
 
 def _first_order_filter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1400,6 +1407,116 @@ def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                   note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
 
 
+def _unit_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalUnitDelay (Signal/Non-Linearities/SignalUnitDelay.hpp): its output is its input one step late,
+    which vanishes as the step does: in the limit it passes its input on (a Gain of 1). In Hopsan it breaks
+    algebraic loops; a loop it closed with no state in it is refused after the import (:func:`import_hopsan`)."""
+    from hydroservo.components import Gain
+
+    return Mapped([Gain(n, K=1.0)], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                  note=f"Gain {n} of 1 (a delay of one step, which vanishes with the step)")
+
+
+def _integral_start(n: str, par: _Params, ki: float) -> dict[str, float]:
+    """The PID's integral state from Hopsan's start value of ``uI`` (the integral part, Ki I)."""
+    u_i = par("uI", 0.0)
+    if u_i != 0.0 and ki == 0.0:
+        par.problems.append(f"{par.where}: a start value uI = {u_i:g} with no integral gain is not supported")
+    return {f"{n}.I": u_i / ki} if u_i != 0.0 and ki != 0.0 else {}
+
+
+def _pid(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPID (Signal/Control/SignalPID.hpp): u = limit(uI + Kp (yref - y) - Kd dy, umin, umax) with
+    d(uI)/dt = KI Ierr, Ierr the error while the output is inside its limits (Hopsan's dxLimit, 1e-9 at them):
+    a ``Sum`` (yref - y) into a PID with ``derivative = "input"`` (de = dy, Kd negated) and
+    ``anti_windup = "clamping"``. Hopsan's Newton iteration and trapezoidal step of that law vanish with the
+    step. Kp, KI, Kd, umin and umax are constant (a signal driving them is refused)."""
+    from hydroservo.components import PID, Sum
+
+    ki = par("KI", 1.0)
+    umin, umax = par("umin", -1.0), par("umax", 1.0)
+    if umin >= umax:
+        par.problems.append(f"{par.where}: umin = {umin:g}, umax = {umax:g}: expected umin < umax")
+        return Mapped()
+    error = Sum(f"{n}_error", gain1=1.0, gain2=-1.0)
+    pid = PID(n, Kp=par("Kp", 1.0), Ki=ki, Kd=-par("Kd", 1.0), lower=umin, upper=umax, derivative="input",
+              anti_windup="clamping")
+    return Mapped(
+        [error, pid], inputs={"yref": f"{error.name}.u1", "y": f"{error.name}.u2", "dy": f"{n}.de"},
+        outputs={"u": f"{n}.y"}, values={"uI": Var(ki, f"{n}.I")}, internal=[(f"{error.name}.y", f"{n}.e")],
+        initial=_integral_start(n, par, ki),
+    )
+
+
+def _pid2(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPID2 (Signal/Control/SignalPID2.hpp): v = K e + I + K Td de, I' = K/Ti e, plus (Umax - v)/Tt above
+    Umax and (Umin - v)/Tt below Umin (back-calculation; Hopsan's explicit steps of it), the output v limited to
+    [Uoutmin, Uoutmax]: a PID with ``anti_windup = "tracking"`` (Ki = K/Ti, T_t = Tt, the tracked limits Umin and
+    Umax). The derivative is the input ``de`` where it is connected (``derivative = "input"``); Hopsan's
+    derivative of ``e`` by a backward difference otherwise, which is refused for Td > 0 (an unfiltered
+    derivative). Starts with I = 0, as Hopsan's."""
+    from hydroservo.components import PID
+
+    k, ti, tt, td = par("K", 1.0), par("Ti", 1.0), par("Tt", 1.0), par("Td", 0.0)
+    lims = {name: par(name, default) for name, default in
+            (("Umin", -1e100), ("Umax", 1e100), ("Uoutmin", -1e100), ("Uoutmax", 1e100))}
+    if ti <= 0.0 or tt <= 0.0 or k == 0.0:
+        par.problems.append(f"{par.where}: K = {k:g}, Ti = {ti:g} s, Tt = {tt:g} s: expected K other than 0, Ti > 0 "
+                            "and Tt > 0")
+        return Mapped()
+    if lims["Umin"] > lims["Umax"] or lims["Uoutmin"] > lims["Uoutmax"]:
+        par.problems.append(f"{par.where}: Umin > Umax or Uoutmin > Uoutmax")
+        return Mapped()
+    by_input = "de" in par.driven
+    if td != 0.0 and not by_input:
+        par.problems.append(
+            f"{par.where}: Td = {td:g} s with 'de' unconnected: Hopsan then differentiates e unfiltered (a backward "
+            "difference), which hydroservo does not; connect the derivative to 'de'"
+        )
+        return Mapped()
+    ki = k / ti
+    if ki < 0.0:
+        par.problems.append(f"{par.where}: K = {k:g}: a negative gain with anti-windup tracking is not supported")
+        return Mapped()
+    cap = 1e300  # Hopsan's +-1e100 defaults: no limit
+    pid = PID(n, Kp=k, Ki=ki, Kd=k * td, T_t=tt, anti_windup="tracking",
+              derivative="input" if by_input else "filtered",
+              track_lower=max(lims["Umin"], -cap), track_upper=min(lims["Umax"], cap),
+              lower=max(lims["Uoutmin"], -cap), upper=min(lims["Uoutmax"], cap))
+    inputs = {"e": f"{n}.e", **({"de": f"{n}.de"} if by_input else {})}
+    return Mapped([pid], inputs=inputs, outputs={"u": f"{n}.y"})
+
+
+def _pi_lead(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPIlead (Signal/Control/SignalPIlead.hpp): a PI controller on the error of a lead-filtered
+    measurement. Hopsan's bilinear equation for ``err`` is the transfer function
+    err = yref - (1 + 2 da s/wa)/(1 + s/wa) y; u = limit(k1 err + uI, umin, umax), d(uI)/dt = k1 wa Ierr with
+    k1 = wa/kx and Ierr the error while u is inside its limits: a ``TransferFunction`` (the lead, at rest with
+    its input's start value), a ``Sum`` and a PID with ``anti_windup = "clamping"`` (Kp = k1, Ki = k1 wa). wa, kx,
+    da, umin and umax are constant (a signal driving them is refused)."""
+    from hydroservo.components import PID, Sum, TransferFunction
+
+    wa, kx, da = par("wa", 1.0), par("kx", 1.0), par("da", 1.0)
+    umin, umax = par("umin", -1.0), par("umax", 1.0)
+    if wa <= 0.0 or kx == 0.0 or da <= 0.0 or umin >= umax:
+        par.problems.append(f"{par.where}: wa = {wa:g}, kx = {kx:g}, da = {da:g}, umin = {umin:g}, umax = {umax:g}: "
+                            "expected wa > 0, kx other than 0, da > 0 and umin < umax")
+        return Mapped()
+    k1 = wa / kx
+    d = 2.0 * da  # the lead's direct part a1/b1
+    y0 = par("y", 0.0)
+    lead = TransferFunction(f"{n}_lead", order="1", a0=1.0, a1=2.0 * da / wa, b0=1.0, b1=1.0 / wa, y0=(1.0 - d) * y0)
+    error = Sum(f"{n}_err", gain1=1.0, gain2=-1.0)
+    pid = PID(n, Kp=k1, Ki=k1 * wa, lower=umin, upper=umax, anti_windup="clamping")
+    return Mapped(
+        [lead, error, pid], inputs={"yref": f"{error.name}.u1", "y": f"{lead.name}.u"},
+        outputs={"u": f"{n}.y", "err": f"{error.name}.y"}, values={"uI": Var(k1 * wa, f"{n}.I")},
+        internal=[(f"{lead.name}.y", f"{error.name}.u2"), (f"{error.name}.y", f"{n}.e")],
+        initial=_integral_start(n, par, k1 * wa),
+        start_from_input={f"{lead.name}.y0": (f"{lead.name}.u", lambda u0: (1.0 - d) * u0)},
+    )
+
+
 def _sink(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped(note="dropped: a plot window; what it shows is logged at its sources")
 
@@ -1504,6 +1621,10 @@ LIBRARY: dict[str, Builder] = {
     "SignalRateLimiter": _rate_limiter,
     "SignalDeadZone": _dead_zone,
     "Signal1DLookupTable": _lookup_table,
+    "SignalUnitDelay": _unit_delay,
+    "SignalPID": _pid,
+    "SignalPID2": _pid2,
+    "SignalPIlead": _pi_lead,
 }
 
 
@@ -1742,8 +1863,29 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     if not system.plots:  # no scope: what an engineer looks at first, not the first of Hopsan's many variables
         system.plots = system.default_panels(aliases=False)
     system.display_units = ["Pa_abs"]  # pressures shown absolute, as Hopsan shows them
+    _refuse_loops_of_unit_delays(system, source, [hc.full_name for hc in model.components if hc.typename == "SignalUnitDelay"])
     _start_from_inputs(system, {k: v for m in mapped.values() for k, v in m.start_from_input.items()})
     return HopsanImport(system, model, mapping, names, hopsan_names)
+
+
+def _refuse_loops_of_unit_delays(system: System, source: str, delays: list[str]) -> None:
+    """A Hopsan unit delay passes its input on in the limit of a vanishing step (:func:`_unit_delay`); where it
+    closed a loop with no state in it, that limit is an algebraic loop, which hydroservo does not solve: refused,
+    with the loop and the delays named."""
+    if not delays:
+        return
+    from hydroservo.system.assembly import assemble
+
+    try:
+        assemble(system)
+    except ModelError as exc:
+        if "algebraic loop" not in str(exc):
+            raise
+        raise ModelFileError(
+            f"{source}: {exc}. The model's unit delays ({', '.join(delays)}: SignalUnitDelay) pass their input on in "
+            "the limit of a vanishing step, which hydroservo's import takes; a loop one of them closes without a "
+            "state in it is then algebraic, and hydroservo does not solve algebraic loops of signals"
+        ) from None
 
 
 def _start_from_inputs(system: System, starts: dict[str, tuple[str, Callable[[float], float]]]) -> None:

@@ -202,3 +202,37 @@ def test_a_rate_limiter_ramps_at_its_limits_and_follows_a_slow_input() -> None:
     expected = np.array([0.0, 0.5, 0.9, 1.0, 1.0, 0.5, 0.0, 0.0])
     np.testing.assert_allclose(r["rl.y"], expected, atol=1e-5)
     np.testing.assert_allclose(r["follow.y"], 0.1 * np.sin(2 * np.pi * t), atol=1e-5)
+
+
+def _pid_on_unit_step(**pid: object) -> hs.Result:
+    s = hs.System("pid", t_end=3.0)
+    s.add(c.Step("r", amplitude=1.0, t_step=0.0))
+    s.add(c.Constant("d", value=0.5))
+    s.add(c.PID("p", **pid))
+    s.connect("r.y", "p.e")
+    if pid.get("derivative") == "input":
+        s.connect("d.y", "p.de")
+    return s.simulate(t_eval=[0.0, 0.25, 0.5, 1.0, 2.0, 3.0], accuracy=1e-8)
+
+
+def test_pid_tracking_anti_windup_pulls_the_integral_back_with_t_t() -> None:
+    """anti_windup = tracking (Hopsan's SignalPID2): v = 2 + I rises at Ki e = 1/s to the tracked limit 2.5
+    (t = 0.5 s), then Ki I' = 1 + (2.5 - v)/T_t, so I -> 1 as 1 - 0.5 exp(-(t - 0.5)/T_t); the output is not
+    clamped to the tracked limits, only to lower/upper (here 2.9)."""
+    r = _pid_on_unit_step(Kp=2.0, Ki=1.0, anti_windup="tracking", T_t=0.5, track_upper=2.5, upper=2.9)
+    t = r.t
+    integral = np.where(t < 0.5, t, 1.0 - 0.5 * np.exp(-(t - 0.5) / 0.5))
+    np.testing.assert_allclose(r["p.I"], integral, atol=1e-6)
+    np.testing.assert_allclose(r["p.y"], np.minimum(2.0 + integral, 2.9), atol=1e-6)
+    with pytest.raises(ParameterError, match="tracking needs Ki > 0"):
+        _pid_on_unit_step(Kp=1.0, Ki=0.0, anti_windup="tracking")
+
+
+def test_pid_clamping_stops_integrating_at_the_limit_and_takes_its_derivative_as_an_input() -> None:
+    """anti_windup = clamping (Hopsan's SignalPID): v = 2 e + I + Kd de = 2.5 + I reaches upper = 3 at t = 0.5 s
+    and the integral stops there; with derivative = input the derivative is de (no filter state)."""
+    r = _pid_on_unit_step(Kp=2.0, Ki=1.0, Kd=1.0, anti_windup="clamping", derivative="input", upper=3.0)
+    np.testing.assert_allclose(r["p.I"], np.minimum(r.t, 0.5), atol=1e-6)
+    np.testing.assert_allclose(r["p.y"], np.minimum(2.5 + r.t, 3.0), atol=1e-6)
+    assert set(c.PID("q", derivative="input").STATES) == {"I"}
+    assert set(c.PID("q").STATES) == {"I", "e_f"} and "de" not in c.PID("q").INPUTS

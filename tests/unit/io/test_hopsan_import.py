@@ -154,10 +154,10 @@ def test_imported_model_file_round_trips(servo_file: Path, tmp_path: Path) -> No
 
 
 def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> None:
-    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalUnitDelay", "Wave", {})]
+    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalTimeDelay", "Wave", {})]
     path = tmp_path / "m.hmf"
     path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
-    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalUnitDelay\)"):
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalTimeDelay\)"):
         read_hopsan(path)
 
 
@@ -183,9 +183,9 @@ def test_cli_writes_the_model_and_refuses_what_it_cannot_map(servo_file: Path, t
     data = json.loads(done.stdout)
     assert Path(data["files"]["model"]).is_file() and len(data["components"]) == len(COMPONENTS)
     bad = tmp_path / "bad.hmf"
-    bad.write_text(_hmf([*COMPONENTS, ("SignalUnitDelay", "Wave", {})], CONNECTIONS), encoding="utf-8")
+    bad.write_text(_hmf([*COMPONENTS, ("SignalTimeDelay", "Wave", {})], CONNECTIONS), encoding="utf-8")
     done = subprocess.run([*run, str(bad), "--out", str(tmp_path / "b")], capture_output=True, text=True)
-    assert done.returncode == 2 and "Wave (SignalUnitDelay)" in done.stderr and "Traceback" not in done.stderr
+    assert done.returncode == 2 and "Wave (SignalTimeDelay)" in done.stderr and "Traceback" not in done.stderr
     assert not (tmp_path / "b").exists()
 
 
@@ -790,6 +790,80 @@ def test_hopsans_lookup_table_missing_malformed_or_outside_the_model_folder_is_r
         import_hopsan(_lookup_model(tmp_path))
     with pytest.raises(ModelFileError, match="out of|column 2"):  # outid beyond the file's columns
         import_hopsan(_lookup_model(tmp_path, filename=v("ok.csv"), outid=v("2")))
+
+
+def test_hopsans_pid_controllers_map_to_a_pid_with_their_anti_windup(tmp_path: Path) -> None:
+    """SignalPID: u = limit(uI + Kp (yref - y) - Kd dy), its integral stopped at the limits (clamping), here
+    uI + 2 + 0.5 reaching umax = 3 at 0.5 s; SignalPID2 with 'de' connected: v = K e + I + K Td de = 3 + I,
+    I' = K/Ti e + (Umax - v)/Tt above Umax = 3.5, so I = 1 - 0.5 exp(-2 (t - 0.5)) from 0.5 s, the output
+    limited to Uoutmax = 3.9; SignalPIlead with its measurement at rest at 0.5 (the lead's output too):
+    err = yref - 0.5, u = k1 err + k1 wa integral (k1 = wa/kx); a unit delay passes its input on."""
+    v = _value
+    components = [
+        ("SignalConstant", "One", {"y#Value": v("1")}),
+        ("SignalConstant", "Half", {"y#Value": v("0.5")}),
+        ("SignalPID", "PID", {"Kp#Value": v("2"), "KI#Value": v("1"), "Kd#Value": v("-1"), "dy#Value": v("0.5"),
+                              "umin#Value": v("-3"), "umax#Value": v("3")}),
+        ("SignalPID2", "PID2", {"K": v("2"), "Ti": v("2"), "Tt": v("0.5"), "Td": v("1"), "Umax": v("3.5"),
+                                "Uoutmax": v("3.9")}),
+        ("SignalPIlead", "Lead", {"y#Value": v("0.5"), "wa": v("2"), "kx": v("1"), "da": v("1"), "umax": v("3")}),
+        ("SignalUnitDelay", "Delay", {}),
+    ]
+    connections = [("One.y", "PID.yref"), ("One.y", "PID2.e"), ("Half.y", "PID2.de"), ("One.y", "Lead.yref"),
+                   ("PID.u", "Delay.in")]
+    path = tmp_path / "pid.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    system = imp.system
+    pid, pid2, lead = system["PID"], system["PID2"], system["Lead"]
+    assert pid.option("anti_windup") == "clamping" and pid.option("derivative") == "input"
+    assert pid.values["Kd"] == 1.0 and pid.values["upper"] == 3.0  # -Kd dy: the input de is dy
+    assert pid2.option("anti_windup") == "tracking" and pid2.values["Ki"] == 1.0 and pid2.values["Kd"] == 2.0
+    assert pid2.values["track_upper"] == 3.5 and pid2.values["upper"] == 3.9 and pid2.values["T_t"] == 0.5
+    assert lead.values["Kp"] == 2.0 and lead.values["Ki"] == 4.0 and lead.option("anti_windup") == "clamping"
+    assert system["Lead_lead"].values["a1"] == 1.0 and system["Lead_lead"].values["b1"] == 0.5
+    t = np.array([0.0, 0.25, 0.5, 1.0, 1.5, 2.0])
+    r = system.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["PID.u.Value"], np.minimum(2.5 + t, 3.0), atol=1e-6)
+    np.testing.assert_allclose(r["PID.uI.Value"], np.minimum(t, 0.5), atol=1e-6)
+    integral = np.where(t < 0.5, t, 1.0 - 0.5 * np.exp(-2.0 * (t - 0.5)))
+    np.testing.assert_allclose(r["PID2.u.Value"], np.minimum(3.0 + integral, 3.9), atol=1e-6)
+    np.testing.assert_allclose(r["Lead.err.Value"], 0.5, atol=1e-9)
+    np.testing.assert_allclose(r["Lead.u.Value"], np.minimum(1.0 + 2.0 * t, 3.0), atol=1e-6)
+    np.testing.assert_allclose(r["Delay.out.Value"], r["PID.u.Value"])
+
+
+def test_pid2_without_its_derivative_and_unit_delays_closing_algebraic_loops_are_refused(tmp_path: Path) -> None:
+    v = _value
+    path = tmp_path / "pid2.hmf"
+    path.write_text(_hmf([("SignalPID2", "PID2", {"Td": v("0.1")})], []), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"PID2 \(SignalPID2\): Td = 0.1 s with 'de' unconnected"):
+        import_hopsan(path)
+    components = [("SignalStep", "Step", {}), ("SignalSubtract", "Error", {}), ("SignalGain", "Gain", {}),
+                  ("SignalUnitDelay", "Delay", {})]
+    connections = [("Step.out", "Error.in1"), ("Error.out", "Gain.in"), ("Gain.out", "Delay.in"),
+                   ("Delay.out", "Error.in2")]
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"algebraic loop .*unit delays \(Delay: SignalUnitDelay\)"):
+        import_hopsan(path)
+    components[2] = ("SignalIntegrator2", "Gain", {})  # a state in the loop: imported
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    assert import_hopsan(path).system["Delay"].values["K"] == 1.0
+
+
+def test_a_filter_starts_from_the_value_of_the_signal_driving_it(tmp_path: Path) -> None:
+    """Hopsan's filters start from their output's start value with their input at the value it has when the model
+    is initialised (FirstOrderTransferFunction::initialize reads the input's node): a high-pass filter behind a
+    low-pass filter that starts at 0.3 starts at rest at 0.3, its output 0, not 0.3 (the file's 'in' is 0)."""
+    v = _value
+    components = [("SignalLP1Filter", "LP", {"out#Value": v("0.3"), "omega": v("6")}),
+                  ("SignalHP1Filter", "HP", {"omega": v("100")})]
+    path = tmp_path / "filters.hmf"
+    path.write_text(_hmf(components, [("LP.out", "HP.in")]), encoding="utf-8")
+    system = import_hopsan(path).system
+    assert system["HP"].values["y0"] == pytest.approx(-0.3)
+    r = system.simulate(t_eval=[0.0, 1e-3])
+    assert abs(r["HP.out.Value"][0]) < 1e-12
 
 
 def test_rate_limits_of_the_wrong_sign_and_static_friction_below_the_kinetic_are_refused(tmp_path: Path) -> None:
