@@ -23,7 +23,7 @@ module                 components
                        Staircase, Ramp, Sine, Square, Table
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
                        Lag, TransferFunction, Integrator, Saturation, DeadZone,
-                       RateLimiter, Selector, PID, Amplifier, Transducer
+                       RateLimiter, Latch, Selector, PID, Amplifier, Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -53,6 +53,7 @@ from hydroservo.components.control import (
     Gain,
     Integrator,
     Lag,
+    Latch,
     Power,
     Product,
     Quotient,
@@ -187,6 +188,7 @@ __all__ = [
     "Saturation",
     "DeadZone",
     "RateLimiter",
+    "Latch",
     "Selector",
     "PID",
     "Amplifier",

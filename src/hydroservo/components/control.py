@@ -7,6 +7,7 @@ current, a transducer's input) declare it.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import replace
 from typing import Any
@@ -19,7 +20,7 @@ from hydroservo.units import coherent_unit, is_absolute_pressure
 
 __all__ = [
     "Sum", "Product", "Quotient", "Absolute", "Power", "Function", "Gain", "Lag", "TransferFunction", "Integrator",
-    "Saturation", "DeadZone", "RateLimiter", "Selector", "PID", "Amplifier", "Transducer",
+    "Saturation", "DeadZone", "RateLimiter", "Latch", "Selector", "PID", "Amplifier", "Transducer",
 ]
 
 
@@ -97,7 +98,7 @@ class Power(Component):
 #: The functions of :class:`Function` (its option ``function``).
 FUNCTIONS = (
     "sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh",
-    "square", "sign",
+    "square", "sign", "floor", "ceil", "round", "greater", "smaller", "and", "or",
 )
 
 
@@ -112,8 +113,13 @@ class Function(Component):
     :math:`\arccos` of :math:`|u| > 1` are those of :math:`\pm 1`. The other functions have no domain to leave
     (``error`` is 0). ``atan2`` is the angle of the point ``(u2, u)`` in :math:`(-\pi, \pi]` (Hopsan's inY is
     ``u``, inX ``u2``); ``sign`` is 1 for :math:`u \ge 0` and -1 below, as Hopsan's (not 0 at 0); ``square`` is
-    :math:`u^2`. Where the output or the error jumps or has a kink (the domain's edges, the sign's and atan2's
-    jumps at :math:`u = 0`, the tangent's poles), a switch event.
+    :math:`u^2`. ``floor``, ``ceil`` and ``round`` (half away from zero, C's ``round``) are Hopsan's
+    SignalFloor, SignalCeil and SignalRound (Signal/MathFunctions/). The comparisons and logic of Hopsan's
+    Signal/Logic/ read two signals and give 1 or 0: ``greater`` :math:`u > u_2` and ``smaller`` :math:`u < u_2`
+    (SignalGreaterThan, SignalSmallerThan: ``in`` and ``x_limit``), ``and`` and ``or`` of :math:`u > 0.5` and
+    :math:`u_2 > 0.5` (SignalAnd, SignalOr: Hopsan's doubleToBool). Where the output or the error jumps or has a
+    kink (the domain's edges, the sign's and atan2's jumps at :math:`u = 0`, the tangent's poles, the integers
+    or half-integers where floor, ceil and round step, the comparisons' and logic's switching), a switch event.
     """
 
     INPUTS = {
@@ -147,6 +153,15 @@ class Function(Component):
             y = a * a
         elif f == "sign":
             y = bk.if_else(a >= 0.0, 1.0, -1.0)
+        elif f in ("floor", "ceil"):
+            y = bk.floor(a) if f == "floor" else -bk.floor(-a)
+        elif f == "round":
+            y = bk.if_else(a >= 0.0, bk.floor(a + 0.5), -bk.floor(0.5 - a))
+        elif f in ("greater", "smaller"):
+            y = bk.if_else(a > u["u2"] if f == "greater" else a < u["u2"], 1.0, 0.0)
+        elif f in ("and", "or"):
+            both = (a > 0.5) * (u["u2"] > 0.5) if f == "and" else (a > 0.5) + (u["u2"] > 0.5)
+            y = bk.if_else(both > 0, 1.0, 0.0)
         else:
             y = getattr(bk, f)(a)
         return {"y": y, "error": error}
@@ -161,6 +176,14 @@ class Function(Component):
             return {"upper": (a - 1.0, 1.0), "lower": (a + 1.0, 1.0)}
         if f == "tan":
             return {"pole": (bk.cos(a), 1.0)}
+        if f in ("floor", "ceil"):  # the sine of pi u changes sign at each integer
+            return {"step": (bk.sin(math.pi * a), 1.0)}
+        if f == "round":
+            return {"step": (bk.cos(math.pi * a), 1.0)}
+        if f in ("greater", "smaller"):
+            return {"switch": (a - u["u2"], 1.0)}
+        if f in ("and", "or"):
+            return {"switch1": (a - 0.5, 1.0), "switch2": (u["u2"] - 0.5, 1.0)}
         return {}
 
 
@@ -450,6 +473,46 @@ class RateLimiter(Component):
     ) -> dict[str, tuple[Any, float]]:
         rate = (u["u"] - x["y"]) / p["tau"]
         return {"up": (rate - p["c_up"], 1.0), "down": (rate - p["c_down"], 1.0)}
+
+
+@register
+class Latch(Component):
+    r"""A set-reset latch: ``Q`` goes to 1 while ``set`` holds and ``reset`` does not, to 0 while ``reset`` holds
+    and ``set`` does not (or both), and keeps its value while neither does; ``notQ`` = 1 - ``Q`` (Hopsan's
+    SignalSRlatch, [Hopsan2026] Signal/Logic/SignalSRlatch.hpp).
+
+    Hopsan's step sets :math:`Q_n = f(S, R, Q_{n-1})` with
+    :math:`f = \lfloor \lfloor S(1 - \lfloor R \rceil) \rceil - \lfloor R(1 - \lfloor S \rceil) \rceil
+    + \lfloor Q \lfloor (1 - \lfloor R \rceil)(1 - \lfloor S \rceil) \rceil \rceil \rceil`,
+    :math:`\lfloor\cdot\rceil` limiting to [0, 1]; as the step vanishes, :math:`Q` takes the value
+    :math:`Q = f(S, R, Q)` at once where the inputs change, and keeps it while they hold. Here that law is an ODE,
+    :math:`\dot Q = (f(S, R, Q) - Q)/\tau`: ``Q`` follows within a few ``tau`` (1 µs by default, as
+    :class:`RateLimiter`'s tracking), and holds exactly while neither input is set (:math:`f = Q`). Inputs are
+    read as Hopsan's formula reads them (not thresholded): 0 and 1 are off and on.
+    """
+
+    PARAMETERS = {
+        "tau": Param(1e-6, "s", "time constant with which Q follows the latch's law", min=0.0, min_inclusive=False),
+        "Q0": Param(0.0, "", "initial state", min=0.0, max=1.0),
+    }
+    STATES = {"Q": State("", "the latch's state", initial="Q0", nominal=1.0)}
+    INPUTS = {"set": Port("", "set condition (1: on)", default=0.0), "reset": Port("", "reset condition (1: on)", default=0.0)}
+    OUTPUTS = {"Q": Output("", "state"), "notQ": Output("", "1 - state")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"Q": x["Q"], "notQ": 1.0 - x["Q"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        def lim(v: Any) -> Any:
+            return bk.clip(v, 0.0, 1.0)
+
+        S, R, Q = u["set"], u["reset"], x["Q"]
+        law = lim(lim(S * (1.0 - lim(R))) - lim(R * (1.0 - lim(S))) + lim(Q * lim((1.0 - lim(R)) * (1.0 - lim(S)))))
+        return {"Q": (law - Q) / p["tau"]}
 
 
 @register

@@ -34,7 +34,7 @@ from hydroservo.io.hopsan import HopsanComponent, HopsanModel, HopsanParameter, 
 if TYPE_CHECKING:
     from hydroservo.system.system import System
 
-__all__ = ["read_hopsan", "HopsanImport", "LIBRARY", "safe_name"]
+__all__ = ["read_hopsan", "HopsanImport", "LIBRARY", "REFUSED", "safe_name"]
 
 #: Hopsan's pressures are absolute; hydroservo's signals are gauge pressures (``p_atm`` in an alias).
 ATMOSPHERE = 101325.0
@@ -1517,6 +1517,33 @@ def _pi_lead(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _logic(function: str, ports: tuple[str, str]) -> Builder:
+    """Hopsan's comparisons and logic (Signal/Logic/SignalGreaterThan.hpp, SignalSmallerThan.hpp, SignalAnd.hpp,
+    SignalOr.hpp): a Function with that option, its two inputs ``u`` and ``u2`` (``in`` and ``x_limit``, or
+    ``in1`` and ``in2``); an unconnected one takes its start value."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Function
+
+        inputs = {ports[0]: f"{n}.u", ports[1]: f"{n}.u2"}
+        return Mapped([Function(n, function=function)], inputs=inputs, outputs={"out": f"{n}.y"})
+
+    return build
+
+
+def _sr_latch(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalSRlatch (Signal/Logic/SignalSRlatch.hpp): a Latch from the start value of ``Qstate``, its inputs
+    ``setCond`` and ``resetCond``, its outputs ``Qstate`` and ``notQstate``."""
+    from hydroservo.components import Latch
+
+    q0 = par("Qstate", 0.0)
+    if not 0.0 <= q0 <= 1.0:
+        par.problems.append(f"{par.where}: start value Qstate = {q0:g}: expected 0 to 1")
+        return Mapped()
+    return Mapped([Latch(n, Q0=q0)], inputs={"setCond": f"{n}.set", "resetCond": f"{n}.reset"},
+                  outputs={"Qstate": f"{n}.Q", "notQstate": f"{n}.notQ"})
+
+
 def _sink(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped(note="dropped: a plot window; what it shows is logged at its sources")
 
@@ -1625,6 +1652,28 @@ LIBRARY: dict[str, Builder] = {
     "SignalPID": _pid,
     "SignalPID2": _pid2,
     "SignalPIlead": _pi_lead,
+    "SignalFloor": _function("floor"),
+    "SignalCeil": _function("ceil"),
+    "SignalRound": _function("round"),
+    "SignalGreaterThan": _logic("greater", ("in", "x_limit")),
+    "SignalSmallerThan": _logic("smaller", ("in", "x_limit")),
+    "SignalAnd": _logic("and", ("in1", "in2")),
+    "SignalOr": _logic("or", ("in1", "in2")),
+    "SignalSRlatch": _sr_latch,
+}
+
+#: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)
+REFUSED: dict[str, str] = {
+    "SignalTimeDelay": "a pure time delay, y(t) = u(t - deltat), is no ordinary differential equation: hydroservo's "
+    "engine integrates ODEs with error control and keeps no history of a signal, and an approximation (Padé) is "
+    "not Hopsan's law",
+    "SignalVariableTimeDelay": "a pure time delay, y(t) = u(t - dT), is no ordinary differential equation: "
+    "hydroservo's engine integrates ODEs with error control and keeps no history of a signal, and an "
+    "approximation (Padé) is not Hopsan's law",
+    "SignalNoiseGenerator": "white noise drawn anew at each of Hopsan's steps has no limit as the step vanishes, "
+    "and a random trace cannot be compared sample by sample",
+    "SignalStopSimulation": "it ends the run when its input exceeds 0.5, where hydroservo's runs end at t_end; "
+    "set t_end to where the model stops",
 }
 
 
@@ -1673,7 +1722,10 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         raise ModelFileError("; ".join(problems))
     unsupported = [c for c in model.components if c.typename not in LIBRARY]
     if unsupported:
-        listed = "; ".join(f"{c.full_name} ({c.typename})" for c in unsupported)
+        listed = "; ".join(
+            f"{c.full_name} ({c.typename}{': ' + REFUSED[c.typename] if c.typename in REFUSED else ''})"
+            for c in unsupported
+        )
         raise ModelFileError(
             f"{source}: {len(unsupported)} component(s) of types hydroservo does not map yet: {listed}. Supported: "
             f"{', '.join(sorted(LIBRARY))} (docs/hopsan.md)"

@@ -243,6 +243,10 @@ MODELS: dict[str, Spec] = {
              "other sample of every trace is within 0.0066 % of range (docs/validation.md)"),
         ),
     ),
+    "sr-latch-test": Spec(
+        "Component Test/SignalComponent Test/Logic/SRlatchTest.hmf",
+        "a set-reset latch set and reset by sums of pulses, both at once among them",
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.

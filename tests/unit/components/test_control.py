@@ -236,3 +236,44 @@ def test_pid_clamping_stops_integrating_at_the_limit_and_takes_its_derivative_as
     np.testing.assert_allclose(r["p.y"], np.minimum(2.5 + r.t, 3.0), atol=1e-6)
     assert set(c.PID("q", derivative="input").STATES) == {"I"}
     assert set(c.PID("q").STATES) == {"I", "e_f"} and "de" not in c.PID("q").INPUTS
+
+
+def test_floor_ceil_round_comparisons_and_logic_are_hopsans() -> None:
+    """Function's floor, ceil, round (half away from zero, as C's round), greater and smaller (1 or 0, strict),
+    and and or (of u > 0.5 and u2 > 0.5), on a ramp from -2 to 2 against a constant 0.5."""
+    s = hs.System("fn", t_end=4.0)
+    s.add(c.Ramp("u", offset=-2.0, slope=1.0, t_start=0.0))
+    s.add(c.Constant("k", value=0.5))
+    for f in ("floor", "ceil", "round", "greater", "smaller", "and", "or"):
+        s.add(c.Function(f, function=f))
+        s.connect("u.y", f"{f}.u")
+        if f in ("greater", "smaller", "and", "or"):
+            s.connect("k.y", f"{f}.u2")
+    t = np.array([0.0, 0.3, 1.5, 1.75, 2.25, 2.5, 3.2, 3.5, 4.0])
+    r = s.simulate(t_eval=t)
+    u = t - 2.0
+    np.testing.assert_array_equal(r["floor.y"], np.floor(u))
+    np.testing.assert_array_equal(r["ceil.y"], np.ceil(u))
+    np.testing.assert_array_equal(r["round.y"], np.sign(u) * np.floor(np.abs(u) + 0.5))
+    np.testing.assert_array_equal(r["greater.y"], (u > 0.5).astype(float))
+    np.testing.assert_array_equal(r["smaller.y"], (u < 0.5).astype(float))
+    np.testing.assert_array_equal(r["and.y"], np.zeros_like(u))  # the constant 0.5 is not > 0.5: off
+    np.testing.assert_array_equal(r["or.y"], (u > 0.5).astype(float))
+
+
+def test_latch_sets_resets_and_holds() -> None:
+    """Latch (Hopsan's SignalSRlatch): set at 1 s, held after the set ends at 2 s, reset at 3 s (set again at
+    3.5 s while reset: both on resets), held at 0 after 4 s; notQ = 1 - Q; Q follows within a few tau."""
+    s = hs.System("latch", t_end=5.0)
+    s.add(c.Pulse("set1", t_start=1.0, duration=1.0))
+    s.add(c.Pulse("set2", t_start=3.5, duration=1.0))
+    s.add(c.Sum("set", gain1=1.0, gain2=1.0))
+    s.add(c.Pulse("reset", t_start=3.0, duration=1.0))
+    s.add(c.Latch("l"))
+    s.connect("set1.y", "set.u1")
+    s.connect("set2.y", "set.u2")
+    s.connect("set.y", "l.set")
+    s.connect("reset.y", "l.reset")
+    r = s.simulate(t_eval=[0.5, 1.5, 2.5, 3.25, 3.75, 4.25, 4.75])
+    np.testing.assert_allclose(r["l.Q"], [0, 1, 1, 0, 0, 1, 1], atol=1e-9)
+    np.testing.assert_allclose(r["l.notQ"], 1 - r["l.Q"])

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -19,7 +20,7 @@ import pytest
 
 from hydroservo.data import reference_text
 from hydroservo.errors import ModelFileError
-from hydroservo.io.hopsan_library import LIBRARY, import_hopsan, read_hopsan, safe_name
+from hydroservo.io.hopsan_library import LIBRARY, REFUSED, import_hopsan, read_hopsan, safe_name
 
 COMPONENTS = [
     ('HydraulicTankC', 'Tank_C', {'p': ('100000', 'Pa')}),
@@ -157,7 +158,7 @@ def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> No
     components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalTimeDelay", "Wave", {})]
     path = tmp_path / "m.hmf"
     path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
-    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalTimeDelay\)"):
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalTimeDelay: a pure time delay, y\(t\) = u\(t - deltat\), is no ordinary differential equation"):
         read_hopsan(path)
 
 
@@ -185,7 +186,7 @@ def test_cli_writes_the_model_and_refuses_what_it_cannot_map(servo_file: Path, t
     bad = tmp_path / "bad.hmf"
     bad.write_text(_hmf([*COMPONENTS, ("SignalTimeDelay", "Wave", {})], CONNECTIONS), encoding="utf-8")
     done = subprocess.run([*run, str(bad), "--out", str(tmp_path / "b")], capture_output=True, text=True)
-    assert done.returncode == 2 and "Wave (SignalTimeDelay)" in done.stderr and "Traceback" not in done.stderr
+    assert done.returncode == 2 and "Wave (SignalTimeDelay: a pure time delay" in done.stderr and "Traceback" not in done.stderr
     assert not (tmp_path / "b").exists()
 
 
@@ -864,6 +865,49 @@ def test_a_filter_starts_from_the_value_of_the_signal_driving_it(tmp_path: Path)
     assert system["HP"].values["y0"] == pytest.approx(-0.3)
     r = system.simulate(t_eval=[0.0, 1e-3])
     assert abs(r["HP.out.Value"][0]) < 1e-12
+
+
+def test_hopsans_rounding_comparison_logic_blocks_and_latch_map_with_their_ports(tmp_path: Path) -> None:
+    """SignalFloor, SignalCeil, SignalRound as Functions; SignalGreaterThan and SignalSmallerThan read in and
+    x_limit (unconnected: its start value), SignalAnd and SignalOr in1 and in2; SignalSRlatch's setCond,
+    resetCond, Qstate and notQstate, from its start value of Qstate."""
+    v = _value
+    ramp = {"y_0#Value": v("-2"), "y_A#Value": v("4"), "t_start#Value": v("0"), "t_end#Value": v("4")}
+    components = [
+        ("SignalRamp", "Ramp", ramp),
+        ("SignalFloor", "Floor", {}), ("SignalCeil", "Ceil", {}), ("SignalRound", "Round", {}),
+        ("SignalGreaterThan", "GT", {"x_limit#Value": v("0.5")}), ("SignalSmallerThan", "ST", {}),
+        ("SignalAnd", "And", {}), ("SignalOr", "Or", {"in2#Value": v("0")}),
+        ("SignalSRlatch", "Latch", {"Qstate#Value": v("1")}),
+    ]
+    connections = [("Ramp.out", f"{b}.in") for b in ("Floor", "Ceil", "Round", "GT", "ST")]
+    connections += [("GT.out", "And.in1"), ("ST.out", "And.in2"), ("GT.out", "Or.in1"), ("GT.out", "Latch.resetCond")]
+    path = tmp_path / "logic.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = import_hopsan(path).system
+    assert system["GT"].option("function") == "greater" and system["Latch"].values["Q0"] == 1.0
+    t = np.array([0.0, 0.5, 1.8, 2.25, 3.0, 3.9])
+    u = t - 2.0
+    r = system.simulate(t_eval=t)
+    np.testing.assert_array_equal(r["Floor.out.Value"], np.floor(u))
+    np.testing.assert_array_equal(r["Ceil.out.Value"], np.ceil(u))
+    np.testing.assert_array_equal(r["Round.out.Value"], np.sign(u) * np.floor(np.abs(u) + 0.5))
+    np.testing.assert_array_equal(r["GT.out.Value"], (u > 0.5).astype(float))
+    np.testing.assert_array_equal(r["ST.out.Value"], (u < 0.0).astype(float))  # x_limit's start value 0
+    np.testing.assert_array_equal(r["And.out.Value"], np.zeros_like(u))
+    np.testing.assert_array_equal(r["Or.out.Value"], (u > 0.5).astype(float))
+    # the latch starts set and is reset once the ramp passes 0.5 (t = 2.5 s)
+    np.testing.assert_allclose(r["Latch.Qstate.Value"], (u <= 0.5).astype(float), atol=1e-9)
+    np.testing.assert_allclose(r["Latch.notQstate.Value"], (u > 0.5).astype(float), atol=1e-9)
+
+
+@pytest.mark.parametrize("kind", sorted(REFUSED))
+def test_blocks_hydroservo_cannot_follow_are_refused_with_why(tmp_path: Path, kind: str) -> None:
+    path = tmp_path / "refused.hmf"
+    path.write_text(_hmf([(kind, "Block", {})], []), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=rf"Block \({kind}: " + re.escape(REFUSED[kind][:40])):
+        import_hopsan(path)
+    assert kind not in LIBRARY
 
 
 def test_rate_limits_of_the_wrong_sign_and_static_friction_below_the_kinetic_are_refused(tmp_path: Path) -> None:
