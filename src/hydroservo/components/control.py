@@ -16,11 +16,12 @@ from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Option, Output, Param, Port, State, register
 from hydroservo.components.signals import SIGNAL_OUTPUT
 from hydroservo.errors import ParameterError, UnitError
+from hydroservo.laws.pressure_valve import valve_hysteresis
 from hydroservo.units import coherent_unit, is_absolute_pressure
 
 __all__ = [
     "Sum", "Product", "Quotient", "Absolute", "Power", "Function", "Gain", "Lag", "TransferFunction", "Integrator",
-    "Saturation", "DeadZone", "RateLimiter", "Latch", "Selector", "PID", "Amplifier", "Transducer",
+    "Saturation", "DeadZone", "RateLimiter", "Hysteresis", "Latch", "Selector", "PID", "Amplifier", "Transducer",
 ]
 
 
@@ -473,6 +474,46 @@ class RateLimiter(Component):
     ) -> dict[str, tuple[Any, float]]:
         rate = (u["u"] - x["y"]) / p["tau"]
         return {"up": (rate - p["c_up"], 1.0), "down": (rate - p["c_down"], 1.0)}
+
+
+@register
+class Hysteresis(Component):
+    r"""Hysteresis (backlash, play): the output stays put while the input moves within half the ``band`` of it,
+    and is dragged along at that distance beyond (Hopsan's SignalHysteresis, [Hopsan2026]
+    Signal/Non-Linearities/SignalHysteresis.hpp).
+
+    Hopsan's step sets the output to its previous value held within :math:`u \pm y_h/2` (ValveHysteresis'
+    ``getValue``, :func:`hydroservo.laws.pressure_valve.valve_hysteresis`): as the step vanishes, the output
+    is that play operator of the input. Here that law is an ODE, :math:`\dot y = (\min(\max(y, u - y_h/2),
+    u + y_h/2) - y)/\tau`: the output follows the band's edge within a few ``tau`` (1 µs by default, as
+    :class:`RateLimiter`'s tracking) and holds exactly inside it. The band's edges reached are switch events. The
+    output starts at ``y0`` (Hopsan's at the input's start value).
+    """
+
+    PARAMETERS = {
+        "band": Param(1.0, SIGNAL, "width of the hysteresis band (y_h)", min=0.0),
+        "tau": Param(1e-6, "s", "time constant with which the output follows the band", min=0.0, min_inclusive=False),
+        "y0": Param(0.0, SIGNAL, "initial output"),
+    }
+    STATES = {"y": State(SIGNAL, "output", initial="y0", nominal=1.0)}
+    INPUTS = {"u": Port(SIGNAL, "input")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": x["y"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": (valve_hysteresis(u["u"], x["y"], 0.5 * p["band"]) - x["y"]) / p["tau"]}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        gap = u["u"] - x["y"]
+        return {"upper": (gap - 0.5 * p["band"], 1.0), "lower": (gap + 0.5 * p["band"], 1.0)}
 
 
 @register

@@ -1530,6 +1530,20 @@ def _logic(function: str, ports: tuple[str, str]) -> Builder:
     return build
 
 
+def _hysteresis(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalHysteresis (Signal/Non-Linearities/SignalHysteresis.hpp): a Hysteresis of width ``y_h`` (constant: a
+    signal driving it is refused), its output starting at its input's start value, as Hopsan's."""
+    from hydroservo.components import Hysteresis
+
+    width = par("y_h", 1.0)
+    if width < 0.0:
+        par.problems.append(f"{par.where}: y_h = {width:g}: expected a width of 0 or more")
+        return Mapped()
+    comp = Hysteresis(n, band=width, y0=par("in", 0.0))
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                  start_from_input={f"{n}.y0": (f"{n}.u", float)})
+
+
 def _sr_latch(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """SignalSRlatch (Signal/Logic/SignalSRlatch.hpp): a Latch from the start value of ``Qstate``, its inputs
     ``setCond`` and ``resetCond``, its outputs ``Qstate`` and ``notQstate``."""
@@ -1659,6 +1673,7 @@ LIBRARY: dict[str, Builder] = {
     "SignalAnd": _logic("and", ("in1", "in2")),
     "SignalOr": _logic("or", ("in1", "in2")),
     "SignalSRlatch": _sr_latch,
+    "SignalHysteresis": _hysteresis,
 }
 
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)

@@ -158,6 +158,13 @@ def test_each_function_is_its_closed_form_and_flags_its_domain() -> None:
         "tanh": (np.tanh(u), 0 * u),
         "square": (u * u, 0 * u),
         "sign": (np.where(u >= 0, 1.0, -1.0), 0 * u),
+        "floor": (np.floor(u), 0 * u),
+        "ceil": (np.ceil(u), 0 * u),
+        "round": (np.sign(u) * np.floor(np.abs(u) + 0.5), 0 * u),  # half away from zero
+        "greater": ((u > 1.0).astype(float), 0 * u),  # u2 unconnected: 1
+        "smaller": ((u < 1.0).astype(float), 0 * u),
+        "and": ((u > 0.5).astype(float), 0 * u),
+        "or": (np.ones_like(u), 0 * u),
     }
     assert set(expected) == set(c.Function.OPTIONS["function"].choices)
     s = hs.System("functions", t_end=4.0)
@@ -277,3 +284,19 @@ def test_latch_sets_resets_and_holds() -> None:
     r = s.simulate(t_eval=[0.5, 1.5, 2.5, 3.25, 3.75, 4.25, 4.75])
     np.testing.assert_allclose(r["l.Q"], [0, 1, 1, 0, 0, 1, 1], atol=1e-9)
     np.testing.assert_allclose(r["l.notQ"], 1 - r["l.Q"])
+
+
+def test_hysteresis_is_the_play_operator_of_its_input() -> None:
+    """Hysteresis (Hopsan's SignalHysteresis) of width 1 on a triangle 0 -> 2 -> 0: the output stays at 0 until
+    the input is 0.5 ahead, follows at u - 0.5 up to 1.5, holds there while the input falls back through the band
+    (to 1 at t = 3 s), then follows at u + 0.5; within the 1 us tracking lag."""
+    s = hs.System("play", t_end=4.0)
+    s.add(c.Ramp("up", slope=1.0, limit=2.0))
+    s.add(c.Ramp("down", slope=-1.0, t_start=2.0, limit=2.0))
+    s.add(c.Sum("u", gain1=1.0, gain2=1.0))
+    s.add(c.Hysteresis("h", band=1.0))
+    s.connect("up.y", "u.u1")
+    s.connect("down.y", "u.u2")
+    s.connect("u.y", "h.u")
+    r = s.simulate(t_eval=[0.0, 0.25, 1.0, 2.0, 2.5, 3.0, 3.5, 4.0])
+    np.testing.assert_allclose(r["h.y"], [0.0, 0.0, 0.5, 1.5, 1.5, 1.5, 1.0, 0.5], atol=1e-5)

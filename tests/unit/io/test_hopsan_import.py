@@ -301,7 +301,7 @@ def test_parameters_set_by_constant_signals_take_their_values_and_others_are_ref
 CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 
 
-@pytest.mark.parametrize("name", ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order"])
+@pytest.mark.parametrize("name", ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks"])
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
     its range (at least 1 % of its magnitude; forces and flows from the second point, where Hopsan logs start
