@@ -1380,6 +1380,9 @@ def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.errors import HydroservoError
     from hydroservo.io.tables import parse_lookup_table, read_lookup_table
 
+    inputs, outputs = {"in": f"{n}.u"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        return Mapped([Table(n, times=[0.0, 1.0], values=[0.0, 0.0], index="input")], inputs=inputs, outputs=outputs)
     inid, outid, skip = int(par("inid", 0)), int(par("outid", 1)), int(par("numlineskip", 0))
     sep, comment = par.text("csvsep", ","), par.text("comment", "")
     text, filename = par.text("text").strip(), par.text("filename").strip()
@@ -1389,7 +1392,7 @@ def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         else:
             if not filename:
                 raise ModelFileError(f"{par.where}: no table: neither a file (filename) nor a text (text) given")
-            folder = (par.folder or Path(".")).resolve()
+            folder = par.folder.resolve()
             file = (folder / filename).resolve()
             if Path(filename).is_absolute() or not file.is_relative_to(folder):
                 raise ModelFileError(
@@ -1402,7 +1405,7 @@ def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         par.problems.append(str(exc))
         return Mapped()
     comp = Table(n, times=x, values=y, index="input")
-    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+    return Mapped([comp], inputs=inputs, outputs=outputs,
                   note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
 
 

@@ -779,6 +779,25 @@ def test_hopsans_lookup_table_reads_its_csv_beside_the_model_and_interpolates_it
     np.testing.assert_array_equal(table.table_values, [2.0, 4.0])
 
 
+def test_a_lookup_table_driven_by_a_constant_reads_its_file_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A constant into the table's input is folded (its value looked up); probing the block for its ports reads
+    no file: the table's CSV is read once, from the model's folder."""
+    import hydroservo.io.tables as tables
+
+    (tmp_path / "f.csv").write_text("0,1\n2,5\n", encoding="utf-8")
+    calls = []
+    real = tables.read_lookup_table
+    monkeypatch.setattr(tables, "read_lookup_table", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
+    v = _value
+    components = [("SignalConstant", "C", {"y#Value": v("1.5")}), ("Signal1DLookupTable", "LUT", {"filename": v("f.csv")})]
+    text = _hmf(components, [("C.y", "LUT.in")]).replace('type="double" name="filename"', 'type="string" name="filename"')
+    (tmp_path / "m.hmf").write_text(text, encoding="utf-8")
+    monkeypatch.chdir(tmp_path.parent)
+    r = import_hopsan(tmp_path / "m.hmf").system.simulate(t_eval=[0.0, 1.0])
+    np.testing.assert_allclose(r["LUT.out.Value"], 4.0)
+    assert calls == [(tmp_path / "f.csv").resolve()]
+
+
 def test_hopsans_lookup_table_missing_malformed_or_outside_the_model_folder_is_refused(tmp_path: Path) -> None:
     v = _value
     with pytest.raises(ModelFileError, match=r"LUT \(Signal1DLookupTable\): filename: table file .*none\.csv.*cannot read"):
