@@ -23,7 +23,8 @@ module                 components
                        Staircase, Ramp, Sine, Square, Table
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
                        Lag, TransferFunction, Integrator, Saturation, DeadZone,
-                       RateLimiter, Selector, PID, Amplifier, Transducer
+                       RateLimiter, Hysteresis, Latch, Selector, PID, Amplifier,
+                       Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -51,8 +52,10 @@ from hydroservo.components.control import (
     DeadZone,
     Function,
     Gain,
+    Hysteresis,
     Integrator,
     Lag,
+    Latch,
     Power,
     Product,
     Quotient,
@@ -191,6 +194,8 @@ __all__ = [
     "Saturation",
     "DeadZone",
     "RateLimiter",
+    "Hysteresis",
+    "Latch",
     "Selector",
     "PID",
     "Amplifier",

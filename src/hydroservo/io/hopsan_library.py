@@ -34,7 +34,7 @@ from hydroservo.io.hopsan import HopsanComponent, HopsanModel, HopsanParameter, 
 if TYPE_CHECKING:
     from hydroservo.system.system import System
 
-__all__ = ["read_hopsan", "HopsanImport", "LIBRARY", "safe_name"]
+__all__ = ["read_hopsan", "HopsanImport", "LIBRARY", "REFUSED", "safe_name"]
 
 #: Hopsan's pressures are absolute; hydroservo's signals are gauge pressures (``p_atm`` in an alias).
 ATMOSPHERE = 101325.0
@@ -106,6 +106,8 @@ class _Params:
         self.t0 = 0.0
         #: the component's ports Hopsan connects to something (its signal inputs among them are driven)
         self.driven = driven
+        #: the model file's folder: the files a component names (a lookup table's CSV) are read from it
+        self.folder: Path | None = None
 
     def __call__(self, name: str, default: float) -> float:
         for key in (f"{name}#Value", name):
@@ -116,6 +118,11 @@ class _Params:
                     return default
                 return par.value
         return default
+
+    def text(self, name: str, default: str = "") -> str:
+        """A text parameter (a file name, a separator) as the file gives it."""
+        par = self.hc.parameters.get(name)
+        return default if par is None else par.text
 
     def time(self, name: str, default: float) -> float:
         """A time parameter on hydroservo's clock, which starts at 0 where Hopsan's starts at its start time."""
@@ -1333,9 +1340,16 @@ def _transfer(n: str, par: _Params, num: list[float], den: list[float], limited:
         n, order=str(order), a0=num[0], a1=num[1], a2=num[2], b0=den[0], b1=den[1], b2=den[2], y0=y0 - d * u0
     )
     initial = {}
+    c1 = num[1] / den[2] - d * den[1] / den[2] if order == 2 else 0.0
     if order == 2:  # the strictly proper part at rest with the input at u0: its rate x2 + c1 u0 is 0
-        initial[f"{n}.x2"] = -(num[1] / den[2] - d * den[1] / den[2]) * u0
-    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"}, initial=initial)
+        initial[f"{n}.x2"] = -c1 * u0
+    # Hopsan's filter starts from the value its input has when the model is initialised (FirstOrderTransferFunction
+    # ::initialize's u0 is *mpIn): where a signal drives the input, that signal's start value, not the file's 'in'
+    starts: dict[str, tuple[str, Callable[[float], float]]] = {f"{n}.y0": (f"{n}.u", lambda u: y0 - d * u)}
+    if order == 2:
+        starts[f"{n}.x2"] = (f"{n}.u", lambda u: -c1 * u)
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"}, initial=initial,
+                  start_from_input=starts)
 
 
 def _first_order_filter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1441,6 +1455,197 @@ def _integrator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Integrator
 
     return Mapped([Integrator(n, y0=par("out", 0.0))], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
+def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal1DLookupTable (Signal/Non-Linearities/Signal1DLookupTable.hpp): a Table with ``index = "input"``,
+    its breakpoints and values columns ``inid`` and ``outid`` of the CSV file ``filename`` (or of the text
+    ``text``), read at import as Hopsan reads them (``csvsep``, ``numlineskip``, ``comment``). The file is
+    read only inside the model file's folder: a file named by an absolute path or outside it is refused (a
+    model file from someone else reads nothing else of the user's disk); ``reload`` is moot (the table is
+    read once, at import)."""
+    from hydroservo.components import Table
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_lookup_table, read_lookup_table
+
+    inputs, outputs = {"in": f"{n}.u"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        return Mapped([Table(n, times=[0.0, 1.0], values=[0.0, 0.0], index="input")], inputs=inputs, outputs=outputs)
+    inid, outid, skip = int(par("inid", 0)), int(par("outid", 1)), int(par("numlineskip", 0))
+    sep, comment = par.text("csvsep", ","), par.text("comment", "")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            x, y = parse_lookup_table(par.text("text"), inid, outid, sep, skip, comment, what=f"{par.where}: text")
+        else:
+            if not filename:
+                raise ModelFileError(f"{par.where}: no table: neither a file (filename) nor a text (text) given")
+            folder = par.folder.resolve()
+            file = (folder / filename).resolve()
+            if Path(filename).is_absolute() or not file.is_relative_to(folder):
+                raise ModelFileError(
+                    f"{par.where}: filename = {filename!r}: outside the model file's folder {str(folder)!r}; hydroservo "
+                    "reads a table only beside the model or below its folder (copy it there and name it relative "
+                    "to the model)"
+                )
+            x, y = read_lookup_table(file, inid, outid, sep, skip, comment, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table(n, times=x, values=y, index="input")
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+
+
+def _unit_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalUnitDelay (Signal/Non-Linearities/SignalUnitDelay.hpp): its output is its input one step late,
+    which vanishes as the step does: in the limit it passes its input on (a Gain of 1). In Hopsan it breaks
+    algebraic loops; a loop it closed with no state in it is refused after the import (:func:`import_hopsan`)."""
+    from hydroservo.components import Gain
+
+    return Mapped([Gain(n, K=1.0)], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                  note=f"Gain {n} of 1 (a delay of one step, which vanishes with the step)")
+
+
+def _integral_start(n: str, par: _Params, ki: float) -> dict[str, float]:
+    """The PID's integral state from Hopsan's start value of ``uI`` (the integral part, Ki I)."""
+    u_i = par("uI", 0.0)
+    if u_i != 0.0 and ki == 0.0:
+        par.problems.append(f"{par.where}: a start value uI = {u_i:g} with no integral gain is not supported")
+    return {f"{n}.I": u_i / ki} if u_i != 0.0 and ki != 0.0 else {}
+
+
+def _pid(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPID (Signal/Control/SignalPID.hpp): u = limit(uI + Kp (yref - y) - Kd dy, umin, umax) with
+    d(uI)/dt = KI Ierr, Ierr the error while the output is inside its limits (Hopsan's dxLimit, 1e-9 at them):
+    a ``Sum`` (yref - y) into a PID with ``derivative = "input"`` (de = dy, Kd negated) and
+    ``anti_windup = "clamping"``. Hopsan's Newton iteration and trapezoidal step of that law vanish with the
+    step. Kp, KI, Kd, umin and umax are constant (a signal driving them is refused)."""
+    from hydroservo.components import PID, Sum
+
+    ki = par("KI", 1.0)
+    umin, umax = par("umin", -1.0), par("umax", 1.0)
+    if umin >= umax:
+        par.problems.append(f"{par.where}: umin = {umin:g}, umax = {umax:g}: expected umin < umax")
+        return Mapped()
+    error = Sum(f"{n}_error", gain1=1.0, gain2=-1.0)
+    pid = PID(n, Kp=par("Kp", 1.0), Ki=ki, Kd=-par("Kd", 1.0), lower=umin, upper=umax, derivative="input",
+              anti_windup="clamping")
+    return Mapped(
+        [error, pid], inputs={"yref": f"{error.name}.u1", "y": f"{error.name}.u2", "dy": f"{n}.de"},
+        outputs={"u": f"{n}.y"}, values={"uI": Var(ki, f"{n}.I")}, internal=[(f"{error.name}.y", f"{n}.e")],
+        initial=_integral_start(n, par, ki),
+    )
+
+
+def _pid2(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPID2 (Signal/Control/SignalPID2.hpp): v = K e + I + K Td de, I' = K/Ti e, plus (Umax - v)/Tt above
+    Umax and (Umin - v)/Tt below Umin (back-calculation; Hopsan's explicit steps of it), the output v limited to
+    [Uoutmin, Uoutmax]: a PID with ``anti_windup = "tracking"`` (Ki = K/Ti, T_t = Tt, the tracked limits Umin and
+    Umax). The derivative is the input ``de`` where it is connected (``derivative = "input"``); Hopsan's
+    derivative of ``e`` by a backward difference otherwise, which is refused for Td > 0 (an unfiltered
+    derivative). Starts with I = 0, as Hopsan's."""
+    from hydroservo.components import PID
+
+    k, ti, tt, td = par("K", 1.0), par("Ti", 1.0), par("Tt", 1.0), par("Td", 0.0)
+    lims = {name: par(name, default) for name, default in
+            (("Umin", -1e100), ("Umax", 1e100), ("Uoutmin", -1e100), ("Uoutmax", 1e100))}
+    if ti <= 0.0 or tt <= 0.0 or k == 0.0:
+        par.problems.append(f"{par.where}: K = {k:g}, Ti = {ti:g} s, Tt = {tt:g} s: expected K other than 0, Ti > 0 "
+                            "and Tt > 0")
+        return Mapped()
+    if lims["Umin"] > lims["Umax"] or lims["Uoutmin"] > lims["Uoutmax"]:
+        par.problems.append(f"{par.where}: Umin > Umax or Uoutmin > Uoutmax")
+        return Mapped()
+    by_input = "de" in par.driven
+    if td != 0.0 and not by_input:
+        par.problems.append(
+            f"{par.where}: Td = {td:g} s with 'de' unconnected: Hopsan then differentiates e unfiltered (a backward "
+            "difference), which hydroservo does not; connect the derivative to 'de'"
+        )
+        return Mapped()
+    ki = k / ti
+    if ki < 0.0:
+        par.problems.append(f"{par.where}: K = {k:g}: a negative gain with anti-windup tracking is not supported")
+        return Mapped()
+    cap = 1e300  # Hopsan's +-1e100 defaults: no limit
+    pid = PID(n, Kp=k, Ki=ki, Kd=k * td, T_t=tt, anti_windup="tracking",
+              derivative="input" if by_input else "filtered",
+              track_lower=max(lims["Umin"], -cap), track_upper=min(lims["Umax"], cap),
+              lower=max(lims["Uoutmin"], -cap), upper=min(lims["Uoutmax"], cap))
+    inputs = {"e": f"{n}.e", **({"de": f"{n}.de"} if by_input else {})}
+    return Mapped([pid], inputs=inputs, outputs={"u": f"{n}.y"})
+
+
+def _pi_lead(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPIlead (Signal/Control/SignalPIlead.hpp): a PI controller on the error of a lead-filtered
+    measurement. Hopsan's bilinear equation for ``err`` is the transfer function
+    err = yref - (1 + 2 da s/wa)/(1 + s/wa) y; u = limit(k1 err + uI, umin, umax), d(uI)/dt = k1 wa Ierr with
+    k1 = wa/kx and Ierr the error while u is inside its limits: a ``TransferFunction`` (the lead, at rest with
+    its input's start value), a ``Sum`` and a PID with ``anti_windup = "clamping"`` (Kp = k1, Ki = k1 wa). wa, kx,
+    da, umin and umax are constant (a signal driving them is refused)."""
+    from hydroservo.components import PID, Sum, TransferFunction
+
+    wa, kx, da = par("wa", 1.0), par("kx", 1.0), par("da", 1.0)
+    umin, umax = par("umin", -1.0), par("umax", 1.0)
+    if wa <= 0.0 or kx == 0.0 or da <= 0.0 or umin >= umax:
+        par.problems.append(f"{par.where}: wa = {wa:g}, kx = {kx:g}, da = {da:g}, umin = {umin:g}, umax = {umax:g}: "
+                            "expected wa > 0, kx other than 0, da > 0 and umin < umax")
+        return Mapped()
+    k1 = wa / kx
+    d = 2.0 * da  # the lead's direct part a1/b1
+    y0 = par("y", 0.0)
+    lead = TransferFunction(f"{n}_lead", order="1", a0=1.0, a1=2.0 * da / wa, b0=1.0, b1=1.0 / wa, y0=(1.0 - d) * y0)
+    error = Sum(f"{n}_err", gain1=1.0, gain2=-1.0)
+    pid = PID(n, Kp=k1, Ki=k1 * wa, lower=umin, upper=umax, anti_windup="clamping")
+    return Mapped(
+        [lead, error, pid], inputs={"yref": f"{error.name}.u1", "y": f"{lead.name}.u"},
+        outputs={"u": f"{n}.y", "err": f"{error.name}.y"}, values={"uI": Var(k1 * wa, f"{n}.I")},
+        internal=[(f"{lead.name}.y", f"{error.name}.u2"), (f"{error.name}.y", f"{n}.e")],
+        initial=_integral_start(n, par, k1 * wa),
+        start_from_input={f"{lead.name}.y0": (f"{lead.name}.u", lambda u0: (1.0 - d) * u0)},
+    )
+
+
+def _logic(function: str, ports: tuple[str, str]) -> Builder:
+    """Hopsan's comparisons and logic (Signal/Logic/SignalGreaterThan.hpp, SignalSmallerThan.hpp, SignalAnd.hpp,
+    SignalOr.hpp): a Function with that option, its two inputs ``u`` and ``u2`` (``in`` and ``x_limit``, or
+    ``in1`` and ``in2``); an unconnected one takes its start value."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Function
+
+        inputs = {ports[0]: f"{n}.u", ports[1]: f"{n}.u2"}
+        return Mapped([Function(n, function=function)], inputs=inputs, outputs={"out": f"{n}.y"})
+
+    return build
+
+
+def _hysteresis(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalHysteresis (Signal/Non-Linearities/SignalHysteresis.hpp): a Hysteresis of width ``y_h`` (constant: a
+    signal driving it is refused), its output starting at its input's start value, as Hopsan's."""
+    from hydroservo.components import Hysteresis
+
+    width = par("y_h", 1.0)
+    if width < 0.0:
+        par.problems.append(f"{par.where}: y_h = {width:g}: expected a width of 0 or more")
+        return Mapped()
+    comp = Hysteresis(n, band=width, y0=par("in", 0.0))
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                  start_from_input={f"{n}.y0": (f"{n}.u", float)})
+
+
+def _sr_latch(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalSRlatch (Signal/Logic/SignalSRlatch.hpp): a Latch from the start value of ``Qstate``, its inputs
+    ``setCond`` and ``resetCond``, its outputs ``Qstate`` and ``notQstate``."""
+    from hydroservo.components import Latch
+
+    q0 = par("Qstate", 0.0)
+    if not 0.0 <= q0 <= 1.0:
+        par.problems.append(f"{par.where}: start value Qstate = {q0:g}: expected 0 to 1")
+        return Mapped()
+    return Mapped([Latch(n, Q0=q0)], inputs={"setCond": f"{n}.set", "resetCond": f"{n}.reset"},
+                  outputs={"Qstate": f"{n}.Q", "notQstate": f"{n}.notQ"})
 
 
 def _sink(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1553,6 +1758,34 @@ LIBRARY: dict[str, Builder] = {
     )},
     "SignalRateLimiter": _rate_limiter,
     "SignalDeadZone": _dead_zone,
+    "Signal1DLookupTable": _lookup_table,
+    "SignalUnitDelay": _unit_delay,
+    "SignalPID": _pid,
+    "SignalPID2": _pid2,
+    "SignalPIlead": _pi_lead,
+    "SignalFloor": _function("floor"),
+    "SignalCeil": _function("ceil"),
+    "SignalRound": _function("round"),
+    "SignalGreaterThan": _logic("greater", ("in", "x_limit")),
+    "SignalSmallerThan": _logic("smaller", ("in", "x_limit")),
+    "SignalAnd": _logic("and", ("in1", "in2")),
+    "SignalOr": _logic("or", ("in1", "in2")),
+    "SignalSRlatch": _sr_latch,
+    "SignalHysteresis": _hysteresis,
+}
+
+#: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)
+REFUSED: dict[str, str] = {
+    "SignalTimeDelay": "a pure time delay, y(t) = u(t - deltat), is no ordinary differential equation: hydroservo's "
+    "engine integrates ODEs with error control and keeps no history of a signal, and an approximation (Padé) is "
+    "not Hopsan's law",
+    "SignalVariableTimeDelay": "a pure time delay, y(t) = u(t - dT), is no ordinary differential equation: "
+    "hydroservo's engine integrates ODEs with error control and keeps no history of a signal, and an "
+    "approximation (Padé) is not Hopsan's law",
+    "SignalNoiseGenerator": "white noise drawn anew at each of Hopsan's steps has no limit as the step vanishes, "
+    "and a random trace cannot be compared sample by sample",
+    "SignalStopSimulation": "it ends the run when its input exceeds 0.5, where hydroservo's runs end at t_end; "
+    "set t_end to where the model stops",
 }
 
 
@@ -1601,7 +1834,10 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         raise ModelFileError("; ".join(problems))
     unsupported = [c for c in model.components if c.typename not in LIBRARY]
     if unsupported:
-        listed = "; ".join(f"{c.full_name} ({c.typename})" for c in unsupported)
+        listed = "; ".join(
+            f"{c.full_name} ({c.typename}{': ' + REFUSED[c.typename] if c.typename in REFUSED else ''})"
+            for c in unsupported
+        )
         raise ModelFileError(
             f"{source}: {len(unsupported)} component(s) of types hydroservo does not map yet: {listed}. Supported: "
             f"{', '.join(sorted(LIBRARY))} (docs/hopsan.md)"
@@ -1637,6 +1873,7 @@ def import_hopsan(path: str | Path) -> HopsanImport:
             params = _Params(hc, where, problems, starts, connected.get(hc.full_name, frozenset()),
                              fan_in.get(hc.full_name))
             params.t0 = model.start
+            params.folder = Path(source).parent
             m = LIBRARY[hc.typename](hc, name, params)
         except Exception as exc:  # a value out of a component's range: named with the Hopsan component
             problems.append(f"{where}: {exc}")
@@ -1790,8 +2027,29 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     if not system.plots:  # no scope: what an engineer looks at first, not the first of Hopsan's many variables
         system.plots = system.default_panels(aliases=False)
     system.display_units = ["Pa_abs"]  # pressures shown absolute, as Hopsan shows them
+    _refuse_loops_of_unit_delays(system, source, [hc.full_name for hc in model.components if hc.typename == "SignalUnitDelay"])
     _start_from_inputs(system, {k: v for m in mapped.values() for k, v in m.start_from_input.items()})
     return HopsanImport(system, model, mapping, names, hopsan_names)
+
+
+def _refuse_loops_of_unit_delays(system: System, source: str, delays: list[str]) -> None:
+    """A Hopsan unit delay passes its input on in the limit of a vanishing step (:func:`_unit_delay`); where it
+    closed a loop with no state in it, that limit is an algebraic loop, which hydroservo does not solve: refused,
+    with the loop and the delays named."""
+    if not delays:
+        return
+    from hydroservo.system.assembly import assemble
+
+    try:
+        assemble(system)
+    except ModelError as exc:
+        if "algebraic loop" not in str(exc):
+            raise
+        raise ModelFileError(
+            f"{source}: {exc}. The model's unit delays ({', '.join(delays)}: SignalUnitDelay) pass their input on in "
+            "the limit of a vanishing step, which hydroservo's import takes; a loop one of them closes without a "
+            "state in it is then algebraic, and hydroservo does not solve algebraic loops of signals"
+        ) from None
 
 
 def _start_from_inputs(system: System, starts: dict[str, tuple[str, Callable[[float], float]]]) -> None:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -19,7 +20,7 @@ import pytest
 
 from hydroservo.data import reference_text
 from hydroservo.errors import ModelFileError
-from hydroservo.io.hopsan_library import LIBRARY, import_hopsan, read_hopsan, safe_name
+from hydroservo.io.hopsan_library import LIBRARY, REFUSED, import_hopsan, read_hopsan, safe_name
 
 COMPONENTS = [
     ('HydraulicTankC', 'Tank_C', {'p': ('100000', 'Pa')}),
@@ -154,10 +155,10 @@ def test_imported_model_file_round_trips(servo_file: Path, tmp_path: Path) -> No
 
 
 def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> None:
-    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalUnitDelay", "Wave", {})]
+    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalTimeDelay", "Wave", {})]
     path = tmp_path / "m.hmf"
     path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
-    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalUnitDelay\)"):
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalTimeDelay: a pure time delay, y\(t\) = u\(t - deltat\), is no ordinary differential equation"):
         read_hopsan(path)
 
 
@@ -183,9 +184,9 @@ def test_cli_writes_the_model_and_refuses_what_it_cannot_map(servo_file: Path, t
     data = json.loads(done.stdout)
     assert Path(data["files"]["model"]).is_file() and len(data["components"]) == len(COMPONENTS)
     bad = tmp_path / "bad.hmf"
-    bad.write_text(_hmf([*COMPONENTS, ("SignalUnitDelay", "Wave", {})], CONNECTIONS), encoding="utf-8")
+    bad.write_text(_hmf([*COMPONENTS, ("SignalTimeDelay", "Wave", {})], CONNECTIONS), encoding="utf-8")
     done = subprocess.run([*run, str(bad), "--out", str(tmp_path / "b")], capture_output=True, text=True)
-    assert done.returncode == 2 and "Wave (SignalUnitDelay)" in done.stderr and "Traceback" not in done.stderr
+    assert done.returncode == 2 and "Wave (SignalTimeDelay: a pure time delay" in done.stderr and "Traceback" not in done.stderr
     assert not (tmp_path / "b").exists()
 
 
@@ -300,13 +301,18 @@ def test_parameters_set_by_constant_signals_take_their_values_and_others_are_ref
 CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 
 
-@pytest.mark.parametrize("name", ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order"])
+@pytest.mark.parametrize(
+    "name", ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers"]
+)
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
-    its range (at least 1 % of its magnitude; forces and flows from the second point, where Hopsan logs start
-    values at t = 0). Each circuit failed before its law was imported: a spring's start force was dropped, an
-    unequal-area cylinder's force lacked p_atm (A1 - A2), a displacement setting of 0 became 1, a sensor's
-    start value overrode the spring's."""
+    its range (at least 1 % of its magnitude; forces, flows and signals from the second point, where Hopsan logs
+    start values at t = 0: a controller's output its start value 0). The first four failed before their laws were
+    imported: a spring's start force was dropped, an unequal-area cylinder's force lacked p_atm (A1 - A2), a
+    displacement setting of 0 became 1, a sensor's start value overrode the spring's. The last two check signal
+    blocks no model of Hopsan's repository uses (hysteresis, rounding, comparisons, logic) and the controllers
+    SignalPIlead and SignalPID (clamped at their limits, with derivative input) closing loops through unit
+    delays."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -318,7 +324,7 @@ def test_small_circuits_match_hopsan(name: str) -> None:
         if column not in by_hopsan:
             continue
         y, y_ref = result[by_hopsan[column]], ref[:, i]
-        if column.endswith(("#Force", "#Flow")):
+        if column.endswith(("#Force", "#Flow", "#Value")):
             y, y_ref = y[1:], y_ref[1:]
         scale = max(float(np.ptp(y_ref)), 0.01 * float(np.max(np.abs(y_ref))), 1e-12)
         assert np.max(np.abs(y - y_ref)) <= 0.005 * scale, column
@@ -735,6 +741,197 @@ def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path:
     np.testing.assert_allclose(r["DZ.out.Value"], np.where(u < -0.5, u + 0.5, np.where(u > 1, u - 1, 0.0)), atol=1e-12)
     # from -2 (its input's start) the limiter rises at 0.5/s behind the ramp of 1/s
     np.testing.assert_allclose(r["RL.out.Value"], -2.0 + 0.5 * t, atol=1e-5)
+
+
+def _lookup_model(folder: Path, **table: tuple[str, str]) -> Path:
+    """A ramp from -1 to 5 over 6 s through a Signal1DLookupTable with the parameters ``table``."""
+    v = _value
+    ramp = {"y_0#Value": v("-1"), "y_A#Value": v("6"), "t_start#Value": v("0"), "t_end#Value": v("6")}
+    components = [("SignalRamp", "Ramp", ramp), ("Signal1DLookupTable", "LUT", table)]
+    text = _hmf(components, [("Ramp.out", "LUT.in")])
+    for name in ("filename", "csvsep", "comment", "text"):  # Hopsan's text parameters
+        text = text.replace(f'type="double" name="{name}"', f'type="string" name="{name}"')
+    path = folder / "lookup.hmf"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_hopsans_lookup_table_reads_its_csv_beside_the_model_and_interpolates_its_input(tmp_path: Path) -> None:
+    """Signal1DLookupTable: the CSV named relative to the model, read with its separator, lines to skip,
+    comment character and columns (inid, outid); linear between the breakpoints, held outside them, as
+    Hopsan's LookupTable1D."""
+    (tmp_path / "tables").mkdir()
+    (tmp_path / "tables" / "f.csv").write_text("made by hand\n# y;x\n9;3\n1;0\n3;1\n", encoding="utf-8")
+    v = _value
+    path = _lookup_model(tmp_path, filename=v("tables/f.csv"), csvsep=v(";"), numlineskip=v("1"), comment=v("#"),
+                         inid=v("1"), outid=v("0"))
+    imp = import_hopsan(path)
+    table = imp.system["LUT"]
+    assert table.option("index") == "input" and "3 rows of 'tables/f.csv'" in dict(
+        (h, b) for h, _, b in imp.mapping)["LUT"]
+    t = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0])
+    r = imp.system.simulate(t_eval=t)
+    u = t - 1.0
+    np.testing.assert_allclose(r["LUT.out.Value"], np.interp(u, [0.0, 1.0, 3.0], [1.0, 3.0, 9.0]), atol=1e-12)
+    assert r["LUT.out.Value"][0] == 1.0 and r["LUT.out.Value"][-1] == 9.0  # held outside, as Hopsan's
+    table = import_hopsan(_lookup_model(tmp_path, text=v("0,2&#xa;1,4&#xa;"))).system["LUT"]  # the text instead
+    np.testing.assert_array_equal(table.times, [0.0, 1.0])
+    np.testing.assert_array_equal(table.table_values, [2.0, 4.0])
+
+
+def test_a_lookup_table_driven_by_a_constant_reads_its_file_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A constant into the table's input is folded (its value looked up); probing the block for its ports reads
+    no file: the table's CSV is read once, from the model's folder."""
+    import hydroservo.io.tables as tables
+
+    (tmp_path / "f.csv").write_text("0,1\n2,5\n", encoding="utf-8")
+    calls = []
+    real = tables.read_lookup_table
+    monkeypatch.setattr(tables, "read_lookup_table", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
+    v = _value
+    components = [("SignalConstant", "C", {"y#Value": v("1.5")}), ("Signal1DLookupTable", "LUT", {"filename": v("f.csv")})]
+    text = _hmf(components, [("C.y", "LUT.in")]).replace('type="double" name="filename"', 'type="string" name="filename"')
+    (tmp_path / "m.hmf").write_text(text, encoding="utf-8")
+    monkeypatch.chdir(tmp_path.parent)
+    r = import_hopsan(tmp_path / "m.hmf").system.simulate(t_eval=[0.0, 1.0])
+    np.testing.assert_allclose(r["LUT.out.Value"], 4.0)
+    assert calls == [(tmp_path / "f.csv").resolve()]
+
+
+def test_hopsans_lookup_table_missing_malformed_or_outside_the_model_folder_is_refused(tmp_path: Path) -> None:
+    v = _value
+    with pytest.raises(ModelFileError, match=r"LUT \(Signal1DLookupTable\): filename: table file .*none\.csv.*cannot read"):
+        import_hopsan(_lookup_model(tmp_path, filename=v("none.csv")))
+    (tmp_path / "bad.csv").write_text("0,0\n1,one\n", encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"LUT \(Signal1DLookupTable\).*line 2, column 1: 'one' is no finite number"):
+        import_hopsan(_lookup_model(tmp_path, filename=v("bad.csv")))
+    (tmp_path / "ok.csv").write_text("0,0\n1,1\n", encoding="utf-8")
+    inner = tmp_path / "model"
+    inner.mkdir()
+    for name in ("../ok.csv", str(tmp_path / "ok.csv")):
+        with pytest.raises(ModelFileError, match="outside the model file's folder"):
+            import_hopsan(_lookup_model(inner, filename=v(name)))
+    with pytest.raises(ModelFileError, match="neither a file"):
+        import_hopsan(_lookup_model(tmp_path))
+    with pytest.raises(ModelFileError, match="out of|column 2"):  # outid beyond the file's columns
+        import_hopsan(_lookup_model(tmp_path, filename=v("ok.csv"), outid=v("2")))
+
+
+def test_hopsans_pid_controllers_map_to_a_pid_with_their_anti_windup(tmp_path: Path) -> None:
+    """SignalPID: u = limit(uI + Kp (yref - y) - Kd dy), its integral stopped at the limits (clamping), here
+    uI + 2 + 0.5 reaching umax = 3 at 0.5 s; SignalPID2 with 'de' connected: v = K e + I + K Td de = 3 + I,
+    I' = K/Ti e + (Umax - v)/Tt above Umax = 3.5, so I = 1 - 0.5 exp(-2 (t - 0.5)) from 0.5 s, the output
+    limited to Uoutmax = 3.9; SignalPIlead with its measurement at rest at 0.5 (the lead's output too):
+    err = yref - 0.5, u = k1 err + k1 wa integral (k1 = wa/kx); a unit delay passes its input on."""
+    v = _value
+    components = [
+        ("SignalConstant", "One", {"y#Value": v("1")}),
+        ("SignalConstant", "Half", {"y#Value": v("0.5")}),
+        ("SignalPID", "PID", {"Kp#Value": v("2"), "KI#Value": v("1"), "Kd#Value": v("-1"), "dy#Value": v("0.5"),
+                              "umin#Value": v("-3"), "umax#Value": v("3")}),
+        ("SignalPID2", "PID2", {"K": v("2"), "Ti": v("2"), "Tt": v("0.5"), "Td": v("1"), "Umax": v("3.5"),
+                                "Uoutmax": v("3.9")}),
+        ("SignalPIlead", "Lead", {"y#Value": v("0.5"), "wa": v("2"), "kx": v("1"), "da": v("1"), "umax": v("3")}),
+        ("SignalUnitDelay", "Delay", {}),
+    ]
+    connections = [("One.y", "PID.yref"), ("One.y", "PID2.e"), ("Half.y", "PID2.de"), ("One.y", "Lead.yref"),
+                   ("PID.u", "Delay.in")]
+    path = tmp_path / "pid.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    system = imp.system
+    pid, pid2, lead = system["PID"], system["PID2"], system["Lead"]
+    assert pid.option("anti_windup") == "clamping" and pid.option("derivative") == "input"
+    assert pid.values["Kd"] == 1.0 and pid.values["upper"] == 3.0  # -Kd dy: the input de is dy
+    assert pid2.option("anti_windup") == "tracking" and pid2.values["Ki"] == 1.0 and pid2.values["Kd"] == 2.0
+    assert pid2.values["track_upper"] == 3.5 and pid2.values["upper"] == 3.9 and pid2.values["T_t"] == 0.5
+    assert lead.values["Kp"] == 2.0 and lead.values["Ki"] == 4.0 and lead.option("anti_windup") == "clamping"
+    assert system["Lead_lead"].values["a1"] == 1.0 and system["Lead_lead"].values["b1"] == 0.5
+    t = np.array([0.0, 0.25, 0.5, 1.0, 1.5, 2.0])
+    r = system.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["PID.u.Value"], np.minimum(2.5 + t, 3.0), atol=1e-6)
+    np.testing.assert_allclose(r["PID.uI.Value"], np.minimum(t, 0.5), atol=1e-6)
+    integral = np.where(t < 0.5, t, 1.0 - 0.5 * np.exp(-2.0 * (t - 0.5)))
+    np.testing.assert_allclose(r["PID2.u.Value"], np.minimum(3.0 + integral, 3.9), atol=1e-6)
+    np.testing.assert_allclose(r["Lead.err.Value"], 0.5, atol=1e-9)
+    np.testing.assert_allclose(r["Lead.u.Value"], np.minimum(1.0 + 2.0 * t, 3.0), atol=1e-6)
+    np.testing.assert_allclose(r["Delay.out.Value"], r["PID.u.Value"])
+
+
+def test_pid2_without_its_derivative_and_unit_delays_closing_algebraic_loops_are_refused(tmp_path: Path) -> None:
+    v = _value
+    path = tmp_path / "pid2.hmf"
+    path.write_text(_hmf([("SignalPID2", "PID2", {"Td": v("0.1")})], []), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"PID2 \(SignalPID2\): Td = 0.1 s with 'de' unconnected"):
+        import_hopsan(path)
+    components = [("SignalStep", "Step", {}), ("SignalSubtract", "Error", {}), ("SignalGain", "Gain", {}),
+                  ("SignalUnitDelay", "Delay", {})]
+    connections = [("Step.out", "Error.in1"), ("Error.out", "Gain.in"), ("Gain.out", "Delay.in"),
+                   ("Delay.out", "Error.in2")]
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"algebraic loop .*unit delays \(Delay: SignalUnitDelay\)"):
+        import_hopsan(path)
+    components[2] = ("SignalIntegrator2", "Gain", {})  # a state in the loop: imported
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    assert import_hopsan(path).system["Delay"].values["K"] == 1.0
+
+
+def test_a_filter_starts_from_the_value_of_the_signal_driving_it(tmp_path: Path) -> None:
+    """Hopsan's filters start from their output's start value with their input at the value it has when the model
+    is initialised (FirstOrderTransferFunction::initialize reads the input's node): a high-pass filter behind a
+    low-pass filter that starts at 0.3 starts at rest at 0.3, its output 0, not 0.3 (the file's 'in' is 0)."""
+    v = _value
+    components = [("SignalLP1Filter", "LP", {"out#Value": v("0.3"), "omega": v("6")}),
+                  ("SignalHP1Filter", "HP", {"omega": v("100")})]
+    path = tmp_path / "filters.hmf"
+    path.write_text(_hmf(components, [("LP.out", "HP.in")]), encoding="utf-8")
+    system = import_hopsan(path).system
+    assert system["HP"].values["y0"] == pytest.approx(-0.3)
+    r = system.simulate(t_eval=[0.0, 1e-3])
+    assert abs(r["HP.out.Value"][0]) < 1e-12
+
+
+def test_hopsans_rounding_comparison_logic_blocks_and_latch_map_with_their_ports(tmp_path: Path) -> None:
+    """SignalFloor, SignalCeil, SignalRound as Functions; SignalGreaterThan and SignalSmallerThan read in and
+    x_limit (unconnected: its start value), SignalAnd and SignalOr in1 and in2; SignalSRlatch's setCond,
+    resetCond, Qstate and notQstate, from its start value of Qstate."""
+    v = _value
+    ramp = {"y_0#Value": v("-2"), "y_A#Value": v("4"), "t_start#Value": v("0"), "t_end#Value": v("4")}
+    components = [
+        ("SignalRamp", "Ramp", ramp),
+        ("SignalFloor", "Floor", {}), ("SignalCeil", "Ceil", {}), ("SignalRound", "Round", {}),
+        ("SignalGreaterThan", "GT", {"x_limit#Value": v("0.5")}), ("SignalSmallerThan", "ST", {}),
+        ("SignalAnd", "And", {}), ("SignalOr", "Or", {"in2#Value": v("0")}),
+        ("SignalSRlatch", "Latch", {"Qstate#Value": v("1")}),
+    ]
+    connections = [("Ramp.out", f"{b}.in") for b in ("Floor", "Ceil", "Round", "GT", "ST")]
+    connections += [("GT.out", "And.in1"), ("ST.out", "And.in2"), ("GT.out", "Or.in1"), ("GT.out", "Latch.resetCond")]
+    path = tmp_path / "logic.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = import_hopsan(path).system
+    assert system["GT"].option("function") == "greater" and system["Latch"].values["Q0"] == 1.0
+    t = np.array([0.0, 0.5, 1.8, 2.25, 3.0, 3.9])
+    u = t - 2.0
+    r = system.simulate(t_eval=t)
+    np.testing.assert_array_equal(r["Floor.out.Value"], np.floor(u))
+    np.testing.assert_array_equal(r["Ceil.out.Value"], np.ceil(u))
+    np.testing.assert_array_equal(r["Round.out.Value"], np.sign(u) * np.floor(np.abs(u) + 0.5))
+    np.testing.assert_array_equal(r["GT.out.Value"], (u > 0.5).astype(float))
+    np.testing.assert_array_equal(r["ST.out.Value"], (u < 0.0).astype(float))  # x_limit's start value 0
+    np.testing.assert_array_equal(r["And.out.Value"], np.zeros_like(u))
+    np.testing.assert_array_equal(r["Or.out.Value"], (u > 0.5).astype(float))
+    # the latch starts set and is reset once the ramp passes 0.5 (t = 2.5 s)
+    np.testing.assert_allclose(r["Latch.Qstate.Value"], (u <= 0.5).astype(float), atol=1e-9)
+    np.testing.assert_allclose(r["Latch.notQstate.Value"], (u > 0.5).astype(float), atol=1e-9)
+
+
+@pytest.mark.parametrize("kind", sorted(REFUSED))
+def test_blocks_hydroservo_cannot_follow_are_refused_with_why(tmp_path: Path, kind: str) -> None:
+    path = tmp_path / "refused.hmf"
+    path.write_text(_hmf([(kind, "Block", {})], []), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=rf"Block \({kind}: " + re.escape(REFUSED[kind][:40])):
+        import_hopsan(path)
+    assert kind not in LIBRARY
 
 
 def test_rate_limits_of_the_wrong_sign_and_static_friction_below_the_kinetic_are_refused(tmp_path: Path) -> None:
