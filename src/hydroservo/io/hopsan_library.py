@@ -144,7 +144,7 @@ C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
-    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC",
+    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -153,6 +153,7 @@ MULTIPORTS: dict[str, frozenset[str]] = {
     "HydraulicMultiTankC": frozenset({"MP"}),
     "HydraulicMultiPressureSourceC": frozenset({"MP"}),
     "HydraulicCylinderC": frozenset({"P1", "P2"}),
+    "HydraulicSpringLoadedPistonC": frozenset({"P1", "P2"}),
 }
 
 
@@ -189,6 +190,35 @@ def _pressure_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     # a source of constant pressure that takes any flow: a tank at that pressure (Tank allows any pressure
     # above vacuum, ConstantPressure only above the atmosphere)
     return _source(n, par("p", 1e5), hc, par)
+
+
+#: the conductance through which a Q-type pressure source holds the C component joined to it [m^3/s/Pa]
+Q_SOURCE_CONDUCTANCE = 1e-2
+
+
+def _pressure_source_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicPressureSourceQ.hpp: a Q component that writes p = in to its
+    node and the flow q = (in - c)/Zc that brings the C component joined to it (a volume, a cylinder's chamber)
+    to that pressure within one step: in the limit an ideal pressure source joined to a capacitance, whose
+    pressure it sets, and which takes whatever flow that needs. hydroservo's node has one pressure port, the C
+    component's; the source is a pressure source (a PressureSource following the signal ``p``, absolute, or a
+    Tank at a constant ``p``) behind a LaminarOrifice of conductance ``Q_SOURCE_CONDUCTANCE`` (1e-2 m³/s/Pa): the
+    capacitance follows the source's pressure with the time constant V/(β_e G) (0.03 ns for 0.3 L at 1e9 Pa) and
+    stands below it by q/G (0.1 Pa for a flow of 1 L/s). The orifice, named as the source, gives the node's flow;
+    its pressure is the C component's. (On HydraulicSpringLoadedPistonC.hmf, whose sources deliver up to 17 L/s,
+    G = 1e-6, 1e-3 and 1e-2 m³/s/Pa put the constant source's pressure 170 %, 1.7 % and 0.17 % of its scale, 1 %
+    of its value, off Hopsan's.)"""
+    from hydroservo.components import LaminarOrifice
+
+    source = _source(f"{n}_p", par("p", 1e5), hc, par)
+    path = LaminarOrifice(n, G_lam=Q_SOURCE_CONDUCTANCE)
+    return Mapped(
+        [*source.components, path],
+        power={"P1": f"{n}.B"},
+        inputs=source.inputs,
+        internal=[(source.power["P1"], f"{n}.A")],
+        note=f"{type(source.components[0]).__name__} {n}_p behind LaminarOrifice {n} (G = {Q_SOURCE_CONDUCTANCE:g} m³/s/Pa)",
+    )
 
 
 def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -729,6 +759,50 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.R"})
 
 
+def _cylinder_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/LinearActuators/HydraulicCylinderQ.hpp: a Q-type piston with its load, between the
+    C components joined to P1 and P2 (the chambers' volumes): its transfer functions 1/(m_l s² + (B_l + B_p) s +
+    k_l) from the force A_1 p_1 - A_2 p_2 - f_3 to the position x_3, limited to [0, s_l] (the velocity zeroed
+    there: inelastic stops), and q_1 = -A_1 v_3, q_2 = A_2 v_3 (Hopsan's flows count out of the component), are in
+    the limit m_l ẍ = A_1 p_1 - A_2 p_2 - F_3 - (B_l + B_p) ẋ - k_l x: a Cylinder with ``chambers = "ports"``
+    (its ports read the volumes' pressures; B_p) pushing a Mass ``{n}_load`` (m_l, B_l, k_l towards x = 0), whose
+    end 2 is P3, with stiff stops at 0 and s_l (1e9 N/m) damped critically for m_l, 2 √(1e9 N/m m_l): a stop
+    that does not bounce, as Hopsan's inelastic one (the masses' 1e6 N s/m on Hopsan's default m_l of 0.05 kg
+    makes a mode of 2e7 1/s that switches on and off at the stop's edge, and the solver's steps collapse
+    there). The pressures it reads are those of the
+    volumes, at least 0 Pa absolute with their cavity law, as Hopsan's cavitation check floors them."""
+    from hydroservo.components import Cylinder, Mass
+
+    a1, a2, sl, m = par("A_1", 1e-4), par("A_2", 1e-4), par("s_l", 0.01), par("m_l", 0.05)
+    if sl <= 0.0 or m <= 0.0:
+        par.problems.append(f"{par.where}: s_l = {sl:g} m, m_l = {m:g} kg; only values above 0 are supported")
+        return Mapped()
+    cyl = Cylinder(n, A_A=a1, A_B=a2, B_p=par("B_p", 0.0), chambers="ports", x_min=0.0, x_max=sl, k_stop=0.0,
+                   c_stop=0.0, p_amb="0 Pa_abs")
+    load = Mass(f"{n}_load", m=m, B=par("B_l", 0.0), k_spring=par("k_l", 100.0), incline=0.0,
+                x0=par.start("P3", "Position"), v0=par.start("P3", "Velocity"), x_min=0.0, x_max=sl, k_stop=1e9,
+                c_stop=2.0 * math.sqrt(1e9 * m))  # critically damped: no bounce, as Hopsan's inelastic stops
+    return Mapped(
+        [cyl, load],
+        power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}_load.P2"},
+        internal=[(f"{n}.R", f"{n}_load.P1")],
+        note=f"Cylinder {n} (chambers = ports) pushing Mass {n}_load",
+    )
+
+
+def _spring_loaded_piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/LinearActuators/HydraulicSpringLoadedPistonC.hpp: HydraulicCylinderC's chambers
+    and piston (the same volumes, leakage and stops) with the constant spring force F_s taken off the force at P3
+    (its wave variable c3 - F_s): the cylinder of HydraulicCylinderC's mapping with ``F_s``. Its chambers' wave
+    variables are floored at 0 (not its cylinder's cavity: no deficit to refill), so a chamber at 0 Pa absolute
+    loses no more pressure: ``pressure_floor = "check-valve"`` at 0 Pa absolute, the leakage between the floored
+    pressures."""
+    m = _cylinder_c(hc, n, par)
+    m.components[0].set(pressure_floor="check-valve", F_s=par("F_s", 1000.0))
+    m.note = f"Cylinder {n} with F_s, pressure_floor = check-valve"
+    return m
+
+
 def _flow_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import FlowSource
 
@@ -1117,6 +1191,14 @@ def _constant(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([Constant(n, value=par("y", 1.0))], outputs={"y": f"{n}.y"})  # Hopsan's output is y
 
 
+def _constant_old(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalSource, SignalConstant's name in Hopsan before 0.6 (its output port ``out``, today's ``y``; Hopsan's
+    loader renames both, HopsanGUI/Utilities/XMLUtilities.cpp)."""
+    from hydroservo.components import Constant
+
+    return Mapped([Constant(n, value=par("y", 1.0))], outputs={"out": f"{n}.y"})
+
+
 def _gain(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Gain
 
@@ -1396,6 +1478,10 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
+    "HydraulicCylinderQ": _cylinder_q,
+    "HydraulicSpringLoadedPistonC": _spring_loaded_piston,
+    "HydraulicPressureSourceQ": _pressure_source_q,
+    "SignalSource": _constant_old,
     "HydraulicPressureSensor": _sensor("Pressure", "Pa"),
     "HydraulicFlowSensor": _sensor("Flow", "m^3/s"),
     "MechanicTranslationalMass": _mass,
@@ -1760,6 +1846,7 @@ def _node_starts(
 #: Hopsan's signal blocks whose output is constant when their inputs are: type -> (output, inputs, function)
 _CONSTANT_BLOCKS: dict[str, tuple[str, tuple[str, ...], Callable[..., float]]] = {
     "SignalConstant": ("y", (), lambda par: par("y")),
+    "SignalSource": ("out", (), lambda par: par("y")),
     "SignalGain": ("out", ("in",), lambda par, u: par("k") * u),
 }
 

@@ -1010,3 +1010,92 @@ def test_hopsans_gear_shaft_is_a_geared_spring_of_the_stiffness_its_element_conv
     assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-2.0, rel=1e-6)
     assert r["G.Pmr2.Torque"][-1] == pytest.approx(-20.0, rel=1e-6)
     assert r["G.Pmr1.Torque"][-1] == pytest.approx(20.0, rel=1e-6)
+
+
+def test_hopsans_q_type_pressure_source_holds_the_volume_joined_to_it_at_its_pressure(tmp_path: Path) -> None:
+    """HydraulicPressureSourceQ sets the pressure of the C component joined to it (a volume drained by a laminar
+    orifice to a tank): in the steady state the node is at p (absolute) and the source delivers Kc (p - p_tank).
+    Its p driven by an old file's SignalSource (SignalConstant's former name, its port out) is followed, within
+    q/G of the source's conductance."""
+    v = _value
+    components = [
+        ("HydraulicPressureSourceQ", "Q", {"p#Value": v("1e5", "Pa")}),
+        ("SignalSource", "C", {"y": v("5e6")}),
+        ("HydraulicVolume", "V", {"V": v("1e-3"), "Beta_e": v("1e9"), "P1#Pressure": v("1e5", "Pa")}),
+        ("HydraulicLaminarOrifice", "O", {"Kc#Value": v("1e-10")}),
+        ("HydraulicTankC", "T", {"p": v("1e5", "Pa")}),
+    ]
+    connections = [("C.out", "Q.p"), ("Q.P1", "V.P1"), ("V.P2", "O.P1"), ("O.P2", "T.P1")]
+    path = tmp_path / "qsource.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert type(imp.system["Q_p"]).__name__ == "PressureSource" and type(imp.system["Q"]).__name__ == "LaminarOrifice"
+    r = imp.system.simulate(t_eval=[0.0, 0.01, 0.1])
+    assert r["V.P1.Pressure"][-1] == pytest.approx(5e6, rel=1e-7)
+    assert r["Q.P1.Pressure"][-1] == pytest.approx(5e6, rel=1e-7)
+    assert r["Q.P1.Flow"][-1] == pytest.approx(1e-10 * (5e6 - 1e5), rel=1e-6)
+    assert r["C.out.Value"][-1] == 5e6
+    del components[1]  # undriven: a tank at its p
+    path.write_text(_hmf(components, connections[1:]), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert type(imp.system["Q_p"]).__name__ == "Tank"
+    assert imp.system.simulate(t_eval=[0.0, 0.1])["V.P1.Pressure"][-1] == pytest.approx(1e5, rel=1e-7)
+
+
+def test_hopsans_q_type_cylinder_is_the_cylinder_with_its_chambers_outside_pushing_its_load(tmp_path: Path) -> None:
+    """HydraulicCylinderQ between two C-type pressure sources: m_l ẍ = A_1 p_1 - A_2 p_2 - (B_l + B_p) ẋ - k_l x
+    (absolute pressures), so the piston settles at x = (A_1 p_1 - A_2 p_2)/k_l from its P3 start position, or on
+    its stop at s_l; it takes A_1 ẋ from P1 and gives A_2 ẋ to P2 (Hopsan's flows count out of it)."""
+    v = _value
+    cyl = {"A_1#Value": v("2e-4"), "A_2#Value": v("1e-4"), "B_p#Value": v("300"), "B_l#Value": v("200"),
+           "k_l#Value": v("1e5"), "m_l": v("2"), "s_l": v("0.5"), "P3#Position": v("0.1")}
+    components = [
+        ("HydraulicCylinderQ", "Cyl", cyl),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("2e6", "Pa")}),
+        ("MechanicPositionSensor", "X", {}),
+    ]
+    connections = [("Cyl.P1", "S1.P1"), ("Cyl.P2", "S2.P1"), ("Cyl.P3", "X.P1")]
+    path = tmp_path / "qcyl.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Cyl"].option("chambers") == "ports" and imp.system["Cyl_load"].values["m"] == 2.0
+    r = imp.system.simulate(t_eval=[0.0, 0.05, 2.0], accuracy=1e-8)
+    x_end = (2e-4 * 1e7 - 1e-4 * 2e6) / 1e5
+    assert r["Cyl.P3.Position"][0] == pytest.approx(0.1)
+    assert r["Cyl.P3.Position"][-1] == pytest.approx(x_end, rel=1e-6)
+    speed = r["Cyl.P3.Velocity"][1]
+    assert speed < 0.0  # retracting from 0.1 m towards x_end
+    assert r["Cyl.P1.Flow"][1] == pytest.approx(-2e-4 * speed, rel=1e-9)
+    assert r["Cyl.P2.Flow"][1] == pytest.approx(1e-4 * speed, rel=1e-9)
+    cyl["k_l#Value"] = v("1e3")  # x_end = 18 m: the stop at s_l
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 2.0])
+    assert r["Cyl.P3.Position"][-1] == pytest.approx(0.5, abs=2e-5)
+
+
+def test_hopsans_spring_loaded_piston_is_the_c_cylinder_less_its_spring_force(tmp_path: Path) -> None:
+    """HydraulicSpringLoadedPistonC: HydraulicCylinderC's piston with the constant force F_s against it. Between two
+    Q-type pressure sources, pushing a damped mass (B) whose stop at 0 it leaves, it reaches the speed
+    (A_1 p_1 - A_2 p_2 - F_s)/B (Hopsan's P3 counts it negative, the piston extending)."""
+    v = _value
+    components = [
+        ("HydraulicSpringLoadedPistonC", "P", {"A_1#Value": v("1e-3"), "A_2#Value": v("5e-4"), "s_l#Value": v("10"),
+                                               "F_s#Value": v("2000"), "V_1#Value": v("1e-4"), "V_2#Value": v("1e-4"),
+                                               "B_p#Value": v("0"), "c_leak#Value": v("0"),
+                                               "P1#Pressure": v("4e6", "Pa"), "P2#Pressure": v("1e6", "Pa")}),
+        ("HydraulicPressureSourceQ", "Q1", {"p#Value": v("4e6", "Pa")}),
+        ("HydraulicPressureSourceQ", "Q2", {"p#Value": v("1e6", "Pa")}),
+        ("MechanicTranslationalMass", "M", {"m": v("10"), "B#Value": v("1000"), "k#Value": v("0"),
+                                            "x_min#Value": v("0"), "x_max#Value": v("100")}),
+    ]
+    connections = [("P.P1", "Q1.P1"), ("P.P2", "Q2.P1"), ("P.P3", "M.P1")]
+    path = tmp_path / "slp.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    cyl = imp.system["P"]
+    assert cyl.values["F_s"] == 2000.0 and cyl.option("pressure_floor") == "check-valve"
+    r = imp.system.simulate(t_eval=[0.0, 0.5], accuracy=1e-8)
+    force = 1e-3 * 4e6 - 5e-4 * 1e6 - 2000.0
+    assert r["P.P3.Velocity"][-1] == pytest.approx(-force / 1000.0, rel=1e-4)
+    assert r["P.P3.Force"][-1] == pytest.approx(force, rel=1e-4)
