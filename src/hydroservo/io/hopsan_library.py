@@ -388,11 +388,15 @@ def _piston_accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
 
 def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementPump.hpp: q = D_p n_p/2π - C_lp (p_2 - p_1),
+    no port drawn below 0 Pa absolute: a Pump with ``inlet = "floor"``; its speed n_p [rad/s] driven by a signal
+    (``speed = "input"``, the signal into ``omega_in``; a negative speed pumps backwards, as Hopsan's)."""
     from hydroservo.components import Pump
 
-    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("n_p", 250.0), C_leak=par("C_lp", 1e-12),
-                inlet="floor", p_floor=_abs(0.0))
-    return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"})
+    driven = "n_p" in par.driven
+    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=0.0 if driven else par("n_p", 250.0),
+                C_leak=par("C_lp", 1e-12), inlet="floor", p_floor=_abs(0.0), speed="input" if driven else "constant")
+    return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"}, inputs={"n_p": f"{n}.omega_in"} if driven else {})
 
 
 def _edge_coefficient(par: _Params, f: float, rho: float, d: str = "d", c_q: str = "C_q") -> float:

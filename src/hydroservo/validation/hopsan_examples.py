@@ -232,6 +232,11 @@ MODELS: dict[str, Spec] = {
         "Component Test/HydraulicComponent Test/HydraulicCylinderQTest2.hmf",
         "a Q-type piston between two volumes fed by a 4/3 valve driven by a sine wave, against a force source",
     ),
+    "hydraulic-fixed-displacement-pump-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicFixedDisplacementPumpTest.hmf",
+        "a fixed-displacement pump whose speed a ramp takes from -10 to 10 rad/s, in a closed loop through a laminar "
+        "orifice between two volumes",
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.

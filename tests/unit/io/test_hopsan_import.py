@@ -1099,3 +1099,25 @@ def test_hopsans_spring_loaded_piston_is_the_c_cylinder_less_its_spring_force(tm
     force = 1e-3 * 4e6 - 5e-4 * 1e6 - 2000.0
     assert r["P.P3.Velocity"][-1] == pytest.approx(-force / 1000.0, rel=1e-4)
     assert r["P.P3.Force"][-1] == pytest.approx(force, rel=1e-4)
+
+
+def test_hopsans_fixed_pump_turns_at_the_speed_a_signal_sets(tmp_path: Path) -> None:
+    """HydraulicFixedDisplacementPump with n_p driven by a ramp: q = D_p n_p/2π - C_lp (p_2 - p_1) between two
+    C-type pressure sources, backwards while n_p < 0 (Pump with speed = input)."""
+    v = _value
+    components = [
+        ("HydraulicFixedDisplacementPump", "P", {"n_p#Value": v("250"), "D_p#Value": v("5e-5"),
+                                                 "C_lp#Value": v("1e-12")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("2e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1.2e6", "Pa")}),
+        ("SignalRamp", "R", {"y_0#Value": v("-10"), "y_A#Value": v("20"), "t_start#Value": v("0"),
+                             "t_end#Value": v("10")}),
+    ]
+    connections = [("P.P1", "S1.P1"), ("P.P2", "S2.P1"), ("R.out", "P.n_p")]
+    path = tmp_path / "pump.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["P"].option("speed") == "input"
+    r = imp.system.simulate(t_eval=[0.0, 2.5, 5.0, 10.0])
+    n = np.array([-10.0, -5.0, 0.0, 10.0])
+    np.testing.assert_allclose(r["P.P2.Flow"], 5e-5 * n / (2 * np.pi) - 1e-12 * 1e6, rtol=1e-9, atol=1e-15)
