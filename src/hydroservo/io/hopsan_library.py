@@ -858,6 +858,41 @@ def _check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
+def _directional_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/DirectionalValves/Hydraulic22DirectionalCheckValve.hpp: an on/off spool (the
+    second-order filter of the 4/3 valve's, driven to 1 while ``in`` > 0.5 and to 0 otherwise, limited to [0, 1],
+    starting at ``out``); while it is above 0.5 the valve passes Kv_open √|p_1 - p_2| both ways, otherwise it
+    checks: Kv_check √(p_1 - p_2) once p_1 - p_2 exceeds F_s (a seat that opens fully there), none back. A
+    CheckValve with ``opening = "seat"``, p_crack = F_s and ``pilot = "open"``, its bores from Kv_check and
+    Kv_open (K = C_d A √(2/ρ), C_d 0.67, ρ 870 kg/m³: only the product matters), turbulent to some 50 Pa
+    (lambda_crit 10), its pilot the spool's position (SpoolSecondOrder with a stroke of 1 m: x_v is the fraction;
+    delta_h < 1 refused, as the other on/off valves'). Output ``out``: the spool's position."""
+    from hydroservo.components import CheckValve, Gain
+
+    cd, rho = 0.67, 870.0
+
+    def bore(k: float) -> float:
+        return math.sqrt(4.0 * abs(k) / (cd * math.sqrt(2.0 / rho)) / math.pi)
+
+    k_open, k_check = par("Kv_open", 5e-7), par("Kv_check", 5e-7)
+    if k_open <= 0.0 or k_check <= 0.0:
+        par.problems.append(f"{par.where}: Kv_open = {k_open:g}, Kv_check = {k_check:g}; only values above 0 are supported")
+        return Mapped()
+    spool = _spool(n, par, 1.0, "on-off", par("out", 0.0))  # Hopsan's filter starts at out (not at its input)
+    pilot = Gain(f"{n}_pilot", input_unit="m", K="1 1/m")  # the spool's position as the fraction of its stroke
+    valve = CheckValve(n, opening="seat", pilot="open", p_crack=par("F_s", 0.0), d=bore(k_check), d_open=bore(k_open),
+                       Cd=cd, rho=rho, lambda_crit=10.0)
+    return Mapped(
+        [*spool.components, pilot, valve],
+        power={"P1": f"{n}.A", "P2": f"{n}.B"},
+        inputs=spool.inputs,
+        outputs={"out": f"{n}_pilot.y"},
+        initial=spool.initial,
+        internal=[*spool.internal, (f"{n}_spool.xv", f"{n}_pilot.u"), (f"{n}_pilot.y", f"{n}.open")],
+        note="a Selector (open while in > 0.5), a SpoolSecondOrder, a Gain and a CheckValve (pilot = open)",
+    )
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -1457,6 +1492,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicLaminarOrifice": _laminar_orifice,
     "HydraulicTurbulentOrifice": _turbulent_orifice,
     "HydraulicCheckValve": _check_valve,
+    "Hydraulic22DirectionalCheckValve": _directional_check_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,

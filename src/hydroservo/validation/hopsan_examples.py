@@ -237,6 +237,11 @@ MODELS: dict[str, Spec] = {
         "a fixed-displacement pump whose speed a ramp takes from -10 to 10 rad/s, in a closed loop through a laminar "
         "orifice between two volumes",
     ),
+    "hydraulic-22-directional-check-valve": Spec(
+        "Component Test/HydraulicComponent Test/Hydraulic22DirectionalCheckValve.hmf",
+        "a 2/2 directional check valve between a 100 bar source and one swinging between 0 and 200 bar, checking, "
+        "then opened by a ramped command",
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.

@@ -1121,3 +1121,31 @@ def test_hopsans_fixed_pump_turns_at_the_speed_a_signal_sets(tmp_path: Path) -> 
     r = imp.system.simulate(t_eval=[0.0, 2.5, 5.0, 10.0])
     n = np.array([-10.0, -5.0, 0.0, 10.0])
     np.testing.assert_allclose(r["P.P2.Flow"], 5e-5 * n / (2 * np.pi) - 1e-12 * 1e6, rtol=1e-9, atol=1e-15)
+
+
+def test_hopsans_directional_check_valve_checks_until_its_spool_passes_half_then_opens_both_ways(tmp_path: Path) -> None:
+    """Hydraulic22DirectionalCheckValve between 10 bar and 50 bar (absolute): checked, no flow back from P2; with
+    ``in`` stepped to 1 its spool (1/(s²/ω² + 2 s/ω + 1) of the step) passes 0.5 at ω t = 1.678 and the valve
+    passes Kv_open √(p_2 - p_1) from P2 to P1. Kv gives the bores (C_d 0.67, ρ 870 kg/m³); F_s the cracking."""
+    v = _value
+    valve = {"omega_h": v("100"), "delta_h": v("1"), "Kv_open#Value": v("4e-8"), "Kv_check#Value": v("2e-8"),
+             "F_s#Value": v("3e5"), "out#Value": v("0")}
+    components = [
+        ("Hydraulic22DirectionalCheckValve", "V", valve),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("5e6", "Pa")}),
+        ("SignalStep", "U", {"y_0#Value": v("0"), "y_A#Value": v("1"), "t_step#Value": v("0.1")}),
+    ]
+    connections = [("V.P1", "S1.P1"), ("V.P2", "S2.P1"), ("U.out", "V.in")]
+    path = tmp_path / "dcv.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    cv = imp.system["V"]
+    assert cv.option("pilot") == "open" and cv.values["p_crack"] == 3e5
+    area = lambda k: k / (0.67 * np.sqrt(2.0 / 870.0))  # noqa: E731
+    assert np.pi * cv.values["d_open"] ** 2 / 4 == pytest.approx(area(4e-8)) and np.pi * cv.values["d"] ** 2 / 4 == pytest.approx(area(2e-8))
+    t_half = 0.1 + 1.678347 / 100.0  # (1 + ω t) e^(-ω t) = 0.5
+    r = imp.system.simulate(t_eval=[0.0, 0.1, t_half - 1e-4, t_half + 1e-4, 0.3])
+    assert list(r["V.P1.Flow"][:3]) == [0.0, 0.0, 0.0]
+    assert r["V.P1.Flow"][3] == pytest.approx(4e-8 * np.sqrt(4e6), rel=1e-4)
+    assert r["V.out.Value"][-1] == pytest.approx(1.0, abs=1e-6)
