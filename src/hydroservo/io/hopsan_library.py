@@ -257,7 +257,7 @@ def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
-def _pressure_valve_g(reducing: bool) -> Builder:
+def _pressure_valve_g(reducing: bool, counterbalance: bool = False) -> Builder:
     """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
     a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
     p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
@@ -268,13 +268,22 @@ def _pressure_valve_g(reducing: bool) -> Builder:
     C_f = 2 cos φ/(√(2/ρ) A_v), tau = Bv/ks, K at most Cq w √(2/ρ) Xvmax, p_tr = p0 (signedSquareL is
     hydroservo's regularised turbulent law exactly). The relief valve's setting is a drop (``pilot = "drop"``), the
     reducing valve's an absolute pressure. π where Hopsan writes 3.14159 and 0.785398 (1e-6 apart); visc is
-    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax."""
+    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax.
+
+    ``counterbalance``: [Hopsan2026] Hydraulic/Special/HydraulicCounterBalanceValveG.hpp, the relief valve's spool
+    with the pilot P3 on the fraction kappa of its area, p_1 - p_2 + kappa p_3 - pref (p_3 absolute, no flow), and
+    no check valve: a CounterbalanceValve with ``pilot = "drop"``, ``check = "none"``, r_p = kappa, p_crack =
+    pref - kappa p_atm (the gauge setting of Hopsan's absolute pilot); its own defaults (Dv 0.03 m, Bv 100 N s/m,
+    Xvmax 0.03 m, phi 0.03 rad, ks 100 N/m, pref 1e6 Pa)."""
+    defaults = {"Dv": 0.03, "phi": 0.03, "ks": 100.0, "Bv": 100.0, "Xvmax": 0.03, "pref": 1e6} if counterbalance else {
+        "Dv": 0.01, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.002, "pref": 1e7}
 
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-        from hydroservo.components import PressureReducingValve, ReliefValve
+        from hydroservo.components import CounterbalanceValve, PressureReducingValve, ReliefValve
 
-        rho, dv, frac, phi = par("rho", 870.0), par("Dv", 0.01), par("frac", 0.1), par("phi", 1.17)
-        ks, bv, x_vmax, cq = par("ks", 1e4), par("Bv", 1000.0), par("Xvmax", 0.002), par("Cq", 0.67)
+        rho, dv, frac, phi = par("rho", 870.0), par("Dv", defaults["Dv"]), par("frac", 0.1), par("phi", defaults["phi"])
+        ks, bv = par("ks", defaults["ks"]), par("Bv", defaults["Bv"])
+        x_vmax, cq = par("Xvmax", defaults["Xvmax"]), par("Cq", 0.67)
         before = len(par.problems)
         for name, value in (("rho", rho), ("Dv", dv), ("frac", frac), ("ks", ks), ("Bv", bv), ("Xvmax", x_vmax),
                             ("Cq", cq), ("p0", par("p0", 1e5))):
@@ -303,18 +312,57 @@ def _pressure_valve_g(reducing: bool) -> Builder:
             "p_tr": par("p0", 1e5),
         }
         comp: cbase.Component
-        if reducing:
-            comp = PressureReducingValve(n, p_set=_abs(par("pref", 1e7)), **spool)
+        power = {"P1": f"{n}.A", "P2": f"{n}.B"}
+        if counterbalance:
+            kappa = par("kappa", 0.1)
+            if kappa < 0.0:
+                par.problems.append(f"{par.where}: kappa = {kappa:g}; an area fraction of 0 or more is supported")
+            comp = CounterbalanceValve(n, p_crack=par("pref", defaults["pref"]) - kappa * ATMOSPHERE, r_p=max(kappa, 0.0),
+                                       pilot="drop", check="none", **spool)
+            power["P3"] = f"{n}.X"
+        elif reducing:
+            comp = PressureReducingValve(n, p_set=_abs(par("pref", defaults["pref"])), **spool)
         else:
-            comp = ReliefValve(n, p_crack=par("pref", 1e7), pilot="drop", **spool)
+            comp = ReliefValve(n, p_crack=par("pref", defaults["pref"]), pilot="drop", **spool)
         return Mapped(
             [comp],
-            power={"P1": f"{n}.A", "P2": f"{n}.B"},
+            power=power,
             values={"xv": Var(x_vmax, f"{n}.s")},
             initial={f"{n}.K": c * min(max(par("xv", 0.0), 0.0), x_vmax)},
         )
 
     return build
+
+
+def _over_center(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicOverCenterValve.hpp: HydraulicPressureReliefValve's
+    spool (its static opening (p_1 - p_ref + a_ratio p_control)/(C_s + C_f (p_1 - p_2)) through the hysteresis p_h
+    and the lag tao, limited to [0, q_nom/√p_nom]; the flow that coefficient times √(p_1 - p_2), either way),
+    piloted by P_CONTROL (absolute, no flow) on a_ratio times its area: a CounterbalanceValve with ``check =
+    "none"`` (Hopsan's has no check valve), r_p = a_ratio, p_crack = p_ref - (1 + a_ratio) p_atm (the gauge setting
+    of Hopsan's sum of absolute pressures), its own p_nom; P_CONTROL the pilot port X. Its output xv (the flow
+    coefficient, Hopsan's x0) is the valve's K."""
+    from hydroservo.components import CounterbalanceValve
+
+    ratio, p_h = par("a_ratio", 5.0), par("p_h", 5e5)
+    if ratio < 0.0 or p_h < 0.0:
+        par.problems.append(f"{par.where}: a_ratio = {ratio:g}, p_h = {p_h:g} Pa; values of 0 or more are supported")
+        return Mapped()
+    comp = CounterbalanceValve(
+        n,
+        p_crack=par("p_ref", 2e6) - (1.0 + ratio) * ATMOSPHERE,
+        r_p=ratio,
+        check="none",
+        tau=par("tao", 0.01),
+        k_cs=par("k_cs", 1e-8),
+        k_cf=par("k_cf", 1e-8),
+        q_nom=par("q_nom", 0.001),
+        p_nom=par("p_nom", 7e6),
+        p_tr=1e3,  # as the relief valve's
+        p_h=p_h,
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_CONTROL": f"{n}.X"},
+                  values={"xv": Var(1.0, f"{n}.K")})
 
 
 def _accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1506,6 +1554,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureControlled42Valve3": _pressure_controlled("42-3"),
     "HydraulicPressureReliefValveG": _pressure_valve_g(reducing=False),
     "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
+    "HydraulicCounterBalanceValveG": _pressure_valve_g(reducing=False, counterbalance=True),
+    "HydraulicOverCenterValve": _over_center,
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),

@@ -252,6 +252,11 @@ MODELS: dict[str, Spec] = {
         "a 2/2 directional check valve between a 100 bar source and one swinging between 0 and 200 bar, checking, "
         "then opened by a ramped command",
     ),
+    "hydraulic-counter-balance-valve-g-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicCounterBalanceValveGTest.hmf",
+        "a spool counterbalance valve (force balance with flow forces) and an over-centre valve (relief-valve "
+        "spool with hysteresis), each between a pressure source and a tank, their loads and pilots soft-stepped",
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.

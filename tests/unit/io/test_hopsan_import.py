@@ -1149,3 +1149,45 @@ def test_hopsans_directional_check_valve_checks_until_its_spool_passes_half_then
     assert list(r["V.P1.Flow"][:3]) == [0.0, 0.0, 0.0]
     assert r["V.P1.Flow"][3] == pytest.approx(4e-8 * np.sqrt(4e6), rel=1e-4)
     assert r["V.out.Value"][-1] == pytest.approx(1.0, abs=1e-6)
+
+
+def test_hopsans_over_centre_and_counterbalance_valves_open_as_their_pilots_add_to_the_load(tmp_path: Path) -> None:
+    """HydraulicOverCenterValve: the relief valve's spool opened by p_1 + a_ratio p_control over p_ref (absolute),
+    K = over/(C_s + C_f Δp), Q = K √Δp, its xv that K; HydraulicCounterBalanceValveG: the G relief valve's spool
+    balance with kappa p_3 added, B_v ẋ = A_v (p_1 - p_2 + kappa p_3 - pref) - (ks + 2 Cq w cos φ Δp) x, settling
+    where the right side vanishes. Neither has a check valve (held both ways while closed)."""
+    v = _value
+    oc = {"p_ref#Value": v("2.5e7"), "p_h#Value": v("0"), "a_ratio#Value": v("4"), "tao": v("0.005"),
+          "k_cs": v("1e-8"), "k_cf": v("1e-8"), "q_nom": v("0.01"), "p_nom": v("7e6")}
+    cb = {"pref#Value": v("2e6"), "rho#Value": v("860"), "Dv#Value": v("0.01"), "frac#Value": v("0.1"),
+          "kappa#Value": v("0.5"), "Bv#Value": v("100"), "Xvmax#Value": v("0.003"), "Cq#Value": v("0.67"),
+          "phi#Value": v("0.5"), "ks#Value": v("1e5"), "p0#Value": v("1e5"), "xv#Value": v("0")}
+    components = [
+        ("HydraulicOverCenterValve", "OC", oc),
+        ("HydraulicCounterBalanceValveG", "CB", cb),
+        ("HydraulicPressureSourceC", "L1", {"p#Value": v("1.5e7", "Pa")}),
+        ("HydraulicPressureSourceC", "X1", {"p#Value": v("3e6", "Pa")}),
+        ("HydraulicTankC", "T1", {"p": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "L2", {"p#Value": v("2.1e6", "Pa")}),
+        ("HydraulicPressureSourceC", "X2", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicTankC", "T2", {"p": v("1e5", "Pa")}),
+    ]
+    connections = [("OC.P1", "L1.P1"), ("OC.P2", "T1.P1"), ("OC.P_CONTROL", "X1.P1"),
+                   ("CB.P1", "L2.P1"), ("CB.P2", "T2.P1"), ("CB.P3", "X2.P1")]
+    path = tmp_path / "cbv.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    for name, pilot in (("OC", "inlet"), ("CB", "drop")):
+        assert imp.system[name].option("check") == "none" and imp.system[name].option("pilot") == pilot
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
+    dp = 1.5e7 - 1e5
+    over = 1.5e7 + 4 * 3e6 - 2.5e7  # 20 bar
+    K = over / (np.sqrt(7e6) / 1e-8 + dp / (1e-8 * np.sqrt(7e6)))
+    assert r["OC.xv.Value"][-1] == pytest.approx(K, rel=1e-6)
+    assert r["OC.P2.Flow"][-1] == pytest.approx(K * np.sqrt(dp), rel=1e-5)
+    dp2 = 2.1e6 - 1e5
+    w, av = np.pi * 0.01 * 0.1 * np.sin(0.5), np.pi * 0.01**2 / 4
+    x = av * (dp2 + 0.5 * 1e6 - 2e6) / (1e5 + 2 * 0.67 * w * np.cos(0.5) * dp2)
+    assert r["CB.xv.Value"][-1] == pytest.approx(x, rel=1e-4)
+    q = 0.67 * w * x * np.sqrt(2 / 860) * dp2 / (dp2**2 + 1e10) ** 0.25
+    assert r["CB.P2.Flow"][-1] == pytest.approx(q, rel=1e-4)
