@@ -815,27 +815,49 @@ def _cylinder_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     C components joined to P1 and P2 (the chambers' volumes): its transfer functions 1/(m_l s² + (B_l + B_p) s +
     k_l) from the force A_1 p_1 - A_2 p_2 - f_3 to the position x_3, limited to [0, s_l] (the velocity zeroed
     there: inelastic stops), and q_1 = -A_1 v_3, q_2 = A_2 v_3 (Hopsan's flows count out of the component), are in
-    the limit m_l ẍ = A_1 p_1 - A_2 p_2 - F_3 - (B_l + B_p) ẋ - k_l x: a Cylinder with ``chambers = "ports"``
-    (its ports read the volumes' pressures; B_p) pushing a Mass ``{n}_load`` (m_l, B_l, k_l towards x = 0), whose
-    end 2 is P3, with stiff stops at 0 and s_l (1e9 N/m) damped critically for m_l, 2 √(1e9 N/m m_l): a stop
-    that does not bounce, as Hopsan's inelastic one (the masses' 1e6 N s/m on Hopsan's default m_l of 0.05 kg
-    makes a mode of 2e7 1/s that switches on and off at the stop's edge, and the solver's steps collapse
-    there). The pressures it reads are those of the
-    volumes, at least 0 Pa absolute with their cavity law, as Hopsan's cavitation check floors them."""
-    from hydroservo.components import Cylinder, Mass
-
-    a1, a2, sl, m = par("A_1", 1e-4), par("A_2", 1e-4), par("s_l", 0.01), par("m_l", 0.05)
+    the limit m_l ẍ = A_1 p_1 - A_2 p_2 - F_3 - (B_l + B_p) ẋ - k_l x: :func:`_q_piston`."""
+    sl, m = par("s_l", 0.01), par("m_l", 0.05)
     if sl <= 0.0 or m <= 0.0:
         par.problems.append(f"{par.where}: s_l = {sl:g} m, m_l = {m:g} kg; only values above 0 are supported")
         return Mapped()
-    cyl = Cylinder(n, A_A=a1, A_B=a2, B_p=par("B_p", 0.0), chambers="ports", x_min=0.0, x_max=sl, k_stop=0.0,
+    return _q_piston(n, par, par("A_1", 1e-4), par("A_2", 1e-4), par("B_p", 0.0), m, par("B_l", 0.0),
+                     par("k_l", 100.0), 0.0, sl, 0.0, "P3")
+
+
+def _piston_mload(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPistonMload.hpp: HydraulicCylinderQ's law with internal leakage and
+    stops of their own, from its equation system: mL ẍ = A1 p_1 - A2 p_2 - f_mp - (bL + bp) ẋ, x limited to
+    [xmin, xmax] (the velocity zeroed there), q_1 = -A1 ẋ - Cip (p_1 - p_2), q_2 = A2 ẋ + Cip (p_1 - p_2):
+    :func:`_q_piston` with C_Li = Cip, no spring; its port Pmp. Its dry friction fc and bfc are declared but enter
+    none of its equations, nor SL (the stops are xmin, xmax): they are not used here either."""
+    m, x_min, x_max = par("mL", 1000.0), par("xmin", 0.0), par("xmax", 0.5)
+    if m <= 0.0 or x_max <= x_min or par("Cip", 0.0) < 0.0:
+        par.problems.append(f"{par.where}: mL = {m:g} kg, xmin = {x_min:g} m, xmax = {x_max:g} m, Cip = "
+                            f"{par('Cip', 0.0):g}; expected mL > 0, xmin < xmax and Cip >= 0")
+        return Mapped()
+    return _q_piston(n, par, par("A1", 1e-3), par("A2", 1e-3), par("bp", 0.0), m, par("bL", 0.0), 0.0, x_min,
+                     x_max, par("Cip", 0.0), "Pmp")
+
+
+def _q_piston(n: str, par: _Params, a1: float, a2: float, bp: float, m: float, bl: float, kl: float, x_min: float,
+              x_max: float, c_leak: float, port: str) -> Mapped:
+    """Hopsan's Q-type pistons: a Cylinder with ``chambers = "ports"`` (its ports read the pressures of the volumes
+    joined to them; B_p, internal leakage) pushing a Mass ``{n}_load`` (m, B_l, k_l towards x = 0), whose end 2 is
+    ``port``, with stiff stops at x_min and x_max (1e9 N/m) damped critically for m, 2 √(1e9 N/m m): a stop that
+    does not bounce, as Hopsan's inelastic one (the masses' 1e6 N s/m on HydraulicCylinderQ's default m_l of
+    0.05 kg makes a mode of 2e7 1/s that switches on and off at the stop's edge, and the solver's steps collapse
+    there). The pressures it reads are those of the volumes, at least 0 Pa absolute with their cavity law, as
+    Hopsan's cavitation check floors them."""
+    from hydroservo.components import Cylinder, Mass
+
+    cyl = Cylinder(n, A_A=a1, A_B=a2, B_p=bp, C_Li=c_leak, chambers="ports", x_min=x_min, x_max=x_max, k_stop=0.0,
                    c_stop=0.0, p_amb="0 Pa_abs")
-    load = Mass(f"{n}_load", m=m, B=par("B_l", 0.0), k_spring=par("k_l", 100.0), incline=0.0,
-                x0=par.start("P3", "Position"), v0=par.start("P3", "Velocity"), x_min=0.0, x_max=sl, k_stop=1e9,
+    load = Mass(f"{n}_load", m=m, B=bl, k_spring=kl, incline=0.0, x0=par.start(port, "Position"),
+                v0=par.start(port, "Velocity"), x_min=x_min, x_max=x_max, k_stop=1e9,
                 c_stop=2.0 * math.sqrt(1e9 * m))  # critically damped: no bounce, as Hopsan's inelastic stops
     return Mapped(
         [cyl, load],
-        power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}_load.P2"},
+        power={"P1": f"{n}.A", "P2": f"{n}.B", port: f"{n}_load.P2"},
         internal=[(f"{n}.R", f"{n}_load.P1")],
         note=f"Cylinder {n} (chambers = ports) pushing Mass {n}_load",
     )
@@ -1568,6 +1590,7 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
     "HydraulicCylinderQ": _cylinder_q,
+    "HydraulicPistonMload": _piston_mload,
     "HydraulicSpringLoadedPistonC": _spring_loaded_piston,
     "HydraulicPressureSourceQ": _pressure_source_q,
     "SignalSource": _constant_old,

@@ -1191,3 +1191,30 @@ def test_hopsans_over_centre_and_counterbalance_valves_open_as_their_pilots_add_
     assert r["CB.xv.Value"][-1] == pytest.approx(x, rel=1e-4)
     q = 0.67 * w * x * np.sqrt(2 / 860) * dp2 / (dp2**2 + 1e10) ** 0.25
     assert r["CB.P2.Flow"][-1] == pytest.approx(q, rel=1e-4)
+
+
+def test_hopsans_piston_with_mass_load_leaks_between_its_ports_and_stops_at_xmin_xmax(tmp_path: Path) -> None:
+    """HydraulicPistonMload: mL ẍ = A1 p_1 - A2 p_2 - f - (bL + bp) ẋ within [xmin, xmax], q_1 = -A1 ẋ - Cip
+    (p_1 - p_2): between two C-type pressure sources it accelerates at (A1 p_1 - A2 p_2)/mL from its start position
+    and rests on xmax, where only the leakage flows; its fc (declared, in no equation of Hopsan's) is ignored."""
+    v = _value
+    piston = {"A1#Value": v("2e-3"), "A2#Value": v("1e-3"), "SL#Value": v("0.4"), "Cip#Value": v("1e-12"),
+              "bp#Value": v("0"), "mL#Value": v("100"), "bL#Value": v("0"), "fc#Value": v("10"), "bfc#Value": v("1"),
+              "xmin#Value": v("0"), "xmax#Value": v("0.3"), "Pmp#Position": v("0.1")}
+    components = [
+        ("HydraulicPistonMload", "P", piston),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("2e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1e6", "Pa")}),
+        ("MechanicPositionSensor", "X", {}),
+    ]
+    connections = [("P.P1", "S1.P1"), ("P.P2", "S2.P1"), ("P.Pmp", "X.P1")]
+    path = tmp_path / "pml.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["P"].values["C_Li"] == 1e-12 and imp.system["P_load"].values["x_max"] == 0.3
+    r = imp.system.simulate(t_eval=[0.0, 0.02, 1.0], accuracy=1e-9)
+    a = (2e-3 * 2e6 - 1e-3 * 1e6) / 100.0
+    assert r["P.Pmp.Position"][1] == pytest.approx(0.1 + a * 0.02**2 / 2, rel=1e-6)
+    assert r["P.P1.Flow"][1] == pytest.approx(-2e-3 * a * 0.02 - 1e-12 * 1e6, rel=1e-6)
+    assert r["P.Pmp.Position"][-1] == pytest.approx(0.3, abs=1e-5)
+    assert r["P.P1.Flow"][-1] == pytest.approx(-1e-12 * 1e6, rel=1e-3)
