@@ -151,7 +151,7 @@ C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
-    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC",
+    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -160,6 +160,7 @@ MULTIPORTS: dict[str, frozenset[str]] = {
     "HydraulicMultiTankC": frozenset({"MP"}),
     "HydraulicMultiPressureSourceC": frozenset({"MP"}),
     "HydraulicCylinderC": frozenset({"P1", "P2"}),
+    "HydraulicSpringLoadedPistonC": frozenset({"P1", "P2"}),
 }
 
 
@@ -196,6 +197,35 @@ def _pressure_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     # a source of constant pressure that takes any flow: a tank at that pressure (Tank allows any pressure
     # above vacuum, ConstantPressure only above the atmosphere)
     return _source(n, par("p", 1e5), hc, par)
+
+
+#: the conductance through which a Q-type pressure source holds the C component joined to it [m^3/s/Pa]
+Q_SOURCE_CONDUCTANCE = 1e-2
+
+
+def _pressure_source_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicPressureSourceQ.hpp: a Q component that writes p = in to its
+    node and the flow q = (in - c)/Zc that brings the C component joined to it (a volume, a cylinder's chamber)
+    to that pressure within one step: in the limit an ideal pressure source joined to a capacitance, whose
+    pressure it sets, and which takes whatever flow that needs. hydroservo's node has one pressure port, the C
+    component's; the source is a pressure source (a PressureSource following the signal ``p``, absolute, or a
+    Tank at a constant ``p``) behind a LaminarOrifice of conductance ``Q_SOURCE_CONDUCTANCE`` (1e-2 m³/s/Pa): the
+    capacitance follows the source's pressure with the time constant V/(β_e G) (0.03 ns for 0.3 L at 1e9 Pa) and
+    stands below it by q/G (0.1 Pa for a flow of 1 L/s). The orifice, named as the source, gives the node's flow;
+    its pressure is the C component's. (On HydraulicSpringLoadedPistonC.hmf, whose sources deliver up to 17 L/s,
+    G = 1e-6, 1e-3 and 1e-2 m³/s/Pa put the constant source's pressure 170 %, 1.7 % and 0.17 % of its scale, 1 %
+    of its value, off Hopsan's.)"""
+    from hydroservo.components import LaminarOrifice
+
+    source = _source(f"{n}_p", par("p", 1e5), hc, par)
+    path = LaminarOrifice(n, G_lam=Q_SOURCE_CONDUCTANCE)
+    return Mapped(
+        [*source.components, path],
+        power={"P1": f"{n}.B"},
+        inputs=source.inputs,
+        internal=[(source.power["P1"], f"{n}.A")],
+        note=f"{type(source.components[0]).__name__} {n}_p behind LaminarOrifice {n} (G = {Q_SOURCE_CONDUCTANCE:g} m³/s/Pa)",
+    )
 
 
 def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -278,7 +308,7 @@ def _pressure_controlled_valve(hc: HopsanComponent, n: str, par: _Params) -> Map
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_OPEN": f"{n}.X", "P_CLOSE": f"{n}.Y"})
 
 
-def _pressure_valve_g(reducing: bool) -> Builder:
+def _pressure_valve_g(reducing: bool, counterbalance: bool = False) -> Builder:
     """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
     a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
     p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
@@ -289,13 +319,22 @@ def _pressure_valve_g(reducing: bool) -> Builder:
     C_f = 2 cos φ/(√(2/ρ) A_v), tau = Bv/ks, K at most Cq w √(2/ρ) Xvmax, p_tr = p0 (signedSquareL is
     hydroservo's regularised turbulent law exactly). The relief valve's setting is a drop (``pilot = "drop"``), the
     reducing valve's an absolute pressure. π where Hopsan writes 3.14159 and 0.785398 (1e-6 apart); visc is
-    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax."""
+    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax.
+
+    ``counterbalance``: [Hopsan2026] Hydraulic/Special/HydraulicCounterBalanceValveG.hpp, the relief valve's spool
+    with the pilot P3 on the fraction kappa of its area, p_1 - p_2 + kappa p_3 - pref (p_3 absolute, no flow), and
+    no check valve: a CounterbalanceValve with ``pilot = "drop"``, ``check = "none"``, r_p = kappa, p_crack =
+    pref - kappa p_atm (the gauge setting of Hopsan's absolute pilot); its own defaults (Dv 0.03 m, Bv 100 N s/m,
+    Xvmax 0.03 m, phi 0.03 rad, ks 100 N/m, pref 1e6 Pa)."""
+    defaults = {"Dv": 0.03, "phi": 0.03, "ks": 100.0, "Bv": 100.0, "Xvmax": 0.03, "pref": 1e6} if counterbalance else {
+        "Dv": 0.01, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.002, "pref": 1e7}
 
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-        from hydroservo.components import PressureReducingValve, ReliefValve
+        from hydroservo.components import CounterbalanceValve, PressureReducingValve, ReliefValve
 
-        rho, dv, frac, phi = par("rho", 870.0), par("Dv", 0.01), par("frac", 0.1), par("phi", 1.17)
-        ks, bv, x_vmax, cq = par("ks", 1e4), par("Bv", 1000.0), par("Xvmax", 0.002), par("Cq", 0.67)
+        rho, dv, frac, phi = par("rho", 870.0), par("Dv", defaults["Dv"]), par("frac", 0.1), par("phi", defaults["phi"])
+        ks, bv = par("ks", defaults["ks"]), par("Bv", defaults["Bv"])
+        x_vmax, cq = par("Xvmax", defaults["Xvmax"]), par("Cq", 0.67)
         before = len(par.problems)
         for name, value in (("rho", rho), ("Dv", dv), ("frac", frac), ("ks", ks), ("Bv", bv), ("Xvmax", x_vmax),
                             ("Cq", cq), ("p0", par("p0", 1e5))):
@@ -324,18 +363,57 @@ def _pressure_valve_g(reducing: bool) -> Builder:
             "p_tr": par("p0", 1e5),
         }
         comp: cbase.Component
-        if reducing:
-            comp = PressureReducingValve(n, p_set=_abs(par("pref", 1e7)), **spool)
+        power = {"P1": f"{n}.A", "P2": f"{n}.B"}
+        if counterbalance:
+            kappa = par("kappa", 0.1)
+            if kappa < 0.0:
+                par.problems.append(f"{par.where}: kappa = {kappa:g}; an area fraction of 0 or more is supported")
+            comp = CounterbalanceValve(n, p_crack=par("pref", defaults["pref"]) - kappa * ATMOSPHERE, r_p=max(kappa, 0.0),
+                                       pilot="drop", check="none", **spool)
+            power["P3"] = f"{n}.X"
+        elif reducing:
+            comp = PressureReducingValve(n, p_set=_abs(par("pref", defaults["pref"])), **spool)
         else:
-            comp = ReliefValve(n, p_crack=par("pref", 1e7), pilot="drop", **spool)
+            comp = ReliefValve(n, p_crack=par("pref", defaults["pref"]), pilot="drop", **spool)
         return Mapped(
             [comp],
-            power={"P1": f"{n}.A", "P2": f"{n}.B"},
+            power=power,
             values={"xv": Var(x_vmax, f"{n}.s")},
             initial={f"{n}.K": c * min(max(par("xv", 0.0), 0.0), x_vmax)},
         )
 
     return build
+
+
+def _over_center(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicOverCenterValve.hpp: HydraulicPressureReliefValve's
+    spool (its static opening (p_1 - p_ref + a_ratio p_control)/(C_s + C_f (p_1 - p_2)) through the hysteresis p_h
+    and the lag tao, limited to [0, q_nom/√p_nom]; the flow that coefficient times √(p_1 - p_2), either way),
+    piloted by P_CONTROL (absolute, no flow) on a_ratio times its area: a CounterbalanceValve with ``check =
+    "none"`` (Hopsan's has no check valve), r_p = a_ratio, p_crack = p_ref - (1 + a_ratio) p_atm (the gauge setting
+    of Hopsan's sum of absolute pressures), its own p_nom; P_CONTROL the pilot port X. Its output xv (the flow
+    coefficient, Hopsan's x0) is the valve's K."""
+    from hydroservo.components import CounterbalanceValve
+
+    ratio, p_h = par("a_ratio", 5.0), par("p_h", 5e5)
+    if ratio < 0.0 or p_h < 0.0:
+        par.problems.append(f"{par.where}: a_ratio = {ratio:g}, p_h = {p_h:g} Pa; values of 0 or more are supported")
+        return Mapped()
+    comp = CounterbalanceValve(
+        n,
+        p_crack=par("p_ref", 2e6) - (1.0 + ratio) * ATMOSPHERE,
+        r_p=ratio,
+        check="none",
+        tau=par("tao", 0.01),
+        k_cs=par("k_cs", 1e-8),
+        k_cf=par("k_cf", 1e-8),
+        q_nom=par("q_nom", 0.001),
+        p_nom=par("p_nom", 7e6),
+        p_tr=1e3,  # as the relief valve's
+        p_h=p_h,
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_CONTROL": f"{n}.X"},
+                  values={"xv": Var(1.0, f"{n}.K")})
 
 
 def _accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -408,11 +486,15 @@ def _piston_accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
 
 def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementPump.hpp: q = D_p n_p/2π - C_lp (p_2 - p_1),
+    no port drawn below 0 Pa absolute: a Pump with ``inlet = "floor"``; its speed n_p [rad/s] driven by a signal
+    (``speed = "input"``, the signal into ``omega_in``; a negative speed pumps backwards, as Hopsan's)."""
     from hydroservo.components import Pump
 
-    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("n_p", 250.0), C_leak=par("C_lp", 1e-12),
-                inlet="floor", p_floor=_abs(0.0))
-    return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"})
+    driven = "n_p" in par.driven
+    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=0.0 if driven else par("n_p", 250.0),
+                C_leak=par("C_lp", 1e-12), inlet="floor", p_floor=_abs(0.0), speed="input" if driven else "constant")
+    return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"}, inputs={"n_p": f"{n}.omega_in"} if driven else {})
 
 
 def _edge_coefficient(par: _Params, f: float, rho: float, d: str = "d", c_q: str = "C_q") -> float:
@@ -779,6 +861,72 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.R"})
 
 
+def _cylinder_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/LinearActuators/HydraulicCylinderQ.hpp: a Q-type piston with its load, between the
+    C components joined to P1 and P2 (the chambers' volumes): its transfer functions 1/(m_l s² + (B_l + B_p) s +
+    k_l) from the force A_1 p_1 - A_2 p_2 - f_3 to the position x_3, limited to [0, s_l] (the velocity zeroed
+    there: inelastic stops), and q_1 = -A_1 v_3, q_2 = A_2 v_3 (Hopsan's flows count out of the component), are in
+    the limit m_l ẍ = A_1 p_1 - A_2 p_2 - F_3 - (B_l + B_p) ẋ - k_l x: :func:`_q_piston`."""
+    sl, m = par("s_l", 0.01), par("m_l", 0.05)
+    if sl <= 0.0 or m <= 0.0:
+        par.problems.append(f"{par.where}: s_l = {sl:g} m, m_l = {m:g} kg; only values above 0 are supported")
+        return Mapped()
+    return _q_piston(n, par, par("A_1", 1e-4), par("A_2", 1e-4), par("B_p", 0.0), m, par("B_l", 0.0),
+                     par("k_l", 100.0), 0.0, sl, 0.0, "P3")
+
+
+def _piston_mload(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPistonMload.hpp: HydraulicCylinderQ's law with internal leakage and
+    stops of their own, from its equation system: mL ẍ = A1 p_1 - A2 p_2 - f_mp - (bL + bp) ẋ, x limited to
+    [xmin, xmax] (the velocity zeroed there), q_1 = -A1 ẋ - Cip (p_1 - p_2), q_2 = A2 ẋ + Cip (p_1 - p_2):
+    :func:`_q_piston` with C_Li = Cip, no spring; its port Pmp. Its dry friction fc and bfc are declared but enter
+    none of its equations, nor SL (the stops are xmin, xmax): they are not used here either."""
+    m, x_min, x_max = par("mL", 1000.0), par("xmin", 0.0), par("xmax", 0.5)
+    if m <= 0.0 or x_max <= x_min or par("Cip", 0.0) < 0.0:
+        par.problems.append(f"{par.where}: mL = {m:g} kg, xmin = {x_min:g} m, xmax = {x_max:g} m, Cip = "
+                            f"{par('Cip', 0.0):g}; expected mL > 0, xmin < xmax and Cip >= 0")
+        return Mapped()
+    return _q_piston(n, par, par("A1", 1e-3), par("A2", 1e-3), par("bp", 0.0), m, par("bL", 0.0), 0.0, x_min,
+                     x_max, par("Cip", 0.0), "Pmp")
+
+
+def _q_piston(n: str, par: _Params, a1: float, a2: float, bp: float, m: float, bl: float, kl: float, x_min: float,
+              x_max: float, c_leak: float, port: str) -> Mapped:
+    """Hopsan's Q-type pistons: a Cylinder with ``chambers = "ports"`` (its ports read the pressures of the volumes
+    joined to them; B_p, internal leakage) pushing a Mass ``{n}_load`` (m, B_l, k_l towards x = 0), whose end 2 is
+    ``port``, with stiff stops at x_min and x_max (1e9 N/m) damped critically for m, 2 √(1e9 N/m m): a stop that
+    does not bounce, as Hopsan's inelastic one (the masses' 1e6 N s/m on HydraulicCylinderQ's default m_l of
+    0.05 kg makes a mode of 2e7 1/s that switches on and off at the stop's edge, and the solver's steps collapse
+    there). The pressures it reads are those of the volumes, at least 0 Pa absolute with their cavity law, as
+    Hopsan's cavitation check floors them."""
+    from hydroservo.components import Cylinder, Mass
+
+    cyl = Cylinder(n, A_A=a1, A_B=a2, B_p=bp, C_Li=c_leak, chambers="ports", x_min=x_min, x_max=x_max, k_stop=0.0,
+                   c_stop=0.0, p_amb="0 Pa_abs")
+    load = Mass(f"{n}_load", m=m, B=bl, k_spring=kl, incline=0.0, x0=par.start(port, "Position"),
+                v0=par.start(port, "Velocity"), x_min=x_min, x_max=x_max, k_stop=1e9,
+                c_stop=2.0 * math.sqrt(1e9 * m))  # critically damped: no bounce, as Hopsan's inelastic stops
+    return Mapped(
+        [cyl, load],
+        power={"P1": f"{n}.A", "P2": f"{n}.B", port: f"{n}_load.P2"},
+        internal=[(f"{n}.R", f"{n}_load.P1")],
+        note=f"Cylinder {n} (chambers = ports) pushing Mass {n}_load",
+    )
+
+
+def _spring_loaded_piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/LinearActuators/HydraulicSpringLoadedPistonC.hpp: HydraulicCylinderC's chambers
+    and piston (the same volumes, leakage and stops) with the constant spring force F_s taken off the force at P3
+    (its wave variable c3 - F_s): the cylinder of HydraulicCylinderC's mapping with ``F_s``. Its chambers' wave
+    variables are floored at 0 (not its cylinder's cavity: no deficit to refill), so a chamber at 0 Pa absolute
+    loses no more pressure: ``pressure_floor = "check-valve"`` at 0 Pa absolute, the leakage between the floored
+    pressures."""
+    m = _cylinder_c(hc, n, par)
+    m.components[0].set(pressure_floor="check-valve", F_s=par("F_s", 1000.0))
+    m.note = f"Cylinder {n} with F_s, pressure_floor = check-valve"
+    return m
+
+
 def _flow_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import FlowSource
 
@@ -872,6 +1020,41 @@ def _pilot_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     comp = PilotCheckValve(n, opening="seat", p_crack=p_f - phi * 101325.0, r_p=phi, **_check_bore(par("K_s", 5e-7)))
     # Hopsan's output x (1 open, 0 closed) is the valve's s: not aliased
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_PILOT": f"{n}.X"})
+
+
+def _directional_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/DirectionalValves/Hydraulic22DirectionalCheckValve.hpp: an on/off spool (the
+    second-order filter of the 4/3 valve's, driven to 1 while ``in`` > 0.5 and to 0 otherwise, limited to [0, 1],
+    starting at ``out``); while it is above 0.5 the valve passes Kv_open √|p_1 - p_2| both ways, otherwise it
+    checks: Kv_check √(p_1 - p_2) once p_1 - p_2 exceeds F_s (a seat that opens fully there), none back. A
+    CheckValve with ``opening = "seat"``, p_crack = F_s and ``pilot = "open"``, its bores from Kv_check and
+    Kv_open (K = C_d A √(2/ρ), C_d 0.67, ρ 870 kg/m³: only the product matters), turbulent to some 50 Pa
+    (lambda_crit 10), its pilot the spool's position (SpoolSecondOrder with a stroke of 1 m: x_v is the fraction;
+    delta_h < 1 refused, as the other on/off valves'). Output ``out``: the spool's position."""
+    from hydroservo.components import CheckValve, Gain
+
+    cd, rho = 0.67, 870.0
+
+    def bore(k: float) -> float:
+        return math.sqrt(4.0 * abs(k) / (cd * math.sqrt(2.0 / rho)) / math.pi)
+
+    k_open, k_check = par("Kv_open", 5e-7), par("Kv_check", 5e-7)
+    if k_open <= 0.0 or k_check <= 0.0:
+        par.problems.append(f"{par.where}: Kv_open = {k_open:g}, Kv_check = {k_check:g}; only values above 0 are supported")
+        return Mapped()
+    spool = _spool(n, par, 1.0, "on-off", par("out", 0.0))  # Hopsan's filter starts at out (not at its input)
+    pilot = Gain(f"{n}_pilot", input_unit="m", K="1 1/m")  # the spool's position as the fraction of its stroke
+    valve = CheckValve(n, opening="seat", pilot="open", p_crack=par("F_s", 0.0), d=bore(k_check), d_open=bore(k_open),
+                       Cd=cd, rho=rho, lambda_crit=10.0)
+    return Mapped(
+        [*spool.components, pilot, valve],
+        power={"P1": f"{n}.A", "P2": f"{n}.B"},
+        inputs=spool.inputs,
+        outputs={"out": f"{n}_pilot.y"},
+        initial=spool.initial,
+        internal=[*spool.internal, (f"{n}_spool.xv", f"{n}_pilot.u"), (f"{n}_pilot.y", f"{n}.open")],
+        note="a Selector (open while in > 0.5), a SpoolSecondOrder, a Gain and a CheckValve (pilot = open)",
+    )
 
 
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1209,6 +1392,14 @@ def _constant(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Constant
 
     return Mapped([Constant(n, value=par("y", 1.0))], outputs={"y": f"{n}.y"})  # Hopsan's output is y
+
+
+def _constant_old(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalSource, SignalConstant's name in Hopsan before 0.6 (its output port ``out``, today's ``y``; Hopsan's
+    loader renames both, HopsanGUI/Utilities/XMLUtilities.cpp)."""
+    from hydroservo.components import Constant
+
+    return Mapped([Constant(n, value=par("y", 1.0))], outputs={"out": f"{n}.y"})
 
 
 def _gain(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1667,6 +1858,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPilotClosableCheckValve": _pilot_check_valve,
     "HydraulicCheckValvePreLoaded": _check_valve,
     "HydraulicCheckValveWithOrifice": _check_valve_with_orifice,
+    "Hydraulic22DirectionalCheckValve": _directional_check_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,
@@ -1684,6 +1876,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureControlled42Valve3": _pressure_controlled("42-3"),
     "HydraulicPressureReliefValveG": _pressure_valve_g(reducing=False),
     "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
+    "HydraulicCounterBalanceValveG": _pressure_valve_g(reducing=False, counterbalance=True),
+    "HydraulicOverCenterValve": _over_center,
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),
@@ -1695,6 +1889,11 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
+    "HydraulicCylinderQ": _cylinder_q,
+    "HydraulicPistonMload": _piston_mload,
+    "HydraulicSpringLoadedPistonC": _spring_loaded_piston,
+    "HydraulicPressureSourceQ": _pressure_source_q,
+    "SignalSource": _constant_old,
     "HydraulicPressureSensor": _sensor("Pressure", "Pa"),
     "HydraulicFlowSensor": _sensor("Flow", "m^3/s"),
     "MechanicTranslationalMass": _mass,
@@ -2112,6 +2311,7 @@ def _node_starts(
 #: Hopsan's signal blocks whose output is constant when their inputs are: type -> (output, inputs, function)
 _CONSTANT_BLOCKS: dict[str, tuple[str, tuple[str, ...], Callable[..., float]]] = {
     "SignalConstant": ("y", (), lambda par: par("y")),
+    "SignalSource": ("out", (), lambda par: par("y")),
     "SignalGain": ("out", ("in",), lambda par, u: par("k") * u),
 }
 

@@ -1312,3 +1312,209 @@ def test_hopsans_preloaded_orificed_and_pilot_closable_check_valves(tmp_path: Pa
     f = flows(1e6, 2e6, 1e5)  # backwards 1 MPa: only the orifice of the orificed valve
     assert f["PL"] == 0.0 and f["PC"] == 0.0
     assert f["WO"] == pytest.approx(-1e-7 * 1e3, rel=1e-6)
+def test_hopsans_q_type_pressure_source_holds_the_volume_joined_to_it_at_its_pressure(tmp_path: Path) -> None:
+    """HydraulicPressureSourceQ sets the pressure of the C component joined to it (a volume drained by a laminar
+    orifice to a tank): in the steady state the node is at p (absolute) and the source delivers Kc (p - p_tank).
+    Its p driven by an old file's SignalSource (SignalConstant's former name, its port out) is followed, within
+    q/G of the source's conductance."""
+    v = _value
+    components = [
+        ("HydraulicPressureSourceQ", "Q", {"p#Value": v("1e5", "Pa")}),
+        ("SignalSource", "C", {"y": v("5e6")}),
+        ("HydraulicVolume", "V", {"V": v("1e-3"), "Beta_e": v("1e9"), "P1#Pressure": v("1e5", "Pa")}),
+        ("HydraulicLaminarOrifice", "O", {"Kc#Value": v("1e-10")}),
+        ("HydraulicTankC", "T", {"p": v("1e5", "Pa")}),
+    ]
+    connections = [("C.out", "Q.p"), ("Q.P1", "V.P1"), ("V.P2", "O.P1"), ("O.P2", "T.P1")]
+    path = tmp_path / "qsource.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert type(imp.system["Q_p"]).__name__ == "PressureSource" and type(imp.system["Q"]).__name__ == "LaminarOrifice"
+    r = imp.system.simulate(t_eval=[0.0, 0.01, 0.1])
+    assert r["V.P1.Pressure"][-1] == pytest.approx(5e6, rel=1e-7)
+    assert r["Q.P1.Pressure"][-1] == pytest.approx(5e6, rel=1e-7)
+    assert r["Q.P1.Flow"][-1] == pytest.approx(1e-10 * (5e6 - 1e5), rel=1e-6)
+    assert r["C.out.Value"][-1] == 5e6
+    del components[1]  # undriven: a tank at its p
+    path.write_text(_hmf(components, connections[1:]), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert type(imp.system["Q_p"]).__name__ == "Tank"
+    assert imp.system.simulate(t_eval=[0.0, 0.1])["V.P1.Pressure"][-1] == pytest.approx(1e5, rel=1e-7)
+
+
+def test_hopsans_q_type_cylinder_is_the_cylinder_with_its_chambers_outside_pushing_its_load(tmp_path: Path) -> None:
+    """HydraulicCylinderQ between two C-type pressure sources: m_l ẍ = A_1 p_1 - A_2 p_2 - (B_l + B_p) ẋ - k_l x
+    (absolute pressures), so the piston settles at x = (A_1 p_1 - A_2 p_2)/k_l from its P3 start position, or on
+    its stop at s_l; it takes A_1 ẋ from P1 and gives A_2 ẋ to P2 (Hopsan's flows count out of it)."""
+    v = _value
+    cyl = {"A_1#Value": v("2e-4"), "A_2#Value": v("1e-4"), "B_p#Value": v("300"), "B_l#Value": v("200"),
+           "k_l#Value": v("1e5"), "m_l": v("2"), "s_l": v("0.5"), "P3#Position": v("0.1")}
+    components = [
+        ("HydraulicCylinderQ", "Cyl", cyl),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("2e6", "Pa")}),
+        ("MechanicPositionSensor", "X", {}),
+    ]
+    connections = [("Cyl.P1", "S1.P1"), ("Cyl.P2", "S2.P1"), ("Cyl.P3", "X.P1")]
+    path = tmp_path / "qcyl.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Cyl"].option("chambers") == "ports" and imp.system["Cyl_load"].values["m"] == 2.0
+    r = imp.system.simulate(t_eval=[0.0, 0.05, 2.0], accuracy=1e-8)
+    x_end = (2e-4 * 1e7 - 1e-4 * 2e6) / 1e5
+    assert r["Cyl.P3.Position"][0] == pytest.approx(0.1)
+    assert r["Cyl.P3.Position"][-1] == pytest.approx(x_end, rel=1e-6)
+    speed = r["Cyl.P3.Velocity"][1]
+    assert speed < 0.0  # retracting from 0.1 m towards x_end
+    assert r["Cyl.P1.Flow"][1] == pytest.approx(-2e-4 * speed, rel=1e-9)
+    assert r["Cyl.P2.Flow"][1] == pytest.approx(1e-4 * speed, rel=1e-9)
+    cyl["k_l#Value"] = v("1e3")  # x_end = 18 m: the stop at s_l
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 2.0])
+    assert r["Cyl.P3.Position"][-1] == pytest.approx(0.5, abs=2e-5)
+
+
+def test_hopsans_spring_loaded_piston_is_the_c_cylinder_less_its_spring_force(tmp_path: Path) -> None:
+    """HydraulicSpringLoadedPistonC: HydraulicCylinderC's piston with the constant force F_s against it. Between two
+    Q-type pressure sources, pushing a damped mass (B) whose stop at 0 it leaves, it reaches the speed
+    (A_1 p_1 - A_2 p_2 - F_s)/B (Hopsan's P3 counts it negative, the piston extending)."""
+    v = _value
+    components = [
+        ("HydraulicSpringLoadedPistonC", "P", {"A_1#Value": v("1e-3"), "A_2#Value": v("5e-4"), "s_l#Value": v("10"),
+                                               "F_s#Value": v("2000"), "V_1#Value": v("1e-4"), "V_2#Value": v("1e-4"),
+                                               "B_p#Value": v("0"), "c_leak#Value": v("0"),
+                                               "P1#Pressure": v("4e6", "Pa"), "P2#Pressure": v("1e6", "Pa")}),
+        ("HydraulicPressureSourceQ", "Q1", {"p#Value": v("4e6", "Pa")}),
+        ("HydraulicPressureSourceQ", "Q2", {"p#Value": v("1e6", "Pa")}),
+        ("MechanicTranslationalMass", "M", {"m": v("10"), "B#Value": v("1000"), "k#Value": v("0"),
+                                            "x_min#Value": v("0"), "x_max#Value": v("100")}),
+    ]
+    connections = [("P.P1", "Q1.P1"), ("P.P2", "Q2.P1"), ("P.P3", "M.P1")]
+    path = tmp_path / "slp.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    cyl = imp.system["P"]
+    assert cyl.values["F_s"] == 2000.0 and cyl.option("pressure_floor") == "check-valve"
+    r = imp.system.simulate(t_eval=[0.0, 0.5], accuracy=1e-8)
+    force = 1e-3 * 4e6 - 5e-4 * 1e6 - 2000.0
+    assert r["P.P3.Velocity"][-1] == pytest.approx(-force / 1000.0, rel=1e-4)
+    assert r["P.P3.Force"][-1] == pytest.approx(force, rel=1e-4)
+
+
+def test_hopsans_fixed_pump_turns_at_the_speed_a_signal_sets(tmp_path: Path) -> None:
+    """HydraulicFixedDisplacementPump with n_p driven by a ramp: q = D_p n_p/2π - C_lp (p_2 - p_1) between two
+    C-type pressure sources, backwards while n_p < 0 (Pump with speed = input)."""
+    v = _value
+    components = [
+        ("HydraulicFixedDisplacementPump", "P", {"n_p#Value": v("250"), "D_p#Value": v("5e-5"),
+                                                 "C_lp#Value": v("1e-12")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("2e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1.2e6", "Pa")}),
+        ("SignalRamp", "R", {"y_0#Value": v("-10"), "y_A#Value": v("20"), "t_start#Value": v("0"),
+                             "t_end#Value": v("10")}),
+    ]
+    connections = [("P.P1", "S1.P1"), ("P.P2", "S2.P1"), ("R.out", "P.n_p")]
+    path = tmp_path / "pump.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["P"].option("speed") == "input"
+    r = imp.system.simulate(t_eval=[0.0, 2.5, 5.0, 10.0])
+    n = np.array([-10.0, -5.0, 0.0, 10.0])
+    np.testing.assert_allclose(r["P.P2.Flow"], 5e-5 * n / (2 * np.pi) - 1e-12 * 1e6, rtol=1e-9, atol=1e-15)
+
+
+def test_hopsans_directional_check_valve_checks_until_its_spool_passes_half_then_opens_both_ways(tmp_path: Path) -> None:
+    """Hydraulic22DirectionalCheckValve between 10 bar and 50 bar (absolute): checked, no flow back from P2; with
+    ``in`` stepped to 1 its spool (1/(s²/ω² + 2 s/ω + 1) of the step) passes 0.5 at ω t = 1.678 and the valve
+    passes Kv_open √(p_2 - p_1) from P2 to P1. Kv gives the bores (C_d 0.67, ρ 870 kg/m³); F_s the cracking."""
+    v = _value
+    valve = {"omega_h": v("100"), "delta_h": v("1"), "Kv_open#Value": v("4e-8"), "Kv_check#Value": v("2e-8"),
+             "F_s#Value": v("3e5"), "out#Value": v("0")}
+    components = [
+        ("Hydraulic22DirectionalCheckValve", "V", valve),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("5e6", "Pa")}),
+        ("SignalStep", "U", {"y_0#Value": v("0"), "y_A#Value": v("1"), "t_step#Value": v("0.1")}),
+    ]
+    connections = [("V.P1", "S1.P1"), ("V.P2", "S2.P1"), ("U.out", "V.in")]
+    path = tmp_path / "dcv.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    cv = imp.system["V"]
+    assert cv.option("pilot") == "open" and cv.values["p_crack"] == 3e5
+    area = lambda k: k / (0.67 * np.sqrt(2.0 / 870.0))  # noqa: E731
+    assert np.pi * cv.values["d_open"] ** 2 / 4 == pytest.approx(area(4e-8)) and np.pi * cv.values["d"] ** 2 / 4 == pytest.approx(area(2e-8))
+    t_half = 0.1 + 1.678347 / 100.0  # (1 + ω t) e^(-ω t) = 0.5
+    r = imp.system.simulate(t_eval=[0.0, 0.1, t_half - 1e-4, t_half + 1e-4, 0.3])
+    assert list(r["V.P1.Flow"][:3]) == [0.0, 0.0, 0.0]
+    assert r["V.P1.Flow"][3] == pytest.approx(4e-8 * np.sqrt(4e6), rel=1e-4)
+    assert r["V.out.Value"][-1] == pytest.approx(1.0, abs=1e-6)
+
+
+def test_hopsans_over_centre_and_counterbalance_valves_open_as_their_pilots_add_to_the_load(tmp_path: Path) -> None:
+    """HydraulicOverCenterValve: the relief valve's spool opened by p_1 + a_ratio p_control over p_ref (absolute),
+    K = over/(C_s + C_f Δp), Q = K √Δp, its xv that K; HydraulicCounterBalanceValveG: the G relief valve's spool
+    balance with kappa p_3 added, B_v ẋ = A_v (p_1 - p_2 + kappa p_3 - pref) - (ks + 2 Cq w cos φ Δp) x, settling
+    where the right side vanishes. Neither has a check valve (held both ways while closed)."""
+    v = _value
+    oc = {"p_ref#Value": v("2.5e7"), "p_h#Value": v("0"), "a_ratio#Value": v("4"), "tao": v("0.005"),
+          "k_cs": v("1e-8"), "k_cf": v("1e-8"), "q_nom": v("0.01"), "p_nom": v("7e6")}
+    cb = {"pref#Value": v("2e6"), "rho#Value": v("860"), "Dv#Value": v("0.01"), "frac#Value": v("0.1"),
+          "kappa#Value": v("0.5"), "Bv#Value": v("100"), "Xvmax#Value": v("0.003"), "Cq#Value": v("0.67"),
+          "phi#Value": v("0.5"), "ks#Value": v("1e5"), "p0#Value": v("1e5"), "xv#Value": v("0")}
+    components = [
+        ("HydraulicOverCenterValve", "OC", oc),
+        ("HydraulicCounterBalanceValveG", "CB", cb),
+        ("HydraulicPressureSourceC", "L1", {"p#Value": v("1.5e7", "Pa")}),
+        ("HydraulicPressureSourceC", "X1", {"p#Value": v("3e6", "Pa")}),
+        ("HydraulicTankC", "T1", {"p": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "L2", {"p#Value": v("2.1e6", "Pa")}),
+        ("HydraulicPressureSourceC", "X2", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicTankC", "T2", {"p": v("1e5", "Pa")}),
+    ]
+    connections = [("OC.P1", "L1.P1"), ("OC.P2", "T1.P1"), ("OC.P_CONTROL", "X1.P1"),
+                   ("CB.P1", "L2.P1"), ("CB.P2", "T2.P1"), ("CB.P3", "X2.P1")]
+    path = tmp_path / "cbv.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    for name, pilot in (("OC", "inlet"), ("CB", "drop")):
+        assert imp.system[name].option("check") == "none" and imp.system[name].option("pilot") == pilot
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
+    dp = 1.5e7 - 1e5
+    over = 1.5e7 + 4 * 3e6 - 2.5e7  # 20 bar
+    K = over / (np.sqrt(7e6) / 1e-8 + dp / (1e-8 * np.sqrt(7e6)))
+    assert r["OC.xv.Value"][-1] == pytest.approx(K, rel=1e-6)
+    assert r["OC.P2.Flow"][-1] == pytest.approx(K * np.sqrt(dp), rel=1e-5)
+    dp2 = 2.1e6 - 1e5
+    w, av = np.pi * 0.01 * 0.1 * np.sin(0.5), np.pi * 0.01**2 / 4
+    x = av * (dp2 + 0.5 * 1e6 - 2e6) / (1e5 + 2 * 0.67 * w * np.cos(0.5) * dp2)
+    assert r["CB.xv.Value"][-1] == pytest.approx(x, rel=1e-4)
+    q = 0.67 * w * x * np.sqrt(2 / 860) * dp2 / (dp2**2 + 1e10) ** 0.25
+    assert r["CB.P2.Flow"][-1] == pytest.approx(q, rel=1e-4)
+
+
+def test_hopsans_piston_with_mass_load_leaks_between_its_ports_and_stops_at_xmin_xmax(tmp_path: Path) -> None:
+    """HydraulicPistonMload: mL ẍ = A1 p_1 - A2 p_2 - f - (bL + bp) ẋ within [xmin, xmax], q_1 = -A1 ẋ - Cip
+    (p_1 - p_2): between two C-type pressure sources it accelerates at (A1 p_1 - A2 p_2)/mL from its start position
+    and rests on xmax, where only the leakage flows; its fc (declared, in no equation of Hopsan's) is ignored."""
+    v = _value
+    piston = {"A1#Value": v("2e-3"), "A2#Value": v("1e-3"), "SL#Value": v("0.4"), "Cip#Value": v("1e-12"),
+              "bp#Value": v("0"), "mL#Value": v("100"), "bL#Value": v("0"), "fc#Value": v("10"), "bfc#Value": v("1"),
+              "xmin#Value": v("0"), "xmax#Value": v("0.3"), "Pmp#Position": v("0.1")}
+    components = [
+        ("HydraulicPistonMload", "P", piston),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("2e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1e6", "Pa")}),
+        ("MechanicPositionSensor", "X", {}),
+    ]
+    connections = [("P.P1", "S1.P1"), ("P.P2", "S2.P1"), ("P.Pmp", "X.P1")]
+    path = tmp_path / "pml.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["P"].values["C_Li"] == 1e-12 and imp.system["P_load"].values["x_max"] == 0.3
+    r = imp.system.simulate(t_eval=[0.0, 0.02, 1.0], accuracy=1e-9)
+    a = (2e-3 * 2e6 - 1e-3 * 1e6) / 100.0
+    assert r["P.Pmp.Position"][1] == pytest.approx(0.1 + a * 0.02**2 / 2, rel=1e-6)
+    assert r["P.P1.Flow"][1] == pytest.approx(-2e-3 * a * 0.02 - 1e-12 * 1e6, rel=1e-6)
+    assert r["P.Pmp.Position"][-1] == pytest.approx(0.3, abs=1e-5)
+    assert r["P.P1.Flow"][-1] == pytest.approx(-1e-12 * 1e6, rel=1e-3)

@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from hydroservo import backend as bk
 from hydroservo.components.base import Component, Hydraulic, Option, Output, Param, Port, register
 from hydroservo.components.valves.ports import FLUID_PARAMETERS, TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
 from hydroservo.laws.orifice import DISCHARGE_COEFFICIENT, orifice_flow, transition_pressure
@@ -34,6 +35,12 @@ class CheckValve(Component):
     :math:`p_A - p_B` exceeds ``p_crack`` (:func:`hydroservo.laws.pressure_valve.seat_opening`, ``dp_open``
     unused): Hopsan's HydraulicCheckValve ([Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValve.hpp), whose
     flow is :math:`K_s\sqrt{p_A - p_B}` while :math:`p_A > p_B`.
+
+    Option ``pilot``: ``"none"`` (the default), a check valve; ``"open"``, a check valve that a pilot (a solenoid, a
+    spool) opens both ways: while the input ``open`` exceeds 0.5 the flow is the orifice law through the bore
+    ``d_open`` in either direction, otherwise the valve checks as above (Hopsan's
+    Hydraulic22DirectionalCheckValve, [Hopsan2026] Hydraulic/Valves/DirectionalValves/
+    Hydraulic22DirectionalCheckValve.hpp, whose filtered spool position is ``open``). The switch is an event.
     """
 
     PARAMETERS = {
@@ -42,12 +49,18 @@ class CheckValve(Component):
         "p_crack": Param(1e5, "Pa", "cracking pressure (A over B)", min=0.0),
         "dp_open": Param(2e5, "Pa", "pressure rise over cracking to full opening", min=0.0, min_inclusive=False),
         "G_leak": Param(0.0, "m^3/s/Pa", "leakage conductance of the closed seat", min=0.0),
+        "d_open": Param(5e-3, "m", "equivalent bore when piloted open (option pilot = open)", min=0.0,
+                        min_inclusive=False),
         **FLUID_PARAMETERS,
     }
     OPTIONS = {
         "opening": Option("ramp", ("ramp", "seat"), "opening from p_crack over dp_open, or fully at p_crack (Hopsan)"),
+        "pilot": Option("none", ("none", "open"), "a check valve, or one a pilot opens both ways while open > 0.5"),
     }
-    INPUTS = dict(TWO_PORT_PRESSURES)
+    INPUTS = {
+        **TWO_PORT_PRESSURES,
+        "open": Port("", "pilot: the valve open both ways above 0.5 (option pilot = open)", default=0.0),
+    }
     OUTPUTS = {
         "Q": Output("m^3/s", "flow from A to B"),
         "s": Output("", "opening fraction (0 closed, 1 fully open)"),
@@ -68,6 +81,11 @@ class CheckValve(Component):
             s = opening_fraction(self.opening_pressure(u, p), p["p_crack"], p["dp_open"])
         p_tr = transition_pressure(p["d"], p["rho"], p["nu"], p["lambda_crit"])
         area = s * np.pi * p["d"] ** 2 / 4.0
+        if self.option("pilot") == "open":  # piloted open: the bore d_open both ways
+            opened = u["open"] > 0.5
+            s = bk.if_else(opened, 1.0, s)
+            area = bk.if_else(opened, np.pi * p["d_open"] ** 2 / 4.0, area)
+            p_tr = bk.if_else(opened, transition_pressure(p["d_open"], p["rho"], p["nu"], p["lambda_crit"]), p_tr)
         return {"Q": orifice_flow(area, dp, p["rho"], p["Cd"], p_tr) + p["G_leak"] * dp, "s": s}
 
     def jumps(self) -> bool:
@@ -78,10 +96,14 @@ class CheckValve(Component):
     def switch_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, tuple[Any, float]]:
-        """Cracking, where the flow of a seat jumps (:meth:`jumps`)."""
-        if not self.jumps():
-            return {}
-        return {"cracking": (self.opening_pressure(u, p) - p["p_crack"], 1e5)}
+        """Cracking, where the flow of a seat jumps (:meth:`jumps`); the pilot crossing 0.5 (option pilot =
+        open), where the valve switches between checking and open."""
+        events: dict[str, tuple[Any, float]] = {}
+        if self.jumps():
+            events["cracking"] = (self.opening_pressure(u, p) - p["p_crack"], 1e5)
+        if self.option("pilot") == "open":
+            events["pilot"] = (u["open"] - 0.5, 1.0)
+        return events
 
 
 @register
@@ -110,7 +132,7 @@ class PilotCheckValve(CheckValve):
         "p_crack": Param(1e5, "Pa", "cracking pressure (A over B plus r_p times the pilot)"),
         "r_p": Param(3.5, "", "pilot ratio (pilot piston area over seat area; negative: a pilot that closes it)"),
     }
-    INPUTS = {**TWO_PORT_PRESSURES, "pX": Port("Pa", "pilot pressure", default=0.0)}
+    INPUTS = {**CheckValve.INPUTS, "pX": Port("Pa", "pilot pressure", default=0.0)}
     OUTPUTS = {**CheckValve.OUTPUTS, "QX": Output("m^3/s", "pilot flow (none)")}
     HYDRAULIC = {**TWO_PORT_HYDRAULIC, "X": Hydraulic("pX", "QX", "pilot port", into=True)}
 

@@ -204,7 +204,24 @@ class CounterbalanceValve(_PressureControl):
     The pilot-assisted opening is the usual counterbalance characteristic
     (pilot ratios 3:1 to 10:1 in catalogues); the metering law is
     :class:`ReliefValve`'s.
+
+    Option ``pilot``: ``inlet`` (default), the spring chamber at the
+    atmosphere, as above; ``drop``, drained to B:
+    :math:`\Delta p_{over} = p_A - p_B + r_p p_X - p_{crack}` (Hopsan's
+    HydraulicCounterBalanceValveG, [Hopsan2026] Hydraulic/Special/
+    HydraulicCounterBalanceValveG.hpp, with ``spool = "balance"``). Option
+    ``check``: ``integral`` (default), the check valve above; ``none``, the
+    spool alone, which meters either way once open and holds both ways
+    closed (Hopsan's HydraulicOverCenterValve, [Hopsan2026] Hydraulic/Valves/
+    PressureControlValves/HydraulicOverCenterValve.hpp, and its
+    HydraulicCounterBalanceValveG have none).
     """
+
+    OPTIONS = {
+        **_PressureControl.OPTIONS,
+        "pilot": Option("inlet", ("inlet", "drop"), "the setting against the load's pressure, or against the drop A-B"),
+        "check": Option("integral", ("integral", "none"), "an integral check valve B to A, or none"),
+    }
 
     PARAMETERS = {
         "p_crack": Param(250e5, "Pa", "setting: load pressure that opens the valve without pilot"),
@@ -225,16 +242,19 @@ class CounterbalanceValve(_PressureControl):
     HYDRAULIC = {**TWO_PORT_HYDRAULIC, "X": Hydraulic("pX", "QX", "pilot port", into=True)}
 
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
-        return u["pA"] + p["r_p"] * u["pX"] - p["p_crack"]
+        load = u["pA"] - u["pB"] if self.option("pilot") == "drop" else u["pA"]
+        return load + p["r_p"] * u["pX"] - p["p_crack"]
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         out = super().output_equations(t, x, u, p)
+        out["QX"] = 0.0
+        if self.option("check") == "none":
+            return out
         dp = u["pB"] - u["pA"]
         check = opening_fraction(dp, p["p_check"], p["dp_check"]) * p["K_check"]
         out["Q"] = out["Q"] - turbulent_flow(check, dp, p["p_tr"])
-        out["QX"] = 0.0
         return out
 
 
