@@ -469,6 +469,39 @@ def _valve43(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _open_centre_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/FlowControlValves/HydraulicOpenCenterValve.hpp: the 4/3 valve (Hydraulic43Valve's
+    spool and edges P-A, P-B, A-T, B-T, :func:`_valve43`) and a centre edge from C1 to C2, open at rest, whose
+    opening is x_vmax - limit(|x_v| - x_cc, 0, x_vmax) (closed from |x_v| = x_vmax + x_cc on; a negative x_cc
+    closes it before the end of the stroke), its flow coefficient C_q f_cc π d √(2/ρ), turbulent as the other edges.
+    That opening is x_vmax + x_cc - s with s = limit(|x_v|, x_cc, x_cc + x_vmax): an Absolute, a Saturation and a
+    Gain of -1 give -s to a TwoWayValve ``{n}_centre`` of overlap x_AB = -(x_vmax + x_cc), whose opening
+    -s + x_vmax + x_cc is Hopsan's (never below 0, so the edge's own clamp never acts)."""
+    from hydroservo.components import Absolute, Gain, Saturation, TwoWayValve
+
+    rho, x_vmax, x_cc = par("rho", 870.0), par("x_vmax", 0.01), par("x_cc", -1e-6)
+    if x_vmax <= 0.0:
+        par.problems.append(f"{par.where}: x_vmax = {x_vmax:g} m; only a stroke above 0 is supported")
+        return Mapped()
+    m = _valve43(hc, n, par)
+    centre = TwoWayValve(
+        f"{n}_centre", c_v=_edge_coefficient(par, par("f_cc", 1.0), rho), x_AB=-(x_vmax + x_cc), rho=rho, D_h="1 mm",
+        lambda_crit=10.0,
+    )
+    blocks: list[cbase.Component] = [
+        Absolute(f"{n}_abs", unit="m"),
+        Saturation(f"{n}_cc", unit="m", lower=x_cc, upper=x_cc + x_vmax),
+        Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0),
+    ]
+    m.components += [*blocks, centre]
+    m.power.update({"PC1": f"{n}_centre.A", "PC2": f"{n}_centre.B"})
+    m.internal += [(f"{n}_spool.xv", f"{n}_abs.u"), (f"{n}_abs.y", f"{n}_cc.u"), (f"{n}_cc.y", f"{n}_flip.u"),
+                   (f"{n}_flip.y", f"{n}_centre.xv")]
+    m.note = (m.note + "; the centre edge C1-C2: an Absolute, a Saturation and a Gain (its opening from the "
+              "spool's) and a TwoWayValve")
+    return m
+
+
 def _valve42(command: str, all_edges: bool) -> Builder:
     """Hopsan's 4/2 valves ([Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic42Valve.hpp,
     Hydraulic42Valve2.hpp, Hydraulic/Valves/DirectionalValves/Hydraulic42DirectionalValve.hpp): a spool in
@@ -1387,6 +1420,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
+    "HydraulicOpenCenterValve": _open_centre_valve,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),
     "Hydraulic42Valve2": _valve42("one-sided", all_edges=True),
     "Hydraulic42DirectionalValve": _valve42("on-off", all_edges=True),

@@ -96,6 +96,11 @@ MODELS: dict[str, Spec] = {
     "hydraulic-42-on-off-valve-test": Spec(
         "Component Test/HydraulicComponent Test/Hydraulic42OnOffValveTest.hmf", "a 4/2 on/off directional valve switched"
     ),
+    "hydraulic-open-centre-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicOpenCentreValveTest.hmf",
+        "a 6/3 open-centre valve ramped through its stroke between pressure sources, its ports A and B on volumes "
+        "joined by a laminar orifice, its centre edge C1-C2 closing towards either end",
+    ),
     "hydraulic-valve-33-test": Spec(
         "Component Test/HydraulicComponent Test/HydraulicValve33Test.hmf",
         "a 3/3 valve with its spool position as input and a laminar onset, ramped between pressure sources",

@@ -474,6 +474,53 @@ def test_spool_valves_map_to_the_four_way_valves_edges_with_hopsans_laps_and_spo
             assert float(r[alias][-1]) == pytest.approx(value, rel=1e-6, abs=1e-12), (kind, alias)
 
 
+def test_hopsans_open_centre_valve_is_the_43_valve_with_a_centre_edge_closing_towards_either_end(
+    tmp_path: Path,
+) -> None:
+    """[Hopsan2026] FlowControlValves/HydraulicOpenCenterValve.hpp, each case held 0.3 s at a command: the 4/3
+    valve's edges (P-A and B-T open as x_v - lap, P-B and A-T as -x_v - lap) and the centre edge C1-C2 open as
+    x_vmax - limit(|x_v| - x_cc, 0, x_vmax), each C_q f π d x √(2/ρ) √Δp; the command is limited to the stroke. A
+    stroke of 0 is refused."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    p_tr = transition_pressure(1e-3, 870.0, 32e-6, 10.0)
+
+    def q(f: float, x: float, dp: float) -> float:
+        return 0.67 * f * np.pi * 0.01 * max(x, 0.0) * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p_tr * p_tr) ** 0.25
+
+    v = _value
+    ports = {"PP": 100e5, "PT": 1e5, "PA": 60e5, "PB": 30e5, "PC1": 80e5, "PC2": 20e5}
+    cases = [  # x_cc, command, x_v, centre opening
+        ("-0.001", "0.004", 0.004, 0.005),  # the centre closes 1 mm before the end of the stroke
+        ("0.003", "-0.002", -0.002, 0.01),  # within x_cc the centre stays open by x_vmax
+        ("0.003", "-0.006", -0.006, 0.007),
+        ("-1e-6", "0.02", 0.01, 0.0),  # limited to the stroke: closed
+    ]
+    for i, (x_cc, command, x, centre) in enumerate(cases):
+        params = {"x_cc#Value": v(x_cc), "f_cc#Value": v("0.5")}
+        kind, components, connections = _valve_circuit("HydraulicOpenCenterValve", ports, params, command)
+        path = tmp_path / f"oc{i}.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        imp = import_hopsan(path)
+        assert dict((h, t) for h, t, _ in imp.mapping)["V"] == kind
+        r = imp.system.simulate(t_eval=[0.0, 0.3], accuracy=1e-8)
+        lap = -1e-6
+        q_pa, q_bt = q(1.0, x - lap, 100e5 - 60e5), q(1.0, x - lap, 30e5 - 1e5)
+        q_pb, q_at = q(1.0, -x - lap, 100e5 - 30e5), q(1.0, -x - lap, 60e5 - 1e5)
+        expected = {
+            "V.xv.Value": x, "V.PA.Flow": q_pa - q_at, "V.PB.Flow": q_pb - q_bt, "V.PT.Flow": q_at + q_bt,
+            "V.PP.Flow": -q_pa - q_pb, "V.PC2.Flow": q(0.5, centre, 80e5 - 20e5),
+            "V.PC1.Flow": -q(0.5, centre, 80e5 - 20e5),
+        }
+        for alias, value in expected.items():
+            assert float(r[alias][-1]) == pytest.approx(value, rel=1e-6, abs=1e-12), (x_cc, command, alias)
+    _, components, connections = _valve_circuit("HydraulicOpenCenterValve", ports, {"x_vmax#Value": v("0")}, "0")
+    path = tmp_path / "oc_refused.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicOpenCenterValve\): x_vmax = 0 m; only a stroke above 0"):
+        read_hopsan(path)
+
+
 def test_hopsans_valve33_is_a_three_way_valve_with_its_underlap_and_laminar_onset(tmp_path: Path) -> None:
     """[Hopsan2026] Special/HydraulicValve33.hpp: the position xv is the input (no spool), limited to ±Xvmax;
     each edge passes Cq √(2/ρ) π Fr Sd (Xap0 ± xv) Δp/(Δp² + plam²)^(1/4). A valve whose Xat0 is not its Xap0
