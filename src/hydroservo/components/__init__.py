@@ -14,7 +14,8 @@ module                 components
 :mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
                        AngularVelocitySource
-:mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
+:mod:`.valves`         FourWayValve, ThreeWayValve, ThreeWayPressureValve, TwoWayValve, PseudoSectionValve,
+                       ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
@@ -103,6 +104,7 @@ from hydroservo.components.valves import (
     ReliefValve,
     ServoSolenoidValve,
     StagedSlotValve,
+    ThreeWayPressureValve,
     ThreeWayValve,
     TwoStageServovalve,
     TwoWayValve,
@@ -155,6 +157,7 @@ __all__ = [
     "Machine",
     "FourWayValve",
     "ThreeWayValve",
+    "ThreeWayPressureValve",
     "TwoWayValve",
     "PseudoSectionValve",
     "ServoSolenoidValve",

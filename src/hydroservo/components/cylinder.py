@@ -95,6 +95,20 @@ class Cylinder(Component):
     (``connect("cyl.R", "load.P1")`` feeds ``x``, ``v`` and ``F``). Outputs ``VA``, ``VB`` are the volumes of the
     pressure equations.
 
+    Chambers (option ``chambers``): ``volumes`` (default), the two chambers
+    above, whose pressures are states (pressure ports); ``none``, a piston
+    without oil of its own (Hopsan's Q-type pistons, [Hopsan2026]
+    Hydraulic/Special/HydraulicPistonMkload.hpp): its ports A and B are flow
+    ports that take the pressures of the volumes they join and give the flows
+    the piston displaces, the continuity equations above with the chambers'
+    capacitance taken into those volumes,
+
+    .. math:: Q_A = A_A\dot x + Q_{Li} + C_{LeA} p_A, \quad Q_B = -A_B\dot x - Q_{Li} + C_{LeB} p_B
+
+    (``QA``, ``QB`` the flows into the sides); its force, friction and end
+    stops are as above. ``V_A0``, ``V_B0``, ``k_V``, the bulk modulus and the
+    pressure floor do not apply (a cavity is the joined volumes' business).
+
     Every run is checked against the cylinder's physical bounds (``LIMITS``,
     :mod:`hydroservo.system.plausibility`): chamber pressures between vacuum and
     the supply (with margins), the piston within its stops, positive volumes.
@@ -143,6 +157,12 @@ class Cylinder(Component):
             ("check-valve", "cavity", "none"),
             "replenishing check valves, a cavity to refill (Hopsan), or none",
         ),
+        "chambers": Option(
+            "volumes",
+            ("volumes", "none"),
+            "chambers whose pressures are states (pressure ports), or none: a piston whose ports take the pressures "
+            "of the volumes they join (flow ports)",
+        ),
     }
     STATES = {
         "pA": State("Pa", "pressure, side A", initial="pA0", nominal=1e7),
@@ -179,8 +199,25 @@ class Cylinder(Component):
     }
 
     def options_changed(self) -> None:
-        """The states of the chosen pressure floor: the pressures, or (cavity) pressure states below the ports' pressures."""
+        """The states of the chosen pressure floor: the pressures, or (cavity) pressure states below the ports' pressures;
+        without chambers, none: the pressures are inputs and the flows outputs."""
         cls = type(self)
+        self.INPUTS, self.LIMITS = dict(cls.INPUTS), dict(cls.LIMITS)  # type: ignore[misc]
+        if self.option("chambers") == "none":
+            self.STATES = {}  # type: ignore[misc]
+            self.INPUTS = {  # type: ignore[misc]
+                "pA": Port("Pa", "pressure at port A (the volume it joins)"),
+                "pB": Port("Pa", "pressure at port B (the volume it joins)"),
+                "x": cls.INPUTS["x"],
+                "v": cls.INPUTS["v"],
+            }
+            self.OUTPUTS = {  # type: ignore[misc]
+                "QA": Output("m^3/s", "flow into side A (option chambers = none)"),
+                "QB": Output("m^3/s", "flow into side B (option chambers = none)"),
+                **{k: cls.OUTPUTS[k] for k in ("F", "QLi")},
+            }
+            self.LIMITS = {"x": cls.LIMITS["x"]}  # type: ignore[misc]
+            return
         if self.option("pressure_floor") != "cavity":
             self.STATES, self.OUTPUTS = dict(cls.STATES), dict(cls.OUTPUTS)  # type: ignore[misc]
             return
@@ -209,6 +246,8 @@ class Cylinder(Component):
         v = self.values
         if v["x_min"] >= v["x_max"]:
             raise ParameterError(f"{self.name}.x_min = {v['x_min']:g} m: expected below x_max = {v['x_max']:g} m")
+        if self.option("chambers") == "none":
+            return
         for side, area in (("A", "A_A"), ("B", "A_B")):
             for end in ("x_min", "x_max"):
                 sign = 1.0 if side == "A" else -1.0
@@ -230,13 +269,13 @@ class Cylinder(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
+        if self.option("chambers") == "none":
+            return self._piston_outputs(u, p)
         pA, pB = self._pressures(x, p)
         cavity = self.option("pressure_floor") == "cavity"  # Hopsan's leakage: between the pressure states
         drop = x["pA_state"] - x["pB_state"] if cavity else pA - pB
-        out = {"pA": pA, "pB": pB, "QLi": p["C_Li"] * drop}
+        out = {"pA": pA, "pB": pB, "QLi": p["C_Li"] * drop, "F": self._force(pA, pB, u, p)}
         pos = u["x"]
-        stop = end_stop_force(pos, u["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
-        out["F"] = pA * p["A_A"] - pB * p["A_B"] - p["p_amb"] * (p["A_A"] - p["A_B"]) - p["B_p"] * u["v"] + stop
         VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
         out["m_oil"] = p["rho"] * (VA + VB)
         out["VA"], out["VB"] = VA, VB
@@ -245,11 +284,29 @@ class Cylinder(Component):
                 out[f"V_cav{side}"] = cavity_volume(x[f"p{side}_state"], p["p_floor"], V, self._bulk(out[f"p{side}"], p))
         return out
 
+    def _force(self, pA: Any, pB: Any, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        """The force on the piston in +x: the pressures on the areas, the rod's surroundings, friction, end stops."""
+        stop = end_stop_force(u["x"], u["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
+        return pA * p["A_A"] - pB * p["A_B"] - p["p_amb"] * (p["A_A"] - p["A_B"]) - p["B_p"] * u["v"] + stop
+
+    def _piston_outputs(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        """Option chambers = none: the flows the piston displaces into its ports' volumes, and its force."""
+        pA, pB, vel = u["pA"], u["pB"], u["v"]
+        QLi = p["C_Li"] * (pA - pB)
+        return {
+            "QA": p["A_A"] * vel + QLi + p["C_LeA"] * pA,
+            "QB": -p["A_B"] * vel - QLi + p["C_LeB"] * pB,
+            "F": self._force(pA, pB, u, p),
+            "QLi": QLi,
+        }
+
     def switch_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, tuple[Any, float]]:
         """The end stops reached, and a chamber at its pressure floor (options cavity and check-valve)."""
         found = {"stop_min": (u["x"] - p["x_min"], 1e-3), "stop_max": (u["x"] - p["x_max"], 1e-3)}
+        if self.option("chambers") == "none":
+            return found
         floor = self.option("pressure_floor")
         if floor == "cavity":
             found.update({f"floor_{s}": (x[f"p{s}_state"] - p["p_floor"], 1e5) for s in ("A", "B")})
@@ -260,6 +317,8 @@ class Cylinder(Component):
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
+        if self.option("chambers") == "none":
+            return {}
         pA, pB = y["pA"], y["pB"]
         vel = u["v"]
         VA, VB = y["VA"], y["VB"]

@@ -735,6 +735,68 @@ def _valve33_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _pressure_control_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/HydraulicPressureControlValve33.hpp: a 3/3 valve (P1 supply, P2 tank, P3 the
+    controlled line) whose massless spool, damped by Bv, is pushed by the pilot pressure at P4 against the setting
+    pref (absolute) on its area Av = π Sd²/4 and held by its spring ks and the steady flow forces of its open edges:
+    Bv ẋv = Av (p4 - pref) - (ks + k_f) xv, xv in [Xvmin, Xvmax] (Hopsan's bilinear transform of it, clamped with
+    its memory), k_f = 2 Cq π Sd Fr cos φ |Δp| per edge. Its edges as HydraulicValve33's: Cq √(2/ρ) π Fr Sd
+    limit(Xap0 ± xv, ...) signedSquareL(Δp, plam), P-A opening as Xap0 + xv and A-T as Xap0 - xv (Xat0 enters
+    only A-T's upper limit, which a spool within [Xvmin, Xvmax] does not reach unless Xvmin < Xat0 - Xap0 - Xvmax,
+    refused). Hopsan switches A-T's flow force on only below xv = -Xat0, where that edge has opened by
+    Xap0 + Xat0 (P-A's as soon as it opens): ``x_ATf`` = Xap0 + Xat0. A ThreeWayPressureValve
+    (:class:`~hydroservo.components.valves.ThreeWayPressureValve`), the laminar onset plam as its transition pressure;
+    its output xv is Hopsan's. π where Hopsan writes 3.14159, 0.785398 and 6.28319 (1e-6 apart)."""
+    from hydroservo.components import ThreeWayPressureValve
+
+    rho, sd, x0, x_at0 = par("rho", 870.0), par("Sd", 0.01), par("Xap0", 0.0), par("Xat0", 0.0)
+    x_min, x_max, plam, phi = par("Xvmin", -0.01), par("Xvmax", 0.01), par("plam", 1e4), par("phi", 0.03)
+    before = len(par.problems)
+    for name, value in (("rho", rho), ("Sd", sd), ("plam", plam), ("Bv", par("Bv", 100.0))):
+        if value <= 0.0:
+            par.problems.append(f"{par.where}: {name} = {value:g}; only a value above 0 is supported")
+    if par("ks", 100.0) < 0.0:
+        par.problems.append(f"{par.where}: ks = {par('ks', 100.0):g} N/m; only a spring of at least 0 is supported")
+    if not 0.0 <= phi <= math.pi / 2:
+        par.problems.append(f"{par.where}: stream angle phi = {phi:g} rad; only an angle in [0, π/2] is supported")
+    if x_min >= x_max:
+        par.problems.append(f"{par.where}: Xvmin = {x_min:g} m is not below Xvmax = {x_max:g} m")
+    elif x_min < x_at0 - x0 - x_max:
+        par.problems.append(
+            f"{par.where}: Xvmin = {x_min:g} m lets A-T open past its limit Xat0 + Xvmax = {x_at0 + x_max:g} m, "
+            "which a ThreeWayValve's edge does not have"
+        )
+    if len(par.problems) > before:
+        return Mapped()
+    nu, lambda_crit = 32e-6, 1000.0
+    valve = ThreeWayPressureValve(
+        n,
+        c_PA=_edge_coefficient(par, par("Frap", 1.0), rho, d="Sd", c_q="Cq"),
+        c_AT=_edge_coefficient(par, par("Frat", 1.0), rho, d="Sd", c_q="Cq"),
+        x_PA=-x0,
+        x_AT=-x0,
+        rho=rho,
+        nu=nu,
+        lambda_crit=lambda_crit,
+        D_h=lambda_crit * nu * math.sqrt(rho / (2.0 * plam)),  # transition_pressure(D_h) = plam
+        A_v=math.pi * sd * sd / 4.0,
+        p_ref=_abs(par("pref", 1e6)),
+        k_s=par("ks", 100.0),
+        B_v=par("Bv", 100.0),
+        phi=phi,
+        x_min=x_min,
+        x_max=x_max,
+        x_ATf=x0 + x_at0,
+    )
+    return Mapped(
+        [valve],
+        power={"P1": f"{n}.P", "P2": f"{n}.T", "P3": f"{n}.A", "P4": f"{n}.X"},
+        values={"xv": Var(1.0, f"{n}.xv")},
+        initial={f"{n}.x_v": min(max(par("xv", 0.0), x_min), x_max)},
+        note="a ThreeWayPressureValve",
+    )
+
+
 def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Cylinder
 
@@ -760,6 +822,54 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     if use_sl is not None and use_sl.text.strip().lower() in ("false", "0"):
         comp.set(k_stop=0.0, c_stop=0.0)  # Hopsan's end stops switched off
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.R"})
+
+
+def _piston_mkload(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPistonMkload.hpp: a Q-type piston (no oil of its own: its ports take
+    the pressures of the volumes they join) carrying a load of mass mL on a spring kL to x = 0, damped by bL + bp,
+    with dry friction fc, its position limited to [xmin, xmax]: mL ẍ = A1 p1 - A2 p2 - f_mp - (bL + bp) ẋ - kL x -
+    F_f, the flows into the piston A1 ẋ + Cip (p1 - p2) at P1 and -A2 ẋ - Cip (p1 - p2) at P2 (Hopsan's equation
+    system, solved by Newton iterations each step with the bilinear transform of the mass, stands for these laws).
+    Its friction limit(bfc mL ẋ/Ts, -fc, fc) is a viscous slope that grows without bound as the step Ts vanishes:
+    dry friction that holds the load until the force on it passes fc, and opposes the motion with fc after, the
+    Stribeck law with F_c0 = fc, F_s0 = 0 as its velocity scale vanishes (v_reg = 1e-5 m/s, as the mass with
+    Coulomb friction); the factor bfc drops out (bfc = 0 is no friction). A Cylinder with ``chambers = "none"``
+    (A_A = A1, A_B = A2, C_Li = Cip, B_p = bp, end stops at xmin and xmax for Hopsan's inelastic ones, of 1e11 N/m
+    rather than the default 1e9: on Pressure Controlled Pump the pump's pressure holds the piston on its stop with
+    2 kN, 2 µm into a 1e9 N/m stop, which delays its break-away and made its velocity 4.4 % of range off Hopsan's,
+    0.01 % at 1e11 N/m; the force of absolute pressures, p_amb 0 Pa_abs) pushing a Mass ``{n}_load`` (m = mL, B = bL, k_spring = kL) at
+    its end P1, the port Pmp its end P2 (both at x: length 0). The stroke SL enters none of Hopsan's equations and is not used."""
+    from hydroservo.components import Cylinder, Mass
+
+    a1, a2, x_min, x_max = par("A1", 1e-3), par("A2", 1e-3), par("xmin", 0.0), par("xmax", 0.5)
+    fc, bfc = par("fc", 10.0), par("bfc", 1.0)
+    before = len(par.problems)
+    for name, value in (("A1", a1), ("A2", a2), ("mL", par("mL", 1000.0))):
+        if value <= 0.0:
+            par.problems.append(f"{par.where}: {name} = {value:g}; only a value above 0 is supported")
+    for name, value in (("Cip", par("Cip", 0.0)), ("bp", par("bp", 0.0)), ("bL", par("bL", 0.0)),
+                        ("kL", par("kL", 0.0)), ("fc", fc)):
+        if value < 0.0:
+            par.problems.append(f"{par.where}: {name} = {value:g}; only a value of at least 0 is supported")
+    if x_min >= x_max:
+        par.problems.append(f"{par.where}: xmin = {x_min:g} m is not below xmax = {x_max:g} m")
+    if len(par.problems) > before:
+        return Mapped()
+    piston = Cylinder(
+        n, chambers="none", A_A=a1, A_B=a2, C_Li=par("Cip", 0.0), B_p=par("bp", 0.0), x_min=x_min, x_max=x_max,
+        p_amb="0 Pa_abs", k_stop=1e11, c_stop=1e6,
+    )
+    load = Mass(
+        f"{n}_load", m=par("mL", 1000.0), B=par("bL", 0.0), k_spring=par("kL", 0.0), incline=0.0,
+        F_c0=fc if bfc > 0.0 else 0.0, v_reg=1e-5,
+        x0=min(max(par.start("Pmp", "Position"), x_min), x_max), v0=par.start("Pmp", "Velocity"),
+    )
+    return Mapped(
+        [piston, load],
+        power={"P1": f"{n}.A", "P2": f"{n}.B", "Pmp": f"{n}_load.P2"},
+        internal=[(f"{n}.R", f"{n}_load.P1")],  # the rod faces the load's end 1: at x (length 0), pushing +x
+        note="a Cylinder (chambers = none) and a Mass",
+    )
 
 
 def _flow_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1426,10 +1536,12 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic42DirectionalValve": _valve42("on-off", all_edges=True),
     "Hydraulic33Valve": _valve33,
     "HydraulicValve33": _valve33_special,
+    "HydraulicPressureControlValve33": _pressure_control_valve33,
     "Hydraulic32DirectionalValve": _valve32_directional,
     "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
+    "HydraulicPistonMkload": _piston_mkload,
     "HydraulicPressureSensor": _sensor("Pressure", "Pa"),
     "HydraulicFlowSensor": _sensor("Flow", "m^3/s"),
     "MechanicTranslationalMass": _mass,

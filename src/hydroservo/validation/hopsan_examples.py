@@ -50,6 +50,12 @@ MODELS: dict[str, Spec] = {
         "Example Models/Pressure Controlled Pump Simple.hmf",
         "variable pump whose displacement a spring-loaded piston sets from the pressure",
     ),
+    "pressure-controlled-pump": Spec(
+        "Example Models/Pressure Controlled Pump.hmf",
+        "a variable pump whose displacement a loaded piston sets, the piston's pressure controlled from the pump's "
+        "by a 3/3 pressure-control valve (a pilot-operated spool with flow forces); the load's orifice is stepped "
+        "smaller at 1 s",
+    ),
     "sub-system-example": Spec(
         "Example Models/Sub System Example.hmf", "two position servos in subsystems, sharing supply and parameters"
     ),

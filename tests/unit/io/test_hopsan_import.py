@@ -557,6 +557,90 @@ def test_hopsans_valve33_is_a_three_way_valve_with_its_underlap_and_laminar_onse
         read_hopsan(path)
 
 
+def test_hopsans_pressure_control_valve33_balances_its_pilot_against_spring_and_flow_forces(tmp_path: Path) -> None:
+    """[Hopsan2026] Valves/HydraulicPressureControlValve33.hpp at rest: Av (p4 - pref) = (ks + k_f) xv with
+    Av = π Sd²/4, k_f = 2 Cq π Sd Fr cos φ |Δp| of P-A while it is open (xv > -Xap0) and of A-T only below
+    xv = -Xat0 (Hopsan's switch); the flows Cq √(2/ρ) π Fr Sd (Xap0 ± xv) Δp/(Δp² + plam²)^(1/4). A pilot above
+    pref opens P-A further, below it A-T; within Xat0 below 0 both edges flow (their underlaps) but only P-A's
+    flow force acts. A spool range that would open A-T past its limit is refused."""
+    v = _value
+    ps, pt, pa = 2e7, 1e5, 1e7
+    sd, fr, phi, ks, cq, plam, x0 = 0.003, 0.1, 1.0, 3e4, 0.67, 1e4, 1e-5
+    area = np.pi * sd * sd / 4.0
+    ks_root = cq * np.sqrt(2.0 / 870.0) * np.pi * fr * sd
+
+    def g(dp: float) -> float:
+        return dp / (dp * dp + plam**2) ** 0.25
+
+    def kf(dp: float) -> float:
+        return 2.0 * cq * np.pi * sd * fr * np.cos(phi) * abs(dp)
+
+    x_up = area * 1e5 / (ks + kf(ps - pa))  # pilot 1 bar above pref: P-A open, its flow force
+    x_in = -area * 2e3 / (ks + kf(ps - pa))  # 0.02 bar below: both edges open, A-T without its flow force
+    x_down = -area * 3e5 / (ks + kf(pa - pt))  # 3 bar below: A-T's flow force too (P-A closed)
+    assert x_up > 0 and -x0 < x_in < 0 and x_down < -x0
+    for px, x in ((1.01e7, x_up), (1e7 - 2e3, x_in), (0.97e7, x_down)):
+        params = {"pref#Value": v("1e7"), "Sd#Value": v(repr(sd)), "Frap#Value": v(repr(fr)), "Frat#Value": v(repr(fr)),
+                  "Xap0#Value": v(repr(x0)), "Xat0#Value": v(repr(x0)), "phi#Value": v(repr(phi)), "ks#Value": v(repr(ks)),
+                  "Bv#Value": v("1"), "Xvmin#Value": v("-0.003"), "Xvmax#Value": v("0.003")}
+        components = [
+            ("HydraulicPressureControlValve33", "V", params),
+            *[("HydraulicPressureSourceC", f"S{k}", {"p#Value": v(repr(p), "Pa")})
+              for k, p in (("1", ps), ("2", pt), ("3", pa), ("4", px))],
+        ]
+        connections = [(f"V.P{k}", f"S{k}.P1") for k in "1234"]
+        path = tmp_path / "pcv.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        r = read_hopsan(path).simulate(t_eval=[0.0, 0.01], accuracy=1e-9)
+        assert float(r["V.xv.Value"][-1]) == pytest.approx(x, rel=1e-4), px
+        q_pa = ks_root * max(x0 + x, 0.0) * g(ps - pa)
+        q_at = ks_root * max(x0 - x, 0.0) * g(pa - pt)
+        assert float(r["V.P3.Flow"][-1]) == pytest.approx(q_pa - q_at, rel=1e-4), px
+        assert float(r["V.P4.Flow"][-1]) == 0.0
+    params["Xvmin#Value"] = v("-0.004")
+    path.write_text(_hmf([("HydraulicPressureControlValve33", "V", params)], []), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicPressureControlValve33\): Xvmin = -0.004 m lets A-T open"):
+        read_hopsan(path)
+
+
+def test_hopsans_q_type_piston_with_load_settles_on_its_spring_and_holds_by_its_dry_friction(tmp_path: Path) -> None:
+    """[Hopsan2026] Special/HydraulicPistonMkload.hpp between two pressure sources (absolute pressures), a force
+    source pressing its port Pmp: at rest kL x = A1 p1 - A2 p2 - F, its flows the leakage Cip (p1 - p2) (Hopsan's
+    flow at P1 out of the piston, -Cip (p1 - p2)); with the dry friction fc above that imbalance it does not move;
+    its position limited to [xmin, xmax]. A piston area of 0 is refused."""
+    v = _value
+
+    def run(params: dict, p1: float, p2: float, force: float) -> dict:
+        components = [
+            ("HydraulicPistonMkload", "P", params),
+            ("HydraulicPressureSourceC", "S1", {"p#Value": v(repr(p1), "Pa")}),
+            ("HydraulicPressureSourceC", "S2", {"p#Value": v(repr(p2), "Pa")}),
+            ("MechanicForceTransformer", "F", {"F#Value": v(repr(force), "N")}),
+        ]
+        path = tmp_path / "piston.hmf"
+        path.write_text(_hmf(components, [("P.P1", "S1.P1"), ("P.P2", "S2.P1"), ("P.Pmp", "F.P1")]), encoding="utf-8")
+        return read_hopsan(path).simulate(t_eval=[0.0, 0.2, 3.0], accuracy=1e-9)
+
+    base = {"A1#Value": v("2e-4"), "A2#Value": v("1e-4"), "Cip#Value": v("1e-12"), "bp#Value": v("100"),
+            "mL#Value": v("1"), "bL#Value": v("100"), "kL#Value": v("1e5"), "fc#Value": v("0"),
+            "xmin#Value": v("-0.1"), "xmax#Value": v("0.1")}
+    r = run(base, 2e6, 3e6, 50.0)
+    x = (2e-4 * 2e6 - 1e-4 * 3e6 - 50.0) / 1e5
+    assert float(r["P.Pmp.Position"][-1]) == pytest.approx(x, rel=1e-6)
+    assert float(r["P.P1.Flow"][-1]) == pytest.approx(-1e-12 * (2e6 - 3e6), rel=1e-5)
+    assert float(r["P.P2.Flow"][-1]) == pytest.approx(1e-12 * (2e6 - 3e6), rel=1e-5)
+    # 100 N against 60 N of dry friction, overdamped: it moves until the spring takes the other 40 N (then creeps
+    # on at the regularisation's pace, v_reg atanh(F/fc): 3 % of the way in the next second)
+    r = run({**base, "fc#Value": v("60"), "bL#Value": v("5000")}, 2e6, 3e6, 0.0)
+    assert float(r["P.Pmp.Position"][1]) == pytest.approx((100.0 - 60.0) / 1e5, rel=0.03)
+    r = run({**base, "fc#Value": v("150")}, 2e6, 3e6, 0.0)  # 100 N below the friction: held (1e-3 m without it)
+    assert abs(float(r["P.Pmp.Position"][-1])) < 3e-5
+    r = run({**base, "xmax#Value": v("0.0005")}, 2e6, 3e6, 50.0)  # its stroke limited
+    assert float(r["P.Pmp.Position"][-1]) == pytest.approx(0.0005, abs=1e-7)
+    with pytest.raises(ModelFileError, match=r"P \(HydraulicPistonMkload\): A1 = 0; only a value above 0"):
+        run({**base, "A1#Value": v("0")}, 2e6, 3e6, 0.0)
+
+
 def test_valves_hopsan_has_that_hydroservo_cannot_follow_are_refused(tmp_path: Path) -> None:
     """A one-sided spool that would overshoot (delta_h < 1) and a 4/2 valve with unequal edges are refused,
     each named."""
