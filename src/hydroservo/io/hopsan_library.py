@@ -1186,12 +1186,18 @@ def _machine_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     (ε D_m/2π)² (Z_c1 + Z_c2): in the limit a Machine (D_m per revolution, C_lm, B_m, eps limited to [-1, 1])
     between two Volumes with Hopsan's cavity law (their ports see max(p, 0), as the machine's pressures are
     floored), each starting at its port's start pressure. Hopsan's flow into P1 is ε D_m/2π times minus its
-    shaft's speed (the Q component's): P1 is the Machine's A."""
+    shaft's speed (the Q component's): P1 is the Machine's A. Each port's volume is (1 + α) V_i with Hopsan's
+    fixed α = 0.1, not V_i: a transmission-line element of impedance Z and delay T_d holds the oil of a volume
+    T_d/Z·β, and the machine's elements have Z = β Ts/((1 - α) V_i) but filter their waves with memories two
+    steps old (y_n = α y_(n-2) + (1 - α) x_n, its Delay's update returning the value before the last), so that
+    T_d = Ts (1 + α)/(1 - α) whatever the step (HydraulicVolume's one-step filter gives T_d = Ts/(1 - α) and
+    V). On Open Centre System, whose motors' volumes are the only ones on their lines, V_i made the trapped
+    pressures decay 10 % faster than Hopsan's (pressures 67 % of range off at the valves' switching)."""
     from hydroservo.components import Machine, Volume
 
     comp = Machine(n, D=f"{par('D_m', 5e-5)!r} m^3/rev", C_im=par("C_lm", 1e-12), B_m=par("B_m", 0.0))
     volumes = [
-        Volume(f"{n}_V{i}", V=par(f"V_{i}", 0.005), beta_e=par("Beta_e", 1e9),
+        Volume(f"{n}_V{i}", V=(1.0 + 0.1) * par(f"V_{i}", 0.005), beta_e=par("Beta_e", 1e9),
                p0=_abs(par.start(f"P{i}", "Pressure", 1e5)), pressure_floor="cavity", p_floor="0 Pa_abs")
         for i in (1, 2)
     ]
