@@ -17,7 +17,7 @@ module                 components
 :mod:`.valves`         FourWayValve, ThreeWayValve, ThreeWayPressureValve, TwoWayValve, PseudoSectionValve,
                        ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
-                       PressureReducingValve, CounterbalanceValve
+                       PressureReducingValve, CounterbalanceValve, PressureCompensatorValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
@@ -99,6 +99,7 @@ from hydroservo.components.valves import (
     FourWayValve,
     LaminarOrifice,
     Orifice,
+    PressureCompensatorValve,
     PressureReducingValve,
     PseudoSectionValve,
     ReliefValve,
@@ -169,6 +170,7 @@ __all__ = [
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
+    "PressureCompensatorValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",

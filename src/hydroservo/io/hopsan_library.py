@@ -227,6 +227,38 @@ def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
+def _compensating(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureCompensatingValve.hpp: a normally open
+    valve from P1 to P2 whose spool the pilot P_OPEN pushes closed against the spring pref and the pilot P_CLOSE,
+    x_s = X0max - (p_open - pref - p_close)/b_1 with b_1 = C_s + C_f (p1 - p2), its hysteresis p_h and its lag tao
+    (limited to [0, X0max], starting open): the relief valve's spool inverted, a PressureCompensatorValve (its X
+    P_OPEN, its Y P_CLOSE; pref a difference of pressures, not absolute). Its xv (the filtered coefficient) is the
+    valve's s times q_nom/√p_nom. Where the drop p1 - p2 is negative Hopsan's b_1 falls below C_s (and vanishes at
+    p1 - p2 = -C_s/C_f); hydroservo takes the flow forces for a positive drop only, as for the relief valve."""
+    from hydroservo.components import PressureCompensatorValve
+
+    if par("p_h", 5e5) < 0.0:
+        par.problems.append(f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa; expected 0 or more")
+        return Mapped()
+    q_nom, p_nom = par("q_nom", 0.001), 7e6  # Hopsan's fixed nominal pressure drop
+    comp = PressureCompensatorValve(
+        n,
+        p_ref=par("p_ref", 2e6),
+        tau=par("tao", 0.01),
+        k_cs=par("k_cs", 1e-8),
+        k_cf=par("k_cf", 1e-8),
+        q_nom=q_nom,
+        p_nom=p_nom,
+        p_tr=1e3,
+        p_h=par("p_h", 5e5),
+    )
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.A", "P2": f"{n}.B", "P_OPEN": f"{n}.X", "P_CLOSE": f"{n}.Y"},
+        values={"xv": Var(q_nom / math.sqrt(p_nom), f"{n}.s")},
+    )
+
+
 def _pressure_valve_g(reducing: bool) -> Builder:
     """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
     a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
@@ -1524,6 +1556,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
     "HydraulicPressureReliefValve": _relief,
+    "HydraulicPressureCompensatingValve": _compensating,
     "HydraulicAckumulator": _accumulator,
     "HydraulicPistonAckumulator": _piston_accumulator,
     "HydraulicPressureControlled22Valve": _pressure_controlled("22"),

@@ -641,6 +641,38 @@ def test_hopsans_q_type_piston_with_load_settles_on_its_spring_and_holds_by_its_
         run({**base, "A1#Value": v("0")}, 2e6, 3e6, 0.0)
 
 
+def test_hopsans_pressure_compensating_valve_throttles_as_its_open_pilot_passes_the_close_pilot_by_pref(
+    tmp_path: Path,
+) -> None:
+    """[Hopsan2026] PressureControlValves/HydraulicPressureCompensatingValve.hpp at rest: x0 = X0max -
+    (p_open - pref - p_close)/(C_s + C_f (p1 - p2)) within [0, X0max] (X0max = q_nom/√7 MPa, C_s = √p_nom/k_cs,
+    C_f = 1/(k_cf √p_nom)), the flow x0 √(p1 - p2); open at the start; its xv logged. A negative hysteresis is
+    refused."""
+    v = _value
+    x_max = 1e-3 / np.sqrt(7e6)
+    cs, cf = np.sqrt(7e6) / 1e-8, 1.0 / (1e-8 * np.sqrt(7e6))
+    p1, p2, p_close = 1e7, 4e6, 5e6
+    for p_open in (6.5e6, 7.1e6, 9e6):  # below pref above P_CLOSE: open; 1 bar over: throttling; far over: shut
+        components = [
+            ("HydraulicPressureCompensatingValve", "V", {"p_ref#Value": v("2e6"), "p_h#Value": v("0")}),
+            *[("HydraulicPressureSourceC", f"S{k}", {"p#Value": v(repr(p), "Pa")})
+              for k, p in (("1", p1), ("2", p2), ("O", p_open), ("C", p_close))],
+        ]
+        connections = [("V.P1", "S1.P1"), ("V.P2", "S2.P1"), ("V.P_OPEN", "SO.P1"), ("V.P_CLOSE", "SC.P1")]
+        path = tmp_path / "comp.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        r = read_hopsan(path).simulate(t_eval=[0.0, 0.3], accuracy=1e-8)
+        x0 = min(max(x_max - (p_open - 2e6 - p_close) / (cs + cf * (p1 - p2)), 0.0), x_max)
+        assert float(r["V.xv.Value"][0]) == pytest.approx(x_max)
+        assert float(r["V.xv.Value"][-1]) == pytest.approx(x0, rel=1e-6, abs=1e-15), p_open
+        dp = p1 - p2
+        assert float(r["V.P2.Flow"][-1]) == pytest.approx(x0 * dp / (dp * dp + 1e6) ** 0.25, rel=1e-6, abs=1e-15)
+    components[0] = ("HydraulicPressureCompensatingValve", "V", {"p_h#Value": v("-1")})
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicPressureCompensatingValve\): hysteresis p_h = -1 Pa"):
+        read_hopsan(path)
+
+
 def test_valves_hopsan_has_that_hydroservo_cannot_follow_are_refused(tmp_path: Path) -> None:
     """A one-sided spool that would overshoot (delta_h < 1) and a 4/2 valve with unequal edges are refused,
     each named."""

@@ -14,7 +14,12 @@ from hydroservo.components.valves.check import CheckValve
 from hydroservo.components.valves.directional import ThreeWayPressureValve, ThreeWayValve, TwoWayValve
 from hydroservo.components.valves.four_way import FourWayValve
 from hydroservo.components.valves.orifice import LaminarOrifice, Orifice
-from hydroservo.components.valves.pressure_control import CounterbalanceValve, PressureReducingValve, ReliefValve
+from hydroservo.components.valves.pressure_control import (
+    CounterbalanceValve,
+    PressureCompensatorValve,
+    PressureReducingValve,
+    ReliefValve,
+)
 from hydroservo.components.valves.pseudo_section import PseudoSectionValve, ServoSolenoidValve
 from hydroservo.components.valves.staged_slot import StagedSlotValve
 from hydroservo.components.valves.two_stage import TwoStageServovalve
@@ -33,6 +38,7 @@ __all__ = [
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
+    "PressureCompensatorValve",
     "TwoStageServovalve",
     "CatalogueServovalve",
 ]

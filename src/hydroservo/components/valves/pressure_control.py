@@ -21,7 +21,7 @@ from hydroservo.laws.pressure_valve import (
     valve_hysteresis,
 )
 
-__all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve"]
+__all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve", "PressureCompensatorValve"]
 
 #: The spool's characteristics, shared by every pressure-control valve ([Hopsan2026] defaults).
 SPOOL_PARAMETERS = {
@@ -236,3 +236,55 @@ class CounterbalanceValve(_PressureControl):
         out["Q"] = out["Q"] - turbulent_flow(check, dp, p["p_tr"])
         out["QX"] = 0.0
         return out
+
+
+@register
+class PressureCompensatorValve(_PressureControl):
+    r"""Pressure compensator from A to B: open at rest, closing as the pilot X passes the pilot Y by ``p_ref``.
+
+    The spring-loaded spool of :class:`_PressureControl`, normally open: the
+    pilot X pushes it closed against its spring and the pilot Y,
+    :math:`\Delta p_{over} = p_X - p_Y - p_{ref}`, and its state :math:`K_c`
+    is how far that has closed it, following
+    :func:`~hydroservo.laws.pressure_valve.pressure_valve_coefficient` of
+    :math:`\Delta p_{over}` as a relief valve's opening does (its lag ``tau``,
+    its hysteresis ``p_h``, its bounds :math:`[0, K_{max}]`); the valve passes
+    :math:`Q = (K_{max} - K_c)\sqrt{\Delta p}`, :math:`K_{max} = q_{nom}/\sqrt{p_{nom}}`.
+    It holds :math:`p_X - p_Y` near ``p_ref`` by throttling (X upstream of
+    the metering orifice it guards, Y downstream: a load-sensing compensator).
+    The pilots take no flow. Hopsan's HydraulicPressureCompensatingValve
+    ([Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureCompensatingValve.hpp:
+    x_s = X_0max − (p_open − p_ref − p_close)/b_1, filtered and with its
+    hysteresis) imports as this valve, its P_OPEN the pilot X, its P_CLOSE Y.
+    """
+
+    PARAMETERS = {
+        "p_ref": Param(20e5, "Pa", "pilot difference p_X - p_Y at which the valve starts to close"),
+        **SPOOL_PARAMETERS,
+    }
+    STATES = {"K": State("m^3/s/Pa^0.5", "flow coefficient by which the pilot has closed the valve", nominal=1e-6)}
+    INPUTS = {
+        **TWO_PORT_PRESSURES,
+        "pX": Port("Pa", "pilot pressure that closes the valve"),
+        "pY": Port("Pa", "pilot pressure that holds it open, with the spring"),
+    }
+    OUTPUTS = {
+        **_PressureControl.OUTPUTS,
+        "QX": Output("m^3/s", "pilot flow at X (none)"),
+        "QY": Output("m^3/s", "pilot flow at Y (none)"),
+    }
+    HYDRAULIC = {
+        **TWO_PORT_HYDRAULIC,
+        "X": Hydraulic("pX", "QX", "closing pilot port", into=True),
+        "Y": Hydraulic("pY", "QY", "opening pilot port (the spring's side)", into=True),
+    }
+
+    def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return u["pX"] - u["pY"] - p["p_ref"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        K_max = p["q_nom"] / bk.sqrt(p["p_nom"])
+        K = K_max - self._K(x, p)
+        return {"Q": turbulent_flow(K, u["pA"] - u["pB"], p["p_tr"]), "s": K / K_max, "QX": 0.0, "QY": 0.0}
