@@ -259,7 +259,7 @@ def _compensating(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
-def _pressure_valve_g(reducing: bool) -> Builder:
+def _pressure_valve_g(reducing: bool, ported: bool = False) -> Builder:
     """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
     a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
     p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
@@ -270,13 +270,21 @@ def _pressure_valve_g(reducing: bool) -> Builder:
     C_f = 2 cos φ/(√(2/ρ) A_v), tau = Bv/ks, K at most Cq w √(2/ρ) Xvmax, p_tr = p0 (signedSquareL is
     hydroservo's regularised turbulent law exactly). The relief valve's setting is a drop (``pilot = "drop"``), the
     reducing valve's an absolute pressure. π where Hopsan writes 3.14159 and 0.785398 (1e-6 apart); visc is
-    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax."""
+    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax.
+
+    ``ported``: the same spool piloted from other ports, Special/HydraulicPressureControlValveG.hpp (relief:
+    Δp_over = p3 - p4 - pref, a ReliefValve with ``pilot = "ports"``, P3 its X, P4 its Y) and
+    HydraulicPressureCompensatingValveG.hpp (reducing: Δp_over = pref + p3 - p2, a PressureReducingValve with
+    ``pilot = "port"``, P3 its X); pref is then a difference of pressures. Their flow forces take |p1 - p2|, the
+    relief and reducing G valves' the drop with its sign, as hydroservo's does: the two differ only for a flow
+    from P2 to P1."""
 
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         from hydroservo.components import PressureReducingValve, ReliefValve
 
-        rho, dv, frac, phi = par("rho", 870.0), par("Dv", 0.01), par("frac", 0.1), par("phi", 1.17)
-        ks, bv, x_vmax, cq = par("ks", 1e4), par("Bv", 1000.0), par("Xvmax", 0.002), par("Cq", 0.67)
+        compensating = reducing and ported  # its own defaults: Dv 0.03 m, Xvmax 0.01 m
+        rho, dv, frac, phi = par("rho", 870.0), par("Dv", 0.03 if compensating else 0.01), par("frac", 0.1), par("phi", 1.17)
+        ks, bv, x_vmax, cq = par("ks", 1e4), par("Bv", 1000.0), par("Xvmax", 0.01 if compensating else 0.002), par("Cq", 0.67)
         before = len(par.problems)
         for name, value in (("rho", rho), ("Dv", dv), ("frac", frac), ("ks", ks), ("Bv", bv), ("Xvmax", x_vmax),
                             ("Cq", cq), ("p0", par("p0", 1e5))):
@@ -305,13 +313,19 @@ def _pressure_valve_g(reducing: bool) -> Builder:
             "p_tr": par("p0", 1e5),
         }
         comp: cbase.Component
-        if reducing:
+        power = {"P1": f"{n}.A", "P2": f"{n}.B"}
+        if ported:
+            power.update({"P3": f"{n}.X"} if reducing else {"P3": f"{n}.X", "P4": f"{n}.Y"})
+        if reducing and ported:
+            comp = PressureReducingValve(n, p_set=par("pref", 1e6), pilot="port", **spool)
+        elif reducing:
             comp = PressureReducingValve(n, p_set=_abs(par("pref", 1e7)), **spool)
         else:
-            comp = ReliefValve(n, p_crack=par("pref", 1e7), pilot="drop", **spool)
+            comp = ReliefValve(n, p_crack=par("pref", 1e6 if ported else 1e7), pilot="ports" if ported else "drop",
+                               **spool)
         return Mapped(
             [comp],
-            power={"P1": f"{n}.A", "P2": f"{n}.B"},
+            power=power,
             values={"xv": Var(x_vmax, f"{n}.s")},
             initial={f"{n}.K": c * min(max(par("xv", 0.0), 0.0), x_vmax)},
         )
@@ -1566,6 +1580,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureControlled42Valve3": _pressure_controlled("42-3"),
     "HydraulicPressureReliefValveG": _pressure_valve_g(reducing=False),
     "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
+    "HydraulicPressureControlValveG": _pressure_valve_g(reducing=False, ported=True),
+    "HydraulicPressureCompensatingValveG": _pressure_valve_g(reducing=True, ported=True),
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
     "HydraulicOpenCenterValve": _open_centre_valve,

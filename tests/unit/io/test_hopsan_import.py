@@ -755,6 +755,39 @@ def test_hopsans_g_pressure_valves_settle_on_their_spools_force_balance(tmp_path
         read_hopsan(path)
 
 
+def test_hopsans_g_pressure_control_and_compensating_valves_balance_their_spools_on_pilot_ports(tmp_path: Path) -> None:
+    """[Hopsan2026] Special/HydraulicPressureControlValveG.hpp (Δp_over = p3 - p4 - pref) and
+    HydraulicPressureCompensatingValveG.hpp (Δp_over = pref + p3 - p2): at rest A_v Δp_over = (ks + 2 Cq w cos φ
+    (p1 - p2)) x_v, the flow Cq w x_v √(2/ρ) signedSquareL(p1 - p2, p0), w = π Dv frac sin φ; the pilots take no
+    flow."""
+    v = _value
+    components = [
+        ("HydraulicPressureControlValveG", "CV", {"pref#Value": v("1e6")}),
+        ("HydraulicPressureCompensatingValveG", "PC", {"pref#Value": v("1e6"), "Dv#Value": v("0.01"),
+                                                       "Xvmax#Value": v("0.002")}),
+        *[("HydraulicPressureSourceC", k, {"p#Value": v(repr(p), "Pa")})
+          for k, p in (("S1", 1e7), ("S2", 2e6), ("S3", 5.2e6), ("S4", 4e6), ("T1", 1e7), ("T2", 5.1e6),
+                       ("T3", 4.3e6))],
+    ]
+    connections = [("CV.P1", "S1.P1"), ("CV.P2", "S2.P1"), ("CV.P3", "S3.P1"), ("CV.P4", "S4.P1"),
+                   ("PC.P1", "T1.P1"), ("PC.P2", "T2.P1"), ("PC.P3", "T3.P1")]
+    path = tmp_path / "gp.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["CV"].option("pilot") == "ports" and imp.system["PC"].option("pilot") == "port"
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-8)
+    w = np.pi * 0.01 * 0.1 * np.sin(1.17)
+    area = np.pi * 0.01**2 / 4.0
+    for name, p1, p2, over in (("CV", 1e7, 2e6, 5.2e6 - 4e6 - 1e6), ("PC", 1e7, 5.1e6, 1e6 + 4.3e6 - 5.1e6)):
+        dp = p1 - p2
+        x = area * over / (1e4 + 2.0 * 0.67 * w * np.cos(1.17) * dp)
+        assert 0.0 < x < 0.002  # within the stroke
+        q = 0.67 * w * x * np.sqrt(2.0 / 870.0) * dp / (dp * dp + 1e10) ** 0.25
+        assert r[f"{name}.xv.Value"][-1] == pytest.approx(x, rel=1e-6)
+        assert r[f"{name}.P2.Flow"][-1] == pytest.approx(q, rel=1e-6)
+        assert r[f"{name}.P3.Flow"][-1] == 0.0
+
+
 def test_hopsans_pressure_controlled_valves_open_their_edges_as_the_pilot_pressure_sets_the_spool(tmp_path: Path) -> None:
     """[Hopsan2026] PressureControlled/HydraulicPressureControlled22Valve.hpp, ...22Valve2, ...42Valve3: at rest the
     spool sits at x_vmax·limit((p_C - Fs_min)/(Fs_max - Fs_min), 0, 1) (p_C absolute); the default-closed 2/2 valve

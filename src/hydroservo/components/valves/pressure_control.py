@@ -75,8 +75,24 @@ class _PressureControl(Component):
     }
     HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
 
+    #: the pilot ports a value of option ``pilot`` adds (they take no flow), if the valve has that option
+    PILOT_PORTS: dict[str, tuple[str, ...]] = {}
+
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         raise NotImplementedError
+
+    def _pilot_ports(self) -> tuple[str, ...]:
+        return self.PILOT_PORTS.get(self.option("pilot"), ()) if "pilot" in self.OPTIONS else ()
+
+    def options_changed(self) -> None:
+        """Option ``pilot`` from ports: their pressures inputs, their flows (none) outputs."""
+        cls = type(self)
+        self.INPUTS, self.OUTPUTS = dict(cls.INPUTS), dict(cls.OUTPUTS)  # type: ignore[misc]
+        self.HYDRAULIC = dict(cls.HYDRAULIC)  # type: ignore[misc]
+        for port in self._pilot_ports():
+            self.INPUTS[f"p{port}"] = Port("Pa", f"pilot pressure at {port}")
+            self.OUTPUTS[f"Q{port}"] = Output("m^3/s", f"pilot flow at {port} (none)")
+            self.HYDRAULIC[port] = Hydraulic(f"p{port}", f"Q{port}", f"pilot port {port}", into=True)
 
     def check(self) -> None:
         super().check()
@@ -93,7 +109,11 @@ class _PressureControl(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         K = self._K(x, p)
-        return {"Q": turbulent_flow(K, u["pA"] - u["pB"], p["p_tr"]), "s": K * bk.sqrt(p["p_nom"]) / p["q_nom"]}
+        return {
+            "Q": turbulent_flow(K, u["pA"] - u["pB"], p["p_tr"]),
+            "s": K * bk.sqrt(p["p_nom"]) / p["q_nom"],
+            **{f"Q{port}": 0.0 for port in self._pilot_ports()},
+        }
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
@@ -142,13 +162,21 @@ class ReliefValve(_PressureControl):
     Option ``pilot``: ``inlet`` (default), the spring chamber at the
     atmosphere, :math:`\Delta p_{over} = p_A - p_{crack}`; ``drop``, the
     spring chamber drained to the outlet, :math:`\Delta p_{over} = p_A - p_B - p_{crack}`
-    (Hopsan's HydraulicPressureReliefValveG, with ``spool = "balance"``).
+    (Hopsan's HydraulicPressureReliefValveG, with ``spool = "balance"``);
+    ``ports``, piloted from elsewhere: the pilot port X against the spring
+    chamber's port Y, :math:`\Delta p_{over} = p_X - p_Y - p_{crack}` (a
+    sequence or unloading valve; Hopsan's HydraulicPressureControlValveG, with
+    ``spool = "balance"``). The pilot ports take no flow.
     """
 
     OPTIONS = {
         **_PressureControl.OPTIONS,
-        "pilot": Option("inlet", ("inlet", "drop"), "the setting against the inlet's pressure, or against the drop A-B"),
+        "pilot": Option(
+            "inlet", ("inlet", "drop", "ports"),
+            "the setting against the inlet's pressure, the drop A-B, or the drop from pilot port X to port Y",
+        ),
     }
+    PILOT_PORTS = {"ports": ("X", "Y")}
 
     PARAMETERS = {
         "p_crack": Param(200e5, "Pa", "cracking pressure (setting)"),
@@ -162,6 +190,8 @@ class ReliefValve(_PressureControl):
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         if self.option("pilot") == "drop":
             return u["pA"] - u["pB"] - p["p_crack"]
+        if self.option("pilot") == "ports":
+            return u["pX"] - u["pY"] - p["p_crack"]
         return u["pA"] - p["p_crack"]
 
     def output_equations(
@@ -180,13 +210,30 @@ class PressureReducingValve(_PressureControl):
     law of Hopsan's HydraulicPressureReducingValve ([Hopsan2026]) in the limit
     of a small time step, hysteresis ``p_h`` included; with ``spool = "balance"``,
     that of its HydraulicPressureReducingValveG.
+
+    Option ``pilot``: ``outlet`` (default), the spring chamber at the
+    atmosphere; ``port``, the spring chamber at the pilot port X, which takes
+    no flow: :math:`\Delta p_{over} = p_{set} + p_X - p_B`, the valve holds B
+    at ``p_set`` above X (a pressure compensator keeping the drop across a
+    metering orifice from B to X; Hopsan's HydraulicPressureCompensatingValveG,
+    with ``spool = "balance"``).
     """
 
+    OPTIONS = {
+        **_PressureControl.OPTIONS,
+        "pilot": Option(
+            "outlet", ("outlet", "port"), "the outlet against the setting, or against the setting above pilot port X"
+        ),
+    }
     PARAMETERS = {
-        "p_set": Param(50e5, "Pa", "reduced pressure setting"),
+        "p_set": Param(50e5, "Pa", "reduced pressure setting (option pilot = port: above the pressure at X)"),
         **SPOOL_PARAMETERS,
     }
+    PILOT_PORTS = {"port": ("X",)}
+
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        if self.option("pilot") == "port":
+            return p["p_set"] + u["pX"] - u["pB"]
         return p["p_set"] - u["pB"]
 
 
