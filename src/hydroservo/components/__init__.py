@@ -14,9 +14,10 @@ module                 components
 :mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
                        AngularVelocitySource
-:mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
+:mod:`.valves`         FourWayValve, ThreeWayValve, ThreeWayPressureValve, TwoWayValve, PseudoSectionValve,
+                       ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
-                       PressureReducingValve, CounterbalanceValve, PilotedValve, PilotCheckValve
+                       PressureReducingValve, CounterbalanceValve, PressureCompensatorValve, PilotCheckValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
@@ -102,12 +103,13 @@ from hydroservo.components.valves import (
     LaminarOrifice,
     Orifice,
     PilotCheckValve,
-    PilotedValve,
+    PressureCompensatorValve,
     PressureReducingValve,
     PseudoSectionValve,
     ReliefValve,
     ServoSolenoidValve,
     StagedSlotValve,
+    ThreeWayPressureValve,
     ThreeWayValve,
     TwoStageServovalve,
     TwoWayValve,
@@ -160,6 +162,7 @@ __all__ = [
     "Machine",
     "FourWayValve",
     "ThreeWayValve",
+    "ThreeWayPressureValve",
     "TwoWayValve",
     "PseudoSectionValve",
     "ServoSolenoidValve",
@@ -172,7 +175,7 @@ __all__ = [
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
-    "PilotedValve",
+    "PressureCompensatorValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",

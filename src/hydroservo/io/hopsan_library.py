@@ -297,18 +297,53 @@ def _reducing_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
 def _pressure_controlled_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureControlledValve.hpp: the relief valve's
-    law piloted by two lines, ``xs = (p_open - p_ref - p_close)/b1``, the pilots taking no flow: PilotedValve, X
-    the opening pilot P_OPEN, Y the closing one P_CLOSE. Its output x0 has no counterpart: not aliased."""
-    from hydroservo.components import PilotedValve
+    law piloted by two lines, ``xs = (p_open - p_ref - p_close)/b1``, the pilots taking no flow: ReliefValve with
+    ``pilot = "ports"``, its X the opening pilot P_OPEN, its Y the closing one P_CLOSE, ``p_crack = p_ref`` (a
+    difference of pressures). Hopsan's b1 = C_s + C_f (p1 - p2) is not floored at a reverse drop there (it vanishes
+    at p2 - p1 = C_s/C_f, 7 MPa with its defaults); hydroservo's is, as for every pressure-control valve. Its output
+    x0 has no counterpart: not aliased."""
+    from hydroservo.components import ReliefValve
 
     spool = _spool_valve_parameters(par)
     if spool is None:
         return Mapped()
-    comp = PilotedValve(n, p_ref=par("p_ref", 2e6), **spool)
+    comp = ReliefValve(n, p_crack=par("p_ref", 2e6), pilot="ports", **spool)
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_OPEN": f"{n}.X", "P_CLOSE": f"{n}.Y"})
 
 
-def _pressure_valve_g(reducing: bool, counterbalance: bool = False) -> Builder:
+def _compensating(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureCompensatingValve.hpp: a normally open
+    valve from P1 to P2 whose spool the pilot P_OPEN pushes closed against the spring pref and the pilot P_CLOSE,
+    x_s = X0max - (p_open - pref - p_close)/b_1 with b_1 = C_s + C_f (p1 - p2), its hysteresis p_h and its lag tao
+    (limited to [0, X0max], starting open): the relief valve's spool inverted, a PressureCompensatorValve (its X
+    P_OPEN, its Y P_CLOSE; pref a difference of pressures, not absolute). Its xv (the filtered coefficient) is the
+    valve's s times q_nom/√p_nom. Where the drop p1 - p2 is negative Hopsan's b_1 falls below C_s (and vanishes at
+    p1 - p2 = -C_s/C_f); hydroservo takes the flow forces for a positive drop only, as for the relief valve."""
+    from hydroservo.components import PressureCompensatorValve
+
+    if par("p_h", 5e5) < 0.0:
+        par.problems.append(f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa; expected 0 or more")
+        return Mapped()
+    q_nom, p_nom = par("q_nom", 0.001), 7e6  # Hopsan's fixed nominal pressure drop
+    comp = PressureCompensatorValve(
+        n,
+        p_ref=par("p_ref", 2e6),
+        tau=par("tao", 0.01),
+        k_cs=par("k_cs", 1e-8),
+        k_cf=par("k_cf", 1e-8),
+        q_nom=q_nom,
+        p_nom=p_nom,
+        p_tr=1e3,
+        p_h=par("p_h", 5e5),
+    )
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.A", "P2": f"{n}.B", "P_OPEN": f"{n}.X", "P_CLOSE": f"{n}.Y"},
+        values={"xv": Var(q_nom / math.sqrt(p_nom), f"{n}.s")},
+    )
+
+
+def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool = False) -> Builder:
     """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
     a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
     p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
@@ -325,9 +360,20 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False) -> Builder:
     with the pilot P3 on the fraction kappa of its area, p_1 - p_2 + kappa p_3 - pref (p_3 absolute, no flow), and
     no check valve: a CounterbalanceValve with ``pilot = "drop"``, ``check = "none"``, r_p = kappa, p_crack =
     pref - kappa p_atm (the gauge setting of Hopsan's absolute pilot); its own defaults (Dv 0.03 m, Bv 100 N s/m,
-    Xvmax 0.03 m, phi 0.03 rad, ks 100 N/m, pref 1e6 Pa)."""
-    defaults = {"Dv": 0.03, "phi": 0.03, "ks": 100.0, "Bv": 100.0, "Xvmax": 0.03, "pref": 1e6} if counterbalance else {
-        "Dv": 0.01, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.002, "pref": 1e7}
+    Xvmax 0.03 m, phi 0.03 rad, ks 100 N/m, pref 1e6 Pa).
+
+    ``ported``: the same spool piloted from other ports, Special/HydraulicPressureControlValveG.hpp (relief:
+    Δp_over = p3 - p4 - pref, a ReliefValve with ``pilot = "ports"``, P3 its X, P4 its Y) and
+    HydraulicPressureCompensatingValveG.hpp (reducing: Δp_over = pref + p3 - p2, a PressureReducingValve with
+    ``pilot = "port"``, P3 its X); pref is then a difference of pressures. Their flow forces take |p1 - p2|, the
+    relief and reducing G valves' the drop with its sign, as hydroservo's does: the two differ only for a flow
+    from P2 to P1."""
+    if counterbalance:
+        defaults = {"Dv": 0.03, "phi": 0.03, "ks": 100.0, "Bv": 100.0, "Xvmax": 0.03, "pref": 1e6}
+    elif reducing and ported:  # the compensating valve's own defaults
+        defaults = {"Dv": 0.03, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.01, "pref": 1e6}
+    else:
+        defaults = {"Dv": 0.01, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.002, "pref": 1e6 if ported else 1e7}
 
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         from hydroservo.components import CounterbalanceValve, PressureReducingValve, ReliefValve
@@ -371,6 +417,12 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False) -> Builder:
             comp = CounterbalanceValve(n, p_crack=par("pref", defaults["pref"]) - kappa * ATMOSPHERE, r_p=max(kappa, 0.0),
                                        pilot="drop", check="none", **spool)
             power["P3"] = f"{n}.X"
+        elif ported:
+            power.update({"P3": f"{n}.X"} if reducing else {"P3": f"{n}.X", "P4": f"{n}.Y"})
+            if reducing:
+                comp = PressureReducingValve(n, p_set=par("pref", defaults["pref"]), pilot="port", **spool)
+            else:
+                comp = ReliefValve(n, p_crack=par("pref", defaults["pref"]), pilot="ports", **spool)
         elif reducing:
             comp = PressureReducingValve(n, p_set=_abs(par("pref", defaults["pref"])), **spool)
         else:
@@ -599,6 +651,39 @@ def _valve43(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         internal=[*spool.internal, (f"{n}_spool.xv", f"{n}.xv"), (f"{n}_spool.vv", f"{n}.vv")],
         note=_NOTE["symmetric"].format(valve="FourWayValve"),
     )
+
+
+def _open_centre_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/FlowControlValves/HydraulicOpenCenterValve.hpp: the 4/3 valve (Hydraulic43Valve's
+    spool and edges P-A, P-B, A-T, B-T, :func:`_valve43`) and a centre edge from C1 to C2, open at rest, whose
+    opening is x_vmax - limit(|x_v| - x_cc, 0, x_vmax) (closed from |x_v| = x_vmax + x_cc on; a negative x_cc
+    closes it before the end of the stroke), its flow coefficient C_q f_cc π d √(2/ρ), turbulent as the other edges.
+    That opening is x_vmax + x_cc - s with s = limit(|x_v|, x_cc, x_cc + x_vmax): an Absolute, a Saturation and a
+    Gain of -1 give -s to a TwoWayValve ``{n}_centre`` of overlap x_AB = -(x_vmax + x_cc), whose opening
+    -s + x_vmax + x_cc is Hopsan's (never below 0, so the edge's own clamp never acts)."""
+    from hydroservo.components import Absolute, Gain, Saturation, TwoWayValve
+
+    rho, x_vmax, x_cc = par("rho", 870.0), par("x_vmax", 0.01), par("x_cc", -1e-6)
+    if x_vmax <= 0.0:
+        par.problems.append(f"{par.where}: x_vmax = {x_vmax:g} m; only a stroke above 0 is supported")
+        return Mapped()
+    m = _valve43(hc, n, par)
+    centre = TwoWayValve(
+        f"{n}_centre", c_v=_edge_coefficient(par, par("f_cc", 1.0), rho), x_AB=-(x_vmax + x_cc), rho=rho, D_h="1 mm",
+        lambda_crit=10.0,
+    )
+    blocks: list[cbase.Component] = [
+        Absolute(f"{n}_abs", unit="m"),
+        Saturation(f"{n}_cc", unit="m", lower=x_cc, upper=x_cc + x_vmax),
+        Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0),
+    ]
+    m.components += [*blocks, centre]
+    m.power.update({"PC1": f"{n}_centre.A", "PC2": f"{n}_centre.B"})
+    m.internal += [(f"{n}_spool.xv", f"{n}_abs.u"), (f"{n}_abs.y", f"{n}_cc.u"), (f"{n}_cc.y", f"{n}_flip.u"),
+                   (f"{n}_flip.y", f"{n}_centre.xv")]
+    m.note = (m.note + "; the centre edge C1-C2: an Absolute, a Saturation and a Gain (its opening from the "
+              "spool's) and a TwoWayValve")
+    return m
 
 
 def _valve42(command: str, all_edges: bool) -> Builder:
@@ -834,6 +919,68 @@ def _valve33_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _pressure_control_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/HydraulicPressureControlValve33.hpp: a 3/3 valve (P1 supply, P2 tank, P3 the
+    controlled line) whose massless spool, damped by Bv, is pushed by the pilot pressure at P4 against the setting
+    pref (absolute) on its area Av = π Sd²/4 and held by its spring ks and the steady flow forces of its open edges:
+    Bv ẋv = Av (p4 - pref) - (ks + k_f) xv, xv in [Xvmin, Xvmax] (Hopsan's bilinear transform of it, clamped with
+    its memory), k_f = 2 Cq π Sd Fr cos φ |Δp| per edge. Its edges as HydraulicValve33's: Cq √(2/ρ) π Fr Sd
+    limit(Xap0 ± xv, ...) signedSquareL(Δp, plam), P-A opening as Xap0 + xv and A-T as Xap0 - xv (Xat0 enters
+    only A-T's upper limit, which a spool within [Xvmin, Xvmax] does not reach unless Xvmin < Xat0 - Xap0 - Xvmax,
+    refused). Hopsan switches A-T's flow force on only below xv = -Xat0, where that edge has opened by
+    Xap0 + Xat0 (P-A's as soon as it opens): ``x_ATf`` = Xap0 + Xat0. A ThreeWayPressureValve
+    (:class:`~hydroservo.components.valves.ThreeWayPressureValve`), the laminar onset plam as its transition pressure;
+    its output xv is Hopsan's. π where Hopsan writes 3.14159, 0.785398 and 6.28319 (1e-6 apart)."""
+    from hydroservo.components import ThreeWayPressureValve
+
+    rho, sd, x0, x_at0 = par("rho", 870.0), par("Sd", 0.01), par("Xap0", 0.0), par("Xat0", 0.0)
+    x_min, x_max, plam, phi = par("Xvmin", -0.01), par("Xvmax", 0.01), par("plam", 1e4), par("phi", 0.03)
+    before = len(par.problems)
+    for name, value in (("rho", rho), ("Sd", sd), ("plam", plam), ("Bv", par("Bv", 100.0))):
+        if value <= 0.0:
+            par.problems.append(f"{par.where}: {name} = {value:g}; only a value above 0 is supported")
+    if par("ks", 100.0) < 0.0:
+        par.problems.append(f"{par.where}: ks = {par('ks', 100.0):g} N/m; only a spring of at least 0 is supported")
+    if not 0.0 <= phi <= math.pi / 2:
+        par.problems.append(f"{par.where}: stream angle phi = {phi:g} rad; only an angle in [0, π/2] is supported")
+    if x_min >= x_max:
+        par.problems.append(f"{par.where}: Xvmin = {x_min:g} m is not below Xvmax = {x_max:g} m")
+    elif x_min < x_at0 - x0 - x_max:
+        par.problems.append(
+            f"{par.where}: Xvmin = {x_min:g} m lets A-T open past its limit Xat0 + Xvmax = {x_at0 + x_max:g} m, "
+            "which a ThreeWayValve's edge does not have"
+        )
+    if len(par.problems) > before:
+        return Mapped()
+    nu, lambda_crit = 32e-6, 1000.0
+    valve = ThreeWayPressureValve(
+        n,
+        c_PA=_edge_coefficient(par, par("Frap", 1.0), rho, d="Sd", c_q="Cq"),
+        c_AT=_edge_coefficient(par, par("Frat", 1.0), rho, d="Sd", c_q="Cq"),
+        x_PA=-x0,
+        x_AT=-x0,
+        rho=rho,
+        nu=nu,
+        lambda_crit=lambda_crit,
+        D_h=lambda_crit * nu * math.sqrt(rho / (2.0 * plam)),  # transition_pressure(D_h) = plam
+        A_v=math.pi * sd * sd / 4.0,
+        p_ref=_abs(par("pref", 1e6)),
+        k_s=par("ks", 100.0),
+        B_v=par("Bv", 100.0),
+        phi=phi,
+        x_min=x_min,
+        x_max=x_max,
+        x_ATf=x0 + x_at0,
+    )
+    return Mapped(
+        [valve],
+        power={"P1": f"{n}.P", "P2": f"{n}.T", "P3": f"{n}.A", "P4": f"{n}.X"},
+        values={"xv": Var(1.0, f"{n}.xv")},
+        initial={f"{n}.x_v": min(max(par("xv", 0.0), x_min), x_max)},
+        note="a ThreeWayPressureValve",
+    )
+
+
 def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Cylinder
 
@@ -925,6 +1072,54 @@ def _spring_loaded_piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     m.components[0].set(pressure_floor="check-valve", F_s=par("F_s", 1000.0))
     m.note = f"Cylinder {n} with F_s, pressure_floor = check-valve"
     return m
+
+
+def _piston_mkload(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPistonMkload.hpp: a Q-type piston (no oil of its own: its ports take
+    the pressures of the volumes they join) carrying a load of mass mL on a spring kL to x = 0, damped by bL + bp,
+    with dry friction fc, its position limited to [xmin, xmax]: mL ẍ = A1 p1 - A2 p2 - f_mp - (bL + bp) ẋ - kL x -
+    F_f, the flows into the piston A1 ẋ + Cip (p1 - p2) at P1 and -A2 ẋ - Cip (p1 - p2) at P2 (Hopsan's equation
+    system, solved by Newton iterations each step with the bilinear transform of the mass, stands for these laws).
+    Its friction limit(bfc mL ẋ/Ts, -fc, fc) is a viscous slope that grows without bound as the step Ts vanishes:
+    dry friction that holds the load until the force on it passes fc, and opposes the motion with fc after, the
+    Stribeck law with F_c0 = fc, F_s0 = 0 as its velocity scale vanishes (v_reg = 1e-5 m/s, as the mass with
+    Coulomb friction); the factor bfc drops out (bfc = 0 is no friction). A Cylinder with ``chambers = "ports"``
+    (A_A = A1, A_B = A2, C_Li = Cip, B_p = bp, end stops at xmin and xmax for Hopsan's inelastic ones, of 1e11 N/m
+    rather than the default 1e9: on Pressure Controlled Pump the pump's pressure holds the piston on its stop with
+    2 kN, 2 µm into a 1e9 N/m stop, which delays its break-away and made its velocity 4.4 % of range off Hopsan's,
+    0.01 % at 1e11 N/m; the force of absolute pressures, p_amb 0 Pa_abs) pushing a Mass ``{n}_load`` (m = mL, B = bL, k_spring = kL) at
+    its end P1, the port Pmp its end P2 (both at x: length 0). The stroke SL enters none of Hopsan's equations and is not used."""
+    from hydroservo.components import Cylinder, Mass
+
+    a1, a2, x_min, x_max = par("A1", 1e-3), par("A2", 1e-3), par("xmin", 0.0), par("xmax", 0.5)
+    fc, bfc = par("fc", 10.0), par("bfc", 1.0)
+    before = len(par.problems)
+    for name, value in (("A1", a1), ("A2", a2), ("mL", par("mL", 1000.0))):
+        if value <= 0.0:
+            par.problems.append(f"{par.where}: {name} = {value:g}; only a value above 0 is supported")
+    for name, value in (("Cip", par("Cip", 0.0)), ("bp", par("bp", 0.0)), ("bL", par("bL", 0.0)),
+                        ("kL", par("kL", 0.0)), ("fc", fc)):
+        if value < 0.0:
+            par.problems.append(f"{par.where}: {name} = {value:g}; only a value of at least 0 is supported")
+    if x_min >= x_max:
+        par.problems.append(f"{par.where}: xmin = {x_min:g} m is not below xmax = {x_max:g} m")
+    if len(par.problems) > before:
+        return Mapped()
+    piston = Cylinder(
+        n, chambers="ports", A_A=a1, A_B=a2, C_Li=par("Cip", 0.0), B_p=par("bp", 0.0), x_min=x_min, x_max=x_max,
+        p_amb="0 Pa_abs", k_stop=1e11, c_stop=1e6,
+    )
+    load = Mass(
+        f"{n}_load", m=par("mL", 1000.0), B=par("bL", 0.0), k_spring=par("kL", 0.0), incline=0.0,
+        F_c0=fc if bfc > 0.0 else 0.0, v_reg=1e-5,
+        x0=min(max(par.start("Pmp", "Position"), x_min), x_max), v0=par.start("Pmp", "Velocity"),
+    )
+    return Mapped(
+        [piston, load],
+        power={"P1": f"{n}.A", "P2": f"{n}.B", "Pmp": f"{n}_load.P2"},
+        internal=[(f"{n}.R", f"{n}_load.P1")],  # the rod faces the load's end 1: at x (length 0), pushing +x
+        note="a Cylinder (chambers = ports) and a Mass",
+    )
 
 
 def _flow_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1321,12 +1516,18 @@ def _machine_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     (ε D_m/2π)² (Z_c1 + Z_c2): in the limit a Machine (D_m per revolution, C_lm, B_m, eps limited to [-1, 1])
     between two Volumes with Hopsan's cavity law (their ports see max(p, 0), as the machine's pressures are
     floored), each starting at its port's start pressure. Hopsan's flow into P1 is ε D_m/2π times minus its
-    shaft's speed (the Q component's): P1 is the Machine's A."""
+    shaft's speed (the Q component's): P1 is the Machine's A. Each port's volume is (1 + α) V_i with Hopsan's
+    fixed α = 0.1, not V_i: a transmission-line element of impedance Z and delay T_d holds the oil of a volume
+    T_d/Z·β, and the machine's elements have Z = β Ts/((1 - α) V_i) but filter their waves with memories two
+    steps old (y_n = α y_(n-2) + (1 - α) x_n, its Delay's update returning the value before the last), so that
+    T_d = Ts (1 + α)/(1 - α) whatever the step (HydraulicVolume's one-step filter gives T_d = Ts/(1 - α) and
+    V). On Open Centre System, whose motors' volumes are the only ones on their lines, V_i made the trapped
+    pressures decay 10 % faster than Hopsan's (pressures 67 % of range off at the valves' switching)."""
     from hydroservo.components import Machine, Volume
 
     comp = Machine(n, D=f"{par('D_m', 5e-5)!r} m^3/rev", C_im=par("C_lm", 1e-12), B_m=par("B_m", 0.0))
     volumes = [
-        Volume(f"{n}_V{i}", V=par(f"V_{i}", 0.005), beta_e=par("Beta_e", 1e9),
+        Volume(f"{n}_V{i}", V=(1.0 + 0.1) * par(f"V_{i}", 0.005), beta_e=par("Beta_e", 1e9),
                p0=_abs(par.start(f"P{i}", "Pressure", 1e5)), pressure_floor="cavity", p_floor="0 Pa_abs")
         for i in (1, 2)
     ]
@@ -1867,6 +2068,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureDropValve": _pressure_drop_valve,
     "HydraulicPressureReducingValve": _reducing_valve,
     "HydraulicPressureControlledValve": _pressure_controlled_valve,
+    "HydraulicPressureCompensatingValve": _compensating,
     "HydraulicAckumulator": _accumulator,
     "HydraulicPistonAckumulator": _piston_accumulator,
     "HydraulicPressureControlled22Valve": _pressure_controlled("22"),
@@ -1878,13 +2080,17 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
     "HydraulicCounterBalanceValveG": _pressure_valve_g(reducing=False, counterbalance=True),
     "HydraulicOverCenterValve": _over_center,
+    "HydraulicPressureControlValveG": _pressure_valve_g(reducing=False, ported=True),
+    "HydraulicPressureCompensatingValveG": _pressure_valve_g(reducing=True, ported=True),
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
+    "HydraulicOpenCenterValve": _open_centre_valve,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),
     "Hydraulic42Valve2": _valve42("one-sided", all_edges=True),
     "Hydraulic42DirectionalValve": _valve42("on-off", all_edges=True),
     "Hydraulic33Valve": _valve33,
     "HydraulicValve33": _valve33_special,
+    "HydraulicPressureControlValve33": _pressure_control_valve33,
     "Hydraulic32DirectionalValve": _valve32_directional,
     "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
@@ -1894,6 +2100,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicSpringLoadedPistonC": _spring_loaded_piston,
     "HydraulicPressureSourceQ": _pressure_source_q,
     "SignalSource": _constant_old,
+    "HydraulicPistonMkload": _piston_mkload,
     "HydraulicPressureSensor": _sensor("Pressure", "Pa"),
     "HydraulicFlowSensor": _sensor("Flow", "m^3/s"),
     "MechanicTranslationalMass": _mass,

@@ -188,3 +188,29 @@ def test_a_cylinder_with_its_chambers_outside_between_two_volumes_is_one_of_froz
         runs.append((r["load.x"], r["cyl.F"]))
     np.testing.assert_allclose(runs[1][0], runs[0][0], rtol=1e-5, atol=1e-9)
     np.testing.assert_allclose(runs[1][1], runs[0][1], rtol=1e-5, atol=1e-3)
+def test_a_piston_with_its_chambers_outside_oscillates_on_the_oil_of_the_volumes_it_joins() -> None:
+    """Option chambers = ports (Hopsan's Q-type piston): flow ports, Q_A = A_A v + C_Li (p_A - p_B) + C_LeA p_A,
+    Q_B = -A_B v - C_Li (p_A - p_B) + C_LeB p_B, the force of the pressures on the areas less B_p v; no states. In a
+    circuit, a volume V on each side of a free piston of mass m: the oil's continuity and the mass's law give a
+    spring A²β/V per side, an oscillation at ω = √((A_A²/V_A + A_B²/V_B) β/m)."""
+    cyl = c.Cylinder("cyl", chambers="ports", A_A=2e-3, A_B=1e-3, C_Li=1e-12, C_LeA=2e-13, B_p=50.0, k_stop=0.0,
+                     c_stop=0.0)
+    assert cyl.STATES == {} and set(cyl.INPUTS) == {"pA", "pB", "x", "v"}
+    out = cyl.output_equations(0.0, {}, {"pA": 80e5, "pB": 20e5, "x": 0.01, "v": 0.1}, cyl.values)
+    assert float(out["QA"]) == pytest.approx(2e-3 * 0.1 + 1e-12 * 60e5 + 2e-13 * 80e5, rel=1e-12)
+    assert float(out["QB"]) == pytest.approx(-1e-3 * 0.1 - 1e-12 * 60e5, rel=1e-12)
+    assert float(out["F"]) == pytest.approx(80e5 * 2e-3 - 20e5 * 1e-3 - 50.0 * 0.1, rel=1e-12)
+    s = hs.System("piston")
+    s.add(c.Cylinder("cyl", chambers="ports", A_A=2e-3, A_B=1e-3, x_min=-1.0, x_max=1.0))
+    s.add(c.Volume("va", V=1e-3, beta_e=1e9, p0=50e5))
+    s.add(c.Volume("vb", V=5e-4, beta_e=1e9, p0=100e5))  # balanced: 50 bar on 2e-3 m², 100 bar on 1e-3 m²
+    s.add(c.Mass("m", m=10.0, incline=0.0, v0=0.01))
+    s.connect("cyl.A", "va.P")
+    s.connect("cyl.B", "vb.P")
+    s.connect("cyl.R", "m.P1")
+    omega = np.sqrt((2e-3**2 / 1e-3 + 1e-3**2 / 5e-4) * 1e9 / 10.0)
+    t = np.linspace(0.0, 0.01, 11)
+    r = s.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["m.x"], 0.01 / omega * np.sin(omega * t), atol=1e-9)
+    # the oil the piston displaces out of B is the oil that raises B's pressure
+    np.testing.assert_allclose(r["vb.p"] - 100e5, 1e9 / 5e-4 * 1e-3 * r["m.x"], rtol=1e-6, atol=1.0)

@@ -259,3 +259,47 @@ def test_a_balanced_spool_refuses_a_hysteresis():
     s.connect("relief.B", "tank.P")
     with pytest.raises(Exception, match=r"relief\.p_h = 500000 Pa: a hysteresis needs spool"):
         s.simulate()
+
+
+def test_a_pressure_compensator_is_open_until_its_pilots_differ_by_the_setting_then_throttles() -> None:
+    """PressureCompensatorValve: the closing K_c = over/(C_s + C_f Δp) of over = p_X - p_Y - p_ref, within
+    [0, K_max], and the flow (K_max - K_c) √Δp (turbulent, regularised below p_tr); the pilots take no flow."""
+    k_max = 1e-3 / np.sqrt(P_NOM)
+    p_tr = 1e4
+    for px, expected_open in ((60e5, 1.0), (71e5, None), (300e5, 0.0)):
+        s = System("compensator")
+        s.add(c.PressureCompensatorValve("v", p_ref=20e5, tau=0.01))
+        for port, p in (("A", 100e5), ("B", 40e5), ("X", px), ("Y", 50e5)):
+            s.add(c.Tank(f"s{port}", p=p))
+            s.connect(f"v.{port}", f"s{port}.P")
+        r = s.simulate(t_eval=[0.0, 0.3])
+        k_c = min(max(static_K(px - 50e5 - 20e5, 60e5), 0.0), k_max)
+        k = k_max - k_c
+        if expected_open is not None:
+            assert k / k_max == pytest.approx(expected_open)
+        else:
+            assert 0.1 < k / k_max < 0.9  # throttling
+        assert float(r["v.s"][0]) == pytest.approx(1.0)  # open at rest
+        assert float(r["v.s"][-1]) == pytest.approx(k / k_max, rel=1e-6, abs=1e-9)
+        assert float(r["v.Q"][-1]) == pytest.approx(k * 60e5 / (60e5**2 + p_tr**2) ** 0.25, rel=1e-6, abs=1e-12)
+        assert float(r["v.QX"][-1]) == 0.0
+
+
+def test_relief_and_reducing_valves_piloted_from_ports_take_their_pilots_there() -> None:
+    """Option pilot = ports of ReliefValve (over = p_X - p_Y - p_crack) and pilot = port of PressureReducingValve
+    (over = p_set + p_X - p_B): the static opening of the lag spool, the pilots without flow."""
+    k_max = 1e-3 / np.sqrt(P_NOM)
+    for valve, pilots, over in (
+        (c.ReliefValve("v", p_crack=10e5, pilot="ports"), {"X": 61e5, "Y": 50e5}, 61e5 - 50e5 - 10e5),
+        (c.PressureReducingValve("v", p_set=10e5, pilot="port"), {"X": 30.5e5}, 10e5 + 30.5e5 - 40e5),
+    ):
+        s = System("piloted")
+        s.add(valve)
+        for port, p in {"A": 100e5, "B": 40e5, **pilots}.items():
+            s.add(c.Tank(f"s{port}", p=p))
+            s.connect(f"v.{port}", f"s{port}.P")
+        r = s.simulate(t_eval=[0.0, 0.3])
+        k = min(static_K(over, 60e5), k_max)
+        assert 0.0 < k < k_max
+        assert float(r["v.Q"][-1]) == pytest.approx(k * 60e5 / (60e5**2 + 1e8) ** 0.25, rel=1e-6)
+        assert float(r["v.QX"][-1]) == 0.0

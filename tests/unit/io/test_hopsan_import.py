@@ -480,6 +480,53 @@ def test_spool_valves_map_to_the_four_way_valves_edges_with_hopsans_laps_and_spo
             assert float(r[alias][-1]) == pytest.approx(value, rel=1e-6, abs=1e-12), (kind, alias)
 
 
+def test_hopsans_open_centre_valve_is_the_43_valve_with_a_centre_edge_closing_towards_either_end(
+    tmp_path: Path,
+) -> None:
+    """[Hopsan2026] FlowControlValves/HydraulicOpenCenterValve.hpp, each case held 0.3 s at a command: the 4/3
+    valve's edges (P-A and B-T open as x_v - lap, P-B and A-T as -x_v - lap) and the centre edge C1-C2 open as
+    x_vmax - limit(|x_v| - x_cc, 0, x_vmax), each C_q f π d x √(2/ρ) √Δp; the command is limited to the stroke. A
+    stroke of 0 is refused."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    p_tr = transition_pressure(1e-3, 870.0, 32e-6, 10.0)
+
+    def q(f: float, x: float, dp: float) -> float:
+        return 0.67 * f * np.pi * 0.01 * max(x, 0.0) * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p_tr * p_tr) ** 0.25
+
+    v = _value
+    ports = {"PP": 100e5, "PT": 1e5, "PA": 60e5, "PB": 30e5, "PC1": 80e5, "PC2": 20e5}
+    cases = [  # x_cc, command, x_v, centre opening
+        ("-0.001", "0.004", 0.004, 0.005),  # the centre closes 1 mm before the end of the stroke
+        ("0.003", "-0.002", -0.002, 0.01),  # within x_cc the centre stays open by x_vmax
+        ("0.003", "-0.006", -0.006, 0.007),
+        ("-1e-6", "0.02", 0.01, 0.0),  # limited to the stroke: closed
+    ]
+    for i, (x_cc, command, x, centre) in enumerate(cases):
+        params = {"x_cc#Value": v(x_cc), "f_cc#Value": v("0.5")}
+        kind, components, connections = _valve_circuit("HydraulicOpenCenterValve", ports, params, command)
+        path = tmp_path / f"oc{i}.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        imp = import_hopsan(path)
+        assert dict((h, t) for h, t, _ in imp.mapping)["V"] == kind
+        r = imp.system.simulate(t_eval=[0.0, 0.3], accuracy=1e-8)
+        lap = -1e-6
+        q_pa, q_bt = q(1.0, x - lap, 100e5 - 60e5), q(1.0, x - lap, 30e5 - 1e5)
+        q_pb, q_at = q(1.0, -x - lap, 100e5 - 30e5), q(1.0, -x - lap, 60e5 - 1e5)
+        expected = {
+            "V.xv.Value": x, "V.PA.Flow": q_pa - q_at, "V.PB.Flow": q_pb - q_bt, "V.PT.Flow": q_at + q_bt,
+            "V.PP.Flow": -q_pa - q_pb, "V.PC2.Flow": q(0.5, centre, 80e5 - 20e5),
+            "V.PC1.Flow": -q(0.5, centre, 80e5 - 20e5),
+        }
+        for alias, value in expected.items():
+            assert float(r[alias][-1]) == pytest.approx(value, rel=1e-6, abs=1e-12), (x_cc, command, alias)
+    _, components, connections = _valve_circuit("HydraulicOpenCenterValve", ports, {"x_vmax#Value": v("0")}, "0")
+    path = tmp_path / "oc_refused.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicOpenCenterValve\): x_vmax = 0 m; only a stroke above 0"):
+        read_hopsan(path)
+
+
 def test_hopsans_valve33_is_a_three_way_valve_with_its_underlap_and_laminar_onset(tmp_path: Path) -> None:
     """[Hopsan2026] Special/HydraulicValve33.hpp: the position xv is the input (no spool), limited to ±Xvmax;
     each edge passes Cq √(2/ρ) π Fr Sd (Xap0 ± xv) Δp/(Δp² + plam²)^(1/4). A valve whose Xat0 is not its Xap0
@@ -513,6 +560,122 @@ def test_hopsans_valve33_is_a_three_way_valve_with_its_underlap_and_laminar_onse
     path.write_text(_hmf([(k, n, {**p, "Xat0#Value": v("0")} if k == "HydraulicValve33" else p)
                           for k, n, p in components], connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"V \(HydraulicValve33\): Xat0 = 0 m differs from Xap0"):
+        read_hopsan(path)
+
+
+def test_hopsans_pressure_control_valve33_balances_its_pilot_against_spring_and_flow_forces(tmp_path: Path) -> None:
+    """[Hopsan2026] Valves/HydraulicPressureControlValve33.hpp at rest: Av (p4 - pref) = (ks + k_f) xv with
+    Av = π Sd²/4, k_f = 2 Cq π Sd Fr cos φ |Δp| of P-A while it is open (xv > -Xap0) and of A-T only below
+    xv = -Xat0 (Hopsan's switch); the flows Cq √(2/ρ) π Fr Sd (Xap0 ± xv) Δp/(Δp² + plam²)^(1/4). A pilot above
+    pref opens P-A further, below it A-T; within Xat0 below 0 both edges flow (their underlaps) but only P-A's
+    flow force acts. A spool range that would open A-T past its limit is refused."""
+    v = _value
+    ps, pt, pa = 2e7, 1e5, 1e7
+    sd, fr, phi, ks, cq, plam, x0 = 0.003, 0.1, 1.0, 3e4, 0.67, 1e4, 1e-5
+    area = np.pi * sd * sd / 4.0
+    ks_root = cq * np.sqrt(2.0 / 870.0) * np.pi * fr * sd
+
+    def g(dp: float) -> float:
+        return dp / (dp * dp + plam**2) ** 0.25
+
+    def kf(dp: float) -> float:
+        return 2.0 * cq * np.pi * sd * fr * np.cos(phi) * abs(dp)
+
+    x_up = area * 1e5 / (ks + kf(ps - pa))  # pilot 1 bar above pref: P-A open, its flow force
+    x_in = -area * 2e3 / (ks + kf(ps - pa))  # 0.02 bar below: both edges open, A-T without its flow force
+    x_down = -area * 3e5 / (ks + kf(pa - pt))  # 3 bar below: A-T's flow force too (P-A closed)
+    assert x_up > 0 and -x0 < x_in < 0 and x_down < -x0
+    for px, x in ((1.01e7, x_up), (1e7 - 2e3, x_in), (0.97e7, x_down)):
+        params = {"pref#Value": v("1e7"), "Sd#Value": v(repr(sd)), "Frap#Value": v(repr(fr)), "Frat#Value": v(repr(fr)),
+                  "Xap0#Value": v(repr(x0)), "Xat0#Value": v(repr(x0)), "phi#Value": v(repr(phi)), "ks#Value": v(repr(ks)),
+                  "Bv#Value": v("1"), "Xvmin#Value": v("-0.003"), "Xvmax#Value": v("0.003")}
+        components = [
+            ("HydraulicPressureControlValve33", "V", params),
+            *[("HydraulicPressureSourceC", f"S{k}", {"p#Value": v(repr(p), "Pa")})
+              for k, p in (("1", ps), ("2", pt), ("3", pa), ("4", px))],
+        ]
+        connections = [(f"V.P{k}", f"S{k}.P1") for k in "1234"]
+        path = tmp_path / "pcv.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        r = read_hopsan(path).simulate(t_eval=[0.0, 0.01], accuracy=1e-9)
+        assert float(r["V.xv.Value"][-1]) == pytest.approx(x, rel=1e-4), px
+        q_pa = ks_root * max(x0 + x, 0.0) * g(ps - pa)
+        q_at = ks_root * max(x0 - x, 0.0) * g(pa - pt)
+        assert float(r["V.P3.Flow"][-1]) == pytest.approx(q_pa - q_at, rel=1e-4), px
+        assert float(r["V.P4.Flow"][-1]) == 0.0
+    params["Xvmin#Value"] = v("-0.004")
+    path.write_text(_hmf([("HydraulicPressureControlValve33", "V", params)], []), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicPressureControlValve33\): Xvmin = -0.004 m lets A-T open"):
+        read_hopsan(path)
+
+
+def test_hopsans_q_type_piston_with_load_settles_on_its_spring_and_holds_by_its_dry_friction(tmp_path: Path) -> None:
+    """[Hopsan2026] Special/HydraulicPistonMkload.hpp between two pressure sources (absolute pressures), a force
+    source pressing its port Pmp: at rest kL x = A1 p1 - A2 p2 - F, its flows the leakage Cip (p1 - p2) (Hopsan's
+    flow at P1 out of the piston, -Cip (p1 - p2)); with the dry friction fc above that imbalance it does not move;
+    its position limited to [xmin, xmax]. A piston area of 0 is refused."""
+    v = _value
+
+    def run(params: dict, p1: float, p2: float, force: float) -> dict:
+        components = [
+            ("HydraulicPistonMkload", "P", params),
+            ("HydraulicPressureSourceC", "S1", {"p#Value": v(repr(p1), "Pa")}),
+            ("HydraulicPressureSourceC", "S2", {"p#Value": v(repr(p2), "Pa")}),
+            ("MechanicForceTransformer", "F", {"F#Value": v(repr(force), "N")}),
+        ]
+        path = tmp_path / "piston.hmf"
+        path.write_text(_hmf(components, [("P.P1", "S1.P1"), ("P.P2", "S2.P1"), ("P.Pmp", "F.P1")]), encoding="utf-8")
+        return read_hopsan(path).simulate(t_eval=[0.0, 0.2, 3.0], accuracy=1e-9)
+
+    base = {"A1#Value": v("2e-4"), "A2#Value": v("1e-4"), "Cip#Value": v("1e-12"), "bp#Value": v("100"),
+            "mL#Value": v("1"), "bL#Value": v("100"), "kL#Value": v("1e5"), "fc#Value": v("0"),
+            "xmin#Value": v("-0.1"), "xmax#Value": v("0.1")}
+    r = run(base, 2e6, 3e6, 50.0)
+    x = (2e-4 * 2e6 - 1e-4 * 3e6 - 50.0) / 1e5
+    assert float(r["P.Pmp.Position"][-1]) == pytest.approx(x, rel=1e-6)
+    assert float(r["P.P1.Flow"][-1]) == pytest.approx(-1e-12 * (2e6 - 3e6), rel=1e-5)
+    assert float(r["P.P2.Flow"][-1]) == pytest.approx(1e-12 * (2e6 - 3e6), rel=1e-5)
+    # 100 N against 60 N of dry friction, overdamped: it moves until the spring takes the other 40 N (then creeps
+    # on at the regularisation's pace, v_reg atanh(F/fc): 3 % of the way in the next second)
+    r = run({**base, "fc#Value": v("60"), "bL#Value": v("5000")}, 2e6, 3e6, 0.0)
+    assert float(r["P.Pmp.Position"][1]) == pytest.approx((100.0 - 60.0) / 1e5, rel=0.03)
+    r = run({**base, "fc#Value": v("150")}, 2e6, 3e6, 0.0)  # 100 N below the friction: held (1e-3 m without it)
+    assert abs(float(r["P.Pmp.Position"][-1])) < 3e-5
+    r = run({**base, "xmax#Value": v("0.0005")}, 2e6, 3e6, 50.0)  # its stroke limited
+    assert float(r["P.Pmp.Position"][-1]) == pytest.approx(0.0005, abs=1e-7)
+    with pytest.raises(ModelFileError, match=r"P \(HydraulicPistonMkload\): A1 = 0; only a value above 0"):
+        run({**base, "A1#Value": v("0")}, 2e6, 3e6, 0.0)
+
+
+def test_hopsans_pressure_compensating_valve_throttles_as_its_open_pilot_passes_the_close_pilot_by_pref(
+    tmp_path: Path,
+) -> None:
+    """[Hopsan2026] PressureControlValves/HydraulicPressureCompensatingValve.hpp at rest: x0 = X0max -
+    (p_open - pref - p_close)/(C_s + C_f (p1 - p2)) within [0, X0max] (X0max = q_nom/√7 MPa, C_s = √p_nom/k_cs,
+    C_f = 1/(k_cf √p_nom)), the flow x0 √(p1 - p2); open at the start; its xv logged. A negative hysteresis is
+    refused."""
+    v = _value
+    x_max = 1e-3 / np.sqrt(7e6)
+    cs, cf = np.sqrt(7e6) / 1e-8, 1.0 / (1e-8 * np.sqrt(7e6))
+    p1, p2, p_close = 1e7, 4e6, 5e6
+    for p_open in (6.5e6, 7.1e6, 9e6):  # below pref above P_CLOSE: open; 1 bar over: throttling; far over: shut
+        components = [
+            ("HydraulicPressureCompensatingValve", "V", {"p_ref#Value": v("2e6"), "p_h#Value": v("0")}),
+            *[("HydraulicPressureSourceC", f"S{k}", {"p#Value": v(repr(p), "Pa")})
+              for k, p in (("1", p1), ("2", p2), ("O", p_open), ("C", p_close))],
+        ]
+        connections = [("V.P1", "S1.P1"), ("V.P2", "S2.P1"), ("V.P_OPEN", "SO.P1"), ("V.P_CLOSE", "SC.P1")]
+        path = tmp_path / "comp.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        r = read_hopsan(path).simulate(t_eval=[0.0, 0.3], accuracy=1e-8)
+        x0 = min(max(x_max - (p_open - 2e6 - p_close) / (cs + cf * (p1 - p2)), 0.0), x_max)
+        assert float(r["V.xv.Value"][0]) == pytest.approx(x_max)
+        assert float(r["V.xv.Value"][-1]) == pytest.approx(x0, rel=1e-6, abs=1e-15), p_open
+        dp = p1 - p2
+        assert float(r["V.P2.Flow"][-1]) == pytest.approx(x0 * dp / (dp * dp + 1e6) ** 0.25, rel=1e-6, abs=1e-15)
+    components[0] = ("HydraulicPressureCompensatingValve", "V", {"p_h#Value": v("-1")})
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicPressureCompensatingValve\): hysteresis p_h = -1 Pa"):
         read_hopsan(path)
 
 
@@ -596,6 +759,39 @@ def test_hopsans_g_pressure_valves_settle_on_their_spools_force_balance(tmp_path
                          connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"RV \(HydraulicPressureReliefValveG\): stream angle phi = 2 rad"):
         read_hopsan(path)
+
+
+def test_hopsans_g_pressure_control_and_compensating_valves_balance_their_spools_on_pilot_ports(tmp_path: Path) -> None:
+    """[Hopsan2026] Special/HydraulicPressureControlValveG.hpp (Δp_over = p3 - p4 - pref) and
+    HydraulicPressureCompensatingValveG.hpp (Δp_over = pref + p3 - p2): at rest A_v Δp_over = (ks + 2 Cq w cos φ
+    (p1 - p2)) x_v, the flow Cq w x_v √(2/ρ) signedSquareL(p1 - p2, p0), w = π Dv frac sin φ; the pilots take no
+    flow."""
+    v = _value
+    components = [
+        ("HydraulicPressureControlValveG", "CV", {"pref#Value": v("1e6")}),
+        ("HydraulicPressureCompensatingValveG", "PC", {"pref#Value": v("1e6"), "Dv#Value": v("0.01"),
+                                                       "Xvmax#Value": v("0.002")}),
+        *[("HydraulicPressureSourceC", k, {"p#Value": v(repr(p), "Pa")})
+          for k, p in (("S1", 1e7), ("S2", 2e6), ("S3", 5.2e6), ("S4", 4e6), ("T1", 1e7), ("T2", 5.1e6),
+                       ("T3", 4.3e6))],
+    ]
+    connections = [("CV.P1", "S1.P1"), ("CV.P2", "S2.P1"), ("CV.P3", "S3.P1"), ("CV.P4", "S4.P1"),
+                   ("PC.P1", "T1.P1"), ("PC.P2", "T2.P1"), ("PC.P3", "T3.P1")]
+    path = tmp_path / "gp.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["CV"].option("pilot") == "ports" and imp.system["PC"].option("pilot") == "port"
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-8)
+    w = np.pi * 0.01 * 0.1 * np.sin(1.17)
+    area = np.pi * 0.01**2 / 4.0
+    for name, p1, p2, over in (("CV", 1e7, 2e6, 5.2e6 - 4e6 - 1e6), ("PC", 1e7, 5.1e6, 1e6 + 4.3e6 - 5.1e6)):
+        dp = p1 - p2
+        x = area * over / (1e4 + 2.0 * 0.67 * w * np.cos(1.17) * dp)
+        assert 0.0 < x < 0.002  # within the stroke
+        q = 0.67 * w * x * np.sqrt(2.0 / 870.0) * dp / (dp * dp + 1e10) ** 0.25
+        assert r[f"{name}.xv.Value"][-1] == pytest.approx(x, rel=1e-6)
+        assert r[f"{name}.P2.Flow"][-1] == pytest.approx(q, rel=1e-6)
+        assert r[f"{name}.P3.Flow"][-1] == 0.0
 
 
 def test_hopsans_pressure_controlled_valves_open_their_edges_as_the_pilot_pressure_sets_the_spool(tmp_path: Path) -> None:
@@ -1146,8 +1342,9 @@ def test_hopsans_shafts_and_torsional_spring_are_torsional_springs_in_the_limit_
 
 
 def test_hopsans_c_type_machine_is_a_machine_between_its_port_volumes(tmp_path: Path) -> None:
-    """HydraulicMachineC: a Machine (D_m per revolution, C_lm, B_m) between two cavity Volumes V_1, V_2 starting
-    at their ports' start pressures, its shaft P3 a torque port. Fed through laminar orifices (Kc) from 100 and
+    """HydraulicMachineC: a Machine (D_m per revolution, C_lm, B_m) between two cavity Volumes of 1.1 V_1,
+    1.1 V_2 (what Hopsan's elements hold, their waves filtered with memories two steps old) starting at their
+    ports' start pressures, its shaft P3 a torque port. Fed through laminar orifices (Kc) from 100 and
     10 bar and turning an inertia (B = 1), it settles where the orifices' flows are the machine's and the torques
     balance: Kc (p_s1 − p1) = ε D ω + C (p1 − p2) = Kc (p2 − p_s2), ε D (p1 − p2) = (B_m + B) ω."""
     v = _value
@@ -1169,7 +1366,7 @@ def test_hopsans_c_type_machine_is_a_machine_between_its_port_volumes(tmp_path: 
     path.write_text(_hmf(components, connections), encoding="utf-8")
     imp = import_hopsan(path)
     sysm = imp.system
-    assert sysm["M_V1"].values["V"] == 0.001 and sysm["M_V2"].values["V"] == 0.002
+    assert sysm["M_V1"].values["V"] == pytest.approx(0.0011) and sysm["M_V2"].values["V"] == pytest.approx(0.0022)
     assert sysm["M_V1"].option("pressure_floor") == "cavity"
     r0 = sysm.simulate(t_eval=[0.0, 1e-9])
     assert r0["M.P1.Pressure"][0] == pytest.approx(3e6) and r0["M.P2.Pressure"][0] == pytest.approx(2e6)
@@ -1232,7 +1429,7 @@ def test_hopsans_reducing_drop_and_pressure_controlled_valves_settle_on_the_reli
     path = tmp_path / "pressure_valves.hmf"
     path.write_text(_hmf(components, connections), encoding="utf-8")
     imp = import_hopsan(path)
-    assert type(imp.system["PC"]).__name__ == "PilotedValve" and imp.system["DR"].option("pilot") == "drop"
+    assert imp.system["PC"].option("pilot") == "ports" and imp.system["DR"].option("pilot") == "drop"
     assert imp.system["DR"].values["p_h"] == 5e5 and imp.system["RD"].values["p_h"] == 0.0
     r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
     for name, p1, p2, over, p_nom in (("RD", 1e7, 4.9e6, 5e6 - 4.9e6, 7e6),

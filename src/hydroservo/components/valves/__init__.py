@@ -11,12 +11,12 @@ valves), :mod:`.two_stage` (the first-principles two-stage servovalve of
 
 from hydroservo.components.valves.catalogue import CatalogueServovalve
 from hydroservo.components.valves.check import CheckValve, PilotCheckValve
-from hydroservo.components.valves.directional import ThreeWayValve, TwoWayValve
+from hydroservo.components.valves.directional import ThreeWayPressureValve, ThreeWayValve, TwoWayValve
 from hydroservo.components.valves.four_way import FourWayValve
 from hydroservo.components.valves.orifice import LaminarOrifice, Orifice
 from hydroservo.components.valves.pressure_control import (
     CounterbalanceValve,
-    PilotedValve,
+    PressureCompensatorValve,
     PressureReducingValve,
     ReliefValve,
 )
@@ -27,6 +27,7 @@ from hydroservo.components.valves.two_stage import TwoStageServovalve
 __all__ = [
     "FourWayValve",
     "ThreeWayValve",
+    "ThreeWayPressureValve",
     "TwoWayValve",
     "PseudoSectionValve",
     "ServoSolenoidValve",
@@ -38,7 +39,7 @@ __all__ = [
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
-    "PilotedValve",
+    "PressureCompensatorValve",
     "TwoStageServovalve",
     "CatalogueServovalve",
 ]

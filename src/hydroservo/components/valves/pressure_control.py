@@ -1,4 +1,4 @@
-"""Pressure-control valves: relief, pressure-reducing, counterbalance and piloted valves, each a spring-loaded spool with a lag."""
+"""Pressure-control valves: relief, pressure-reducing and counterbalance valves, each a spring-loaded spool with a lag."""
 
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ from hydroservo.laws.pressure_valve import (
     valve_hysteresis,
 )
 
-__all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve", "PilotedValve"]
+__all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve", "PressureCompensatorValve"]
 
 #: The spool's characteristics, shared by every pressure-control valve ([Hopsan2026] defaults).
 SPOOL_PARAMETERS = {
@@ -75,8 +75,24 @@ class _PressureControl(Component):
     }
     HYDRAULIC = dict(TWO_PORT_HYDRAULIC)
 
+    #: the pilot ports a value of option ``pilot`` adds (they take no flow), if the valve has that option
+    PILOT_PORTS: dict[str, tuple[str, ...]] = {}
+
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         raise NotImplementedError
+
+    def _pilot_ports(self) -> tuple[str, ...]:
+        return self.PILOT_PORTS.get(self.option("pilot"), ()) if "pilot" in self.OPTIONS else ()
+
+    def options_changed(self) -> None:
+        """Option ``pilot`` from ports: their pressures inputs, their flows (none) outputs."""
+        cls = type(self)
+        self.INPUTS, self.OUTPUTS = dict(cls.INPUTS), dict(cls.OUTPUTS)  # type: ignore[misc]
+        self.HYDRAULIC = dict(cls.HYDRAULIC)  # type: ignore[misc]
+        for port in self._pilot_ports():
+            self.INPUTS[f"p{port}"] = Port("Pa", f"pilot pressure at {port}")
+            self.OUTPUTS[f"Q{port}"] = Output("m^3/s", f"pilot flow at {port} (none)")
+            self.HYDRAULIC[port] = Hydraulic(f"p{port}", f"Q{port}", f"pilot port {port}", into=True)
 
     def check(self) -> None:
         super().check()
@@ -93,7 +109,11 @@ class _PressureControl(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         K = self._K(x, p)
-        return {"Q": turbulent_flow(K, u["pA"] - u["pB"], p["p_tr"]), "s": K * bk.sqrt(p["p_nom"]) / p["q_nom"]}
+        return {
+            "Q": turbulent_flow(K, u["pA"] - u["pB"], p["p_tr"]),
+            "s": K * bk.sqrt(p["p_nom"]) / p["q_nom"],
+            **{f"Q{port}": 0.0 for port in self._pilot_ports()},
+        }
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
@@ -142,13 +162,21 @@ class ReliefValve(_PressureControl):
     Option ``pilot``: ``inlet`` (default), the spring chamber at the
     atmosphere, :math:`\Delta p_{over} = p_A - p_{crack}`; ``drop``, the
     spring chamber drained to the outlet, :math:`\Delta p_{over} = p_A - p_B - p_{crack}`
-    (Hopsan's HydraulicPressureReliefValveG, with ``spool = "balance"``).
+    (Hopsan's HydraulicPressureReliefValveG, with ``spool = "balance"``);
+    ``ports``, piloted from elsewhere: the pilot port X against the spring
+    chamber's port Y, :math:`\Delta p_{over} = p_X - p_Y - p_{crack}` (a
+    sequence or unloading valve; Hopsan's HydraulicPressureControlValveG, with
+    ``spool = "balance"``). The pilot ports take no flow.
     """
 
     OPTIONS = {
         **_PressureControl.OPTIONS,
-        "pilot": Option("inlet", ("inlet", "drop"), "the setting against the inlet's pressure, or against the drop A-B"),
+        "pilot": Option(
+            "inlet", ("inlet", "drop", "ports"),
+            "the setting against the inlet's pressure, the drop A-B, or the drop from pilot port X to port Y",
+        ),
     }
+    PILOT_PORTS = {"ports": ("X", "Y")}
 
     PARAMETERS = {
         "p_crack": Param(200e5, "Pa", "cracking pressure (setting)"),
@@ -159,9 +187,17 @@ class ReliefValve(_PressureControl):
     #: valve's override); with pumps and pressure sources their ratings are the ceiling, whatever the setting
     LIMITS = {"p_crack": Limit("relief")}
 
+    def options_changed(self) -> None:
+        """Its setting bounds the circuit only against its inlet's pressure: set on a drop (``drop``, ``ports``) it
+        bounds no pressure of the circuit."""
+        super().options_changed()
+        self.LIMITS = dict(type(self).LIMITS) if self.option("pilot") == "inlet" else {}  # type: ignore[misc]
+
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         if self.option("pilot") == "drop":
             return u["pA"] - u["pB"] - p["p_crack"]
+        if self.option("pilot") == "ports":
+            return u["pX"] - u["pY"] - p["p_crack"]
         return u["pA"] - p["p_crack"]
 
     def output_equations(
@@ -180,13 +216,30 @@ class PressureReducingValve(_PressureControl):
     law of Hopsan's HydraulicPressureReducingValve ([Hopsan2026]) in the limit
     of a small time step, hysteresis ``p_h`` included; with ``spool = "balance"``,
     that of its HydraulicPressureReducingValveG.
+
+    Option ``pilot``: ``outlet`` (default), the spring chamber at the
+    atmosphere; ``port``, the spring chamber at the pilot port X, which takes
+    no flow: :math:`\Delta p_{over} = p_{set} + p_X - p_B`, the valve holds B
+    at ``p_set`` above X (a pressure compensator keeping the drop across a
+    metering orifice from B to X; Hopsan's HydraulicPressureCompensatingValveG,
+    with ``spool = "balance"``).
     """
 
+    OPTIONS = {
+        **_PressureControl.OPTIONS,
+        "pilot": Option(
+            "outlet", ("outlet", "port"), "the outlet against the setting, or against the setting above pilot port X"
+        ),
+    }
     PARAMETERS = {
-        "p_set": Param(50e5, "Pa", "reduced pressure setting"),
+        "p_set": Param(50e5, "Pa", "reduced pressure setting (option pilot = port: above the pressure at X)"),
         **SPOOL_PARAMETERS,
     }
+    PILOT_PORTS = {"port": ("X",)}
+
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        if self.option("pilot") == "port":
+            return p["p_set"] + u["pX"] - u["pB"]
         return p["p_set"] - u["pB"]
 
 
@@ -259,42 +312,44 @@ class CounterbalanceValve(_PressureControl):
 
 
 @register
-class PilotedValve(_PressureControl):
-    r"""A valve from A to B opened by a pilot pressure at X against its setting and the pressure at Y.
+class PressureCompensatorValve(_PressureControl):
+    r"""Pressure compensator from A to B: open at rest, closing as the pilot X passes the pilot Y by ``p_ref``.
 
-    The spring-loaded spool of :class:`_PressureControl` piloted by two
-    external lines: X pushes it open, Y (the spring chamber) and the spring's
-    setting ``p_ref`` push it closed,
-    :math:`\Delta p_{over} = p_X - p_Y - p_{ref}`; neither pilot takes flow.
-    A sequence or unloading valve with external pilot and drain; with X on A
-    and Y on B it is a relief valve set on the drop. The law of Hopsan's
-    HydraulicPressureControlledValve ([Hopsan2026]
-    Hydraulic/Valves/PressureControlValves/HydraulicPressureControlledValve.hpp,
-    ports P_OPEN and P_CLOSE) in the limit of a small time step, its
-    hysteresis ``p_h`` included. Hopsan's spring-and-flow-force term
-    :math:`C_s + C_f(p_1 - p_2)` is not floored at a reverse drop there (it
-    vanishes at :math:`p_2 - p_1 = C_s/C_f`, 7 MPa with its defaults); here it
-    is, as for every pressure-control valve of the package.
+    The spring-loaded spool of :class:`_PressureControl`, normally open: the
+    pilot X pushes it closed against its spring and the pilot Y,
+    :math:`\Delta p_{over} = p_X - p_Y - p_{ref}`, and its state :math:`K_c`
+    is how far that has closed it, following
+    :func:`~hydroservo.laws.pressure_valve.pressure_valve_coefficient` of
+    :math:`\Delta p_{over}` as a relief valve's opening does (its lag ``tau``,
+    its hysteresis ``p_h``, its bounds :math:`[0, K_{max}]`); the valve passes
+    :math:`Q = (K_{max} - K_c)\sqrt{\Delta p}`, :math:`K_{max} = q_{nom}/\sqrt{p_{nom}}`.
+    It holds :math:`p_X - p_Y` near ``p_ref`` by throttling (X upstream of
+    the metering orifice it guards, Y downstream: a load-sensing compensator).
+    The pilots take no flow. Hopsan's HydraulicPressureCompensatingValve
+    ([Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureCompensatingValve.hpp:
+    x_s = X_0max − (p_open − p_ref − p_close)/b_1, filtered and with its
+    hysteresis) imports as this valve, its P_OPEN the pilot X, its P_CLOSE Y.
     """
 
     PARAMETERS = {
-        "p_ref": Param(20e5, "Pa", "pilot pressure over the spring chamber's that opens the valve (setting)"),
+        "p_ref": Param(20e5, "Pa", "pilot difference p_X - p_Y at which the valve starts to close"),
         **SPOOL_PARAMETERS,
     }
+    STATES = {"K": State("m^3/s/Pa^0.5", "flow coefficient by which the pilot has closed the valve", nominal=1e-6)}
     INPUTS = {
         **TWO_PORT_PRESSURES,
-        "pX": Port("Pa", "opening pilot pressure", default=0.0),
-        "pY": Port("Pa", "closing pilot pressure (spring chamber)", default=0.0),
+        "pX": Port("Pa", "pilot pressure that closes the valve"),
+        "pY": Port("Pa", "pilot pressure that holds it open, with the spring"),
     }
     OUTPUTS = {
         **_PressureControl.OUTPUTS,
-        "QX": Output("m^3/s", "flow into the opening pilot (none)"),
-        "QY": Output("m^3/s", "flow into the closing pilot (none)"),
+        "QX": Output("m^3/s", "pilot flow at X (none)"),
+        "QY": Output("m^3/s", "pilot flow at Y (none)"),
     }
     HYDRAULIC = {
         **TWO_PORT_HYDRAULIC,
-        "X": Hydraulic("pX", "QX", "opening pilot port", into=True),
-        "Y": Hydraulic("pY", "QY", "closing pilot port (spring chamber)", into=True),
+        "X": Hydraulic("pX", "QX", "closing pilot port", into=True),
+        "Y": Hydraulic("pY", "QY", "opening pilot port (the spring's side)", into=True),
     }
 
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
@@ -303,4 +358,6 @@ class PilotedValve(_PressureControl):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {**super().output_equations(t, x, u, p), "QX": 0.0, "QY": 0.0}
+        K_max = p["q_nom"] / bk.sqrt(p["p_nom"])
+        K = K_max - self._K(x, p)
+        return {"Q": turbulent_flow(K, u["pA"] - u["pB"], p["p_tr"]), "s": K / K_max, "QX": 0.0, "QY": 0.0}

@@ -51,3 +51,39 @@ def test_two_way_valve_opens_past_its_overlap_in_a_circuit() -> None:
     assert float(r["valve.Q"][1]) == 0.0  # xv = 0.05 mm, inside the 0.1 mm overlap
     assert float(r["valve.Q"][-1]) == pytest.approx(5e-4 * 2.5e-4 * _g(100e5, p_tr), rel=1e-9)
     assert np.all(np.asarray(r["valve.Q"]) >= 0.0)
+
+
+def test_a_pilot_operated_three_way_valve_settles_where_its_spool_balances_the_pilot() -> None:
+    """ThreeWayPressureValve: B_v ẋ = A_v (p_X - p_ref) - (k_s + k_f) x, k_f = 2 cos φ c √(ρ/2) |Δp| of each open
+    edge. Pilot pressures above the setting open P-A (flow force of P-A only), below it A-T (A-T's only, once its
+    opening passes x_ATf); the static position solves the balance, and the spool stops at its bounds."""
+    p_tr = transition_pressure(1e-3, 870.0, 32e-6, 1000.0)
+    c_pa, c_at, phi, rho = 2e-4, 1e-4, 1.0, 870.0
+    ks, area, p_ref = 3e4, 1e-5, 100e5
+    ps, pt, pa = 200e5, 1e5, 80e5
+
+    def k_f(c_v: float, dp: float) -> float:
+        return 2.0 * np.cos(phi) * c_v * np.sqrt(rho / 2.0) * abs(dp)
+
+    for px, expected in ((110e5, area * 10e5 / (ks + k_f(c_pa, ps - pa))),
+                         (95e5, -area * 5e5 / (ks + k_f(c_at, pa - pt))),
+                         (300e5, 2e-4)):  # held at x_max
+        s = hs.System("pilot")
+        s.add(c.ThreeWayPressureValve("v", c_PA=c_pa, c_AT=c_at, A_v=area, p_ref=p_ref, k_s=ks, B_v=10.0,
+                              phi=phi, x_min=-2e-4, x_max=2e-4, x_ATf=1e-6))
+        for name, p in (("P", ps), ("T", pt), ("A", pa), ("X", px)):
+            s.add(c.Tank(f"s{name}", p=p))
+            s.connect(f"v.{name}", f"s{name}.P")
+        r = s.simulate(t_eval=[0.0, 0.05], accuracy=1e-9)
+        xv = float(r["v.xv"][-1])
+        assert xv == pytest.approx(expected, rel=1e-5)
+        q_pa = c_pa * max(xv, 0.0) * _g(ps - pa, p_tr)
+        q_at = c_at * max(-xv, 0.0) * _g(pa - pt, p_tr)
+        assert float(r["v.QA"][-1]) == pytest.approx(q_pa - q_at, rel=1e-5)
+        assert float(r["v.QX"][-1]) == 0.0
+    # A-T's flow force acts only once it has opened by x_ATf: just inside, the spring alone
+    v = c.ThreeWayPressureValve("v", c_PA=c_pa, c_AT=c_at, A_v=area, p_ref=p_ref, k_s=ks, B_v=10.0, phi=phi,
+                        x_ATf=1e-5, dx_f=1e-8)
+    u = {"pS": ps, "pT": pt, "pA": pa, "pX": p_ref - ks * 5e-6 / area}
+    rate = v.state_equations(0.0, {"x_v": -5e-6}, u, v.values, {"xv": -5e-6})["x_v"]
+    assert abs(float(rate)) < 1e-9
