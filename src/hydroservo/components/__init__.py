@@ -11,7 +11,7 @@ module                 components
 :mod:`.pumps`          Pump, VariablePump, Motor, Machine
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
-:mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
+:mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
                        AngularVelocitySource
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
@@ -67,7 +67,7 @@ from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
-from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
+from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
 from hydroservo.components.pumps import Machine, Motor, Pump, VariablePump
 from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource, TorsionalSpring
 from hydroservo.components.signals import (
@@ -125,6 +125,7 @@ __all__ = [
     "Spring",
     "Damper",
     "FixedPosition",
+    "Wall",
     "ForceSource",
     "VelocitySource",
     "RotationalInertia",
