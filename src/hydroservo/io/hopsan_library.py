@@ -994,6 +994,25 @@ def _angular_velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mappe
     return Mapped([comp], power={"out": f"{n}.P"}, inputs={"omega": f"{n}.u"})
 
 
+def _free_length_wall(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicFreeLengthWall.hpp: a Q component whose end, the filter
+    x = -c/((B + Z_c) s) of the node's wave variable, is clamped at stop_pos with zero velocity while the wave
+    variable presses it there (and writes the force c), and is otherwise free (it writes the force 0). As the
+    step vanishes Z_c vanishes and the filter is B ẋ = F, the end held by the damping B alone: a unilateral
+    contact of a massless end, a Wall (B, x_stop = stop_pos) starting at its port's start position (clamped to
+    the stop, as Hopsan's first step does). With B > 0 the free end's force is B v where Hopsan logs 0 (its
+    filter moves the end as a damper would, but it writes no force). m_e is the equivalent mass Hopsan writes
+    to the node for its neighbours' numerics: unused, as in hydroservo's laws."""
+    from hydroservo.components import Wall
+
+    stop, b = par("stop_pos", 0.0), par("B", 0.001)
+    if b < 0.0:
+        par.problems.append(f"{par.where}: B = {b:g} Ns/m; a damping of at least 0 is supported")
+        return Mapped()
+    comp = Wall(n, B=b, x_stop=stop, x0=max(par.start("Pm1", "Position"), stop))
+    return Mapped([comp], power={"Pm1": f"{n}.P"})
+
+
 def _motor_q(leakage: str, variable: bool) -> Builder:
     """Hopsan's Q-type motors ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementMotorQ.hpp, leakage
     C_lm; HydraulicVariableDisplacementMotorQ.hpp, leakage C_im and the displacement setting eps limited to
@@ -1419,6 +1438,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicAngleSensor": _sensor("Angle", "rad"),
     "MechanicAngularVelocitySensor": _sensor("AngularVelocity", "rad/s"),
     "MechanicTorqueSensor": _sensor("Torque", "N*m"),
+    "MechanicFreeLengthWall": _free_length_wall,
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
