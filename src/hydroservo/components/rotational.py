@@ -17,6 +17,7 @@ from typing import Any
 from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
 from hydroservo.components.mechanics import ForceSource, VelocitySource
 from hydroservo.errors import ParameterError
+from hydroservo.laws.friction import stribeck
 from hydroservo.laws.rigid_body import rigid_body_acceleration
 from hydroservo.laws.stops import end_stop_force
 
@@ -25,12 +26,15 @@ __all__ = ["RotationalInertia", "TorsionalSpring", "TorqueSource", "AngularVeloc
 
 @register
 class RotationalInertia(Component):
-    r"""Rigid rotating inertia with viscous friction, a torsional spring to ground and end stops.
+    r"""Rigid rotating inertia with viscous and Stribeck friction, a torsional spring to ground and end stops.
 
-    .. math:: J\,\ddot\theta = T - T_{P1} - B_{rot}\,\dot\theta - k_{rot}\,\theta + T_{stop}
+    .. math:: J\,\ddot\theta = T - T_{P1} - T_f(\dot\theta) - k_{rot}\,\theta + T_{stop}
 
     (:func:`~hydroservo.laws.rigid_body.rigid_body_acceleration`, the law of
-    :class:`~hydroservo.components.mass.Mass` on an angle). Its two ends are the rotational ports ``P2`` (at
+    :class:`~hydroservo.components.mass.Mass` on an angle), with the friction torque :math:`T_f` the Stribeck law
+    of the mass (:func:`~hydroservo.laws.friction.stribeck`: viscous ``B_rot``, Coulomb ``T_c0``, static
+    ``T_s0`` above it falling off over ``omega_s``, the sign smoothed over ``omega_reg``; with ``T_c0`` and
+    ``T_s0`` at 0, the default, it is ``B_rot`` times the speed). Its two ends are the rotational ports ``P2`` (at
     :math:`\theta`, counted along +θ) and ``P1`` (at :math:`-\theta`, counted the other way), as Hopsan's
     MechanicRotationalInertia ([Hopsan2026] Mechanic/Rotational/MechanicRotationalInertia.hpp): the torques of
     what is connected at P2 add into ``T``, those at P1 into ``T_P1``. End stops
@@ -41,6 +45,11 @@ class RotationalInertia(Component):
     PARAMETERS = {
         "J": Param(0.1, "kg*m^2", "moment of inertia", min=0.0, min_inclusive=False),
         "B_rot": Param(0.0, "N*m*s/rad", "rotational viscous friction coefficient", min=0.0),
+        "T_c0": Param(0.0, "N*m", "Coulomb friction torque", min=0.0),
+        "T_s0": Param(0.0, "N*m", "static friction torque above the Coulomb one", min=0.0),
+        "omega_s": Param(0.01, "rad/s", "Stribeck angular velocity", min=0.0, min_inclusive=False),
+        "omega_reg": Param(1e-4, "rad/s", "angular velocity over which the friction's sign is smoothed", min=0.0,
+                           min_inclusive=False),
         "k_rot": Param(0.0, "N*m/rad", "stiffness of a torsional spring to ground, relaxed at theta = 0", min=0.0),
         "theta_min": Param(-1e30, "rad", "end stop, low side"),
         "theta_max": Param(1e30, "rad", "end stop, high side"),
@@ -79,7 +88,7 @@ class RotationalInertia(Component):
         theta, omega = x["theta"], x["omega"]
         load = u["T"] - u["T_P1"]
         load = load + end_stop_force(theta, omega, p["theta_min"], p["theta_max"], p["k_stop_rot"], p["c_stop_rot"])
-        friction = p["B_rot"] * omega
+        friction = stribeck(omega, p["B_rot"], p["T_c0"], p["T_s0"], p["omega_s"], p["omega_reg"])
         return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], p["k_rot"], 0.0, friction)}
 
 
