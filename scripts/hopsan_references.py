@@ -35,10 +35,21 @@ HERE = Path(__file__).resolve().parent
 OUT = HERE.parent / "src" / "hydroservo" / "data" / "reference" / "hopsan"
 
 
+#: component types Hopsan's GUI renames when it loads an older model (HopsanGUI/Utilities/XMLUtilities.cpp,
+#: updateHmfComponentProperties), which hopsancli does not: such a model is run as the GUI would load it
+GUI_RENAMES = {"MechanicRotationalInertiaWithCoulumbFriction": "MechanicRotationalInertiaWithCoulombFriction"}
+
+
 def run_hopsan(cli: Path, model: Path, h: float, t0: float, t1: float, samples: int) -> dict[str, np.ndarray]:
     """Hopsan's logged variables (``Comp#Port#Var`` -> trace) of one run at step ``h``."""
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "out.csv"
+        text = model.read_text(encoding="utf-8")
+        if any(f'"{old}"' in text for old in GUI_RENAMES):
+            for old, new in GUI_RENAMES.items():
+                text = text.replace(f'typename="{old}"', f'typename="{new}"')
+            model = Path(tmp) / model.name
+            model.write_text(text, encoding="utf-8")
         cmd = [str(cli), "-m", str(model), "-s", f"{t0!r},{h!r},{t1!r}", "-l", str(samples),
                "--resultsFullCSV", str(out), "--resultsCSVSort", "cols"]
         done = subprocess.run(cmd, capture_output=True, text=True, timeout=3600)

@@ -144,7 +144,7 @@ C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
-    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC",
+    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "MechanicMotor",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -1013,6 +1013,70 @@ def _free_length_wall(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"Pm1": f"{n}.P"})
 
 
+def _rotational_inertia_coulomb(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaWithCoulombFriction.hpp: the translational mass
+    with Coulomb friction's law (its DoubleIntegratorWithDampingAndCoulombFriction) on an angle: stuck while the
+    torque on it stays below t_s, sliding against t_k and B ω once it turns, stopped whenever its speed would
+    change sign. As for MechanicTranslationalMassWithCoulombFriction (:func:`_mass_coulomb`), the limit of the
+    Stribeck law as its velocity scales vanish: a RotationalInertia with T_c0 = t_k, T_s0 = t_s - t_k,
+    omega_reg = 1e-5 rad/s and omega_s = 1e-3 rad/s. A static friction below the kinetic one (RotationalInertia-
+    WithCoulombFrictionTest's t_s = 10, t_k = 50 Nm) acts as the kinetic one: Hopsan's integrator breaks away
+    when the torque reaches t_s, but stops again on its next step, its speed about to change sign, unless the
+    torque exceeds t_k; so T_s0 = max(t_s - t_k, 0). Hopsan's integrator starts at P2's start angle and speed;
+    its inelastic stops a_min, a_max as stiff ones. Older files name the type ...WithCoulumbFriction, which
+    Hopsan's GUI renames when it loads them (HopsanGUI/Utilities/XMLUtilities.cpp); both map here."""
+    from hydroservo.components import RotationalInertia
+
+    t_s, t_k = par("t_s", 50.0), par("t_k", 45.0)
+    if t_s < 0.0 or t_k < 0.0:
+        par.problems.append(f"{par.where}: t_s = {t_s:g} Nm, t_k = {t_k:g} Nm: a negative friction is not supported")
+        return Mapped()
+    comp = RotationalInertia(
+        n,
+        J=par("J", 1.0),
+        B_rot=par("B", 10.0),
+        T_c0=t_k,
+        T_s0=max(t_s - t_k, 0.0),
+        omega_reg=1e-5,
+        omega_s=1e-3,
+        theta0=par.start("P2", "Angle"),
+        omega0=par.start("P2", "AngularVelocity"),
+    )
+    a_min, a_max = par("a_min", -1e300), par("a_max", 1e300)
+    if abs(a_min) < 1e299 or abs(a_max) < 1e299:
+        comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicMotor.hpp: an ideal motor under speed control, a C component of no
+    impedance whose torque is a PID controller's output on its speed error, T = K_p e + K_i ∫e + K_d ė with
+    e = omega_ref - ω (ω its own speed, minus the node's, which its Q neighbour writes): a TorqueSource driven
+    by a PID (no output limits: Hopsan's Wmax, Tmax and wmax are set and never used) on a Sum reading the node's
+    speed. Hopsan's derivative is the bilinear transform of s, starting from a zero error (a step in the error at
+    the start is an impulse of torque, K_d e(0)); the PID's derivative is filtered with T_f = 1e-5 s, starting
+    from the same zero. Its integrator starts at 0, as Hopsan's."""
+    from hydroservo.components import PID, Constant, Sum, TorqueSource
+
+    pid = PID(f"{n}_pid", Kp=par("K_p", 10.0), Ki=par("K_i", 100.0),
+              Kd=par("K_d", 100.0), T_f=1e-5)
+    # u1 the node's speed (read: minus the motor's; the read sets gain1 and offset), u2 omega_ref
+    error = Sum(f"{n}_error", gain2=1.0)
+    m = Mapped(
+        [TorqueSource(n), error, pid],
+        power={"P1": f"{n}.P"},
+        read={"P1": (f"{n}_error.u1", "AngularVelocity")},
+        internal=[(f"{n}_error.y", f"{n}_pid.e"), (f"{n}_pid.y", f"{n}.u")],
+        note="a TorqueSource driven by a PID on a Sum of omega_ref and the node's speed",
+    )
+    if "omega_ref" in par.driven:
+        m.inputs["omega_ref"] = f"{n}_error.u2"
+    else:  # older files name it without #Value, which the import's unconnected inputs do not read
+        m.components.append(Constant(f"{n}_omega_ref", value=par("omega_ref", 0.0)))
+        m.internal.append((f"{n}_omega_ref.y", f"{n}_error.u2"))
+    return m
+
+
 def _motor_q(leakage: str, variable: bool) -> Builder:
     """Hopsan's Q-type motors ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementMotorQ.hpp, leakage
     C_lm; HydraulicVariableDisplacementMotorQ.hpp, leakage C_im and the displacement setting eps limited to
@@ -1439,6 +1503,9 @@ LIBRARY: dict[str, Builder] = {
     "MechanicAngularVelocitySensor": _sensor("AngularVelocity", "rad/s"),
     "MechanicTorqueSensor": _sensor("Torque", "N*m"),
     "MechanicFreeLengthWall": _free_length_wall,
+    "MechanicRotationalInertiaWithCoulombFriction": _rotational_inertia_coulomb,
+    "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling
+    "MechanicMotor": _mechanic_motor,
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),

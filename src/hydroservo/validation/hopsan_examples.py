@@ -179,6 +179,11 @@ MODELS: dict[str, Spec] = {
              "lumped spring's force is 0 in flight: 6.1 % of the 1461 N the 501 samples catch (docs/validation.md)"),
         ),
     ),
+    "rotational-inertia-with-coulomb-friction-test": Spec(
+        "Component Test/MechanicComponent Test/RotationalInertiaWithCoulombFrictionTest.hmf",
+        "an inertia with Coulomb friction (static below kinetic) turned through a stiff shaft by a theta source "
+        "that speeds up and reverses, and another pushed by a soft-stepped torque: it sticks and breaks away",
+    ),
     "rate-limiter-test": Spec(
         "Component Test/SignalComponent Test/Non-linear/RateLimiterTest.hmf",
         "a sine and a pulse wave through rate limiters, and their outputs' rates through first-order derivative "

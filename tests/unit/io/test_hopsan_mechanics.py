@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from hydroservo.errors import ModelFileError
@@ -81,3 +82,52 @@ def test_a_free_length_wall_starting_below_its_stop_starts_at_it_and_a_negative_
     components[0][2]["B#Value"] = ("-1", "Ns/m")
     with pytest.raises(ModelFileError, match=r"Wall \(MechanicFreeLengthWall\): B = -1 Ns/m"):
         import_hopsan(_write(tmp_path, components, connections))
+
+
+@pytest.mark.parametrize("typename", ["MechanicRotationalInertiaWithCoulombFriction",
+                                      "MechanicRotationalInertiaWithCoulumbFriction"])
+def test_hopsans_rotational_inertia_with_coulomb_friction_under_either_name(tmp_path: Path, typename: str) -> None:
+    """MechanicRotationalInertiaWithCoulombFriction (and the older files' ...Coulumb..., which Hopsan's GUI renames):
+    J, B, t_s, t_k as RotationalInertia's J, B_rot, T_c0 + T_s0 and T_c0; a static friction below the kinetic one
+    acts as the kinetic one (T_s0 0). Twisted at P1 by 30 N m, below t_k = 50 N m, it stays; by 80 N m it turns
+    against t_k and B: ω = (80 - 50)/B (1 - exp(-B t/J))."""
+    components = [
+        (typename, "Stuck", {"J#Value": ("0.5", "kgm^2"), "B#Value": ("3", "Nms/rad"), "t_s": ("10", "Nm"),
+                             "t_k": ("50", "Nm")}),
+        (typename, "Turns", {"J#Value": ("0.5", "kgm^2"), "B#Value": ("3", "Nms/rad"), "t_s": ("10", "Nm"),
+                             "t_k": ("50", "Nm")}),
+        ("MechanicTorqueTransformer", "T30", {"T#Value": ("30", "Nm")}),
+        ("MechanicTorqueTransformer", "T80", {"T#Value": ("80", "Nm")}),
+    ]
+    connections = [("T30.P1", "Stuck.P1"), ("T80.P1", "Turns.P1")]
+    imp = import_hopsan(_write(tmp_path, components, connections))
+    j = imp.system["Turns"]
+    assert (j.values["J"], j.values["B_rot"], j.values["T_c0"], j.values["T_s0"]) == (0.5, 3.0, 50.0, 0.0)
+    t = np.array([0.0, 0.1, 0.5])
+    r = imp.system.simulate(t_eval=t, accuracy=1e-8, method="cvodes")
+    assert np.max(np.abs(r["Stuck.P1.AngularVelocity"])) < 1e-4
+    np.testing.assert_allclose(-r["Turns.P1.AngularVelocity"], 10.0 * (1.0 - np.exp(-6.0 * t)), atol=2e-3)
+
+
+def test_hopsans_motor_is_a_torque_source_under_pid_speed_control(tmp_path: Path) -> None:
+    """MechanicMotor: the torque K_p e + K_i ∫e + K_d ė on its speed error e = omega_ref - ω. On an inertia J
+    (no damping, no friction) with K_p alone, ω = omega_ref (1 - exp(-K_p t/J)); with K_d alone, the error's
+    step at the start is an impulse K_d omega_ref that sets the inertia at once to K_d omega_ref/(J + K_d), which
+    then stays (J ω' = -K_d ω')."""
+    def model(kp: str, kd: str) -> Path:
+        components = [
+            ("MechanicMotor", "Motor", {"omega_ref": ("20", ""), "K_p": (kp, ""), "K_i": ("0", ""), "K_d": (kd, "")}),
+            ("MechanicRotationalInertia", "J", {"J": ("0.5", "kgm^2"), "B#Value": ("0", "Nms/rad"),
+                                                "k#Value": ("0", "Nm/rad")}),
+            ("MechanicTorqueTransformer", "T", {"T#Value": ("0", "Nm")}),
+        ]
+        return _write(tmp_path, components, [("Motor.P1", "J.P1"), ("J.P2", "T.P1")])
+
+    t = np.array([0.0, 0.05, 0.2])
+    imp = import_hopsan(model("10", "0"))
+    assert imp.system["Motor_pid"].values["Kp"] == 10.0
+    r = imp.system.simulate(t_eval=t, accuracy=1e-8, method="cvodes")
+    np.testing.assert_allclose(r["J.P2.AngularVelocity"], 20.0 * (1.0 - np.exp(-20.0 * t)), atol=1e-4)
+    np.testing.assert_allclose(r["Motor.P1.AngularVelocity"], -r["J.P2.AngularVelocity"])  # Hopsan's node: the Q's
+    r = import_hopsan(model("0", "0.5")).system.simulate(t_eval=t, accuracy=1e-8, method="cvodes")
+    np.testing.assert_allclose(r["J.P2.AngularVelocity"][1:], 10.0, rtol=1e-4)
