@@ -10,7 +10,7 @@ module                 components
 :mod:`.accumulator`    Accumulator
 :mod:`.pumps`          Pump, VariablePump, Motor, Machine
 :mod:`.cylinder`       Cylinder
-:mod:`.mass`           Mass
+:mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
                        AngularVelocitySource
@@ -66,7 +66,7 @@ from hydroservo.components.control import (
 from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
-from hydroservo.components.mass import Mass
+from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
 from hydroservo.components.pumps import Machine, Motor, Pump, VariablePump
 from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource, TorsionalSpring
@@ -122,6 +122,7 @@ __all__ = [
     "RenamedWarning",
     "Cylinder",
     "Mass",
+    "MassPair",
     "Spring",
     "Damper",
     "FixedPosition",
