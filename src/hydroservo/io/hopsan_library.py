@@ -1077,6 +1077,80 @@ def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return m
 
 
+def _mkc_load(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicMkcload1D.hpp: a mass mL on a spring kL (relaxed at x = 0), damped by
+    bL, with dry friction fc, its position x of Pm2 (Pm1 at -x) limited to [xmin, xmax] (its velocity zeroed
+    there: inelastic stops). Its generated equations, solved by Newton steps each time step, are the trapezoidal
+    rule of mL ẍ = f1 - f2 - bL ẋ - kL x - F_fr with F_fr = limit(bfc mL ẋ/Ts, -fc, fc): the force that would stop
+    the mass within a step, at most fc, which is Coulomb's law (stuck below fc, sliding against it) as the step
+    vanishes, whatever the numerical factor bfc. A Mass with B = bL, k_spring = kL, F_c0 = fc (static friction
+    equal to the kinetic one) regularised as MechanicTranslationalMassWithCoulombFriction's (v_reg 1e-5 m/s),
+    the stops as stiff ones; its output fs = kL x."""
+    from hydroservo.components import Mass
+
+    fc, x_min, x_max = par("fc", 10.0), par("xmin", 0.0), par("xmax", 1.0)
+    if fc < 0.0 or par("mL", 1000.0) <= 0.0 or x_max < x_min:
+        par.problems.append(f"{par.where}: mL above 0, fc at least 0 and xmin <= xmax are supported")
+        return Mapped()
+    comp = Mass(
+        n,
+        m=par("mL", 1000.0),
+        B=par("bL", 10.0),
+        k_spring=par("kL", 10.0),
+        incline=0.0,
+        F_c0=fc,
+        v_reg=1e-5,
+        c_s=1e-3,
+        x_min=x_min,
+        x_max=x_max,
+        k_stop=1e9,
+        c_stop=1e6,
+        x0=min(max(par.start("Pm2", "Position"), x_min), x_max),
+        v0=par.start("Pm2", "Velocity"),
+    )
+    return Mapped([comp], power={"Pm1": f"{n}.P1", "Pm2": f"{n}.P2"}, values={"fs": Var(par("kL", 10.0), f"{n}.x")})
+
+
+def _m2_load(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicM2load1D.hpp: two masses m1 (Pm1) and m2 (Pm2) that slide on each
+    other, their relative displacement x3 the port Pm3 (a cylinder's rod between them) with its stroke
+    xp = -x3 limited to [xpmin, xpmax] (velocity zeroed there: inelastic stops), dry friction fc between them. Its
+    generated equations, solved by Newton steps each time step, are the trapezoidal rule of
+    (m1 + m2) ẍt = f1 - f2 and μ ẍ3 = (m2 f1 + m1 f2)/(m1 + m2) - f3 - F_fr (Hopsan's forces press on the
+    component), F_fr = limit(2 bfc μ ẋ3/Ts, -fc, fc), the force that would stop the relative motion within a
+    step: Coulomb's law as the step vanishes, whatever bfc. A MassPair with F_c0 = fc regularised as
+    MechanicTranslationalMassWithCoulombFriction's (v_reg 1e-5 m/s); bL is declared but unused by Hopsan's
+    equations, and so here. Its stops are of 1e12 N/m and 1e8 N s/m, not the default 1e9 and 1e6: Hopsan clamps
+    the stroke exactly, so a cylinder joined at Pm3 whose own stops are at the same place (MechanicM2load1D-
+    PistonTest's) never takes load there, and a penalty stop as stiff as the cylinder's would share it (the rod
+    force 34 % of range off on that test; 0.07 % at 1e12 N/m, which leaves the cylinder 0.1 %). Starts at the outputs' start values xt, vt and Pm3's start position and
+    velocity, as Hopsan's; the outputs vt and xt are the centre of gravity's."""
+    from hydroservo.components import MassPair
+
+    fc, xp_min, xp_max = par("fc", 10.0), par("xpmin", 0.0), par("xpmax", 1.0)
+    if fc < 0.0 or par("m1", 1000.0) <= 0.0 or par("m2", 1000.0) <= 0.0 or xp_max < xp_min:
+        par.problems.append(f"{par.where}: m1 and m2 above 0, fc at least 0 and xpmin <= xpmax are supported")
+        return Mapped()
+    comp = MassPair(
+        n,
+        m1=par("m1", 1000.0),
+        m2=par("m2", 1000.0),
+        F_c0=fc,
+        v_reg=1e-5,
+        c_s=1e-3,
+        x_p_min=xp_min,
+        x_p_max=xp_max,
+        k_stop=1e12,  # the exact clamp takes the whole load from a cylinder whose stop is at the same place
+        c_stop=1e8,
+        xt0=par("xt", 0.0),
+        vt0=par("vt", 0.0),
+        x30=min(max(par.start("Pm3", "Position"), -xp_max), -xp_min),
+        v30=par.start("Pm3", "Velocity"),
+    )
+    return Mapped([comp], power={"Pm1": f"{n}.P1", "Pm2": f"{n}.P2", "Pm3": f"{n}.P3"},
+                  outputs={"vt": f"{n}.vt", "xt": f"{n}.xt"})
+
+
 def _motor_q(leakage: str, variable: bool) -> Builder:
     """Hopsan's Q-type motors ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementMotorQ.hpp, leakage
     C_lm; HydraulicVariableDisplacementMotorQ.hpp, leakage C_im and the displacement setting eps limited to
@@ -1506,6 +1580,8 @@ LIBRARY: dict[str, Builder] = {
     "MechanicRotationalInertiaWithCoulombFriction": _rotational_inertia_coulomb,
     "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling
     "MechanicMotor": _mechanic_motor,
+    "MechanicMkcload1D": _mkc_load,
+    "MechanicM2load1D": _m2_load,
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
@@ -1841,7 +1917,38 @@ def _node_starts(
         for end in group:
             if end not in multiports:
                 out[end] = values
+    for hc in model.components:  # Q components that write their own start positions (a node's values shared)
+        written = WRITTEN_STARTS.get(hc.typename)
+        if written is not None:
+            for port, values in written(hc, {p: out.get((hc.full_name, p), {}) for p in ("Pm1", "Pm2", "Pm3")}).items():
+                out.setdefault((hc.full_name, port), {}).update(values)
     return out
+
+
+def _m2_load_starts(hc: HopsanComponent, starts: dict[str, dict[str, float]]) -> dict[str, dict[str, float]]:
+    """MechanicM2load1D's start positions and velocities of Pm1 and Pm2, which it writes at its initialisation
+    from the start values of its outputs xt and vt and of Pm3's node (x3, v3), whatever its neighbours declare:
+    Pm1 at -(xt + m2 x3/(m1 + m2)), Pm2 at xt - m1 x3/(m1 + m2)."""
+    def value(name: str, default: float) -> float:
+        par = hc.parameters.get(f"{name}#Value") or hc.parameters.get(name)
+        return par.value if par is not None and par.value is not None else default
+
+    m1, m2 = value("m1", 1000.0), value("m2", 1000.0)
+    if m1 + m2 == 0.0:
+        return {}
+    x3, v3 = starts["Pm3"].get("Position", 0.0), starts["Pm3"].get("Velocity", 0.0)
+    xt, vt = value("xt", 0.0), value("vt", 0.0)
+    return {
+        "Pm1": {"Position": -(xt + m2 * x3 / (m1 + m2)), "Velocity": -(vt + m2 * v3 / (m1 + m2))},
+        "Pm2": {"Position": xt - m1 * x3 / (m1 + m2), "Velocity": vt - m1 * v3 / (m1 + m2)},
+    }
+
+
+#: Hopsan's Q components that write start values of their own to their nodes at initialisation (type -> the
+#: values by port, from the component and the start values of its nodes): they override the C components' there
+WRITTEN_STARTS: dict[str, Callable[[HopsanComponent, dict[str, dict[str, float]]], dict[str, dict[str, float]]]] = {
+    "MechanicM2load1D": _m2_load_starts,
+}
 
 
 #: Hopsan's signal blocks whose output is constant when their inputs are: type -> (output, inputs, function)

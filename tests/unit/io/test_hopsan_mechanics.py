@@ -131,3 +131,58 @@ def test_hopsans_motor_is_a_torque_source_under_pid_speed_control(tmp_path: Path
     np.testing.assert_allclose(r["Motor.P1.AngularVelocity"], -r["J.P2.AngularVelocity"])  # Hopsan's node: the Q's
     r = import_hopsan(model("0", "0.5")).system.simulate(t_eval=t, accuracy=1e-8, method="cvodes")
     np.testing.assert_allclose(r["J.P2.AngularVelocity"][1:], 10.0, rtol=1e-4)
+
+
+def test_hopsans_mkc_load_is_a_mass_with_dry_friction_a_spring_and_a_stroke(tmp_path: Path) -> None:
+    """MechanicMkcload1D (mL, bL, kL, fc, xmin, xmax) as a Mass with B, k_spring, F_c0 and stiff stops; its output
+    fs is kL x. Pushed at Pm1 by 30 N against fc = 50 N it stays at its start; by 150 N it slides against fc and
+    bL: mL ẍ = 150 - 50 - bL ẋ - kL x, overdamped, which creeps up to x = 100/kL within its stroke (where the
+    friction would hold it anywhere up to 200/kL)."""
+    components = [
+        ("MechanicMkcload1D", "Load", {"mL#Value": ("1", "kg"), "bL#Value": ("200", "Ns/m"), "kL#Value": ("1000", "N/m"),
+                                       "fc#Value": ("50", "N"), "xmin#Value": ("0", "m"), "xmax#Value": ("1", "m")}),
+        ("MechanicMkcload1D", "Held", {"mL#Value": ("1", "kg"), "bL#Value": ("20", "Ns/m"), "kL#Value": ("0", "N/m"),
+                                       "fc#Value": ("50", "N"), "xmin#Value": ("0", "m"), "xmax#Value": ("1", "m")}),
+        ("MechanicForceTransformer", "F150", {"F#Value": ("150", "N")}),
+        ("MechanicForceTransformer", "F30", {"F#Value": ("30", "N")}),
+        ("MechanicForceTransformer", "F0", {"F#Value": ("0", "N")}),
+        ("MechanicForceTransformer", "G0", {"F#Value": ("0", "N")}),
+    ]
+    connections = [("F150.P1", "Load.Pm1"), ("F0.P1", "Load.Pm2"), ("F30.P1", "Held.Pm1"), ("G0.P1", "Held.Pm2")]
+    imp = import_hopsan(_write(tmp_path, components, connections))
+    load = imp.system["Load"]
+    assert (load.values["B"], load.values["k_spring"], load.values["F_c0"], load.values["F_s0"]) == (200.0, 1e3, 50.0, 0.0)
+    r = imp.system.simulate(t_end=3.0, accuracy=1e-8, method="cvodes")
+    assert r["Load.Pm2.Position"][-1] == pytest.approx(0.1, rel=1e-3)
+    assert r["Load.fs.Value"][-1] == pytest.approx(100.0, rel=1e-3)
+    assert abs(r["Held.Pm2.Position"][-1]) < 1e-4
+
+
+def test_hopsans_m2_load_is_a_mass_pair_starting_where_it_writes_its_ends(tmp_path: Path) -> None:
+    """MechanicM2load1D (m1, m2, fc, xpmin, xpmax; its outputs xt, vt) as a MassPair. It writes its ends' start
+    positions from xt (0.1 m here) whatever its neighbours declare, so a spring joined at Pm1, relaxed at its
+    start as Hopsan's, is relaxed there: pushed by nothing, the pair stays. Pushed apart at Pm3 by 60 N against
+    fc = 10 N, the masses (20 and 30 kg, μ = 12 kg) part at 50/12 m/s² until the stroke's end, 0.5 m."""
+    pair = {"m1#Value": ("20", "kg"), "m2#Value": ("30", "kg"), "fc#Value": ("10", "N"), "xpmin#Value": ("0", "m"),
+            "xpmax#Value": ("0.5", "m"), "xt#Value": ("0.1", "")}
+    components = [
+        ("MechanicM2load1D", "Pair", pair),
+        ("MechanicTranslationalSpring", "K", {"k#Value": ("1e6", "N/m")}),
+        ("MechanicFixedPosition", "G", {}),
+        ("MechanicForceTransformer", "F2", {"F#Value": ("0", "N")}),
+        ("MechanicForceTransformer", "F3", {"F#Value": ("0", "N")}),
+    ]
+    connections = [("G.Pm1", "K.P1"), ("K.P2", "Pair.Pm1"), ("F2.P1", "Pair.Pm2"), ("F3.P1", "Pair.Pm3")]
+    imp = import_hopsan(_write(tmp_path, components, connections))
+    values = imp.system["Pair"].values
+    assert (values["m1"], values["F_c0"], values["x_p_max"], values["xt0"]) == (20.0, 10.0, 0.5, 0.1)
+    r = imp.system.simulate(t_eval=[0.0, 0.5], accuracy=1e-8, method="cvodes")
+    assert r["Pair.Pm1.Position"][0] == pytest.approx(-0.1) and r["Pair.Pm2.Position"][0] == pytest.approx(0.1)
+    np.testing.assert_allclose(r["K.P2.Force"], 0.0, atol=1e-6)  # relaxed where the pair starts
+    np.testing.assert_allclose(r["Pair.xt.Value"], 0.1)
+    components[1:3] = [("MechanicForceTransformer", "F1", {"F#Value": ("0", "N")})]
+    components[-1] = ("MechanicForceTransformer", "F3", {"F#Value": ("60", "N")})
+    connections[:2] = [("F1.P1", "Pair.Pm1")]
+    r = import_hopsan(_write(tmp_path, components, connections)).system.simulate(t_eval=[0.0, 0.2, 1.0])
+    assert r["Pair.Pm3.Position"][1] == pytest.approx(-50.0 / 12.0 * 0.2**2 / 2, rel=1e-3)  # the stroke is -x3
+    assert r["Pair.Pm3.Position"][2] == pytest.approx(-0.5, abs=1e-5)
