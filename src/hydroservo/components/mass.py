@@ -22,7 +22,8 @@ G = 9.80665
 class Mass(Component):
     r"""Rigid mass on a line with weight, damping, spring and Stribeck friction.
 
-    .. math:: (m + m_{add})\ddot x = F + F_{ext} - W\sin\theta - F_f(\dot x) - k_{spring}(x - x_{spring}) + F_{stop}
+    .. math:: (m + m_{add})\ddot x = F - n F_{P1} + F_{ext} - W\sin\theta - F_f(\dot x) - k_{spring}(x - x_{spring})
+              + F_{stop}
 
     with the Stribeck friction :math:`F_f` of [Efe2014] eq. (3.47) (viscous
     coefficient ``B`` = :math:`\sigma`, ``F_c0``, ``F_s0``, ``c_s``; the sign is
@@ -37,7 +38,10 @@ class Mass(Component):
     and ``P1`` (at ``x_P1 = length - x`` along its own outward direction, -x),
     as Hopsan's MechanicTranslationalMass ([Hopsan2026]), whose ``length`` is
     the sum of its ends' start positions: the forces of what is connected at
-    P2 add into ``F``, those at P1 into ``F_P1`` (counted outward at end 1).
+    P2 add into ``F``, those at P1 into ``F_P1`` (counted outward at end 1). With a lever ratio ``n_lever`` =
+    :math:`n` (1 by default), end 1 is on a lever: at :math:`length - n x`, moving n times as fast as the mass, its
+    force entering as :math:`n F_{P1}` (Hopsan's MechanicTranslationalMassWithLever, [Hopsan2026]
+    Mechanic/Linear/MechanicTranslationalMassWithLever.hpp).
     End stops (:func:`~hydroservo.laws.stops.end_stop_force`) act beyond ``x_min`` and ``x_max`` when ``k_stop`` or ``c_stop`` is set.
     """
 
@@ -59,6 +63,8 @@ class Mass(Component):
         "k_stop": Param(0.0, "N/m", "end-stop stiffness (0 with c_stop 0: no end stops)", min=0.0),
         "c_stop": Param(0.0, "N*s/m", "end-stop damping", min=0.0),
         "length": Param(0.0, "m", "position of end 1 plus that of end 2, each along its outward direction"),
+        "n_lever": Param(1.0, "", "lever ratio: how many times as fast as the mass end 1 moves", min=0.0,
+                         min_inclusive=False),
         "x0": Param(0.0, "m", "initial position"),
         "v0": Param(0.0, "m/s", "initial velocity"),
     }
@@ -80,8 +86,8 @@ class Mass(Component):
         "x": Output("m", "position"),
         "v": Output("m/s", "velocity"),
         "F_f": Output("N", "friction force (opposing motion)"),
-        "x_P1": Output("m", "position of end 1 along its outward direction (-x): length - x"),
-        "v_P1": Output("m/s", "velocity of end 1, outward (-v)"),
+        "x_P1": Output("m", "position of end 1 along its outward direction (-x): length - n_lever x"),
+        "v_P1": Output("m/s", "velocity of end 1, outward (-n_lever v)"),
     }
 
     def output_equations(
@@ -89,13 +95,13 @@ class Mass(Component):
     ) -> dict[str, Any]:
         v = x["v"]
         Ff = stribeck(v, p["B"], p["F_c0"], p["F_s0"], p["c_s"], p["v_reg"])
-        return {"x": x["x"], "v": v, "F_f": Ff, "x_P1": p["length"] - x["x"], "v_P1": -v}
+        return {"x": x["x"], "v": v, "F_f": Ff, "x_P1": p["length"] - p["n_lever"] * x["x"], "v_P1": -p["n_lever"] * v}
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         weight = p["W"] * bk.sin(p["incline"])
-        load = u["F"] - u["F_P1"] + u["F_ext"] - weight
+        load = u["F"] - p["n_lever"] * u["F_P1"] + u["F_ext"] - weight
         load = load + end_stop_force(x["x"], x["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
         a = rigid_body_acceleration(load, x["x"], p["m"] + u["m_add"], p["k_spring"], p["x_spring"], y["F_f"])
         return {"x": x["v"], "v": a}

@@ -28,7 +28,7 @@ __all__ = ["RotationalInertia", "TorsionalSpring", "TorqueSource", "AngularVeloc
 class RotationalInertia(Component):
     r"""Rigid rotating inertia with viscous and Stribeck friction, a torsional spring to ground and end stops.
 
-    .. math:: J\,\ddot\theta = T - T_{P1} - T_f(\dot\theta) - k_{rot}\,\theta + T_{stop}
+    .. math:: J\,\ddot\theta = T - n\,T_{P1} - T_f(\dot\theta) - k_{rot}\,\theta + T_{stop}
 
     (:func:`~hydroservo.laws.rigid_body.rigid_body_acceleration`, the law of
     :class:`~hydroservo.components.mass.Mass` on an angle), with the friction torque :math:`T_f` the Stribeck law
@@ -37,7 +37,9 @@ class RotationalInertia(Component):
     ``T_s0`` at 0, the default, it is ``B_rot`` times the speed). Its two ends are the rotational ports ``P2`` (at
     :math:`\theta`, counted along +θ) and ``P1`` (at :math:`-\theta`, counted the other way), as Hopsan's
     MechanicRotationalInertia ([Hopsan2026] Mechanic/Rotational/MechanicRotationalInertia.hpp): the torques of
-    what is connected at P2 add into ``T``, those at P1 into ``T_P1``. End stops
+    what is connected at P2 add into ``T``, those at P1 into ``T_P1``. With a gear ratio ``n_gear`` =
+    :math:`n` (1 by default) end 1 is behind an ideal gear, at :math:`-n\theta` (Hopsan's
+    MechanicRotationalInertiaWithGearRatio). End stops
     (:func:`~hydroservo.laws.stops.end_stop_force` on the angle) act beyond ``theta_min`` and ``theta_max``
     when ``k_stop_rot`` or ``c_stop_rot`` is set.
     """
@@ -51,6 +53,7 @@ class RotationalInertia(Component):
         "omega_reg": Param(1e-4, "rad/s", "angular velocity over which the friction's sign is smoothed", min=0.0,
                            min_inclusive=False),
         "k_rot": Param(0.0, "N*m/rad", "stiffness of a torsional spring to ground, relaxed at theta = 0", min=0.0),
+        "n_gear": Param(1.0, "", "gear ratio omega1/omega2 (negative: the gear reverses)"),
         "theta_min": Param(-1e30, "rad", "end stop, low side"),
         "theta_max": Param(1e30, "rad", "end stop, high side"),
         "k_stop_rot": Param(0.0, "N*m/rad", "end-stop stiffness (0 with c_stop_rot 0: no end stops)", min=0.0),
@@ -73,20 +76,26 @@ class RotationalInertia(Component):
     OUTPUTS = {
         "theta": Output("rad", "angle"),
         "omega": Output("rad/s", "angular velocity"),
-        "theta_P1": Output("rad", "angle of end 1, counted along -θ: -theta"),
-        "omega_P1": Output("rad/s", "angular velocity of end 1, counted along -θ: -omega"),
+        "theta_P1": Output("rad", "angle of end 1, counted along -θ: -n_gear theta"),
+        "omega_P1": Output("rad/s", "angular velocity of end 1, counted along -θ: -n_gear omega"),
     }
+
+    def check(self) -> None:
+        super().check()
+        if self.values["n_gear"] == 0.0:
+            raise ParameterError(f"{self.name}.n_gear = 0: a gear ratio must not be zero")
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"theta": x["theta"], "omega": x["omega"], "theta_P1": -x["theta"], "omega_P1": -x["omega"]}
+        n = p["n_gear"]
+        return {"theta": x["theta"], "omega": x["omega"], "theta_P1": -n * x["theta"], "omega_P1": -n * x["omega"]}
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         theta, omega = x["theta"], x["omega"]
-        load = u["T"] - u["T_P1"]
+        load = u["T"] - p["n_gear"] * u["T_P1"]
         load = load + end_stop_force(theta, omega, p["theta_min"], p["theta_max"], p["k_stop_rot"], p["c_stop_rot"])
         friction = stribeck(omega, p["B_rot"], p["T_c0"], p["T_s0"], p["omega_s"], p["omega_reg"])
         return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], p["k_rot"], 0.0, friction)}

@@ -1048,6 +1048,28 @@ def _rotational_inertia_coulomb(hc: HopsanComponent, n: str, par: _Params) -> Ma
     return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
+def _rotational_inertia_gear(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaWithGearRatio.hpp: an inertia J behind an ideal
+    gear of ratio omega at P1, its filters 1/(J s² + B s) and 1/(J s + B) of omega T1 - T2 (P1 at -omega θ, turning
+    at -omega ω): J θ'' = omega T1 - T2 - B θ', a RotationalInertia with n_gear = omega, starting at P2's start
+    angle and speed, as Hopsan's filters."""
+    from hydroservo.components import RotationalInertia
+
+    ratio = par("omega", 1.0)
+    if ratio == 0.0:
+        par.problems.append(f"{par.where}: gear ratio omega = 0 is not a gear")
+        return Mapped()
+    comp = RotationalInertia(
+        n,
+        J=par("J", 1.0),
+        B_rot=par("B", 10.0),
+        n_gear=ratio,
+        theta0=par.start("P2", "Angle"),
+        omega0=par.start("P2", "AngularVelocity"),
+    )
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
 def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Mechanic/Rotational/MechanicMotor.hpp: an ideal motor under speed control, a C component of no
     impedance whose torque is a PID controller's output on its speed error, T = K_p e + K_i ∫e + K_d ė with
@@ -1075,6 +1097,30 @@ def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         m.components.append(Constant(f"{n}_omega_ref", value=par("omega_ref", 0.0)))
         m.internal.append((f"{n}_omega_ref.y", f"{n}_error.u2"))
     return m
+
+
+def _mass_lever(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalMassWithLever.hpp: a mass m at P2 on a lever of arms L_1
+    and L_2 whose other end is P1: with w = (L_1 + L_2)/L_1, P1 at -x/w, moving at -v/w, its force entering as
+    f1/w; its damped double integrator is m ẍ = f1/w - f2 - B ẋ. A Mass with n_lever = 1/w = L_1/(L_1 + L_2),
+    starting at -w times P1's start position and velocity, as Hopsan's integrator."""
+    from hydroservo.components import Mass
+
+    l1, l2 = par("L_1", 1.0), par("L_2", 1.0)
+    if l1 <= 0.0 or l2 < 0.0 or par("m", 1.0) <= 0.0:
+        par.problems.append(f"{par.where}: L_1 and m above 0 and L_2 at least 0 are supported")
+        return Mapped()
+    w = (l1 + l2) / l1
+    comp = Mass(
+        n,
+        m=par("m", 1.0),
+        B=par("B", 10.0),
+        incline=0.0,
+        n_lever=1.0 / w,
+        x0=-w * par.start("P1", "Position"),
+        v0=-w * par.start("P1", "Velocity"),
+    )
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
 def _mkc_load(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1579,7 +1625,9 @@ LIBRARY: dict[str, Builder] = {
     "MechanicFreeLengthWall": _free_length_wall,
     "MechanicRotationalInertiaWithCoulombFriction": _rotational_inertia_coulomb,
     "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling
+    "MechanicRotationalInertiaWithGearRatio": _rotational_inertia_gear,
     "MechanicMotor": _mechanic_motor,
+    "MechanicTranslationalMassWithLever": _mass_lever,
     "MechanicMkcload1D": _mkc_load,
     "MechanicM2load1D": _m2_load,
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),

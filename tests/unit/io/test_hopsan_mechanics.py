@@ -186,3 +186,35 @@ def test_hopsans_m2_load_is_a_mass_pair_starting_where_it_writes_its_ends(tmp_pa
     r = import_hopsan(_write(tmp_path, components, connections)).system.simulate(t_eval=[0.0, 0.2, 1.0])
     assert r["Pair.Pm3.Position"][1] == pytest.approx(-50.0 / 12.0 * 0.2**2 / 2, rel=1e-3)  # the stroke is -x3
     assert r["Pair.Pm3.Position"][2] == pytest.approx(-0.5, abs=1e-5)
+
+
+def test_hopsans_geared_inertia_and_mass_on_a_lever_move_their_first_ends_by_the_ratio(tmp_path: Path) -> None:
+    """MechanicRotationalInertiaWithGearRatio (J, B, gear ratio omega) as a RotationalInertia with n_gear: a torque
+    of 4 N m at P1 through omega = 2 turns it as J ω' = 2·4 - B ω, ω = 4 (1 - exp(-4 t)) for J 0.5, B 2, and P1 at
+    -2 ω. MechanicTranslationalMassWithLever (m, B, L_1, L_2) as a Mass with n_lever = L_1/(L_1 + L_2): 10 N at
+    P1 through arms of 1 and 3 m moves it as m ẍ = 10/4 - B ẋ, v = 0.5 (1 - exp(-5 t)) for m 1, B 5, and P1 at
+    -v/4."""
+    components = [
+        ("MechanicRotationalInertiaWithGearRatio", "J", {"J": ("0.5", "kgm^2"), "B#Value": ("2", "Nms/rad"),
+                                                         "omega#Value": ("2", "")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": ("4", "Nm")}),
+        ("MechanicTorqueTransformer", "T0", {"T#Value": ("0", "Nm")}),
+        ("MechanicTranslationalMassWithLever", "M", {"m#Value": ("1", "kg"), "B#Value": ("5", "Ns/m"),
+                                                     "L_1": ("1", "m"), "L_2": ("3", "m")}),
+        ("MechanicForceTransformer", "F", {"F#Value": ("10", "N")}),
+        ("MechanicForceTransformer", "F0", {"F#Value": ("0", "N")}),
+    ]
+    connections = [("T.P1", "J.P1"), ("T0.P1", "J.P2"), ("F.P1", "M.P1"), ("F0.P1", "M.P2")]
+    imp = import_hopsan(_write(tmp_path, components, connections))
+    assert imp.system["J"].values["n_gear"] == 2.0 and imp.system["M"].values["n_lever"] == 0.25
+    t = np.array([0.0, 0.1, 0.5, 1.0])
+    r = imp.system.simulate(t_eval=t, accuracy=1e-9, method="cvodes")
+    omega = 4.0 * (1.0 - np.exp(-4.0 * t))
+    np.testing.assert_allclose(r["J.P2.AngularVelocity"], omega, atol=1e-6)
+    np.testing.assert_allclose(r["J.P1.AngularVelocity"], -2.0 * omega, atol=1e-6)
+    v = 0.5 * (1.0 - np.exp(-5.0 * t))
+    np.testing.assert_allclose(r["M.P2.Velocity"], v, atol=1e-6)
+    np.testing.assert_allclose(r["M.P1.Velocity"], -v / 4.0, atol=1e-6)
+    components[0][2]["omega#Value"] = ("0", "")
+    with pytest.raises(ModelFileError, match="gear ratio omega = 0"):
+        import_hopsan(_write(tmp_path, components, connections))
