@@ -13,7 +13,7 @@ module                 components
 :mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
-                       AngularVelocitySource
+                       AngularVelocitySource, Vehicle
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
@@ -69,7 +69,13 @@ from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
 from hydroservo.components.pumps import Machine, Motor, Pump, VariablePump
-from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource, TorsionalSpring
+from hydroservo.components.rotational import (
+    AngularVelocitySource,
+    RotationalInertia,
+    TorqueSource,
+    TorsionalSpring,
+    Vehicle,
+)
 from hydroservo.components.signals import (
     Constant,
     DecayingStep,
@@ -133,6 +139,7 @@ __all__ = [
     "TorsionalSpring",
     "TorqueSource",
     "AngularVelocitySource",
+    "Vehicle",
     "Constant",
     "SoftStep",
     "FlowSource",

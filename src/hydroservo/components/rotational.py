@@ -17,11 +17,11 @@ from typing import Any
 from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
 from hydroservo.components.mechanics import ForceSource, VelocitySource
 from hydroservo.errors import ParameterError
-from hydroservo.laws.friction import stribeck
+from hydroservo.laws.friction import aerodynamic_drag, stribeck
 from hydroservo.laws.rigid_body import rigid_body_acceleration
 from hydroservo.laws.stops import end_stop_force
 
-__all__ = ["RotationalInertia", "TorsionalSpring", "TorqueSource", "AngularVelocitySource"]
+__all__ = ["RotationalInertia", "TorsionalSpring", "TorqueSource", "AngularVelocitySource", "Vehicle"]
 
 
 @register
@@ -189,3 +189,67 @@ class TorsionalSpring(Component):
         n = p["n_gear"]
         torque = p["k_rot"] * (u["x1"] / n + u["x2"] - p["e0_rot"])
         return {"F1": -torque / n, "F2": -torque, "F": torque}
+
+
+@register
+class Vehicle(Component):
+    r"""A vehicle on a level road driven at its wheels: its two rotational ports are the wheels' shaft.
+
+    .. math:: M\,\dot v = -\frac{T_1 + T_2}{r} - \tfrac{1}{2}\rho\,C_dA\,v|v| - F_r(v)
+
+    with :math:`T_1`, :math:`T_2` the torques at its ports ``P1`` and ``P2`` (outward), both turning at
+    :math:`-v/r` (a torque pressing on a port against that motion drives the vehicle forward), the aerodynamic
+    drag :func:`~hydroservo.laws.friction.aerodynamic_drag` and the rolling resistance :math:`F_r` Coulomb's
+    friction :math:`c_r M g` (:func:`~hydroservo.laws.friction.stribeck`, its sign smoothed over ``v_reg``: a
+    vehicle at rest stays there until the wheels' torque overcomes it). Hopsan's MechanicVehicle1D ([Hopsan2026]
+    Special/MechanicVehicle1D.hpp) is this law, its rolling resistance the force that would stop the vehicle
+    within a step, limited to :math:`c_r M g`: Coulomb's law as the step vanishes.
+    """
+
+    PARAMETERS = {
+        "M": Param(1000.0, "kg", "vehicle mass", min=0.0, min_inclusive=False),
+        "r_wheel": Param(1.0, "m", "wheel radius", min=0.0, min_inclusive=False),
+        "c_r": Param(0.02, "", "rolling resistance coefficient (force per weight)", min=0.0),
+        "CdA": Param(0.5, "m^2", "drag coefficient times frontal area", min=0.0),
+        "rho_air": Param(1.25, "kg/m^3", "density of the air", min=0.0),
+        "g": Param(9.81, "m/s^2", "acceleration of gravity", min=0.0),
+        "v_reg": Param(1e-4, "m/s", "velocity over which the friction sign is smoothed", min=0.0, min_inclusive=False),
+        "x0": Param(0.0, "m", "initial position"),
+        "v0": Param(0.0, "m/s", "initial velocity"),
+    }
+    STATES = {
+        "x": State("m", "position of the vehicle", initial="x0", nominal=10.0),
+        "v": State("m/s", "speed of the vehicle", initial="v0", nominal=1.0),
+    }
+    INPUTS = {
+        "T1": Port("N*m", "torque on port P1, outward", default=0.0),
+        "T2": Port("N*m", "torque on port P2, outward", default=0.0),
+    }
+    MECHANICAL = {
+        "P1": Mechanical("theta", "omega", "T1", "the wheels' shaft, one end (outward)", kind="rotational"),
+        "P2": Mechanical("theta", "omega", "T2", "the wheels' shaft, other end (outward)", kind="rotational"),
+    }
+    OUTPUTS = {
+        "x": Output("m", "position"),
+        "v": Output("m/s", "speed"),
+        "theta": Output("rad", "angle of the wheels' shaft at either port, outward: -x/r_wheel"),
+        "omega": Output("rad/s", "angular velocity of the shaft, outward: -v/r_wheel"),
+        "F_d": Output("N", "aerodynamic drag"),
+        "F_r": Output("N", "rolling resistance"),
+    }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        v = x["v"]
+        return {
+            "x": x["x"], "v": v, "theta": -x["x"] / p["r_wheel"], "omega": -v / p["r_wheel"],
+            "F_d": aerodynamic_drag(v, p["rho_air"], p["CdA"]),
+            "F_r": stribeck(v, 0.0, p["c_r"] * p["M"] * p["g"], 0.0, 1.0, p["v_reg"]),
+        }
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        drive = -(u["T1"] + u["T2"]) / p["r_wheel"]
+        return {"x": x["v"], "v": rigid_body_acceleration(drive, x["x"], p["M"], friction=y["F_d"] + y["F_r"])}
