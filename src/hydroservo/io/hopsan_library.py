@@ -1070,6 +1070,32 @@ def _rotational_inertia_gear(hc: HopsanComponent, n: str, par: _Params) -> Mappe
     return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
+def _vehicle(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Special/MechanicVehicle1D.hpp: a vehicle of mass Mc on wheels of radius rwheel, both ports its
+    wheels' shaft turning at -vc/rwheel. Its generated equations, solved by Newton steps each time step, are the
+    trapezoidal rule of Mc v̇c = (t1 + t2)/rwheel - fd - fr (Hopsan's torques press on the component), the drag
+    fd = CdA rho vc|vc|/2 and the rolling resistance fr = limit(Mc vc/Ts, -fc, fc), fc = 9.82 cfr Mc: Coulomb's
+    law as the step vanishes. A Vehicle (g = 9.82 m/s², Hopsan's; the rolling resistance regularised over
+    v_reg = 1e-5 m/s), starting at the start values of its outputs xc and vc; its outputs vc, xc, fd, fr. Hopsan
+    integrates its ports' angle as +vc/rwheel while it writes their speed as -vc/rwheel; here the angle is the
+    speed's integral, -xc/rwheel."""
+    from hydroservo.components import Vehicle
+
+    mass, radius = par("Mc", 1000.0), par("rwheel", 1.0)
+    if mass <= 0.0 or radius <= 0.0 or min(par("cfr", 0.02), par("CdA", 0.5), par("rho", 1.25)) < 0.0:
+        par.problems.append(f"{par.where}: Mc and rwheel above 0, cfr, CdA and rho at least 0 are supported")
+        return Mapped()
+    comp = Vehicle(
+        n, M=mass, r_wheel=radius, c_r=par("cfr", 0.02), CdA=par("CdA", 0.5), rho_air=par("rho", 1.25), g=9.82,
+        v_reg=1e-5, x0=par("xc", 0.0), v0=par("vc", 0.0),
+    )
+    return Mapped(
+        [comp],
+        power={"Pmr1": f"{n}.P1", "Pmr2": f"{n}.P2"},
+        outputs={"vc": f"{n}.v", "xc": f"{n}.x", "fd": f"{n}.F_d", "fr": f"{n}.F_r"},
+    )
+
+
 def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Mechanic/Rotational/MechanicMotor.hpp: an ideal motor under speed control, a C component of no
     impedance whose torque is a PID controller's output on its speed error, T = K_p e + K_i ∫e + K_d ė with
@@ -1627,6 +1653,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling
     "MechanicRotationalInertiaWithGearRatio": _rotational_inertia_gear,
     "MechanicMotor": _mechanic_motor,
+    "MechanicVehicle1D": _vehicle,
     "MechanicTranslationalMassWithLever": _mass_lever,
     "MechanicMkcload1D": _mkc_load,
     "MechanicM2load1D": _m2_load,

@@ -218,3 +218,25 @@ def test_hopsans_geared_inertia_and_mass_on_a_lever_move_their_first_ends_by_the
     components[0][2]["omega#Value"] = ("0", "")
     with pytest.raises(ModelFileError, match="gear ratio omega = 0"):
         import_hopsan(_write(tmp_path, components, connections))
+
+
+def test_hopsans_vehicle_is_driven_by_the_torque_pressing_on_its_wheels(tmp_path: Path) -> None:
+    """MechanicVehicle1D (Mc, cfr, CdA, rwheel, rho; outputs vc, xc, fd, fr) as a Vehicle with Hopsan's g of
+    9.82 m/s²: 300 N m on wheels of 1 m drives 1000 kg against fr = 0.02·9.82·1000 N, v̇c = (300 - 196.4)/1000 m/s²
+    without drag; both ports turn at -vc/rwheel, as Hopsan writes them."""
+    components = [
+        ("MechanicVehicle1D", "Car", {"Mc#Value": ("1000", "kg"), "cfr#Value": ("0.02", "N/N"), "CdA#Value": ("0", "m2"),
+                                      "rwheel#Value": ("1", "m"), "rho#Value": ("1.25", "kg/m3")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": ("300", "Nm")}),
+        ("MechanicTorqueTransformer", "T0", {"T#Value": ("0", "Nm")}),
+    ]
+    imp = import_hopsan(_write(tmp_path, components, [("T.P1", "Car.Pmr1"), ("T0.P1", "Car.Pmr2")]))
+    car = imp.system["Car"]
+    assert (car.values["M"], car.values["c_r"], car.values["g"], car.values["r_wheel"]) == (1000.0, 0.02, 9.82, 1.0)
+    t = np.array([0.0, 1.0, 2.0])
+    r = imp.system.simulate(t_eval=t, accuracy=1e-9, method="cvodes")
+    a = (300.0 - 0.02 * 9.82 * 1000.0) / 1000.0
+    # within about v_reg (1e-5 m/s), over which the rolling resistance sets in as the vehicle starts
+    np.testing.assert_allclose(r["Car.vc.Value"], a * t, atol=2e-5)
+    np.testing.assert_allclose(r["Car.Pmr2.AngularVelocity"], -a * t, atol=2e-5)
+    assert r["Car.fr.Value"][-1] == pytest.approx(196.4)
