@@ -13,7 +13,7 @@ module                 components
 :mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
-                       AngularVelocitySource, Vehicle
+                       AngularVelocitySource, Vehicle, Crank
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
@@ -71,6 +71,7 @@ from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, 
 from hydroservo.components.pumps import Machine, Motor, Pump, VariablePump
 from hydroservo.components.rotational import (
     AngularVelocitySource,
+    Crank,
     RotationalInertia,
     TorqueSource,
     TorsionalSpring,
@@ -140,6 +141,7 @@ __all__ = [
     "TorqueSource",
     "AngularVelocitySource",
     "Vehicle",
+    "Crank",
     "Constant",
     "SoftStep",
     "FlowSource",

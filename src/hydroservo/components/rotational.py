@@ -14,6 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from hydroservo import backend as bk
 from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
 from hydroservo.components.mechanics import ForceSource, VelocitySource
 from hydroservo.errors import ParameterError
@@ -21,7 +22,7 @@ from hydroservo.laws.friction import aerodynamic_drag, stribeck
 from hydroservo.laws.rigid_body import rigid_body_acceleration
 from hydroservo.laws.stops import end_stop_force
 
-__all__ = ["RotationalInertia", "TorsionalSpring", "TorqueSource", "AngularVelocitySource", "Vehicle"]
+__all__ = ["RotationalInertia", "TorsionalSpring", "TorqueSource", "AngularVelocitySource", "Vehicle", "Crank"]
 
 
 @register
@@ -253,3 +254,70 @@ class Vehicle(Component):
     ) -> dict[str, Any]:
         drive = -(u["T1"] + u["T2"]) / p["r_wheel"]
         return {"x": x["v"], "v": rigid_body_acceleration(drive, x["x"], p["M"], friction=y["F_d"] + y["F_r"])}
+
+
+@register
+class Crank(Component):
+    r"""A crank: a link of length ``r_link`` on a rotating inertia, whose end moves a translational port along a line.
+
+    .. math:: J\,\ddot\theta = T - (F_0 + F_1)\,r\cos\theta - B_{rot}\,\dot\theta + T_{stop},
+              \qquad x = x_{link} - r\sin\theta
+
+    The rotational port ``P2`` is the inertia (:math:`\theta`, outward), the translational ports ``P0`` and ``P1``
+    the link's end, both at :math:`x` moving at :math:`-r\cos\theta\,\dot\theta` (outward): the forces there
+    turn the inertia through the arm :math:`r\cos\theta` (:func:`~hydroservo.laws.rigid_body.rigid_body_acceleration`
+    on the angle). Stiff end stops (:func:`~hydroservo.laws.stops.end_stop_force`) keep the angle within
+    ``theta_min``, ``theta_max``. Hopsan's MechanicJLink (one translational port, Pm1) and MechanicJLink2 (two,
+    Pm0 and Pm1) ([Hopsan2026] Mechanic/Rotational/MechanicJLink.hpp, MechanicJLink2.hpp) are this law.
+    """
+
+    PARAMETERS = {
+        "J": Param(1.0, "kg*m^2", "moment of inertia", min=0.0, min_inclusive=False),
+        "B_rot": Param(0.0, "N*m*s/rad", "rotational viscous friction coefficient", min=0.0),
+        "r_link": Param(0.1, "m", "link length (from the axis to the translational port)", min=0.0,
+                        min_inclusive=False),
+        "x_link": Param(0.0, "m", "position of the translational ports at zero angle"),
+        "theta_min": Param(-1e30, "rad", "end stop, low side"),
+        "theta_max": Param(1e30, "rad", "end stop, high side"),
+        "k_stop_rot": Param(0.0, "N*m/rad", "end-stop stiffness (0 with c_stop_rot 0: no end stops)", min=0.0),
+        "c_stop_rot": Param(0.0, "N*m*s/rad", "end-stop damping", min=0.0),
+        "theta0": Param(0.0, "rad", "initial angle"),
+        "omega0": Param(0.0, "rad/s", "initial angular velocity"),
+    }
+    STATES = {
+        "theta": State("rad", "angle", initial="theta0", nominal=1.0),
+        "omega": State("rad/s", "angular velocity", initial="omega0", nominal=1.0),
+    }
+    INPUTS = {
+        "T": Port("N*m", "torque on the rotational port P2, outward", default=0.0),
+        "F0": Port("N", "force on the translational port P0, outward", default=0.0),
+        "F1": Port("N", "force on the translational port P1, outward", default=0.0),
+    }
+    MECHANICAL = {
+        "P0": Mechanical("x", "v", "F0", "the link's end (outward)"),
+        "P1": Mechanical("x", "v", "F1", "the link's end (outward)"),
+        "P2": Mechanical("theta", "omega", "T", "the inertia (outward)", kind="rotational"),
+    }
+    OUTPUTS = {
+        "theta": Output("rad", "angle"),
+        "omega": Output("rad/s", "angular velocity"),
+        "x": Output("m", "position of the link's end, outward"),
+        "v": Output("m/s", "velocity of the link's end, outward"),
+    }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        theta, omega = x["theta"], x["omega"]
+        return {
+            "theta": theta, "omega": omega,
+            "x": p["x_link"] - p["r_link"] * bk.sin(theta), "v": -p["r_link"] * bk.cos(theta) * omega,
+        }
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        theta, omega = x["theta"], x["omega"]
+        load = u["T"] - (u["F0"] + u["F1"]) * p["r_link"] * bk.cos(theta)
+        load = load + end_stop_force(theta, omega, p["theta_min"], p["theta_max"], p["k_stop_rot"], p["c_stop_rot"])
+        return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], friction=p["B_rot"] * omega)}
