@@ -1096,6 +1096,35 @@ def _vehicle(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _jlink(two: bool) -> Builder:
+    """[Hopsan2026] Mechanic/Rotational/MechanicJLink.hpp and MechanicJLink2.hpp: an inertia JL at Pmr2 turning a
+    link whose end, the translational port Pm1 (and Pm0 at the same place, JLink2), is at x0 - link sin θ. Their
+    generated equations, solved by Newton steps each time step, are the trapezoidal rule of
+    JL θ'' = (f0 + f1) link cos θ - t2 - BL θ' (Hopsan's forces and torque press on the component), θ clamped to
+    [thetamin, thetamax] with its speed zeroed (inelastic stops): a Crank with stiff stops. JLink's theta0 is
+    declared but unused by its equations, and so here; the angle starts at Pmr2's start angle and speed, the
+    link's end where it writes it (`WRITTEN_STARTS`)."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Crank
+
+        link, t_min, t_max = par("link", 0.1), par("thetamin", -1.05), par("thetamax", 1.05)
+        if link <= 0.0 or par("JL", 1.0) <= 0.0 or t_max < t_min:
+            par.problems.append(f"{par.where}: link and JL above 0 and thetamin <= thetamax are supported")
+            return Mapped()
+        comp = Crank(
+            n, J=par("JL", 1.0), B_rot=par("BL", 1.0), r_link=link, x_link=par("x0", -0.1), theta_min=t_min,
+            theta_max=t_max, k_stop_rot=1e9, c_stop_rot=1e6,
+            theta0=min(max(par.start("Pmr2", "Angle"), t_min), t_max), omega0=par.start("Pmr2", "AngularVelocity"),
+        )
+        power = {"Pm1": f"{n}.P1", "Pmr2": f"{n}.P2"}
+        if two:
+            power["Pm0"] = f"{n}.P0"
+        return Mapped([comp], power=power)
+
+    return build
+
+
 def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Mechanic/Rotational/MechanicMotor.hpp: an ideal motor under speed control, a C component of no
     impedance whose torque is a PID controller's output on its speed error, T = K_p e + K_i ∫e + K_d ė with
@@ -1654,6 +1683,8 @@ LIBRARY: dict[str, Builder] = {
     "MechanicRotationalInertiaWithGearRatio": _rotational_inertia_gear,
     "MechanicMotor": _mechanic_motor,
     "MechanicVehicle1D": _vehicle,
+    "MechanicJLink": _jlink(two=False),
+    "MechanicJLink2": _jlink(two=True),
     "MechanicTranslationalMassWithLever": _mass_lever,
     "MechanicMkcload1D": _mkc_load,
     "MechanicM2load1D": _m2_load,
@@ -1995,7 +2026,8 @@ def _node_starts(
     for hc in model.components:  # Q components that write their own start positions (a node's values shared)
         written = WRITTEN_STARTS.get(hc.typename)
         if written is not None:
-            for port, values in written(hc, {p: out.get((hc.full_name, p), {}) for p in ("Pm1", "Pm2", "Pm3")}).items():
+            own = {port: values for (comp, port), values in out.items() if comp == hc.full_name}
+            for port, values in written(hc, own).items():
                 out.setdefault((hc.full_name, port), {}).update(values)
     return out
 
@@ -2011,7 +2043,7 @@ def _m2_load_starts(hc: HopsanComponent, starts: dict[str, dict[str, float]]) ->
     m1, m2 = value("m1", 1000.0), value("m2", 1000.0)
     if m1 + m2 == 0.0:
         return {}
-    x3, v3 = starts["Pm3"].get("Position", 0.0), starts["Pm3"].get("Velocity", 0.0)
+    x3, v3 = starts.get("Pm3", {}).get("Position", 0.0), starts.get("Pm3", {}).get("Velocity", 0.0)
     xt, vt = value("xt", 0.0), value("vt", 0.0)
     return {
         "Pm1": {"Position": -(xt + m2 * x3 / (m1 + m2)), "Velocity": -(vt + m2 * v3 / (m1 + m2))},
@@ -2021,8 +2053,23 @@ def _m2_load_starts(hc: HopsanComponent, starts: dict[str, dict[str, float]]) ->
 
 #: Hopsan's Q components that write start values of their own to their nodes at initialisation (type -> the
 #: values by port, from the component and the start values of its nodes): they override the C components' there
+def _jlink_starts(hc: HopsanComponent, starts: dict[str, dict[str, float]]) -> dict[str, dict[str, float]]:
+    """MechanicJLink's and MechanicJLink2's start positions and velocities of their translational ports, which they
+    write from the start angle and speed of Pmr2's node: x0 - link sin θ, -link cos θ ω."""
+    def value(name: str, default: float) -> float:
+        par = hc.parameters.get(f"{name}#Value") or hc.parameters.get(name)
+        return par.value if par is not None and par.value is not None else default
+
+    theta, omega = starts.get("Pmr2", {}).get("Angle", 0.0), starts.get("Pmr2", {}).get("AngularVelocity", 0.0)
+    link = value("link", 0.1)
+    end = {"Position": value("x0", -0.1) - link * math.sin(theta), "Velocity": -link * math.cos(theta) * omega}
+    return {port: dict(end) for port in ("Pm0", "Pm1") if port in starts}
+
+
 WRITTEN_STARTS: dict[str, Callable[[HopsanComponent, dict[str, dict[str, float]]], dict[str, dict[str, float]]]] = {
     "MechanicM2load1D": _m2_load_starts,
+    "MechanicJLink": _jlink_starts,
+    "MechanicJLink2": _jlink_starts,
 }
 
 

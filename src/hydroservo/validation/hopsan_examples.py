@@ -222,6 +222,11 @@ MODELS: dict[str, Spec] = {
             ),
         ),
     ),
+    "mechanic-jlink-test": Spec(
+        "Component Test/MechanicComponent Test/MechanicJlinkTest.hmf",
+        "two links (J-links) on damped inertias pulled through stiff springs by velocity sources given a ramp's "
+        "integral, one with a second translational port under a force source",
+    ),
     "mechanic-mkcload1d-test": Spec(
         "Component Test/MechanicComponent Test/MechanicMkcload1DTest.hmf",
         "a mass with dry friction, stroke limits and a spring, pulled back and forth through a stiff spring by a "

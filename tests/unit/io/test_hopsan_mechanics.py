@@ -240,3 +240,30 @@ def test_hopsans_vehicle_is_driven_by_the_torque_pressing_on_its_wheels(tmp_path
     np.testing.assert_allclose(r["Car.vc.Value"], a * t, atol=2e-5)
     np.testing.assert_allclose(r["Car.Pmr2.AngularVelocity"], -a * t, atol=2e-5)
     assert r["Car.fr.Value"][-1] == pytest.approx(196.4)
+
+
+def test_hopsans_j_links_are_cranks_whose_link_end_starts_where_they_write_it(tmp_path: Path) -> None:
+    """MechanicJLink (JL, BL, link, x0, thetamin, thetamax) and MechanicJLink2 (a second translational port Pm0) as
+    Cranks with stiff stops; their link's end starts at x0 - link sin θ, where a spring joined there, declared at
+    -0.1 m, is relaxed, as Hopsan's (which integrates velocities): untouched, it stays unloaded."""
+    components = [
+        ("MechanicJLink", "L1", {"JL#Value": ("1", "kgm2"), "BL#Value": ("1", "Ns/rad"), "link#Value": ("0.1", ""),
+                                 "x0#Value": ("0", ""), "thetamin#Value": ("-1.2", "rad"), "thetamax#Value": ("1.2", "rad")}),
+        ("MechanicJLink2", "L2", {"JL#Value": ("1", "kgm2"), "BL#Value": ("1", "Ns/rad"), "link#Value": ("0.1", ""),
+                                  "x0#Value": ("0.1", "")}),
+        ("MechanicTranslationalSpring", "K", {"k#Value": ("1e5", "N/m"), "P2#Position": ("-0.1", "m")}),
+        ("MechanicFixedPosition", "G", {}),
+        ("MechanicTorqueTransformer", "T1", {"T#Value": ("0", "Nm")}),
+        ("MechanicTorqueTransformer", "T2", {"T#Value": ("0", "Nm")}),
+        ("MechanicForceTransformer", "F0", {"F#Value": ("0", "N")}),
+        ("MechanicForceTransformer", "F1", {"F#Value": ("0", "N")}),
+    ]
+    connections = [("G.Pm1", "K.P1"), ("K.P2", "L1.Pm1"), ("T1.P1", "L1.Pmr2"), ("T2.P1", "L2.Pmr2"),
+                   ("F0.P1", "L2.Pm0"), ("F1.P1", "L2.Pm1")]
+    imp = import_hopsan(_write(tmp_path, components, connections))
+    link = imp.system["L1"].values
+    assert (link["J"], link["r_link"], link["x_link"], link["theta_min"], link["theta_max"]) == (1.0, 0.1, 0.0, -1.2, 1.2)
+    r = imp.system.simulate(t_eval=[0.0, 0.5], accuracy=1e-8, method="cvodes")
+    np.testing.assert_allclose(r["K.P2.Force"], 0.0, atol=1e-6)
+    np.testing.assert_allclose(r["L2.Pm0.Position"], 0.1)
+    np.testing.assert_allclose(r["L2.Pm1.Position"], 0.1)
