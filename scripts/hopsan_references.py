@@ -36,14 +36,20 @@ HERE = Path(__file__).resolve().parent
 OUT = HERE.parent / "src" / "hydroservo" / "data" / "reference" / "hopsan"
 
 
+#: component types Hopsan's GUI renames when it loads an older model (HopsanGUI/Utilities/XMLUtilities.cpp,
+#: updateHmfComponentProperties), which hopsancli does not: such a model is run as the GUI would load it
+GUI_RENAMES = {"MechanicRotationalInertiaWithCoulumbFriction": "MechanicRotationalInertiaWithCoulombFriction"}
+
+
 def run_hopsan(
     cli: Path, model: Path, h: float, t0: float, t1: float, samples: int, renamed: tuple[tuple[str, str], ...] = ()
 ) -> dict[str, np.ndarray]:
     """Hopsan's logged variables (``Comp#Port#Var`` -> trace) of one run at step ``h``; with ``renamed``, of a
     copy of the model with those components renamed (old, new), beside links to the files of its folder (a
-    lookup table's CSV), its variables named back."""
+    lookup table's CSV), its variables named back; a model with types of :data:`GUI_RENAMES`, of a copy with
+    them renamed as Hopsan's GUI does."""
     with tempfile.TemporaryDirectory() as tmp:
-        if renamed:
+        if renamed or any(f'typename="{old}"' in model.read_text(encoding="utf-8") for old in GUI_RENAMES):
             model = _renamed_copy(model, Path(tmp), renamed)
         out = Path(tmp) / "out.csv"
         cmd = [str(cli), "-m", str(model), "-s", f"{t0!r},{h!r},{t1!r}", "-l", str(samples),
@@ -60,12 +66,15 @@ def run_hopsan(
 
 
 def _renamed_copy(model: Path, folder: Path, renamed: tuple[tuple[str, str], ...]) -> Path:
-    """A copy of ``model`` in ``folder`` with components renamed (their names and the connections' ends), and
-    links to the other files of the model's folder, which the model may name relative to itself."""
+    """A copy of ``model`` in ``folder`` with components renamed (their names and the connections' ends) and the
+    types of :data:`GUI_RENAMES` renamed, and links to the other files of the model's folder, which the model may
+    name relative to itself."""
     for other in model.parent.iterdir():
         if other.is_file() and other != model:
             (folder / other.name).symlink_to(other)
     text = model.read_text(encoding="utf-8")
+    for old_type, new_type in GUI_RENAMES.items():
+        text = text.replace(f'typename="{old_type}"', f'typename="{new_type}"')
     for old, new in renamed:
         for attribute in ("name", "startcomponent", "endcomponent"):
             text = re.sub(rf'(\s{attribute}=)"{re.escape(old)}"', rf'\1"{new}"', text)

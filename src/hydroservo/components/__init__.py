@@ -10,10 +10,10 @@ module                 components
 :mod:`.accumulator`    Accumulator
 :mod:`.pumps`          Pump, VariablePump, Motor, Machine
 :mod:`.cylinder`       Cylinder
-:mod:`.mass`           Mass
-:mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
+:mod:`.mass`           Mass, MassPair
+:mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
-                       AngularVelocitySource
+                       AngularVelocitySource, Vehicle, Crank
 :mod:`.valves`         FourWayValve, ThreeWayValve, ThreeWayPressureValve, TwoWayValve, PseudoSectionValve,
                        ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
@@ -70,10 +70,17 @@ from hydroservo.components.control import (
 from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
-from hydroservo.components.mass import Mass
-from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
+from hydroservo.components.mass import Mass, MassPair
+from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
 from hydroservo.components.pumps import Machine, Motor, Pump, VariablePump
-from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource, TorsionalSpring
+from hydroservo.components.rotational import (
+    AngularVelocitySource,
+    Crank,
+    RotationalInertia,
+    TorqueSource,
+    TorsionalSpring,
+    Vehicle,
+)
 from hydroservo.components.signals import (
     Constant,
     DecayingStep,
@@ -129,15 +136,19 @@ __all__ = [
     "RenamedWarning",
     "Cylinder",
     "Mass",
+    "MassPair",
     "Spring",
     "Damper",
     "FixedPosition",
+    "Wall",
     "ForceSource",
     "VelocitySource",
     "RotationalInertia",
     "TorsionalSpring",
     "TorqueSource",
     "AngularVelocitySource",
+    "Vehicle",
+    "Crank",
     "Constant",
     "SoftStep",
     "FlowSource",

@@ -12,9 +12,20 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
-from hydroservo.components.base import Component, Mechanical, Option, Output, Param, Port, State, register
+from hydroservo.components.base import (
+    Algebraic,
+    Component,
+    Mechanical,
+    Option,
+    Output,
+    Param,
+    Port,
+    State,
+    register,
+)
+from hydroservo.laws.stops import contact_residual
 
-__all__ = ["Spring", "Damper", "FixedPosition", "ForceSource", "VelocitySource"]
+__all__ = ["Spring", "Damper", "FixedPosition", "Wall", "ForceSource", "VelocitySource"]
 
 
 def _ends(what: str) -> dict[str, Mechanical]:
@@ -98,6 +109,82 @@ class FixedPosition(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"x": p["x0"] + 0.0 * t, "v": 0.0 * t}
+
+
+#: Scale of the wall's contact force in its residual [m/N] (any value > 0 has the same solution).
+_CONTACT_COMPLIANCE = 1e-6
+
+
+@register
+class Wall(Component):
+    r"""A wall and the free end that meets it: the end of whatever is joined to port ``P`` is free (it takes no
+    force) while it is away from the wall, and is held at the wall while pressed against it; it leaves the wall
+    as soon as it is pulled away (a unilateral contact).
+
+    The contact's conditions (:func:`~hydroservo.laws.stops.contact_residual`):
+
+    .. math:: x \ge x_{stop},\quad F_w = B\,v - F \ge 0,\quad (x - x_{stop})\,F_w = 0
+
+    with ``x``, ``v`` the end's outward position and velocity (outward: away from the wall), ``F`` the force of
+    what is joined to it (outward) and ``F_w`` the wall's push. Away from the wall the end is massless and
+    only its damping ``B`` against the surroundings holds it: :math:`B v = F` (with ``B`` = 0, the force on it
+    is zero: a spring joined there is relaxed and moves with its other end). Hopsan's MechanicFreeLengthWall
+    ([Hopsan2026] Mechanic/Linear/MechanicFreeLengthWall.hpp) is this law: its end, a first-order filter of the
+    node's wave variable through B + Z_c, is clamped at the stop with zero velocity while the wave variable
+    presses it there, and released when it would move out.
+
+    The end's position is an algebraic unknown (solved with the forces of the node each time the model is
+    evaluated: :mod:`hydroservo.system.implicit`); its velocity, which a free massless end has only as the
+    rate of that position, is the rate of the state ``x_f`` that follows the position with the time constant
+    ``tau`` (a microsecond): :math:`v = (x - x_f)/\tau`. A force port that reads the velocity (a damper)
+    therefore sees the end's motion exactly, the position being ``tau`` v ahead of ``x_f``.
+    """
+
+    PARAMETERS = {
+        "B": Param(0.0, "N*s/m", "damping of the free end against its surroundings, away from the wall", min=0.0),
+        "x_stop": Param(0.0, "m", "position of the wall, along the port's outward direction"),
+        "x0": Param(0.0, "m", "initial position of the end (at least x_stop)"),
+        "tau": Param(1e-6, "s", "time constant of the end's velocity (the rate of its position)", min=0.0,
+                     min_inclusive=False),
+    }
+    STATES = {"x_f": State("m", "the end's position, followed with the time constant tau", initial="x0", nominal=0.1)}
+    ALGEBRAIC = {"x": Algebraic("m", "position of the end, outward (away from the wall)", nominal=0.1)}
+    INPUTS = {"F": Port("N", "force on the end, outward (pulling it away from the wall)", default=0.0)}
+    MECHANICAL = {"P": Mechanical("x", "v", "F", "the free end (outward: away from the wall)")}
+    OUTPUTS = {
+        "x": Output("m", "position of the end, outward"),
+        "v": Output("m/s", "velocity of the end, outward"),
+    }
+
+    @staticmethod
+    def _push(x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        """The wall's push on the end, B v - F (the force it takes to hold the end where it is)."""
+        return p["B"] * (x["x"] - x["x_f"]) / p["tau"] - u["F"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        # the outputs read no input: the force of the node enters through the residual (no loop through it)
+        return {"x": x["x"], "v": (x["x"] - x["x_f"]) / p["tau"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"x_f": y["v"]}
+
+    def residual_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"x": contact_residual(x["x"] - p["x_stop"], self._push(x, u, p), _CONTACT_COMPLIANCE)}
+
+    def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        return {"x": x["x_f"]}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        """The end meeting or leaving the wall (where the residual's two branches cross)."""
+        return {"contact": (x["x"] - p["x_stop"] - _CONTACT_COMPLIANCE * self._push(x, u, p), 1e-3)}
 
 
 @register

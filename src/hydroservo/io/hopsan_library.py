@@ -151,7 +151,7 @@ C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
-    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC",
+    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -1466,6 +1466,264 @@ def _angular_velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mappe
     return Mapped([comp], power={"out": f"{n}.P"}, inputs={"omega": f"{n}.u"})
 
 
+def _free_length_wall(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicFreeLengthWall.hpp: a Q component whose end, the filter
+    x = -c/((B + Z_c) s) of the node's wave variable, is clamped at stop_pos with zero velocity while the wave
+    variable presses it there (and writes the force c), and is otherwise free (it writes the force 0). As the
+    step vanishes Z_c vanishes and the filter is B ẋ = F, the end held by the damping B alone: a unilateral
+    contact of a massless end, a Wall (B, x_stop = stop_pos) starting at its port's start position (clamped to
+    the stop, as Hopsan's first step does). With B > 0 the free end's force is B v where Hopsan logs 0 (its
+    filter moves the end as a damper would, but it writes no force). m_e is the equivalent mass Hopsan writes
+    to the node for its neighbours' numerics: unused, as in hydroservo's laws."""
+    from hydroservo.components import Wall
+
+    stop, b = par("stop_pos", 0.0), par("B", 0.001)
+    if b < 0.0:
+        par.problems.append(f"{par.where}: B = {b:g} Ns/m; a damping of at least 0 is supported")
+        return Mapped()
+    comp = Wall(n, B=b, x_stop=stop, x0=max(par.start("Pm1", "Position"), stop))
+    return Mapped([comp], power={"Pm1": f"{n}.P"})
+
+
+def _rotational_inertia_coulomb(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaWithCoulombFriction.hpp: the translational mass
+    with Coulomb friction's law (its DoubleIntegratorWithDampingAndCoulombFriction) on an angle: stuck while the
+    torque on it stays below t_s, sliding against t_k and B ω once it turns, stopped whenever its speed would
+    change sign. As for MechanicTranslationalMassWithCoulombFriction (:func:`_mass_coulomb`), the limit of the
+    Stribeck law as its velocity scales vanish: a RotationalInertia with T_c0 = t_k, T_s0 = t_s - t_k,
+    omega_reg = 1e-5 rad/s and omega_s = 1e-3 rad/s. A static friction below the kinetic one (RotationalInertia-
+    WithCoulombFrictionTest's t_s = 10, t_k = 50 Nm) acts as the kinetic one: Hopsan's integrator breaks away
+    when the torque reaches t_s, but stops again on its next step, its speed about to change sign, unless the
+    torque exceeds t_k; so T_s0 = max(t_s - t_k, 0). Hopsan's integrator starts at P2's start angle and speed;
+    its inelastic stops a_min, a_max as stiff ones. Older files name the type ...WithCoulumbFriction, which
+    Hopsan's GUI renames when it loads them (HopsanGUI/Utilities/XMLUtilities.cpp); both map here."""
+    from hydroservo.components import RotationalInertia
+
+    t_s, t_k = par("t_s", 50.0), par("t_k", 45.0)
+    if t_s < 0.0 or t_k < 0.0:
+        par.problems.append(f"{par.where}: t_s = {t_s:g} Nm, t_k = {t_k:g} Nm: a negative friction is not supported")
+        return Mapped()
+    comp = RotationalInertia(
+        n,
+        J=par("J", 1.0),
+        B_rot=par("B", 10.0),
+        T_c0=t_k,
+        T_s0=max(t_s - t_k, 0.0),
+        omega_reg=1e-5,
+        omega_s=1e-3,
+        theta0=par.start("P2", "Angle"),
+        omega0=par.start("P2", "AngularVelocity"),
+    )
+    a_min, a_max = par("a_min", -1e300), par("a_max", 1e300)
+    if abs(a_min) < 1e299 or abs(a_max) < 1e299:
+        comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _rotational_inertia_gear(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaWithGearRatio.hpp: an inertia J behind an ideal
+    gear of ratio omega at P1, its filters 1/(J s² + B s) and 1/(J s + B) of omega T1 - T2 (P1 at -omega θ, turning
+    at -omega ω): J θ'' = omega T1 - T2 - B θ', a RotationalInertia with n_gear = omega, starting at P2's start
+    angle and speed, as Hopsan's filters."""
+    from hydroservo.components import RotationalInertia
+
+    ratio = par("omega", 1.0)
+    if ratio == 0.0:
+        par.problems.append(f"{par.where}: gear ratio omega = 0 is not a gear")
+        return Mapped()
+    comp = RotationalInertia(
+        n,
+        J=par("J", 1.0),
+        B_rot=par("B", 10.0),
+        n_gear=ratio,
+        theta0=par.start("P2", "Angle"),
+        omega0=par.start("P2", "AngularVelocity"),
+    )
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _vehicle(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Special/MechanicVehicle1D.hpp: a vehicle of mass Mc on wheels of radius rwheel, both ports its
+    wheels' shaft turning at -vc/rwheel. Its generated equations, solved by Newton steps each time step, are the
+    trapezoidal rule of Mc v̇c = (t1 + t2)/rwheel - fd - fr (Hopsan's torques press on the component), the drag
+    fd = CdA rho vc|vc|/2 and the rolling resistance fr = limit(Mc vc/Ts, -fc, fc), fc = 9.82 cfr Mc: Coulomb's
+    law as the step vanishes. A Vehicle (g = 9.82 m/s², Hopsan's; the rolling resistance regularised over
+    v_reg = 1e-5 m/s), starting at the start values of its outputs xc and vc; its outputs vc, xc, fd, fr. Hopsan
+    integrates its ports' angle as +vc/rwheel while it writes their speed as -vc/rwheel; here the angle is the
+    speed's integral, -xc/rwheel."""
+    from hydroservo.components import Vehicle
+
+    mass, radius = par("Mc", 1000.0), par("rwheel", 1.0)
+    if mass <= 0.0 or radius <= 0.0 or min(par("cfr", 0.02), par("CdA", 0.5), par("rho", 1.25)) < 0.0:
+        par.problems.append(f"{par.where}: Mc and rwheel above 0, cfr, CdA and rho at least 0 are supported")
+        return Mapped()
+    comp = Vehicle(
+        n, M=mass, r_wheel=radius, c_r=par("cfr", 0.02), CdA=par("CdA", 0.5), rho_air=par("rho", 1.25), g=9.82,
+        v_reg=1e-5, x0=par("xc", 0.0), v0=par("vc", 0.0),
+    )
+    return Mapped(
+        [comp],
+        power={"Pmr1": f"{n}.P1", "Pmr2": f"{n}.P2"},
+        outputs={"vc": f"{n}.v", "xc": f"{n}.x", "fd": f"{n}.F_d", "fr": f"{n}.F_r"},
+    )
+
+
+def _jlink(two: bool) -> Builder:
+    """[Hopsan2026] Mechanic/Rotational/MechanicJLink.hpp and MechanicJLink2.hpp: an inertia JL at Pmr2 turning a
+    link whose end, the translational port Pm1 (and Pm0 at the same place, JLink2), is at x0 - link sin θ. Their
+    generated equations, solved by Newton steps each time step, are the trapezoidal rule of
+    JL θ'' = (f0 + f1) link cos θ - t2 - BL θ' (Hopsan's forces and torque press on the component), θ clamped to
+    [thetamin, thetamax] with its speed zeroed (inelastic stops): a Crank with stiff stops. JLink's theta0 is
+    declared but unused by its equations, and so here; the angle starts at Pmr2's start angle and speed, the
+    link's end where it writes it (`WRITTEN_STARTS`)."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Crank
+
+        link, t_min, t_max = par("link", 0.1), par("thetamin", -1.05), par("thetamax", 1.05)
+        if link <= 0.0 or par("JL", 1.0) <= 0.0 or t_max < t_min:
+            par.problems.append(f"{par.where}: link and JL above 0 and thetamin <= thetamax are supported")
+            return Mapped()
+        comp = Crank(
+            n, J=par("JL", 1.0), B_rot=par("BL", 1.0), r_link=link, x_link=par("x0", -0.1), theta_min=t_min,
+            theta_max=t_max, k_stop_rot=1e9, c_stop_rot=1e6,
+            theta0=min(max(par.start("Pmr2", "Angle"), t_min), t_max), omega0=par.start("Pmr2", "AngularVelocity"),
+        )
+        power = {"Pm1": f"{n}.P1", "Pmr2": f"{n}.P2"}
+        if two:
+            power["Pm0"] = f"{n}.P0"
+        return Mapped([comp], power=power)
+
+    return build
+
+
+def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicMotor.hpp: an ideal motor under speed control, a C component of no
+    impedance whose torque is a PID controller's output on its speed error, T = K_p e + K_i ∫e + K_d ė with
+    e = omega_ref - ω (ω its own speed, minus the node's, which its Q neighbour writes): a TorqueSource driven
+    by a PID (no output limits: Hopsan's Wmax, Tmax and wmax are set and never used) on a Sum reading the node's
+    speed. Hopsan's derivative is the bilinear transform of s, starting from a zero error (a step in the error at
+    the start is an impulse of torque, K_d e(0)); the PID's derivative is filtered with T_f = 1e-5 s, starting
+    from the same zero. Its integrator starts at 0, as Hopsan's."""
+    from hydroservo.components import PID, Constant, Sum, TorqueSource
+
+    pid = PID(f"{n}_pid", Kp=par("K_p", 10.0), Ki=par("K_i", 100.0),
+              Kd=par("K_d", 100.0), T_f=1e-5)
+    # u1 the node's speed (read: minus the motor's; the read sets gain1 and offset), u2 omega_ref
+    error = Sum(f"{n}_error", gain2=1.0)
+    m = Mapped(
+        [TorqueSource(n), error, pid],
+        power={"P1": f"{n}.P"},
+        read={"P1": (f"{n}_error.u1", "AngularVelocity")},
+        internal=[(f"{n}_error.y", f"{n}_pid.e"), (f"{n}_pid.y", f"{n}.u")],
+        note="a TorqueSource driven by a PID on a Sum of omega_ref and the node's speed",
+    )
+    if "omega_ref" in par.driven:
+        m.inputs["omega_ref"] = f"{n}_error.u2"
+    else:  # older files name it without #Value, which the import's unconnected inputs do not read
+        m.components.append(Constant(f"{n}_omega_ref", value=par("omega_ref", 0.0)))
+        m.internal.append((f"{n}_omega_ref.y", f"{n}_error.u2"))
+    return m
+
+
+def _mass_lever(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalMassWithLever.hpp: a mass m at P2 on a lever of arms L_1
+    and L_2 whose other end is P1: with w = (L_1 + L_2)/L_1, P1 at -x/w, moving at -v/w, its force entering as
+    f1/w; its damped double integrator is m ẍ = f1/w - f2 - B ẋ. A Mass with n_lever = 1/w = L_1/(L_1 + L_2),
+    starting at -w times P1's start position and velocity, as Hopsan's integrator."""
+    from hydroservo.components import Mass
+
+    l1, l2 = par("L_1", 1.0), par("L_2", 1.0)
+    if l1 <= 0.0 or l2 < 0.0 or par("m", 1.0) <= 0.0:
+        par.problems.append(f"{par.where}: L_1 and m above 0 and L_2 at least 0 are supported")
+        return Mapped()
+    w = (l1 + l2) / l1
+    comp = Mass(
+        n,
+        m=par("m", 1.0),
+        B=par("B", 10.0),
+        incline=0.0,
+        n_lever=1.0 / w,
+        x0=-w * par.start("P1", "Position"),
+        v0=-w * par.start("P1", "Velocity"),
+    )
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _mkc_load(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicMkcload1D.hpp: a mass mL on a spring kL (relaxed at x = 0), damped by
+    bL, with dry friction fc, its position x of Pm2 (Pm1 at -x) limited to [xmin, xmax] (its velocity zeroed
+    there: inelastic stops). Its generated equations, solved by Newton steps each time step, are the trapezoidal
+    rule of mL ẍ = f1 - f2 - bL ẋ - kL x - F_fr with F_fr = limit(bfc mL ẋ/Ts, -fc, fc): the force that would stop
+    the mass within a step, at most fc, which is Coulomb's law (stuck below fc, sliding against it) as the step
+    vanishes, whatever the numerical factor bfc. A Mass with B = bL, k_spring = kL, F_c0 = fc (static friction
+    equal to the kinetic one) regularised as MechanicTranslationalMassWithCoulombFriction's (v_reg 1e-5 m/s),
+    the stops as stiff ones; its output fs = kL x."""
+    from hydroservo.components import Mass
+
+    fc, x_min, x_max = par("fc", 10.0), par("xmin", 0.0), par("xmax", 1.0)
+    if fc < 0.0 or par("mL", 1000.0) <= 0.0 or x_max < x_min:
+        par.problems.append(f"{par.where}: mL above 0, fc at least 0 and xmin <= xmax are supported")
+        return Mapped()
+    comp = Mass(
+        n,
+        m=par("mL", 1000.0),
+        B=par("bL", 10.0),
+        k_spring=par("kL", 10.0),
+        incline=0.0,
+        F_c0=fc,
+        v_reg=1e-5,
+        c_s=1e-3,
+        x_min=x_min,
+        x_max=x_max,
+        k_stop=1e9,
+        c_stop=1e6,
+        x0=min(max(par.start("Pm2", "Position"), x_min), x_max),
+        v0=par.start("Pm2", "Velocity"),
+    )
+    return Mapped([comp], power={"Pm1": f"{n}.P1", "Pm2": f"{n}.P2"}, values={"fs": Var(par("kL", 10.0), f"{n}.x")})
+
+
+def _m2_load(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicM2load1D.hpp: two masses m1 (Pm1) and m2 (Pm2) that slide on each
+    other, their relative displacement x3 the port Pm3 (a cylinder's rod between them) with its stroke
+    xp = -x3 limited to [xpmin, xpmax] (velocity zeroed there: inelastic stops), dry friction fc between them. Its
+    generated equations, solved by Newton steps each time step, are the trapezoidal rule of
+    (m1 + m2) ẍt = f1 - f2 and μ ẍ3 = (m2 f1 + m1 f2)/(m1 + m2) - f3 - F_fr (Hopsan's forces press on the
+    component), F_fr = limit(2 bfc μ ẋ3/Ts, -fc, fc), the force that would stop the relative motion within a
+    step: Coulomb's law as the step vanishes, whatever bfc. A MassPair with F_c0 = fc regularised as
+    MechanicTranslationalMassWithCoulombFriction's (v_reg 1e-5 m/s); bL is declared but unused by Hopsan's
+    equations, and so here. Its stops are of 1e12 N/m and 1e8 N s/m, not the default 1e9 and 1e6: Hopsan clamps
+    the stroke exactly, so a cylinder joined at Pm3 whose own stops are at the same place (MechanicM2load1D-
+    PistonTest's) never takes load there, and a penalty stop as stiff as the cylinder's would share it (the rod
+    force 34 % of range off on that test; 0.07 % at 1e12 N/m, which leaves the cylinder 0.1 %). Starts at the outputs' start values xt, vt and Pm3's start position and
+    velocity, as Hopsan's; the outputs vt and xt are the centre of gravity's."""
+    from hydroservo.components import MassPair
+
+    fc, xp_min, xp_max = par("fc", 10.0), par("xpmin", 0.0), par("xpmax", 1.0)
+    if fc < 0.0 or par("m1", 1000.0) <= 0.0 or par("m2", 1000.0) <= 0.0 or xp_max < xp_min:
+        par.problems.append(f"{par.where}: m1 and m2 above 0, fc at least 0 and xpmin <= xpmax are supported")
+        return Mapped()
+    comp = MassPair(
+        n,
+        m1=par("m1", 1000.0),
+        m2=par("m2", 1000.0),
+        F_c0=fc,
+        v_reg=1e-5,
+        c_s=1e-3,
+        x_p_min=xp_min,
+        x_p_max=xp_max,
+        k_stop=1e12,  # the exact clamp takes the whole load from a cylinder whose stop is at the same place
+        c_stop=1e8,
+        xt0=par("xt", 0.0),
+        vt0=par("vt", 0.0),
+        x30=min(max(par.start("Pm3", "Position"), -xp_max), -xp_min),
+        v30=par.start("Pm3", "Velocity"),
+    )
+    return Mapped([comp], power={"Pm1": f"{n}.P1", "Pm2": f"{n}.P2", "Pm3": f"{n}.P3"},
+                  outputs={"vt": f"{n}.vt", "xt": f"{n}.xt"})
+
+
 def _motor_q(leakage: str, variable: bool) -> Builder:
     """Hopsan's Q-type motors ([Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementMotorQ.hpp, leakage
     C_lm; HydraulicVariableDisplacementMotorQ.hpp, leakage C_im and the displacement setting eps limited to
@@ -2124,6 +2382,17 @@ LIBRARY: dict[str, Builder] = {
     "MechanicAngleSensor": _sensor("Angle", "rad"),
     "MechanicAngularVelocitySensor": _sensor("AngularVelocity", "rad/s"),
     "MechanicTorqueSensor": _sensor("Torque", "N*m"),
+    "MechanicFreeLengthWall": _free_length_wall,
+    "MechanicRotationalInertiaWithCoulombFriction": _rotational_inertia_coulomb,
+    "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling
+    "MechanicRotationalInertiaWithGearRatio": _rotational_inertia_gear,
+    "MechanicMotor": _mechanic_motor,
+    "MechanicVehicle1D": _vehicle,
+    "MechanicJLink": _jlink(two=False),
+    "MechanicJLink2": _jlink(two=True),
+    "MechanicTranslationalMassWithLever": _mass_lever,
+    "MechanicMkcload1D": _mkc_load,
+    "MechanicM2load1D": _m2_load,
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
@@ -2512,7 +2781,54 @@ def _node_starts(
         for end in group:
             if end not in multiports:
                 out[end] = values
+    for hc in model.components:  # Q components that write their own start positions (a node's values shared)
+        written = WRITTEN_STARTS.get(hc.typename)
+        if written is not None:
+            own = {port: values for (comp, port), values in out.items() if comp == hc.full_name}
+            for port, values in written(hc, own).items():
+                out.setdefault((hc.full_name, port), {}).update(values)
     return out
+
+
+def _m2_load_starts(hc: HopsanComponent, starts: dict[str, dict[str, float]]) -> dict[str, dict[str, float]]:
+    """MechanicM2load1D's start positions and velocities of Pm1 and Pm2, which it writes at its initialisation
+    from the start values of its outputs xt and vt and of Pm3's node (x3, v3), whatever its neighbours declare:
+    Pm1 at -(xt + m2 x3/(m1 + m2)), Pm2 at xt - m1 x3/(m1 + m2)."""
+    def value(name: str, default: float) -> float:
+        par = hc.parameters.get(f"{name}#Value") or hc.parameters.get(name)
+        return par.value if par is not None and par.value is not None else default
+
+    m1, m2 = value("m1", 1000.0), value("m2", 1000.0)
+    if m1 + m2 == 0.0:
+        return {}
+    x3, v3 = starts.get("Pm3", {}).get("Position", 0.0), starts.get("Pm3", {}).get("Velocity", 0.0)
+    xt, vt = value("xt", 0.0), value("vt", 0.0)
+    return {
+        "Pm1": {"Position": -(xt + m2 * x3 / (m1 + m2)), "Velocity": -(vt + m2 * v3 / (m1 + m2))},
+        "Pm2": {"Position": xt - m1 * x3 / (m1 + m2), "Velocity": vt - m1 * v3 / (m1 + m2)},
+    }
+
+
+#: Hopsan's Q components that write start values of their own to their nodes at initialisation (type -> the
+#: values by port, from the component and the start values of its nodes): they override the C components' there
+def _jlink_starts(hc: HopsanComponent, starts: dict[str, dict[str, float]]) -> dict[str, dict[str, float]]:
+    """MechanicJLink's and MechanicJLink2's start positions and velocities of their translational ports, which they
+    write from the start angle and speed of Pmr2's node: x0 - link sin θ, -link cos θ ω."""
+    def value(name: str, default: float) -> float:
+        par = hc.parameters.get(f"{name}#Value") or hc.parameters.get(name)
+        return par.value if par is not None and par.value is not None else default
+
+    theta, omega = starts.get("Pmr2", {}).get("Angle", 0.0), starts.get("Pmr2", {}).get("AngularVelocity", 0.0)
+    link = value("link", 0.1)
+    end = {"Position": value("x0", -0.1) - link * math.sin(theta), "Velocity": -link * math.cos(theta) * omega}
+    return {port: dict(end) for port in ("Pm0", "Pm1") if port in starts}
+
+
+WRITTEN_STARTS: dict[str, Callable[[HopsanComponent, dict[str, dict[str, float]]], dict[str, dict[str, float]]]] = {
+    "MechanicM2load1D": _m2_load_starts,
+    "MechanicJLink": _jlink_starts,
+    "MechanicJLink2": _jlink_starts,
+}
 
 
 #: Hopsan's signal blocks whose output is constant when their inputs are: type -> (output, inputs, function)

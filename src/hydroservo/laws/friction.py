@@ -6,7 +6,7 @@ from typing import Any
 
 from hydroservo import backend as bk
 
-__all__ = ["stribeck"]
+__all__ = ["stribeck", "aerodynamic_drag"]
 
 
 def stribeck(
@@ -62,6 +62,36 @@ def stribeck(
     else:
         sgn = bk.sign(v)
     return sigma * v + sgn * (F_c0 + F_s0 * bk.exp(-bk.fabs(v) / c_s))
+
+
+def aerodynamic_drag(v: Any, rho: Any, CdA: Any) -> Any:
+    r"""Aerodynamic drag of a body moving through still air.
+
+    .. math:: F_d = \tfrac{1}{2}\,\rho\,C_d A\,v\,|v|
+
+    Parameters
+    ----------
+    v : array_like
+        Speed of the body through the air [m/s].
+    rho : float
+        Density of the air [kg/m^3].
+    CdA : float
+        Drag coefficient times the frontal area (effective frontal area) [m^2].
+
+    Returns
+    -------
+    Drag force opposing the motion [N].
+
+    References
+    ----------
+    [Hopsan2026] Special/MechanicVehicle1D.hpp (its aerodynamic drag fd).
+
+    Examples
+    --------
+    >>> round(float(aerodynamic_drag(20.0, 1.25, 0.5)), 1)  # a car at 72 km/h [N]
+    125.0
+    """
+    return 0.5 * rho * CdA * v * bk.fabs(v)
 
 
 def _is_zero(x: Any) -> bool:
