@@ -15,7 +15,7 @@ module                 components
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
                        AngularVelocitySource
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
-                       StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
+                       StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ShuttleValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
@@ -102,6 +102,7 @@ from hydroservo.components.valves import (
     PseudoSectionValve,
     ReliefValve,
     ServoSolenoidValve,
+    ShuttleValve,
     StagedSlotValve,
     ThreeWayValve,
     TwoStageServovalve,
@@ -163,6 +164,7 @@ __all__ = [
     "CatalogueServovalve",
     "Orifice",
     "CheckValve",
+    "ShuttleValve",
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",

@@ -780,6 +780,18 @@ def _check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
+def _shuttle_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/HydraulicShuttleValve.hpp: P3 joined without resistance to the inlet of higher
+    pressure (Hopsan's flow (c_in - c_3)/(Zc_in + Zc_3), an ideal connection of the two nodes, p_3 = max(p_1, p_2)
+    in the limit of a vanishing step), the other inlet shut: a ShuttleValve, whose open seat is a laminar
+    conductance G_open large enough that P3 follows within G_open's drop. Its output out (-1: P1 open, 1: P2) is
+    the ShuttleValve's."""
+    from hydroservo.components import ShuttleValve
+
+    return Mapped([ShuttleValve(n)], power={"P1": f"{n}.P1", "P2": f"{n}.P2", "P3": f"{n}.P3"},
+                  outputs={"out": f"{n}.out"})
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -1371,6 +1383,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicLaminarOrifice": _laminar_orifice,
     "HydraulicTurbulentOrifice": _turbulent_orifice,
     "HydraulicCheckValve": _check_valve,
+    "HydraulicShuttleValve": _shuttle_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,

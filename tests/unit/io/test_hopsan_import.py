@@ -154,10 +154,10 @@ def test_imported_model_file_round_trips(servo_file: Path, tmp_path: Path) -> No
 
 
 def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> None:
-    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalUnitDelay", "Wave", {})]
+    components = [*COMPONENTS, ("HydraulicValvePlate", "Plate", {}), ("SignalUnitDelay", "Wave", {})]
     path = tmp_path / "m.hmf"
     path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
-    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalUnitDelay\)"):
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Plate \(HydraulicValvePlate\); Wave \(SignalUnitDelay\)"):
         read_hopsan(path)
 
 
@@ -300,13 +300,16 @@ def test_parameters_set_by_constant_signals_take_their_values_and_others_are_ref
 CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 
 
-@pytest.mark.parametrize("name", ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order"])
+@pytest.mark.parametrize(
+    "name", ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "shuttle_valve"]
+)
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
     its range (at least 1 % of its magnitude; forces and flows from the second point, where Hopsan logs start
     values at t = 0). Each circuit failed before its law was imported: a spring's start force was dropped, an
     unequal-area cylinder's force lacked p_atm (A1 - A2), a displacement setting of 0 became 1, a sensor's
-    start value overrode the spring's."""
+    start value overrode the spring's. The shuttle valve's (HydraulicShuttleValve) outlet follows the higher of a
+    sine-wave pressure and a constant one, and drains back through the open inlet as the sine falls."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
