@@ -8,7 +8,7 @@ module                 components
 :mod:`.volume`         Volume
 :mod:`.line`           Line, Hose
 :mod:`.accumulator`    Accumulator
-:mod:`.pumps`          Pump, VariablePump, Motor, Machine
+:mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass
 :mod:`.mechanics`      Spring, Damper, FixedPosition, ForceSource, VelocitySource
@@ -68,7 +68,7 @@ from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource
-from hydroservo.components.pumps import Machine, Motor, Pump, VariablePump
+from hydroservo.components.pumps import LoadSensingPump, Machine, Motor, Pump, VariablePump
 from hydroservo.components.rotational import AngularVelocitySource, RotationalInertia, TorqueSource, TorsionalSpring
 from hydroservo.components.signals import (
     Constant,
@@ -152,6 +152,7 @@ __all__ = [
     "Accumulator",
     "Pump",
     "VariablePump",
+    "LoadSensingPump",
     "Motor",
     "Machine",
     "FourWayValve",

@@ -295,7 +295,7 @@ class _Reader:
         for item in element.findall("parameter"):
             name = item.get("name") or ""
             if self.old_names:
-                name = name.replace("::", "#")
+                name = _renamed_old_parameter(name)
             text = item.get("value") or ""
             unit = item.get("unit") or ""
             if not name:
@@ -398,6 +398,25 @@ class _Reader:
             groups.setdefault(find(junction), []).extend(ports)
         pairs += [tuple(dict.fromkeys(ports)) for ports in groups.values() if len(set(ports)) > 1]
         return [tuple(port.replace(_SEP, ".") for port in group) for group in pairs]
+
+
+#: node variables Hopsan renamed after 0.6 (HmfLoader.cpp, updateOldModelFileParameter)
+_OLD_NODE_VARIABLES = {"Angular Velocity": "AngularVelocity", "Equivalent Inertia": "EquivalentInertia",
+                       "CharImp": "CharImpedance"}
+
+
+def _renamed_old_parameter(name: str) -> str:
+    """A parameter's name in a file of Hopsan before 0.6 as Hopsan's loader renames it (HmfLoader.cpp,
+    updateOldModelFileParameter): ``P1::Pressure`` is ``P1#Pressure``, the node variables renamed since
+    (``P1#CharImp`` is ``P1#CharImpedance``), and in a name with characters other than letters, digits and
+    ``_``, commas and dots dropped and spaces made ``_`` (``omega_p,1`` is ``omega_p1``)."""
+    name = name.replace("::", "#")
+    if "#" in name:
+        head, _, variable = name.rpartition("#")
+        name = f"{head}#{_OLD_NODE_VARIABLES.get(variable, variable)}"
+    if re.search(r"[^A-Za-z0-9_]", name):
+        name = "std_dev" if name == "sigma^2" else name.replace(",", "").replace(".", "").replace(" ", "_")
+    return name
 
 
 def _names_port_variables_with_colons(core_version: str) -> bool:

@@ -800,6 +800,58 @@ def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"}, inputs={"eps": f"{n}.eps"})
 
 
+def _pressure_controlled_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Pumps&Motors/HydraulicPressureControlledPump.hpp: a Q-type variable pump whose
+    regulator (a limited second-order filter with a lead, of the pressure error p_dif - (p_2 - p_ref)) sets the
+    displacement flow: a LoadSensingPump (its law in the limit of a vanishing step, the TLM impedances gone),
+    D ω = q_max ω/125 (q_max at Hopsan's nominal 125 rad/s), ε_min = q_min/q_max, port X on PREF (no flow),
+    inlet floored at 0 Pa absolute as Hopsan's other pumps. The filter starts at rest at Hopsan's start value of
+    eps (its displacement flow q_max ε), its error's lag at the error of the start pressures of its nodes. Output eps (Hopsan's: the
+    delivered flow over q_max ω/125) is the pump's QP scaled; the angle a is not mapped. A PREF left unconnected
+    and speeds or q_max not above 0 are refused."""
+    from hydroservo.components import LoadSensingPump
+
+    omega, q_max, q_min = par("omega_p", 125.0), par("q_max", 0.00125), par("q_min", 0.0)
+    if omega <= 0.0 or q_max <= 0.0 or not 0.0 <= q_min <= q_max:
+        par.problems.append(f"{par.where}: omega_p = {omega:g} rad/s, q_max = {q_max:g} m^3/s, q_min = {q_min:g} "
+                            "m^3/s; only omega_p and q_max above 0 and q_min in [0, q_max] are supported")
+        return Mapped()
+    if "PREF" not in par.driven:
+        par.problems.append(f"{par.where}: its reference port PREF is not connected; connect it (a tank makes the "
+                            "pump a pressure compensator at p_dif)")
+    comp = LoadSensingPump(
+        n,
+        D=q_max / 125.0,
+        omega=omega,
+        C_leak=par("C_lp", 1e-12),
+        p_dif=par("p_dif", 1e6),
+        l_p=par("l_p", 7e7),
+        R_p=par("r_p", 1e9),
+        omega_p1=par("omega_p1", 200.0),
+        tau_v=par("tao_v", 0.001),
+        t_p=par("t_p", 0.15),
+        t_m=par("t_m", 0.12),
+        eps_min=q_min / q_max,
+        inlet="floor",
+        p_floor=_abs(0.0),
+    )
+    # Hopsan's initialize(): the filter at rest at q_2 = q_max ω/125 eps (eps's start value)
+    p2 = max(par.start("P2", "Pressure", 1e5), 1.0)
+    p_ref = max(par.start("PREF", "Pressure", 1e5), 0.0)
+    v = comp.values
+    ell = v["l_p"] * math.sqrt(v["p_nom"] / p2) * v["omega_nom"] / (omega + 0.001)
+    big_l = ell + v["R_p"] * v["tau_v"]
+    u0 = v["p_dif"] - p2 + p_ref
+    eps0 = min(max(par("eps", 0.0), v["eps_min"]), 1.0)
+    q_l = q_max * omega / 125.0
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.S", "P2": f"{n}.P", "PREF": f"{n}.X"},
+        values={"eps": Var(1.0 / q_l, f"{n}.QP")},
+        initial={f"{n}.y": big_l * q_l * eps0, f"{n}.w": u0},
+    )
+
+
 # -- mechanic -------------------------------------------------------------------------------------------------
 
 
@@ -1385,6 +1437,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicCheckValve": _check_valve,
     "HydraulicShuttleValve": _shuttle_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
+    "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,

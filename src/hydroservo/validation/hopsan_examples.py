@@ -214,6 +214,11 @@ MODELS: dict[str, Spec] = {
              "trace is within 0.0012 % (docs/validation.md)"),
         ),
     ),
+    "variable-pump-with-pressure-control": Spec(
+        "Component Test/HydraulicComponent Test/Variable Pump with Pressure Control.hmf",
+        "a pump whose regulator holds its outlet 1 MPa above a reference pressure stepped from 0 to 10 MPa, "
+        "feeding a volume drained by a laminar orifice",
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.

@@ -301,7 +301,9 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 
 
 @pytest.mark.parametrize(
-    "name", ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "shuttle_valve"]
+    "name",
+    ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "shuttle_valve",
+     "pressure_controlled_pump"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -309,7 +311,10 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     values at t = 0). Each circuit failed before its law was imported: a spring's start force was dropped, an
     unequal-area cylinder's force lacked p_atm (A1 - A2), a displacement setting of 0 became 1, a sensor's
     start value overrode the spring's. The shuttle valve's (HydraulicShuttleValve) outlet follows the higher of a
-    sine-wave pressure and a constant one, and drains back through the open inlet as the sine falls."""
+    sine-wave pressure and a constant one, and drains back through the open inlet as the sine falls. The
+    pressure-controlled pump (HydraulicPressureControlledPump) strokes at its rate limit, overshoots, destrokes to
+    its lower bound and leaves it, and answers an orifice closed and a flow drawn (Hopsan's
+    HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw)."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -1013,3 +1018,18 @@ def test_hopsans_gear_shaft_is_a_geared_spring_of_the_stiffness_its_element_conv
     assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-2.0, rel=1e-6)
     assert r["G.Pmr2.Torque"][-1] == pytest.approx(-20.0, rel=1e-6)
     assert r["G.Pmr1.Torque"][-1] == pytest.approx(20.0, rel=1e-6)
+
+
+def test_a_pressure_controlled_pump_needs_its_reference_port(tmp_path: Path) -> None:
+    """HydraulicPressureControlledPump maps to a LoadSensingPump with Hopsan's parameters (q_max at 125 rad/s);
+    its PREF left unconnected is refused (Hopsan reads an unconnected port's start value)."""
+    circuit = (CIRCUITS / "pressure_controlled_pump.hmf").read_text(encoding="utf-8")
+    system = read_hopsan(CIRCUITS / "pressure_controlled_pump.hmf")
+    pump = system["Pump"]
+    assert pump.values["D"] * pump.values["omega"] == pytest.approx(1.25e-3)
+    assert (pump.values["p_dif"], pump.values["tau_v"], pump.values["omega_p1"]) == (28e6, 3e-3, 200.0)
+    path = tmp_path / "no_ref.hmf"
+    path.write_text(circuit.replace('<connect startcomponent="TRef" startport="P1" endcomponent="Pump" '
+                                    'endport="PREF"/>', ""), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"Pump \(HydraulicPressureControlledPump\): its reference port PREF"):
+        read_hopsan(path)
