@@ -469,6 +469,19 @@ def _valve43(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _valve43_load_sensing(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic43LoadSensingValve.hpp: the 4/3 valve (its spool
+    and edges as Hydraulic43Valve's) with a port PL to which it writes the pressure of A while x_v >= 0 and of B
+    otherwise, taking that node's flow (p_load - c_L)/Z_c,L from neither A nor B (an ideal connection, in the limit
+    of a vanishing step p_L = p_A or p_B): the FourWayValve with ``load_sensing = "port"``, its port L a stiff
+    laminar passage G_L from the loaded port's pressure."""
+    m = _valve43(hc, n, par)
+    m.components[-1].set(load_sensing="port")
+    m.power["PL"] = f"{n}.L"
+    m.note = m.note.replace("a FourWayValve", "a FourWayValve with a load-sensing port")
+    return m
+
+
 def _valve42(command: str, all_edges: bool) -> Builder:
     """Hopsan's 4/2 valves ([Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic42Valve.hpp,
     Hydraulic42Valve2.hpp, Hydraulic/Valves/DirectionalValves/Hydraulic42DirectionalValve.hpp): a spool in
@@ -1453,6 +1466,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
+    "Hydraulic43LoadSensingValve": _valve43_load_sensing,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),
     "Hydraulic42Valve2": _valve42("one-sided", all_edges=True),
     "Hydraulic42DirectionalValve": _valve42("on-off", all_edges=True),

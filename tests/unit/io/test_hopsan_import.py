@@ -1033,3 +1033,27 @@ def test_a_pressure_controlled_pump_needs_its_reference_port(tmp_path: Path) -> 
                                     'endport="PREF"/>', ""), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"Pump \(HydraulicPressureControlledPump\): its reference port PREF"):
         read_hopsan(path)
+
+
+def test_hopsans_load_sensing_valve_passes_the_loaded_ports_pressure_to_its_line(tmp_path: Path) -> None:
+    """[Hopsan2026] FlowControlValves/Hydraulic43LoadSensingValve.hpp: the 4/3 valve with PL at the pressure of A
+    while x_v >= 0 and of B otherwise; its line (a volume) settles there."""
+    v = _value
+    for spool, loaded in (("0.005", 60e5), ("-0.005", 30e5)):
+        components = [
+            ("Hydraulic43LoadSensingValve", "LS", {"in#Value": v(spool, "m"), "rho#Value": v("890")}),
+            ("HydraulicPressureSourceC", "S", {"p#Value": v("1e7", "Pa")}),
+            ("HydraulicTankC", "T", {"p": v("1e5", "Pa")}),
+            ("HydraulicPressureSourceC", "A", {"p#Value": v("6e6", "Pa")}),
+            ("HydraulicPressureSourceC", "B", {"p#Value": v("3e6", "Pa")}),
+            ("HydraulicVolumeMultiPort", "Line", {"V#Value": v("1e-5"), "P1#Pressure": v("1e5", "Pa")}),
+        ]
+        connections = [("LS.PP", "S.P1"), ("LS.PT", "T.P1"), ("LS.PA", "A.P1"), ("LS.PB", "B.P1"),
+                       ("LS.PL", "Line.P1")]
+        path = tmp_path / "ls.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        imp = import_hopsan(path)
+        assert imp.system["LS"].option("load_sensing") == "port"
+        r = imp.system.simulate(t_eval=[0.0, 0.2])
+        assert r["LS.PL.Pressure"][-1] == pytest.approx(loaded, rel=1e-9)
+        assert r["LS.xv.Value"][-1] == pytest.approx(float(spool), rel=1e-6)
