@@ -66,6 +66,8 @@ def test_calibrate_recovers_the_rig_and_predicts_the_held_out_record(cli, record
     assert (tmp_path / "fr" / "friction.toml").read_text().count("F_s0") == 1  # named as undetermined, not written
 
 
+# slow: a whole calibration; the other calibrate tests keep the command in the default suite
+@pytest.mark.slow
 def test_a_model_includes_the_parameter_files(cli, records: Path, tmp_path: Path) -> None:
     import tomllib
 

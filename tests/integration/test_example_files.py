@@ -31,6 +31,8 @@ def _generator():  # type: ignore[no-untyped-def]
     return module
 
 
+# slow: regenerates every example file by simulation
+@pytest.mark.slow
 def test_generated_files_are_the_shipped_ones(tmp_path: Path) -> None:
     generated = _generator().example_data(tmp_path)
     shipped = example_files()

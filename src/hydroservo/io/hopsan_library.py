@@ -209,11 +209,9 @@ def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import ReliefValve
 
-    if par("p_h", 5e5) != 0.0:
-        par.problems.append(
-            f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa (Hopsan's default is 5e5 Pa) is not supported yet; "
-            "set p_h to 0 in Hopsan for a valve without hysteresis"
-        )
+    if par("p_h", 5e5) < 0.0:
+        par.problems.append(f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa; expected 0 or more")
+        return Mapped()
     comp = ReliefValve(
         n,
         p_crack=_abs(par("p_max", 2e7)),
@@ -223,6 +221,7 @@ def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         q_nom=par("q_nom", 0.001),
         p_nom=7e6,  # Hopsan's fixed nominal pressure drop (HydraulicPressureReliefValve.hpp)
         p_tr=1e3,
+        p_h=par("p_h", 5e5),  # Hopsan's ValveHysteresis, its default 5 bar
     )
     # Hopsan's output xv (its spool's filtered position, in its own scaling) has no counterpart: not aliased
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})

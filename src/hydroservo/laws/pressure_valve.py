@@ -24,6 +24,8 @@ __all__ = [
     "linear_opening",
     "seat_opening",
     "pressure_valve_coefficient",
+    "hysteresis_half_width",
+    "valve_hysteresis",
     "spool_balance_rate",
     "limited_lag_rate",
     "limited_rate",
@@ -178,6 +180,94 @@ def pressure_valve_coefficient(over: Any, dp: Any, k_cs: Any, k_cf: Any, p_nom: 
     Cs = bk.sqrt(p_nom) / k_cs
     Cf = 1.0 / (k_cf * bk.sqrt(p_nom))
     return over / (Cs + Cf * bk.fmax(dp, 0.0))
+
+
+def hysteresis_half_width(p_h: Any, dp: Any, k_cs: Any, k_cf: Any, p_nom: Any = 7e6) -> Any:
+    r"""Half the width of a pressure-control valve's hysteresis band in its flow coefficient [m^3/s/Pa^0.5].
+
+    A hysteresis of ``p_h`` in the pilot pressure is, in the flow coefficient
+    of :func:`pressure_valve_coefficient`, a band of width
+    :math:`p_h/(C_s + C_f\max(\Delta p, 0))`: the same pressure band seen
+    through the spring and the flow forces that the static opening is seen
+    through. Its half: :math:`p_h/(2(C_s + C_f\max(\Delta p, 0)))`.
+
+    Parameters
+    ----------
+    p_h : array_like
+        Width of the hysteresis in the pilot pressure [Pa], >= 0.
+    dp : array_like
+        Pressure drop across the valve [Pa].
+    k_cs : array_like
+        Steady-state characteristic of the spring [m^3/s/Pa].
+    k_cf : array_like
+        Steady-state characteristic of the flow forces [m^3/s/Pa].
+    p_nom : array_like
+        Nominal pressure drop of the characteristics [Pa].
+
+    Returns
+    -------
+    array_like
+        Half-width [m^3/s/Pa^0.5].
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureReliefValve.hpp (``xh = ph/(b1+b2)``,
+    in the limit of a small time step where ``b2`` vanishes).
+
+    Examples
+    --------
+    A band of 5 bar is the opening that 5 bar over the setting gives:
+
+    >>> w = hysteresis_half_width(5e5, 100e5, 1e-8, 1e-8)
+    >>> bool(abs(2 * w - pressure_valve_coefficient(5e5, 100e5, 1e-8, 1e-8)) < 1e-18)
+    True
+    """
+    Cs = bk.sqrt(p_nom) / k_cs
+    Cf = 1.0 / (k_cf * bk.sqrt(p_nom))
+    return 0.5 * p_h / (Cs + Cf * bk.fmax(dp, 0.0))
+
+
+def valve_hysteresis(target: Any, K: Any, half_width: Any) -> Any:
+    r"""The static opening a valve's spool follows through a hysteresis (backlash) band [unit of K].
+
+    The spool's lag does not follow the static opening :math:`K_s` itself but
+    :math:`K_s` held within :math:`\pm w` of where the spool is:
+
+    .. math:: K_h = \min(\max(K, K_s - w), K_s + w)
+
+    so the spool stays put while :math:`|K_s - K| \le w` and then follows
+    :math:`K_s \mp w`: a pressure rising to open the valve opens it
+    :math:`p_h/2` later than without hysteresis, a pressure falling to close it
+    closes it :math:`p_h/2` earlier. With :func:`limited_lag_rate`,
+    :math:`\tau\dot K = K_h - K` is a lag driven by the dead zone of
+    :math:`K_s - K` of half-width :math:`w`. With :math:`w = 0`, :math:`K_h = K_s`.
+
+    Parameters
+    ----------
+    target : array_like
+        Static opening :math:`K_s` [any unit].
+    K : array_like
+        The spool's present opening [unit of target].
+    half_width : array_like
+        Half the band, :math:`w` >= 0 [unit of target] (:func:`hysteresis_half_width`).
+
+    Returns
+    -------
+    array_like
+        :math:`K_h` [unit of target].
+
+    References
+    ----------
+    [Hopsan2026] HopsanCore/include/ComponentUtilities/ValveHysteresis.h (``getValue(xs, xh, xd)``, here with
+    the spool's present opening for Hopsan's previous one, the same in the limit of a small time step), used by
+    HydraulicPressureReliefValve.hpp and the other pressure-control valves.
+
+    Examples
+    --------
+    >>> [float(valve_hysteresis(Ks, 1.0, 0.5)) for Ks in (0.0, 0.8, 1.2, 2.0)]
+    [0.5, 1.0, 1.0, 1.5]
+    """
+    return bk.fmin(bk.fmax(K, target - half_width), target + half_width)
 
 
 def limited_lag_rate(K: Any, target: Any, tau: Any, K_max: Any, relax: Any = STOP_RELAXATION) -> Any:

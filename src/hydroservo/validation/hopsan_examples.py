@@ -105,6 +105,16 @@ MODELS: dict[str, Spec] = {
         "two spool relief valves (force balance with flow forces) protecting volumes fed by flow sources, one "
         "drained by an orifice that a step closes, the other fed by a soft-step flow",
     ),
+    "hydraulic-pressure-relief-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressueReliefValveTest.hmf",
+        "a relief valve with hysteresis beside a spool relief valve (force balance), each protecting a volume fed "
+        "by a flow source, drained by an orifice that a step closes",
+    ),
+    "pressure-relief-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/PressureReliefValveTest.hmf",
+        "relief valves with hysteresis and a spool relief valve on volumes fed by pulsed and soft-step flows, "
+        "drained through 2/2 valves",
+    ),
     "hydraulic-pressure-reducing-valve-g-test": Spec(
         "Component Test/HydraulicComponent Test/HydraulicPressureReducingValveGTest.hmf",
         "a spool pressure-reducing valve (force balance with flow forces) feeding a volume drained by a laminar "

@@ -196,3 +196,41 @@ def test_a_balanced_reducing_valve_takes_the_drop_with_its_sign_and_stops_at_ful
     K_max = 1e-3 / 60.0 / np.sqrt(P_NOM)
     assert r["prv.K"][-1] == pytest.approx(K_max, rel=1e-4)
     assert r["prv.s"][-1] == pytest.approx(1.0, rel=1e-4)
+
+
+def test_a_relief_valve_with_hysteresis_opens_half_the_band_above_its_setting_and_closes_half_below():
+    """Hopsan's ValveHysteresis (p_h): a slow sine of pressure about the setting opens the valve once it is p_h/2
+    above the setting and closes it once it is p_h/2 below, where without hysteresis both happen at the setting.
+    The spool's lag (1 ms, against a 1 s period of 10 bar) shifts both points by about 0.06 bar (the sine's rate
+    times tau), hence the 0.1 bar tolerance."""
+
+    def edges(p_h: str) -> tuple[float, float]:
+        s = System("hysteresis", t_end=1.0)
+        s.add(c.Sine("sine", offset=200e5, amplitude=10e5, frequency="1 Hz"))
+        s.add(c.PressureSource("supply"))
+        s.add(c.Tank("tank"))
+        s.add(c.ReliefValve("relief", p_crack="200 bar", tau="1 ms", p_h=p_h))
+        s.connect("sine.y", "supply.u")
+        s.connect("supply.P", "relief.A")
+        s.connect("relief.B", "tank.P")
+        r = s.simulate(n_points=20_001, accuracy=1e-8)
+        is_open = r["relief.K"] > 1e-3 * 1e-3 / np.sqrt(P_NOM)  # above 0.1 % of full opening
+        opens = np.flatnonzero(~is_open[:-1] & is_open[1:])[0]
+        closes = np.flatnonzero(is_open[:-1] & ~is_open[1:])[0]
+        return float(r["supply.p"][opens]), float(r["supply.p"][closes])
+
+    up, down = edges("5 bar")
+    assert up == pytest.approx(202.5e5, abs=0.1e5) and down == pytest.approx(197.5e5, abs=0.1e5)
+    up0, down0 = edges("0 bar")
+    assert up0 == pytest.approx(200e5, abs=0.1e5) and down0 == pytest.approx(200e5, abs=0.1e5)
+
+
+def test_a_balanced_spool_refuses_a_hysteresis():
+    s = System("balanced", t_end=0.1)
+    s.add(c.ConstantPressure("high", p="210 bar"))
+    s.add(c.Tank("tank"))
+    s.add(c.ReliefValve("relief", spool="balance", p_h="5 bar"))
+    s.connect("high.P", "relief.A")
+    s.connect("relief.B", "tank.P")
+    with pytest.raises(Exception, match=r"relief\.p_h = 500000 Pa: a hysteresis needs spool"):
+        s.simulate()

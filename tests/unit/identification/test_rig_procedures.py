@@ -89,6 +89,8 @@ def test_leakage_needs_both_chamber_pressures() -> None:
         leakage_from_record(arm, record)
 
 
+# slow: four slow sweeps of the robot arm; the other rig procedures stay in the default suite
+@pytest.mark.slow
 def test_flow_coefficient_and_hysteresis_recovered() -> None:
     # The robot arm's valve has K(x_v) (1 between 20 and 50 % of the stroke, less outside) and 5 % less flow
     # while closing (H_closing 0.95): slow sweeps up and down, extending and retracting, recover both.

@@ -8,14 +8,17 @@ from typing import Any
 from hydroservo import backend as bk
 from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
 from hydroservo.components.valves.ports import TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
+from hydroservo.errors import ParameterError
 from hydroservo.laws.orifice import turbulent_flow
 from hydroservo.laws.pressure_valve import (
     STOP_RELAXATION,
+    hysteresis_half_width,
     limited_lag_rate,
     limited_rate,
     opening_fraction,
     pressure_valve_coefficient,
     spool_balance_rate,
+    valve_hysteresis,
 )
 
 __all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve"]
@@ -35,6 +38,7 @@ SPOOL_PARAMETERS = {
     "p_tr": Param(
         1e4, "Pa", "drop below which the flow is taken as laminar (regularisation at null)", min=0.0, min_inclusive=False
     ),
+    "p_h": Param(0.0, "Pa", "width of the spool's hysteresis in the pilot pressure (0: none)", min=0.0),
 }
 
 
@@ -74,6 +78,14 @@ class _PressureControl(Component):
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         raise NotImplementedError
 
+    def check(self) -> None:
+        super().check()
+        if self.option("spool") == "balance" and self.values["p_h"] > 0.0:
+            raise ParameterError(
+                f"{self.name}.p_h = {self.values['p_h']:g} Pa: a hysteresis needs spool = \"lag\"; "
+                "expected 0 with spool = \"balance\""
+            )
+
     def _K(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         return bk.fmin(bk.fmax(x["K"], 0.0), p["q_nom"] / bk.sqrt(p["p_nom"]))
 
@@ -93,13 +105,25 @@ class _PressureControl(Component):
             tau = p["tau"] / (1.0 + bk.fmax(dp, 0.0) * p["k_cs"] / (p["k_cf"] * p["p_nom"]))
             return {"K": limited_rate(x["K"], rate, K_max, STOP_RELAXATION * tau)}
         target = pressure_valve_coefficient(self.over(u, p), dp, p["k_cs"], p["k_cf"], p["p_nom"])
+        if self.values["p_h"] > 0.0:
+            w = hysteresis_half_width(p["p_h"], dp, p["k_cs"], p["k_cf"], p["p_nom"])
+            target = valve_hysteresis(target, x["K"], w)
         return {"K": limited_lag_rate(x["K"], target, p["tau"], K_max)}
 
     def switch_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, tuple[Any, float]]:
-        """Cracking: the pilot pressure passing the setting, where the static opening leaves zero."""
-        return {"cracking": (self.over(u, p), 1e5)}
+        """Cracking: the pilot pressure passing the setting, where the static opening leaves zero; with a
+        hysteresis, the static opening leaving the band around the spool (where the spool starts or stops)."""
+        events = {"cracking": (self.over(u, p), 1e5)}
+        if self.values["p_h"] > 0.0 and self.option("spool") == "lag":
+            dp = u["pA"] - u["pB"]
+            target = pressure_valve_coefficient(self.over(u, p), dp, p["k_cs"], p["k_cf"], p["p_nom"])
+            w = hysteresis_half_width(p["p_h"], dp, p["k_cs"], p["k_cf"], p["p_nom"])
+            K_max = float(self.values["q_nom"]) / float(self.values["p_nom"]) ** 0.5
+            events["band_up"] = (target - x["K"] - w, K_max)
+            events["band_down"] = (target - x["K"] + w, K_max)
+        return events
 
 
 @register
@@ -111,8 +135,8 @@ class ReliefValve(_PressureControl):
     pressure, then passing :math:`Q \approx k_{cs}(p_A - p_{crack})\sqrt{\Delta p/p_{nom}}`,
     fully open at ``q_nom`` (at ``p_nom``); the spool follows with time
     constant ``tau``. This is the law of Hopsan's HydraulicPressureReliefValve
-    ([Hopsan2026]) in the limit of a small time step, with the pressure
-    hysteresis left out; the turbulent law is regularised below ``p_tr`` as
+    ([Hopsan2026]) in the limit of a small time step, its pressure
+    hysteresis ``p_h`` included (0 by default, Hopsan's is 5 bar); the turbulent law is regularised below ``p_tr`` as
     every orifice of the package is (:mod:`hydroservo.laws.orifice`).
 
     Option ``pilot``: ``inlet`` (default), the spring chamber at the
@@ -154,7 +178,7 @@ class PressureReducingValve(_PressureControl):
     :math:`\Delta p_{over} = p_{set} - p_B`: fully open while the outlet is well
     below the setting, throttling as it approaches it, closed above it. The
     law of Hopsan's HydraulicPressureReducingValve ([Hopsan2026]) in the limit
-    of a small time step, hysteresis left out; with ``spool = "balance"``,
+    of a small time step, hysteresis ``p_h`` included; with ``spool = "balance"``,
     that of its HydraulicPressureReducingValveG.
     """
 
