@@ -14,6 +14,7 @@ from hydroservo.components.valves.ports import FLOW_OUTPUTS, FLUID_PARAMETERS, H
 from hydroservo.errors import ParameterError
 from hydroservo.laws.four_way import four_way_valve_flows
 from hydroservo.laws.orifice import laminar_flow, transition_pressure
+from hydroservo.laws.pressure_valve import opening_fraction
 
 __all__ = ["FourWayValve", "LOAD_SENSING_CONDUCTANCE"]
 
@@ -21,6 +22,10 @@ __all__ = ["FourWayValve", "LOAD_SENSING_CONDUCTANCE"]
 #: load_sensing = port): stiff, so that a load-sensing line of 1e-5 m^3 follows within 1e-8 s and 17 Pa per L/min
 #: (Hopsan's connection is ideal); not a parameter, so that a valve without the port carries none.
 LOAD_SENSING_CONDUCTANCE = 1e-6
+#: The spool travel over which port L passes from B's pressure to A's, a fraction of ``xv_max`` [-]: Hopsan's
+#: switch at x_v = 0 rounded (:func:`hydroservo.laws.pressure_valve.opening_fraction`), so that a spool resting at
+#: its centre does not toggle the line between two pressures at every step.
+LOAD_SENSING_BAND = 1e-4
 
 
 @register
@@ -50,7 +55,9 @@ class FourWayValve(Component):
     the line within :math:`Q_L/G_L` of the loaded port's pressure. As Hopsan's Hydraulic43LoadSensingValve
     ([Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic43LoadSensingValve.hpp), which writes that
     pressure to its PL node (an ideal connection: its flow :math:`(p_{load} - c_L)/Z_{c,L}`), the line's flow is
-    not taken from A or B. The switch from A to B at :math:`x_v = 0` is an event.
+    not taken from A or B. Hopsan switches from B to A at :math:`x_v = 0`; here over
+    :data:`LOAD_SENSING_BAND` of the stroke about it (the pressures blended by a rounded ramp), so that a spool
+    resting at its centre does not toggle the line between two pressures at every step.
     """
 
     RENAMED = {"x_max": "xv_max"}
@@ -160,14 +167,9 @@ class FourWayValve(Component):
         )
         out = {"QA": QA, "QB": QB, "QS": QS, "QT": QT}
         if self.option("load_sensing") == "port":
-            out["QL"] = laminar_flow(LOAD_SENSING_CONDUCTANCE, bk.if_else(xv >= 0.0, u["pA"], u["pB"]) - u["pL"])
+            band = LOAD_SENSING_BAND * p["xv_max"]
+            s = opening_fraction(xv, -0.5 * band, band)
+            out["QL"] = laminar_flow(LOAD_SENSING_CONDUCTANCE, s * u["pA"] + (1.0 - s) * u["pB"] - u["pL"])
         return out
 
-    def switch_equations(
-        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
-    ) -> dict[str, tuple[Any, float]]:
-        """The load-sensing port passing from B to A: the spool through its centre."""
-        if self.option("load_sensing") != "port":
-            return {}
-        return {"load_sensing": (u["xv"], 1e-3 * p["xv_max"])}
 

@@ -17,11 +17,14 @@ def test_the_outlet_is_fed_from_the_higher_inlet_both_ways() -> None:
     assert float(out["Q1"]) == float(out["Q3"]) and float(out["Q2"]) == 0.0 and float(out["out"]) == -1.0
     out = v.output_equations(0.0, {}, {"p1": 80e5, "p2": 50e5, "p3": 81e5}, v.values)
     assert float(out["Q1"]) == pytest.approx(-2e-7 * 1e5, rel=1e-12) and float(out["Q2"]) == 0.0
-    # P2 higher (and equal inlets: P2, as Hopsan's p1 > p2 test)
-    for p1 in (50e5, 80e5):
-        out = v.output_equations(0.0, {}, {"p1": p1, "p2": 80e5, "p3": 70e5}, v.values)
-        assert float(out["Q2"]) == pytest.approx(2e-7 * (80e5 - 70e5), rel=1e-12)
-        assert float(out["Q1"]) == 0.0 and float(out["out"]) == 1.0
+    # P2 higher, by more than half the shift band
+    out = v.output_equations(0.0, {}, {"p1": 80e5 - 51.0, "p2": 80e5, "p3": 70e5}, v.values)
+    assert float(out["Q2"]) == pytest.approx(2e-7 * (80e5 - 70e5), rel=1e-12)
+    assert float(out["Q1"]) == 0.0 and float(out["out"]) == 1.0
+    # balanced: the ball floats, both seats half open, the outlet still fed at the inlets' pressure
+    out = v.output_equations(0.0, {}, {"p1": 80e5, "p2": 80e5, "p3": 70e5}, v.values)
+    assert float(out["Q1"]) == pytest.approx(float(out["Q2"]), rel=1e-12)
+    assert float(out["Q3"]) == pytest.approx(2e-7 * (80e5 - 70e5), rel=1e-12) and float(out["out"]) == 0.0
 
 
 def test_a_volume_behind_it_settles_where_its_drain_takes_the_flow_through_the_seat() -> None:
