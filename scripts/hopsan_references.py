@@ -23,6 +23,7 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
+import re
 import subprocess
 import sys
 import tempfile
@@ -35,9 +36,15 @@ HERE = Path(__file__).resolve().parent
 OUT = HERE.parent / "src" / "hydroservo" / "data" / "reference" / "hopsan"
 
 
-def run_hopsan(cli: Path, model: Path, h: float, t0: float, t1: float, samples: int) -> dict[str, np.ndarray]:
-    """Hopsan's logged variables (``Comp#Port#Var`` -> trace) of one run at step ``h``."""
+def run_hopsan(
+    cli: Path, model: Path, h: float, t0: float, t1: float, samples: int, renamed: tuple[tuple[str, str], ...] = ()
+) -> dict[str, np.ndarray]:
+    """Hopsan's logged variables (``Comp#Port#Var`` -> trace) of one run at step ``h``; with ``renamed``, of a
+    copy of the model with those components renamed (old, new), beside links to the files of its folder (a
+    lookup table's CSV), its variables named back."""
     with tempfile.TemporaryDirectory() as tmp:
+        if renamed:
+            model = _renamed_copy(model, Path(tmp), renamed)
         out = Path(tmp) / "out.csv"
         cmd = [str(cli), "-m", str(model), "-s", f"{t0!r},{h!r},{t1!r}", "-l", str(samples),
                "--resultsFullCSV", str(out), "--resultsCSVSort", "cols"]
@@ -46,8 +53,25 @@ def run_hopsan(cli: Path, model: Path, h: float, t0: float, t1: float, samples: 
             raise RuntimeError(f"hopsancli failed on {model.name} at step {h:g}: {done.stdout[-2000:]}{done.stderr[-2000:]}")
         lines = out.read_text().splitlines()
     names = lines[0].split(",")
+    back = {f"{new}#": f"{old}#" for old, new in renamed}
+    names = [next((back[k] + name[len(k):] for k in back if name.startswith(k)), name) for name in names]
     data = np.array([[float(v) for v in line.split(",")] for line in lines[3:] if line.strip()])
     return {name: data[:, i] for i, name in enumerate(names)}
+
+
+def _renamed_copy(model: Path, folder: Path, renamed: tuple[tuple[str, str], ...]) -> Path:
+    """A copy of ``model`` in ``folder`` with components renamed (their names and the connections' ends), and
+    links to the other files of the model's folder, which the model may name relative to itself."""
+    for other in model.parent.iterdir():
+        if other.is_file() and other != model:
+            (folder / other.name).symlink_to(other)
+    text = model.read_text(encoding="utf-8")
+    for old, new in renamed:
+        for attribute in ("name", "startcomponent", "endcomponent"):
+            text = re.sub(rf'(\s{attribute}=)"{re.escape(old)}"', rf'\1"{new}"', text)
+    copy = folder / model.name
+    copy.write_text(text, encoding="utf-8")
+    return copy
 
 
 def variables(model: Path, logged: set[str]) -> dict[str, str]:
@@ -123,12 +147,12 @@ def main() -> int:
 
         hmf = read_hmf(model)
         h = spec.timestep or hmf.timestep
-        chosen = variables(model, set(run_hopsan(args.cli, model, h, hmf.start, hmf.stop, 3)))
+        chosen = variables(model, set(run_hopsan(args.cli, model, h, hmf.start, hmf.stop, 3, spec.renamed)))
         runs: list[tuple[float, dict[str, np.ndarray], float]] = []
         table = []
         for _ in range(args.levels + 1):
             started = time.perf_counter()
-            result = run_hopsan(args.cli, model, h, hmf.start, hmf.stop, args.samples)
+            result = run_hopsan(args.cli, model, h, hmf.start, hmf.stop, args.samples, spec.renamed)
             runs.append((h, result, time.perf_counter() - started))
             if len(runs) >= 2:
                 change = {v: _rel(np.where(jumps(runs[-1][1][v]) | jumps(runs[-2][1][v]), 0.0, runs[-1][1][v] - runs[-2][1][v]),

@@ -16,14 +16,15 @@ module                 components
                        AngularVelocitySource
 :mod:`.valves`         FourWayValve, ThreeWayValve, TwoWayValve, PseudoSectionValve, ServoSolenoidValve,
                        StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ShuttleValve, ReliefValve,
-                       PressureReducingValve, CounterbalanceValve
+                       PressureReducingValve, CounterbalanceValve, PilotedValve, PilotCheckValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
                        Staircase, Ramp, Sine, Square, Table
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
                        Lag, TransferFunction, Integrator, Saturation, DeadZone,
-                       RateLimiter, Selector, PID, Amplifier, Transducer
+                       RateLimiter, Hysteresis, Latch, Selector, PID, Amplifier,
+                       Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -51,8 +52,10 @@ from hydroservo.components.control import (
     DeadZone,
     Function,
     Gain,
+    Hysteresis,
     Integrator,
     Lag,
+    Latch,
     Power,
     Product,
     Quotient,
@@ -98,6 +101,8 @@ from hydroservo.components.valves import (
     FourWayValve,
     LaminarOrifice,
     Orifice,
+    PilotCheckValve,
+    PilotedValve,
     PressureReducingValve,
     PseudoSectionValve,
     ReliefValve,
@@ -166,9 +171,11 @@ __all__ = [
     "Orifice",
     "CheckValve",
     "ShuttleValve",
+    "PilotCheckValve",
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
+    "PilotedValve",
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",
@@ -190,6 +197,8 @@ __all__ = [
     "Saturation",
     "DeadZone",
     "RateLimiter",
+    "Hysteresis",
+    "Latch",
     "Selector",
     "PID",
     "Amplifier",

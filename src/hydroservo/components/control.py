@@ -7,6 +7,7 @@ current, a transducer's input) declare it.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from dataclasses import replace
 from typing import Any
@@ -15,11 +16,12 @@ from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Option, Output, Param, Port, State, register
 from hydroservo.components.signals import SIGNAL_OUTPUT
 from hydroservo.errors import ParameterError, UnitError
+from hydroservo.laws.pressure_valve import valve_hysteresis
 from hydroservo.units import coherent_unit, is_absolute_pressure
 
 __all__ = [
     "Sum", "Product", "Quotient", "Absolute", "Power", "Function", "Gain", "Lag", "TransferFunction", "Integrator",
-    "Saturation", "DeadZone", "RateLimiter", "Selector", "PID", "Amplifier", "Transducer",
+    "Saturation", "DeadZone", "RateLimiter", "Hysteresis", "Latch", "Selector", "PID", "Amplifier", "Transducer",
 ]
 
 
@@ -97,7 +99,7 @@ class Power(Component):
 #: The functions of :class:`Function` (its option ``function``).
 FUNCTIONS = (
     "sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh",
-    "square", "sign",
+    "square", "sign", "floor", "ceil", "round", "greater", "smaller", "and", "or",
 )
 
 
@@ -112,8 +114,13 @@ class Function(Component):
     :math:`\arccos` of :math:`|u| > 1` are those of :math:`\pm 1`. The other functions have no domain to leave
     (``error`` is 0). ``atan2`` is the angle of the point ``(u2, u)`` in :math:`(-\pi, \pi]` (Hopsan's inY is
     ``u``, inX ``u2``); ``sign`` is 1 for :math:`u \ge 0` and -1 below, as Hopsan's (not 0 at 0); ``square`` is
-    :math:`u^2`. Where the output or the error jumps or has a kink (the domain's edges, the sign's and atan2's
-    jumps at :math:`u = 0`, the tangent's poles), a switch event.
+    :math:`u^2`. ``floor``, ``ceil`` and ``round`` (half away from zero, C's ``round``) are Hopsan's
+    SignalFloor, SignalCeil and SignalRound (Signal/MathFunctions/). The comparisons and logic of Hopsan's
+    Signal/Logic/ read two signals and give 1 or 0: ``greater`` :math:`u > u_2` and ``smaller`` :math:`u < u_2`
+    (SignalGreaterThan, SignalSmallerThan: ``in`` and ``x_limit``), ``and`` and ``or`` of :math:`u > 0.5` and
+    :math:`u_2 > 0.5` (SignalAnd, SignalOr: Hopsan's doubleToBool). Where the output or the error jumps or has a
+    kink (the domain's edges, the sign's and atan2's jumps at :math:`u = 0`, the tangent's poles, the integers
+    or half-integers where floor, ceil and round step, the comparisons' and logic's switching), a switch event.
     """
 
     INPUTS = {
@@ -147,6 +154,15 @@ class Function(Component):
             y = a * a
         elif f == "sign":
             y = bk.if_else(a >= 0.0, 1.0, -1.0)
+        elif f in ("floor", "ceil"):
+            y = bk.floor(a) if f == "floor" else -bk.floor(-a)
+        elif f == "round":
+            y = bk.if_else(a >= 0.0, bk.floor(a + 0.5), -bk.floor(0.5 - a))
+        elif f in ("greater", "smaller"):
+            y = bk.if_else(a > u["u2"] if f == "greater" else a < u["u2"], 1.0, 0.0)
+        elif f in ("and", "or"):
+            both = (a > 0.5) * (u["u2"] > 0.5) if f == "and" else (a > 0.5) + (u["u2"] > 0.5)
+            y = bk.if_else(both > 0, 1.0, 0.0)
         else:
             y = getattr(bk, f)(a)
         return {"y": y, "error": error}
@@ -161,6 +177,14 @@ class Function(Component):
             return {"upper": (a - 1.0, 1.0), "lower": (a + 1.0, 1.0)}
         if f == "tan":
             return {"pole": (bk.cos(a), 1.0)}
+        if f in ("floor", "ceil"):  # the sine of pi u changes sign at each integer
+            return {"step": (bk.sin(math.pi * a), 1.0)}
+        if f == "round":
+            return {"step": (bk.cos(math.pi * a), 1.0)}
+        if f in ("greater", "smaller"):
+            return {"switch": (a - u["u2"], 1.0)}
+        if f in ("and", "or"):
+            return {"switch1": (a - 0.5, 1.0), "switch2": (u["u2"] - 0.5, 1.0)}
         return {}
 
 
@@ -453,6 +477,86 @@ class RateLimiter(Component):
 
 
 @register
+class Hysteresis(Component):
+    r"""Hysteresis (backlash, play): the output stays put while the input moves within half the ``band`` of it,
+    and is dragged along at that distance beyond (Hopsan's SignalHysteresis, [Hopsan2026]
+    Signal/Non-Linearities/SignalHysteresis.hpp).
+
+    Hopsan's step sets the output to its previous value held within :math:`u \pm y_h/2` (ValveHysteresis'
+    ``getValue``, :func:`hydroservo.laws.pressure_valve.valve_hysteresis`): as the step vanishes, the output
+    is that play operator of the input. Here that law is an ODE, :math:`\dot y = (\min(\max(y, u - y_h/2),
+    u + y_h/2) - y)/\tau`: the output follows the band's edge within a few ``tau`` (1 µs by default, as
+    :class:`RateLimiter`'s tracking) and holds exactly inside it. The band's edges reached are switch events. The
+    output starts at ``y0`` (Hopsan's at the input's start value).
+    """
+
+    PARAMETERS = {
+        "band": Param(1.0, SIGNAL, "width of the hysteresis band (y_h)", min=0.0),
+        "tau": Param(1e-6, "s", "time constant with which the output follows the band", min=0.0, min_inclusive=False),
+        "y0": Param(0.0, SIGNAL, "initial output"),
+    }
+    STATES = {"y": State(SIGNAL, "output", initial="y0", nominal=1.0)}
+    INPUTS = {"u": Port(SIGNAL, "input")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": x["y"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": (valve_hysteresis(u["u"], x["y"], 0.5 * p["band"]) - x["y"]) / p["tau"]}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        gap = u["u"] - x["y"]
+        return {"upper": (gap - 0.5 * p["band"], 1.0), "lower": (gap + 0.5 * p["band"], 1.0)}
+
+
+@register
+class Latch(Component):
+    r"""A set-reset latch: ``Q`` goes to 1 while ``set`` holds and ``reset`` does not, to 0 while ``reset`` holds
+    and ``set`` does not (or both), and keeps its value while neither does; ``notQ`` = 1 - ``Q`` (Hopsan's
+    SignalSRlatch, [Hopsan2026] Signal/Logic/SignalSRlatch.hpp).
+
+    Hopsan's step sets :math:`Q_n = f(S, R, Q_{n-1})` with
+    :math:`f = \lfloor \lfloor S(1 - \lfloor R \rceil) \rceil - \lfloor R(1 - \lfloor S \rceil) \rceil
+    + \lfloor Q \lfloor (1 - \lfloor R \rceil)(1 - \lfloor S \rceil) \rceil \rceil \rceil`,
+    :math:`\lfloor\cdot\rceil` limiting to [0, 1]; as the step vanishes, :math:`Q` takes the value
+    :math:`Q = f(S, R, Q)` at once where the inputs change, and keeps it while they hold. Here that law is an ODE,
+    :math:`\dot Q = (f(S, R, Q) - Q)/\tau`: ``Q`` follows within a few ``tau`` (1 µs by default, as
+    :class:`RateLimiter`'s tracking), and holds exactly while neither input is set (:math:`f = Q`). Inputs are
+    read as Hopsan's formula reads them (not thresholded): 0 and 1 are off and on.
+    """
+
+    PARAMETERS = {
+        "tau": Param(1e-6, "s", "time constant with which Q follows the latch's law", min=0.0, min_inclusive=False),
+        "Q0": Param(0.0, "", "initial state", min=0.0, max=1.0),
+    }
+    STATES = {"Q": State("", "the latch's state", initial="Q0", nominal=1.0)}
+    INPUTS = {"set": Port("", "set condition (1: on)", default=0.0), "reset": Port("", "reset condition (1: on)", default=0.0)}
+    OUTPUTS = {"Q": Output("", "state"), "notQ": Output("", "1 - state")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"Q": x["Q"], "notQ": 1.0 - x["Q"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        def lim(v: Any) -> Any:
+            return bk.clip(v, 0.0, 1.0)
+
+        S, R, Q = u["set"], u["reset"], x["Q"]
+        law = lim(lim(S * (1.0 - lim(R))) - lim(R * (1.0 - lim(S))) + lim(Q * lim((1.0 - lim(R)) * (1.0 - lim(S)))))
+        return {"Q": (law - Q) / p["tau"]}
+
+
+@register
 class Selector(Component):
     """One of up to four inputs, chosen by ``route``: ``u1`` while ``route < limit12``, ``u2`` while
     ``route < limit23``, ``u3`` while ``route < limit34``, else ``u4`` (Hopsan's SignalDualRoute,
@@ -489,10 +593,30 @@ class Selector(Component):
 class PID(Component):
     r"""PID controller on the error ``e`` with filtered derivative and clamped output.
 
-    :math:`y = \operatorname{sat}(K_p e + K_i \int e\,dt + K_d \dot e_f)`, where
-    :math:`e_f` is ``e`` through a first-order filter of time constant ``T_f``.
-    The integrator stops integrating while the output is saturated and the
-    error would drive it further (conditional integration anti-windup).
+    :math:`y = \operatorname{sat}(v)`, :math:`v = K_p e + K_i I + K_d \dot e_f`, where
+    :math:`e_f` is ``e`` through a first-order filter of time constant ``T_f``,
+    :math:`\dot I = e` and :math:`\operatorname{sat}` limits to [``lower``, ``upper``].
+    With option ``derivative = "input"`` the derivative is the input ``de`` instead,
+    :math:`v = K_p e + K_i I + K_d\,de` (no filter: the derivative of ``e``, or of what it
+    is made of, given by the model).
+
+    The integrator's anti-windup is the option ``anti_windup``:
+
+    * ``conditional`` (default): the integrator stops while the output is saturated and the
+      error would drive it further;
+    * ``clamping``: the integrator stops whenever the output is saturated,
+      :math:`\dot I = e` only while ``lower`` < v < ``upper``: Hopsan's SignalPID and
+      SignalPIlead ([Hopsan2026] Signal/Control/SignalPID.hpp, SignalPIlead.hpp, whose
+      integrator's input ``Ierr`` is the error times ``dxLimit`` of the limited output: 1
+      inside the limits, 1e-9 at them, a numerical remnant of 0);
+    * ``tracking`` (back-calculation): :math:`K_i \dot I = K_i e + (\operatorname{sat_t}(v) - v)/T_t`,
+      :math:`\operatorname{sat_t}` limiting to [``track_lower``, ``track_upper``], so that the
+      integral part is pulled back with the time constant ``T_t`` while :math:`v` is outside
+      them (the output is still limited to [``lower``, ``upper``]): Hopsan's SignalPID2
+      ([Hopsan2026] Signal/Control/SignalPID2.hpp, whose explicit step
+      :math:`I \mathrel{+}= T_s/T_t (U_{max} - v)` is that law's Euler step). Needs ``Ki`` > 0.
+
+    The switches of the anti-windup are switch events.
     """
 
     PARAMETERS = {
@@ -502,6 +626,9 @@ class PID(Component):
         "T_f": Param(1e-3, "s", "derivative filter time constant", min=0.0, min_inclusive=False),
         "lower": Param(-1e30, SIGNAL, "output lower limit"),
         "upper": Param(1e30, SIGNAL, "output upper limit"),
+        "T_t": Param(1.0, "s", "tracking time constant (anti_windup = tracking)", min=0.0, min_inclusive=False),
+        "track_lower": Param(-1e30, SIGNAL, "lower limit the integral tracks (anti_windup = tracking)"),
+        "track_upper": Param(1e30, SIGNAL, "upper limit the integral tracks (anti_windup = tracking)"),
     }
     STATES = {
         "I": State(SIGNAL + "*s", "integral of the error", nominal=1.0),
@@ -509,9 +636,39 @@ class PID(Component):
     }
     INPUTS = {"e": Port(SIGNAL, "error")}
     OUTPUTS = SIGNAL_OUTPUT
+    OPTIONS = {
+        "anti_windup": Option(
+            "conditional", ("conditional", "clamping", "tracking"), "how the integrator stops winding up at the limits"
+        ),
+        "derivative": Option("filtered", ("filtered", "input"), "the derivative: e through the filter T_f, or input de"),
+    }
+
+    def options_changed(self) -> None:
+        """With the derivative an input, the input ``de`` and no filter state."""
+        cls = type(self)
+        if self.option("derivative") == "input":
+            self.STATES = {"I": cls.STATES["I"]}  # type: ignore[misc]
+            self.INPUTS = {**cls.INPUTS, "de": Port(SIGNAL + "/s", "derivative of the error (derivative = input)")}  # type: ignore[misc]
+        else:
+            self.STATES, self.INPUTS = dict(cls.STATES), dict(cls.INPUTS)  # type: ignore[misc]
+        # the block's unit, as _bind_signal_unit gave the declarations
+        self.STATES = {k: replace(v, unit=self._unit(v.unit)) for k, v in self.STATES.items()}  # type: ignore[misc]
+        self.INPUTS = {k: replace(v, unit=self._unit(v.unit)) for k, v in self.INPUTS.items()}  # type: ignore[misc]
+
+    def _unit(self, unit: str) -> str:
+        y = self.OUTPUTS["y"].unit
+        if SIGNAL not in unit:
+            return unit
+        if y == "":
+            return unit.replace(SIGNAL + "/", "1/").replace(SIGNAL + "*", "").replace(SIGNAL, "")
+        return unit.replace(SIGNAL, y if y.isidentifier() else f"({y})")
+
+    def check(self) -> None:
+        if self.option("anti_windup") == "tracking" and self.values["Ki"] <= 0.0:
+            raise ParameterError(f"{self.name}.Ki = {self.values['Ki']:g} 1/s: anti_windup = tracking needs Ki > 0")
 
     def _raw(self, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
-        deriv = (u["e"] - x["e_f"]) / p["T_f"]
+        deriv = u["de"] if self.option("derivative") == "input" else (u["e"] - x["e_f"]) / p["T_f"]
         return p["Kp"] * u["e"] + p["Ki"] * x["I"] + p["Kd"] * deriv
 
     def output_equations(
@@ -524,8 +681,27 @@ class PID(Component):
     ) -> dict[str, Any]:
         raw = self._raw(x, u, p)
         e = u["e"]
-        windup = ((raw > p["upper"]) * (e * p["Ki"] > 0)) + ((raw < p["lower"]) * (e * p["Ki"] < 0))
-        return {"I": bk.if_else(windup > 0, 0.0, e), "e_f": (e - x["e_f"]) / p["T_f"]}
+        mode = self.option("anti_windup")
+        if mode == "tracking":
+            rate = e + (bk.fmin(bk.fmax(raw, p["track_lower"]), p["track_upper"]) - raw) / (p["Ki"] * p["T_t"])
+        elif mode == "clamping":
+            rate = bk.if_else((raw > p["lower"]) * (raw < p["upper"]) > 0, e, 0.0)
+        else:
+            windup = ((raw > p["upper"]) * (e * p["Ki"] > 0)) + ((raw < p["lower"]) * (e * p["Ki"] < 0))
+            rate = bk.if_else(windup > 0, 0.0, e)
+        rates = {"I": rate}
+        if self.option("derivative") != "input":
+            rates["e_f"] = (e - x["e_f"]) / p["T_f"]
+        return rates
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        if self.option("anti_windup") == "conditional":
+            return {}
+        raw = self._raw(x, u, p)
+        lo, hi = ("track_lower", "track_upper") if self.option("anti_windup") == "tracking" else ("lower", "upper")
+        return {"lower": (raw - p[lo], 1.0), "upper": (raw - p[hi], 1.0)}
 
 
 @register

@@ -84,7 +84,9 @@ class Cylinder(Component):
     Output ``F`` is the hydraulic force on the piston in +x (the chambers' gauge
     pressures on their areas, and ``p_amb``, the gauge pressure around the rod,
     on the rod's section: 0 for a rod in the atmosphere; Hopsan's cylinder, whose
-    force is that of absolute pressures, has none, ``"0 Pa_abs"``), less the
+    force is that of absolute pressures, has none, ``"0 Pa_abs"``), less a
+    constant spring force ``F_s`` (a spring-loaded piston's: Hopsan's
+    HydraulicSpringLoadedPistonC, [Hopsan2026]) and the
     piston's viscous friction ``B_p`` v, plus the end-stop force
     (:func:`~hydroservo.laws.stops.end_stop_force`): a spring-damper (``k_stop``, ``c_stop``) acting beyond ``x_min``/``x_max``,
     stiff by default (1e9 N/m, 1e6 N s/m: 0.1 mm under 100 kN, a hard stop for any
@@ -94,6 +96,14 @@ class Cylinder(Component):
     in the moving mass. The rod's end is the mechanical port ``R``
     (``connect("cyl.R", "load.P1")`` feeds ``x``, ``v`` and ``F``). Outputs ``VA``, ``VB`` are the volumes of the
     pressure equations.
+
+    Option ``chambers``: ``volumes`` (default), the chambers' pressures build up in the cylinder as above (its
+    ports ``A`` and ``B`` are pressure ports); ``ports``, the chambers' oil is outside it, in the volumes joined to
+    ``A`` and ``B``, whose pressures the piston reads (flow ports: the flow into A is
+    :math:`A_A\dot x + Q_{Li} + C_{LeA} p_A`, into B :math:`-A_B\dot x - Q_{Li} + C_{LeB} p_B`, with no pressure
+    states, volumes or oil mass). That is the same piston with the other causality, Hopsan's
+    HydraulicCylinderQ ([Hopsan2026] Hydraulic/LinearActuators/HydraulicCylinderQ.hpp, whose chambers are the
+    C components joined to it); the pressure floor options do not apply.
 
     Every run is checked against the cylinder's physical bounds (``LIMITS``,
     :mod:`hydroservo.system.plausibility`): chamber pressures between vacuum and
@@ -133,6 +143,7 @@ class Cylinder(Component):
             0.0, "Pa", "pressure around the rod, acting on its section A_A - A_B (gauge; '0 Pa_abs' for none)", min=VACUUM
         ),
         "c_stop": Param(1e6, "N*s/m", "end-stop damping", min=0.0),
+        "F_s": Param(0.0, "N", "constant spring force on the piston, in -x (a spring-loaded piston's)"),
         "pA0": Param(0.0, "Pa", "initial pressure, side A", min=VACUUM),
         "pB0": Param(0.0, "Pa", "initial pressure, side B", min=VACUUM),
     }
@@ -142,6 +153,11 @@ class Cylinder(Component):
             "check-valve",
             ("check-valve", "cavity", "none"),
             "replenishing check valves, a cavity to refill (Hopsan), or none",
+        ),
+        "chambers": Option(
+            "volumes",
+            ("volumes", "ports"),
+            "the chambers' pressures built up in the cylinder, or read from the volumes joined to A and B",
         ),
     }
     STATES = {
@@ -179,8 +195,27 @@ class Cylinder(Component):
     }
 
     def options_changed(self) -> None:
-        """The states of the chosen pressure floor: the pressures, or (cavity) pressure states below the ports' pressures."""
+        """The states of the chosen pressure floor: the pressures, or (cavity) pressure states below the ports' pressures;
+        with the chambers outside (option ``chambers = "ports"``), none: the ports read the pressures and give the
+        flows."""
         cls = type(self)
+        if self.option("chambers") == "ports":
+            self.STATES = {}  # type: ignore[misc]
+            self.INPUTS = {  # type: ignore[misc]
+                "pA": Port("Pa", "pressure at port A (of the volume joined to it)"),
+                "pB": Port("Pa", "pressure at port B (of the volume joined to it)"),
+                "x": cls.INPUTS["x"],
+                "v": cls.INPUTS["v"],
+            }
+            self.OUTPUTS = {  # type: ignore[misc]
+                "QA": Output("m^3/s", "flow into the cylinder at A"),
+                "QB": Output("m^3/s", "flow into the cylinder at B"),
+                "F": cls.OUTPUTS["F"],
+                "QLi": cls.OUTPUTS["QLi"],
+            }
+            self.LIMITS = {"x": cls.LIMITS["x"]}  # type: ignore[misc]
+            return
+        self.INPUTS, self.LIMITS = dict(cls.INPUTS), dict(cls.LIMITS)  # type: ignore[misc]
         if self.option("pressure_floor") != "cavity":
             self.STATES, self.OUTPUTS = dict(cls.STATES), dict(cls.OUTPUTS)  # type: ignore[misc]
             return
@@ -199,8 +234,10 @@ class Cylinder(Component):
             "V_cavB": Output("m^3", "cavity volume in side B (option cavity)"),
         }
 
-    def _pressures(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> tuple[Any, Any]:
+    def _pressures(self, x: Mapping[str, Any], p: Mapping[str, Any], u: Mapping[str, Any]) -> tuple[Any, Any]:
         """The chamber pressures the ports and the piston see."""
+        if self.option("chambers") == "ports":
+            return u["pA"], u["pB"]
         if self.option("pressure_floor") == "cavity":
             return cavity_pressure(x["pA_state"], p["p_floor"]), cavity_pressure(x["pB_state"], p["p_floor"])
         return x["pA"], x["pB"]
@@ -209,6 +246,8 @@ class Cylinder(Component):
         v = self.values
         if v["x_min"] >= v["x_max"]:
             raise ParameterError(f"{self.name}.x_min = {v['x_min']:g} m: expected below x_max = {v['x_max']:g} m")
+        if self.option("chambers") == "ports":
+            return  # no chamber volumes
         for side, area in (("A", "A_A"), ("B", "A_B")):
             for end in ("x_min", "x_max"):
                 sign = 1.0 if side == "A" else -1.0
@@ -230,13 +269,21 @@ class Cylinder(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        pA, pB = self._pressures(x, p)
-        cavity = self.option("pressure_floor") == "cavity"  # Hopsan's leakage: between the pressure states
+        pA, pB = self._pressures(x, p, u)
+        ports = self.option("chambers") == "ports"
+        cavity = not ports and self.option("pressure_floor") == "cavity"  # Hopsan's leakage: between the states
         drop = x["pA_state"] - x["pB_state"] if cavity else pA - pB
-        out = {"pA": pA, "pB": pB, "QLi": p["C_Li"] * drop}
+        out = {"QLi": p["C_Li"] * drop}
         pos = u["x"]
         stop = end_stop_force(pos, u["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
-        out["F"] = pA * p["A_A"] - pB * p["A_B"] - p["p_amb"] * (p["A_A"] - p["A_B"]) - p["B_p"] * u["v"] + stop
+        out["F"] = (
+            pA * p["A_A"] - pB * p["A_B"] - p["p_amb"] * (p["A_A"] - p["A_B"]) - p["F_s"] - p["B_p"] * u["v"] + stop
+        )
+        if ports:  # the chambers' continuity is the volumes' outside: the flows the piston displaces
+            out["QA"] = p["A_A"] * u["v"] + out["QLi"] + p["C_LeA"] * pA
+            out["QB"] = -p["A_B"] * u["v"] - out["QLi"] + p["C_LeB"] * pB
+            return out
+        out["pA"], out["pB"] = pA, pB
         VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
         out["m_oil"] = p["rho"] * (VA + VB)
         out["VA"], out["VB"] = VA, VB
@@ -250,6 +297,8 @@ class Cylinder(Component):
     ) -> dict[str, tuple[Any, float]]:
         """The end stops reached, and a chamber at its pressure floor (options cavity and check-valve)."""
         found = {"stop_min": (u["x"] - p["x_min"], 1e-3), "stop_max": (u["x"] - p["x_max"], 1e-3)}
+        if self.option("chambers") == "ports":
+            return found
         floor = self.option("pressure_floor")
         if floor == "cavity":
             found.update({f"floor_{s}": (x[f"p{s}_state"] - p["p_floor"], 1e5) for s in ("A", "B")})
@@ -260,6 +309,8 @@ class Cylinder(Component):
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
+        if self.option("chambers") == "ports":
+            return {}
         pA, pB = y["pA"], y["pB"]
         vel = u["v"]
         VA, VB = y["VA"], y["VB"]

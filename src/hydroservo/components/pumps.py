@@ -36,6 +36,7 @@ __all__ = ["Pump", "VariablePump", "LoadSensingPump", "Motor", "Machine"]
 _PUMP_INPUTS = {
     "pS": Port("Pa", "pressure at the suction port S", default=0.0),
     "pP": Port("Pa", "pressure at the pressure port P"),
+    "omega_in": Port("rad/s", "shaft speed (option speed = input; negative turns it backwards)", default=0.0),
 }
 _PUMP_HYDRAULIC = {
     "S": Hydraulic("pS", "QS", "suction port", into=True),
@@ -64,11 +65,18 @@ class Pump(Component):
     inlet, the inlet held within ``p_reg`` of the floor
     (:func:`~hydroservo.laws.displacement.floored_port_flow`), as Hopsan's pumps
     clamp their flow ([Hopsan2026]).
+
+    Option ``speed``: ``constant`` (default), the drive turns the shaft at
+    ``omega``; ``input``, at the input ``omega_in`` (a drive whose speed a
+    signal sets, as Hopsan's HydraulicFixedDisplacementPump takes its ``n_p``,
+    [Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementPump.hpp;
+    a negative speed turns the pump backwards, P to S).
     """
 
     OPTIONS = {
         "inlet": Option("free", ("free", "floor"),
                         "the displacement flow whatever the inlet pressure, or no port drawn below p_floor (Hopsan)"),
+        "speed": Option("constant", ("constant", "input"), "the shaft speed: the parameter omega, or the input omega_in"),
     }
 
     PARAMETERS = {
@@ -99,7 +107,8 @@ class Pump(Component):
 
     def _delivery(self, u: Mapping[str, Any], p: Mapping[str, Any], eps: Any = 1.0) -> dict[str, Any]:
         dp = u["pP"] - u["pS"]
-        q = displaced_flow(p["D"], p["omega"], eps) - leakage_flow(p["C_leak"], dp)
+        omega = u["omega_in"] if self.option("speed") == "input" else p["omega"]
+        q = displaced_flow(p["D"], omega, eps) - leakage_flow(p["C_leak"], dp)
         if self.option("inlet") == "floor":
             q = floored_port_flow(q, u["pS"], u["pP"], p["p_floor"], p["p_reg"])
         return {"QP": q, "QS": q, "T": motor_torque(eps * p["D"], dp), "p_rated": p["p_rated"]}

@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import SIGNAL, Component, Output, Param, register
+from hydroservo.components.base import SIGNAL, Component, Option, Output, Param, Port, register
 from hydroservo.errors import ParameterError
 
 __all__ = [
@@ -288,16 +288,27 @@ class Square(Component):
 
 @register
 class Table(Component):
-    """Signal from a time table, linear between points, held outside.
+    r"""Signal from a time table, linear between points, held outside.
 
     ``times`` [s] and ``values`` (the block's unit) are equally long lists. To
     take them from a CSV file use :func:`hydroservo.io.read_time_table`; a model
     file names the file with ``file = "record.csv"`` (and ``column``), and
     ``source`` keeps that name so that the model file can be written again.
+
+    With option ``index = "input"`` the table is a lookup table of its input
+    ``u`` rather than of time: ``times`` then holds the breakpoints of ``u`` (in
+    ``u``'s SI unit, strictly increasing) and :math:`y = scale \cdot f(u)`, ``f``
+    linear between the breakpoints and held at the first and last value outside
+    them: Hopsan's Signal1DLookupTable ([Hopsan2026]
+    Signal/Non-Linearities/Signal1DLookupTable.hpp, its LookupTable1D's
+    interpolation). The output has a kink at each breakpoint.
     """
 
     PARAMETERS = {"scale": Param(1.0, "", "factor applied to the values")}
     OUTPUTS = SIGNAL_OUTPUT
+    OPTIONS = {
+        "index": Option("time", ("time", "input"), "what the table is indexed by: time, or the input u (a lookup table)")
+    }
 
     def __init__(
         self,
@@ -318,7 +329,8 @@ class Table(Component):
                 f"{name}: times and values must be equally long and non-empty; got {t.size} and {v.size}"
             )
         if np.any(np.diff(t) <= 0):
-            raise ParameterError(f"{name}.times: expected strictly increasing times [s]")
+            what = "breakpoints of the input u (index = input)" if self.option("index") == "input" else "times [s]"
+            raise ParameterError(f"{name}.times: expected strictly increasing {what}")
         self.times, self.table_values = t, v
 
     def config(self) -> dict[str, Any]:
@@ -326,7 +338,13 @@ class Table(Component):
             return dict(self.source)
         return {"times": self.times.tolist(), "values": self.table_values.tolist()}
 
+    def options_changed(self) -> None:
+        """A lookup table (``index = "input"``) reads its input ``u``; a time table has none."""
+        by_input = self.option("index") == "input"
+        self.INPUTS = {"u": Port("", "the table's index (option index = input)")} if by_input else {}  # type: ignore[misc]
+
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"y": p["scale"] * bk.interp(t, self.times, self.table_values)}
+        index = u["u"] if self.option("index") == "input" else t
+        return {"y": p["scale"] * bk.interp(index, self.times, self.table_values)}

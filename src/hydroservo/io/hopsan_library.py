@@ -34,7 +34,7 @@ from hydroservo.io.hopsan import HopsanComponent, HopsanModel, HopsanParameter, 
 if TYPE_CHECKING:
     from hydroservo.system.system import System
 
-__all__ = ["read_hopsan", "HopsanImport", "LIBRARY", "safe_name"]
+__all__ = ["read_hopsan", "HopsanImport", "LIBRARY", "REFUSED", "safe_name"]
 
 #: Hopsan's pressures are absolute; hydroservo's signals are gauge pressures (``p_atm`` in an alias).
 ATMOSPHERE = 101325.0
@@ -106,6 +106,8 @@ class _Params:
         self.t0 = 0.0
         #: the component's ports Hopsan connects to something (its signal inputs among them are driven)
         self.driven = driven
+        #: the model file's folder: the files a component names (a lookup table's CSV) are read from it
+        self.folder: Path | None = None
 
     def __call__(self, name: str, default: float) -> float:
         for key in (f"{name}#Value", name):
@@ -116,6 +118,11 @@ class _Params:
                     return default
                 return par.value
         return default
+
+    def text(self, name: str, default: str = "") -> str:
+        """A text parameter (a file name, a separator) as the file gives it."""
+        par = self.hc.parameters.get(name)
+        return default if par is None else par.text
 
     def time(self, name: str, default: float) -> float:
         """A time parameter on hydroservo's clock, which starts at 0 where Hopsan's starts at its start time."""
@@ -144,7 +151,7 @@ C_TYPES = frozenset({
     "HydraulicTankC", "HydraulicMultiTankC", "HydraulicPressureSourceC", "HydraulicMultiPressureSourceC",
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
-    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC",
+    "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -153,6 +160,7 @@ MULTIPORTS: dict[str, frozenset[str]] = {
     "HydraulicMultiTankC": frozenset({"MP"}),
     "HydraulicMultiPressureSourceC": frozenset({"MP"}),
     "HydraulicCylinderC": frozenset({"P1", "P2"}),
+    "HydraulicSpringLoadedPistonC": frozenset({"P1", "P2"}),
 }
 
 
@@ -191,6 +199,35 @@ def _pressure_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return _source(n, par("p", 1e5), hc, par)
 
 
+#: the conductance through which a Q-type pressure source holds the C component joined to it [m^3/s/Pa]
+Q_SOURCE_CONDUCTANCE = 1e-2
+
+
+def _pressure_source_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicPressureSourceQ.hpp: a Q component that writes p = in to its
+    node and the flow q = (in - c)/Zc that brings the C component joined to it (a volume, a cylinder's chamber)
+    to that pressure within one step: in the limit an ideal pressure source joined to a capacitance, whose
+    pressure it sets, and which takes whatever flow that needs. hydroservo's node has one pressure port, the C
+    component's; the source is a pressure source (a PressureSource following the signal ``p``, absolute, or a
+    Tank at a constant ``p``) behind a LaminarOrifice of conductance ``Q_SOURCE_CONDUCTANCE`` (1e-2 m³/s/Pa): the
+    capacitance follows the source's pressure with the time constant V/(β_e G) (0.03 ns for 0.3 L at 1e9 Pa) and
+    stands below it by q/G (0.1 Pa for a flow of 1 L/s). The orifice, named as the source, gives the node's flow;
+    its pressure is the C component's. (On HydraulicSpringLoadedPistonC.hmf, whose sources deliver up to 17 L/s,
+    G = 1e-6, 1e-3 and 1e-2 m³/s/Pa put the constant source's pressure 170 %, 1.7 % and 0.17 % of its scale, 1 %
+    of its value, off Hopsan's.)"""
+    from hydroservo.components import LaminarOrifice
+
+    source = _source(f"{n}_p", par("p", 1e5), hc, par)
+    path = LaminarOrifice(n, G_lam=Q_SOURCE_CONDUCTANCE)
+    return Mapped(
+        [*source.components, path],
+        power={"P1": f"{n}.B"},
+        inputs=source.inputs,
+        internal=[(source.power["P1"], f"{n}.A")],
+        note=f"{type(source.components[0]).__name__} {n}_p behind LaminarOrifice {n} (G = {Q_SOURCE_CONDUCTANCE:g} m³/s/Pa)",
+    )
+
+
 def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Volume
 
@@ -206,28 +243,72 @@ def _volume(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power=ports)
 
 
+def _spool_valve_parameters(par: _Params) -> dict[str, Any] | None:
+    """The spool of Hopsan's HydraulicPressureReliefValve family (relief, reducing, drop, controlled valves): its
+    lag, characteristics and hysteresis; None (problems noted) for a negative hysteresis."""
+    if par("p_h", 5e5) < 0.0:
+        par.problems.append(f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa; expected 0 or more")
+        return None
+    return {
+        "tau": par("tao", 0.01),
+        "k_cs": par("k_cs", 1e-8),
+        "k_cf": par("k_cf", 1e-8),
+        "q_nom": par("q_nom", 0.001),
+        "p_nom": par("p_nom", 7e6),  # a constant 7 MPa in all but HydraulicPressureControlledValve, a parameter there
+        "p_tr": 1e3,
+        "p_h": par("p_h", 5e5),  # Hopsan's ValveHysteresis, its default 5 bar
+    }
+
+
 def _relief(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import ReliefValve
 
-    if par("p_h", 5e5) < 0.0:
-        par.problems.append(f"{par.where}: hysteresis p_h = {par('p_h', 5e5):g} Pa; expected 0 or more")
+    spool = _spool_valve_parameters(par)
+    if spool is None:
         return Mapped()
-    comp = ReliefValve(
-        n,
-        p_crack=_abs(par("p_max", 2e7)),
-        tau=par("tao", 0.01),
-        k_cs=par("k_cs", 1e-8),
-        k_cf=par("k_cf", 1e-8),
-        q_nom=par("q_nom", 0.001),
-        p_nom=7e6,  # Hopsan's fixed nominal pressure drop (HydraulicPressureReliefValve.hpp)
-        p_tr=1e3,
-        p_h=par("p_h", 5e5),  # Hopsan's ValveHysteresis, its default 5 bar
-    )
+    comp = ReliefValve(n, p_crack=_abs(par("p_max", 2e7)), **spool)
     # Hopsan's output xv (its spool's filtered position, in its own scaling) has no counterpart: not aliased
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
-def _pressure_valve_g(reducing: bool) -> Builder:
+def _pressure_drop_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureDropValve.hpp: the relief valve's law
+    set on the drop, ``xs = (p1 - p2 - p_ref)/b1``: ReliefValve with ``pilot = "drop"``, ``p_crack = p_ref``."""
+    from hydroservo.components import ReliefValve
+
+    spool = _spool_valve_parameters(par)
+    if spool is None:
+        return Mapped()
+    comp = ReliefValve(n, p_crack=par("p_ref", 2e6), pilot="drop", **spool)
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _reducing_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureReducingValve.hpp: the relief valve's
+    law piloted by the outlet, ``xs = (p_ref - p2)/b1``: PressureReducingValve with ``p_set = p_ref`` (absolute)."""
+    from hydroservo.components import PressureReducingValve
+
+    spool = _spool_valve_parameters(par)
+    if spool is None:
+        return Mapped()
+    comp = PressureReducingValve(n, p_set=_abs(par("p_ref", 2e6)), **spool)
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _pressure_controlled_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicPressureControlledValve.hpp: the relief valve's
+    law piloted by two lines, ``xs = (p_open - p_ref - p_close)/b1``, the pilots taking no flow: PilotedValve, X
+    the opening pilot P_OPEN, Y the closing one P_CLOSE. Its output x0 has no counterpart: not aliased."""
+    from hydroservo.components import PilotedValve
+
+    spool = _spool_valve_parameters(par)
+    if spool is None:
+        return Mapped()
+    comp = PilotedValve(n, p_ref=par("p_ref", 2e6), **spool)
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_OPEN": f"{n}.X", "P_CLOSE": f"{n}.Y"})
+
+
+def _pressure_valve_g(reducing: bool, counterbalance: bool = False) -> Builder:
     """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
     a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
     p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
@@ -238,13 +319,22 @@ def _pressure_valve_g(reducing: bool) -> Builder:
     C_f = 2 cos φ/(√(2/ρ) A_v), tau = Bv/ks, K at most Cq w √(2/ρ) Xvmax, p_tr = p0 (signedSquareL is
     hydroservo's regularised turbulent law exactly). The relief valve's setting is a drop (``pilot = "drop"``), the
     reducing valve's an absolute pressure. π where Hopsan writes 3.14159 and 0.785398 (1e-6 apart); visc is
-    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax."""
+    unused, as in Hopsan. Its output xv is the valve's opening s times Xvmax.
+
+    ``counterbalance``: [Hopsan2026] Hydraulic/Special/HydraulicCounterBalanceValveG.hpp, the relief valve's spool
+    with the pilot P3 on the fraction kappa of its area, p_1 - p_2 + kappa p_3 - pref (p_3 absolute, no flow), and
+    no check valve: a CounterbalanceValve with ``pilot = "drop"``, ``check = "none"``, r_p = kappa, p_crack =
+    pref - kappa p_atm (the gauge setting of Hopsan's absolute pilot); its own defaults (Dv 0.03 m, Bv 100 N s/m,
+    Xvmax 0.03 m, phi 0.03 rad, ks 100 N/m, pref 1e6 Pa)."""
+    defaults = {"Dv": 0.03, "phi": 0.03, "ks": 100.0, "Bv": 100.0, "Xvmax": 0.03, "pref": 1e6} if counterbalance else {
+        "Dv": 0.01, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.002, "pref": 1e7}
 
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-        from hydroservo.components import PressureReducingValve, ReliefValve
+        from hydroservo.components import CounterbalanceValve, PressureReducingValve, ReliefValve
 
-        rho, dv, frac, phi = par("rho", 870.0), par("Dv", 0.01), par("frac", 0.1), par("phi", 1.17)
-        ks, bv, x_vmax, cq = par("ks", 1e4), par("Bv", 1000.0), par("Xvmax", 0.002), par("Cq", 0.67)
+        rho, dv, frac, phi = par("rho", 870.0), par("Dv", defaults["Dv"]), par("frac", 0.1), par("phi", defaults["phi"])
+        ks, bv = par("ks", defaults["ks"]), par("Bv", defaults["Bv"])
+        x_vmax, cq = par("Xvmax", defaults["Xvmax"]), par("Cq", 0.67)
         before = len(par.problems)
         for name, value in (("rho", rho), ("Dv", dv), ("frac", frac), ("ks", ks), ("Bv", bv), ("Xvmax", x_vmax),
                             ("Cq", cq), ("p0", par("p0", 1e5))):
@@ -273,18 +363,57 @@ def _pressure_valve_g(reducing: bool) -> Builder:
             "p_tr": par("p0", 1e5),
         }
         comp: cbase.Component
-        if reducing:
-            comp = PressureReducingValve(n, p_set=_abs(par("pref", 1e7)), **spool)
+        power = {"P1": f"{n}.A", "P2": f"{n}.B"}
+        if counterbalance:
+            kappa = par("kappa", 0.1)
+            if kappa < 0.0:
+                par.problems.append(f"{par.where}: kappa = {kappa:g}; an area fraction of 0 or more is supported")
+            comp = CounterbalanceValve(n, p_crack=par("pref", defaults["pref"]) - kappa * ATMOSPHERE, r_p=max(kappa, 0.0),
+                                       pilot="drop", check="none", **spool)
+            power["P3"] = f"{n}.X"
+        elif reducing:
+            comp = PressureReducingValve(n, p_set=_abs(par("pref", defaults["pref"])), **spool)
         else:
-            comp = ReliefValve(n, p_crack=par("pref", 1e7), pilot="drop", **spool)
+            comp = ReliefValve(n, p_crack=par("pref", defaults["pref"]), pilot="drop", **spool)
         return Mapped(
             [comp],
-            power={"P1": f"{n}.A", "P2": f"{n}.B"},
+            power=power,
             values={"xv": Var(x_vmax, f"{n}.s")},
             initial={f"{n}.K": c * min(max(par("xv", 0.0), 0.0), x_vmax)},
         )
 
     return build
+
+
+def _over_center(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/PressureControlValves/HydraulicOverCenterValve.hpp: HydraulicPressureReliefValve's
+    spool (its static opening (p_1 - p_ref + a_ratio p_control)/(C_s + C_f (p_1 - p_2)) through the hysteresis p_h
+    and the lag tao, limited to [0, q_nom/√p_nom]; the flow that coefficient times √(p_1 - p_2), either way),
+    piloted by P_CONTROL (absolute, no flow) on a_ratio times its area: a CounterbalanceValve with ``check =
+    "none"`` (Hopsan's has no check valve), r_p = a_ratio, p_crack = p_ref - (1 + a_ratio) p_atm (the gauge setting
+    of Hopsan's sum of absolute pressures), its own p_nom; P_CONTROL the pilot port X. Its output xv (the flow
+    coefficient, Hopsan's x0) is the valve's K."""
+    from hydroservo.components import CounterbalanceValve
+
+    ratio, p_h = par("a_ratio", 5.0), par("p_h", 5e5)
+    if ratio < 0.0 or p_h < 0.0:
+        par.problems.append(f"{par.where}: a_ratio = {ratio:g}, p_h = {p_h:g} Pa; values of 0 or more are supported")
+        return Mapped()
+    comp = CounterbalanceValve(
+        n,
+        p_crack=par("p_ref", 2e6) - (1.0 + ratio) * ATMOSPHERE,
+        r_p=ratio,
+        check="none",
+        tau=par("tao", 0.01),
+        k_cs=par("k_cs", 1e-8),
+        k_cf=par("k_cf", 1e-8),
+        q_nom=par("q_nom", 0.001),
+        p_nom=par("p_nom", 7e6),
+        p_tr=1e3,  # as the relief valve's
+        p_h=p_h,
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_CONTROL": f"{n}.X"},
+                  values={"xv": Var(1.0, f"{n}.K")})
 
 
 def _accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -357,11 +486,15 @@ def _piston_accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
 
 def _fixed_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Pumps&Motors/HydraulicFixedDisplacementPump.hpp: q = D_p n_p/2π - C_lp (p_2 - p_1),
+    no port drawn below 0 Pa absolute: a Pump with ``inlet = "floor"``; its speed n_p [rad/s] driven by a signal
+    (``speed = "input"``, the signal into ``omega_in``; a negative speed pumps backwards, as Hopsan's)."""
     from hydroservo.components import Pump
 
-    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("n_p", 250.0), C_leak=par("C_lp", 1e-12),
-                inlet="floor", p_floor=_abs(0.0))
-    return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"})
+    driven = "n_p" in par.driven
+    comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=0.0 if driven else par("n_p", 250.0),
+                C_leak=par("C_lp", 1e-12), inlet="floor", p_floor=_abs(0.0), speed="input" if driven else "constant")
+    return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"}, inputs={"n_p": f"{n}.omega_in"} if driven else {})
 
 
 def _edge_coefficient(par: _Params, f: float, rho: float, d: str = "d", c_q: str = "C_q") -> float:
@@ -741,6 +874,72 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.R"})
 
 
+def _cylinder_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/LinearActuators/HydraulicCylinderQ.hpp: a Q-type piston with its load, between the
+    C components joined to P1 and P2 (the chambers' volumes): its transfer functions 1/(m_l s² + (B_l + B_p) s +
+    k_l) from the force A_1 p_1 - A_2 p_2 - f_3 to the position x_3, limited to [0, s_l] (the velocity zeroed
+    there: inelastic stops), and q_1 = -A_1 v_3, q_2 = A_2 v_3 (Hopsan's flows count out of the component), are in
+    the limit m_l ẍ = A_1 p_1 - A_2 p_2 - F_3 - (B_l + B_p) ẋ - k_l x: :func:`_q_piston`."""
+    sl, m = par("s_l", 0.01), par("m_l", 0.05)
+    if sl <= 0.0 or m <= 0.0:
+        par.problems.append(f"{par.where}: s_l = {sl:g} m, m_l = {m:g} kg; only values above 0 are supported")
+        return Mapped()
+    return _q_piston(n, par, par("A_1", 1e-4), par("A_2", 1e-4), par("B_p", 0.0), m, par("B_l", 0.0),
+                     par("k_l", 100.0), 0.0, sl, 0.0, "P3")
+
+
+def _piston_mload(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPistonMload.hpp: HydraulicCylinderQ's law with internal leakage and
+    stops of their own, from its equation system: mL ẍ = A1 p_1 - A2 p_2 - f_mp - (bL + bp) ẋ, x limited to
+    [xmin, xmax] (the velocity zeroed there), q_1 = -A1 ẋ - Cip (p_1 - p_2), q_2 = A2 ẋ + Cip (p_1 - p_2):
+    :func:`_q_piston` with C_Li = Cip, no spring; its port Pmp. Its dry friction fc and bfc are declared but enter
+    none of its equations, nor SL (the stops are xmin, xmax): they are not used here either."""
+    m, x_min, x_max = par("mL", 1000.0), par("xmin", 0.0), par("xmax", 0.5)
+    if m <= 0.0 or x_max <= x_min or par("Cip", 0.0) < 0.0:
+        par.problems.append(f"{par.where}: mL = {m:g} kg, xmin = {x_min:g} m, xmax = {x_max:g} m, Cip = "
+                            f"{par('Cip', 0.0):g}; expected mL > 0, xmin < xmax and Cip >= 0")
+        return Mapped()
+    return _q_piston(n, par, par("A1", 1e-3), par("A2", 1e-3), par("bp", 0.0), m, par("bL", 0.0), 0.0, x_min,
+                     x_max, par("Cip", 0.0), "Pmp")
+
+
+def _q_piston(n: str, par: _Params, a1: float, a2: float, bp: float, m: float, bl: float, kl: float, x_min: float,
+              x_max: float, c_leak: float, port: str) -> Mapped:
+    """Hopsan's Q-type pistons: a Cylinder with ``chambers = "ports"`` (its ports read the pressures of the volumes
+    joined to them; B_p, internal leakage) pushing a Mass ``{n}_load`` (m, B_l, k_l towards x = 0), whose end 2 is
+    ``port``, with stiff stops at x_min and x_max (1e9 N/m) damped critically for m, 2 √(1e9 N/m m): a stop that
+    does not bounce, as Hopsan's inelastic one (the masses' 1e6 N s/m on HydraulicCylinderQ's default m_l of
+    0.05 kg makes a mode of 2e7 1/s that switches on and off at the stop's edge, and the solver's steps collapse
+    there). The pressures it reads are those of the volumes, at least 0 Pa absolute with their cavity law, as
+    Hopsan's cavitation check floors them."""
+    from hydroservo.components import Cylinder, Mass
+
+    cyl = Cylinder(n, A_A=a1, A_B=a2, B_p=bp, C_Li=c_leak, chambers="ports", x_min=x_min, x_max=x_max, k_stop=0.0,
+                   c_stop=0.0, p_amb="0 Pa_abs")
+    load = Mass(f"{n}_load", m=m, B=bl, k_spring=kl, incline=0.0, x0=par.start(port, "Position"),
+                v0=par.start(port, "Velocity"), x_min=x_min, x_max=x_max, k_stop=1e9,
+                c_stop=2.0 * math.sqrt(1e9 * m))  # critically damped: no bounce, as Hopsan's inelastic stops
+    return Mapped(
+        [cyl, load],
+        power={"P1": f"{n}.A", "P2": f"{n}.B", port: f"{n}_load.P2"},
+        internal=[(f"{n}.R", f"{n}_load.P1")],
+        note=f"Cylinder {n} (chambers = ports) pushing Mass {n}_load",
+    )
+
+
+def _spring_loaded_piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/LinearActuators/HydraulicSpringLoadedPistonC.hpp: HydraulicCylinderC's chambers
+    and piston (the same volumes, leakage and stops) with the constant spring force F_s taken off the force at P3
+    (its wave variable c3 - F_s): the cylinder of HydraulicCylinderC's mapping with ``F_s``. Its chambers' wave
+    variables are floored at 0 (not its cylinder's cavity: no deficit to refill), so a chamber at 0 Pa absolute
+    loses no more pressure: ``pressure_floor = "check-valve"`` at 0 Pa absolute, the leakage between the floored
+    pressures."""
+    m = _cylinder_c(hc, n, par)
+    m.components[0].set(pressure_floor="check-valve", F_s=par("F_s", 1000.0))
+    m.note = f"Cylinder {n} with F_s, pressure_floor = check-valve"
+    return m
+
+
 def _flow_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import FlowSource
 
@@ -777,17 +976,28 @@ def _turbulent_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"}, inputs={"A": f"{n}.A_in"} if driven else {})
 
 
+#: Hopsan's check valves' coefficient K_s = C_d A √(2/ρ) as a bore at these C_d and ρ (only their product with A
+#: matters), turbulent down to some 50 Pa (lambda_crit 10), as Hopsan's turbulent law without regularisation
+_CHECK_CD, _CHECK_RHO = 0.67, 870.0
+
+
+def _check_bore(k_s: float) -> dict[str, Any]:
+    area = abs(k_s) / (_CHECK_CD * math.sqrt(2.0 / _CHECK_RHO))
+    return {"d": math.sqrt(4.0 * area / math.pi), "Cd": _CHECK_CD, "rho": _CHECK_RHO, "lambda_crit": 10.0}
+
+
 def _check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValve.hpp: q = K_s √(p_1 - p_2) while p_1 > p_2, none
-    otherwise: a CheckValve with option opening = "seat" at p_crack 0 (no spring), its bore from K_s = C_d A √(2/ρ)
-    (C_d 0.67, ρ 870 kg/m³: only their product with A matters); turbulent down to some 50 Pa (lambda_crit 10)."""
+    otherwise: a CheckValve with option opening = "seat" at p_crack 0 (no spring), its bore from K_s
+    (:func:`_check_bore`). HydraulicCheckValvePreLoaded.hpp: the same, open while p_1 > p_2 + F_s (p_crack = F_s,
+    a drop)."""
     from hydroservo.components import CheckValve
 
-    cd, rho = 0.67, 870.0
-    area = abs(par("K_s", 5e-7)) / (cd * math.sqrt(2.0 / rho))
-    comp = CheckValve(
-        n, opening="seat", p_crack=0.0, d=math.sqrt(4.0 * area / math.pi), Cd=cd, rho=rho, lambda_crit=10.0
-    )
+    preload = par("F_s", 0.0) if hc.typename == "HydraulicCheckValvePreLoaded" else 0.0
+    if preload < 0.0:
+        par.problems.append(f"{par.where}: pre-load F_s = {preload:g} Pa; expected 0 or more")
+        return Mapped()
+    comp = CheckValve(n, opening="seat", p_crack=preload, **_check_bore(par("K_s", 5e-7)))
     # Hopsan's output x (1 open, 0 closed, for its animation) is the CheckValve's s: not aliased
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
@@ -802,6 +1012,74 @@ def _shuttle_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
     return Mapped([ShuttleValve(n)], power={"P1": f"{n}.P1", "P2": f"{n}.P2", "P3": f"{n}.P3"},
                   outputs={"out": f"{n}.out"})
+
+
+def _check_valve_with_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValveWithOrifice.hpp: q = K_s √(p_1 - p_2) forwards and
+    K_r √ backwards (turbulent both ways): an Orifice of the smaller coefficient beside a seat CheckValve of the
+    difference, facing the way of the larger (``{n}_orifice`` and ``{n}``)."""
+    from hydroservo.components import CheckValve, Orifice
+
+    k_s, k_r = abs(par("K_s", 5e-7)), abs(par("K_r", 5e-9))
+    forward = k_s >= k_r
+    check = CheckValve(n, opening="seat", p_crack=0.0, **_check_bore(abs(k_s - k_r)))
+    bore = _check_bore(min(k_s, k_r))
+    orifice = Orifice(f"{n}_orifice", d=bore["d"], Cd=_CHECK_CD, rho=_CHECK_RHO, lambda_crit=10.0)
+    a, b = ("A", "B") if forward else ("B", "A")
+    return Mapped([check, orifice], power={"P1": f"{n}.{a}", "P2": f"{n}.{b}"},
+                  internal=[(f"{n}.{a}", f"{n}_orifice.A"), (f"{n}.{b}", f"{n}_orifice.B")])
+
+
+def _pilot_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicPilotControlledCheckValve.hpp: open while p_1 + φ p_pilot - p_2
+    > p_f, then q = K_s √(p_1 - p_2) both ways, the pilot taking no flow: a PilotCheckValve with option opening =
+    "seat", r_p = φ, its bore from K_s as the check valve's. HydraulicPilotClosableCheckValve.hpp: open while
+    p_1 > p_2 + p_pilot, r_p = -1 and p_f = 0. Hopsan's conditions read absolute pressures: in hydroservo's gauge
+    pressures the cracking pressure is p_f - r_p p_atm (the atmosphere once on each side of the drop cancels)."""
+    from hydroservo.components import PilotCheckValve
+
+    if hc.typename == "HydraulicPilotClosableCheckValve":
+        phi, p_f = -1.0, 0.0
+    else:
+        phi, p_f = par("phi", 3.5), par("p_f", 1e5)
+    comp = PilotCheckValve(n, opening="seat", p_crack=p_f - phi * 101325.0, r_p=phi, **_check_bore(par("K_s", 5e-7)))
+    # Hopsan's output x (1 open, 0 closed) is the valve's s: not aliased
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P_PILOT": f"{n}.X"})
+
+
+def _directional_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/DirectionalValves/Hydraulic22DirectionalCheckValve.hpp: an on/off spool (the
+    second-order filter of the 4/3 valve's, driven to 1 while ``in`` > 0.5 and to 0 otherwise, limited to [0, 1],
+    starting at ``out``); while it is above 0.5 the valve passes Kv_open √|p_1 - p_2| both ways, otherwise it
+    checks: Kv_check √(p_1 - p_2) once p_1 - p_2 exceeds F_s (a seat that opens fully there), none back. A
+    CheckValve with ``opening = "seat"``, p_crack = F_s and ``pilot = "open"``, its bores from Kv_check and
+    Kv_open (K = C_d A √(2/ρ), C_d 0.67, ρ 870 kg/m³: only the product matters), turbulent to some 50 Pa
+    (lambda_crit 10), its pilot the spool's position (SpoolSecondOrder with a stroke of 1 m: x_v is the fraction;
+    delta_h < 1 refused, as the other on/off valves'). Output ``out``: the spool's position."""
+    from hydroservo.components import CheckValve, Gain
+
+    cd, rho = 0.67, 870.0
+
+    def bore(k: float) -> float:
+        return math.sqrt(4.0 * abs(k) / (cd * math.sqrt(2.0 / rho)) / math.pi)
+
+    k_open, k_check = par("Kv_open", 5e-7), par("Kv_check", 5e-7)
+    if k_open <= 0.0 or k_check <= 0.0:
+        par.problems.append(f"{par.where}: Kv_open = {k_open:g}, Kv_check = {k_check:g}; only values above 0 are supported")
+        return Mapped()
+    spool = _spool(n, par, 1.0, "on-off", par("out", 0.0))  # Hopsan's filter starts at out (not at its input)
+    pilot = Gain(f"{n}_pilot", input_unit="m", K="1 1/m")  # the spool's position as the fraction of its stroke
+    valve = CheckValve(n, opening="seat", pilot="open", p_crack=par("F_s", 0.0), d=bore(k_check), d_open=bore(k_open),
+                       Cd=cd, rho=rho, lambda_crit=10.0)
+    return Mapped(
+        [*spool.components, pilot, valve],
+        power={"P1": f"{n}.A", "P2": f"{n}.B"},
+        inputs=spool.inputs,
+        outputs={"out": f"{n}_pilot.y"},
+        initial=spool.initial,
+        internal=[*spool.internal, (f"{n}_spool.xv", f"{n}_pilot.u"), (f"{n}_pilot.y", f"{n}.open")],
+        note="a Selector (open while in > 0.5), a SpoolSecondOrder, a Gain and a CheckValve (pilot = open)",
+    )
 
 
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1193,6 +1471,14 @@ def _constant(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([Constant(n, value=par("y", 1.0))], outputs={"y": f"{n}.y"})  # Hopsan's output is y
 
 
+def _constant_old(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalSource, SignalConstant's name in Hopsan before 0.6 (its output port ``out``, today's ``y``; Hopsan's
+    loader renames both, HopsanGUI/Utilities/XMLUtilities.cpp)."""
+    from hydroservo.components import Constant
+
+    return Mapped([Constant(n, value=par("y", 1.0))], outputs={"out": f"{n}.y"})
+
+
 def _gain(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Gain
 
@@ -1322,9 +1608,16 @@ def _transfer(n: str, par: _Params, num: list[float], den: list[float], limited:
         n, order=str(order), a0=num[0], a1=num[1], a2=num[2], b0=den[0], b1=den[1], b2=den[2], y0=y0 - d * u0
     )
     initial = {}
+    c1 = num[1] / den[2] - d * den[1] / den[2] if order == 2 else 0.0
     if order == 2:  # the strictly proper part at rest with the input at u0: its rate x2 + c1 u0 is 0
-        initial[f"{n}.x2"] = -(num[1] / den[2] - d * den[1] / den[2]) * u0
-    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"}, initial=initial)
+        initial[f"{n}.x2"] = -c1 * u0
+    # Hopsan's filter starts from the value its input has when the model is initialised (FirstOrderTransferFunction
+    # ::initialize's u0 is *mpIn): where a signal drives the input, that signal's start value, not the file's 'in'
+    starts: dict[str, tuple[str, Callable[[float], float]]] = {f"{n}.y0": (f"{n}.u", lambda u: y0 - d * u)}
+    if order == 2:
+        starts[f"{n}.x2"] = (f"{n}.u", lambda u: -c1 * u)
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"}, initial=initial,
+                  start_from_input=starts)
 
 
 def _first_order_filter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1432,6 +1725,197 @@ def _integrator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([Integrator(n, y0=par("out", 0.0))], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
 
 
+def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal1DLookupTable (Signal/Non-Linearities/Signal1DLookupTable.hpp): a Table with ``index = "input"``,
+    its breakpoints and values columns ``inid`` and ``outid`` of the CSV file ``filename`` (or of the text
+    ``text``), read at import as Hopsan reads them (``csvsep``, ``numlineskip``, ``comment``). The file is
+    read only inside the model file's folder: a file named by an absolute path or outside it is refused (a
+    model file from someone else reads nothing else of the user's disk); ``reload`` is moot (the table is
+    read once, at import)."""
+    from hydroservo.components import Table
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_lookup_table, read_lookup_table
+
+    inputs, outputs = {"in": f"{n}.u"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        return Mapped([Table(n, times=[0.0, 1.0], values=[0.0, 0.0], index="input")], inputs=inputs, outputs=outputs)
+    inid, outid, skip = int(par("inid", 0)), int(par("outid", 1)), int(par("numlineskip", 0))
+    sep, comment = par.text("csvsep", ","), par.text("comment", "")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            x, y = parse_lookup_table(par.text("text"), inid, outid, sep, skip, comment, what=f"{par.where}: text")
+        else:
+            if not filename:
+                raise ModelFileError(f"{par.where}: no table: neither a file (filename) nor a text (text) given")
+            folder = par.folder.resolve()
+            file = (folder / filename).resolve()
+            if Path(filename).is_absolute() or not file.is_relative_to(folder):
+                raise ModelFileError(
+                    f"{par.where}: filename = {filename!r}: outside the model file's folder {str(folder)!r}; hydroservo "
+                    "reads a table only beside the model or below its folder (copy it there and name it relative "
+                    "to the model)"
+                )
+            x, y = read_lookup_table(file, inid, outid, sep, skip, comment, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table(n, times=x, values=y, index="input")
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+
+
+def _unit_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalUnitDelay (Signal/Non-Linearities/SignalUnitDelay.hpp): its output is its input one step late,
+    which vanishes as the step does: in the limit it passes its input on (a Gain of 1). In Hopsan it breaks
+    algebraic loops; a loop it closed with no state in it is refused after the import (:func:`import_hopsan`)."""
+    from hydroservo.components import Gain
+
+    return Mapped([Gain(n, K=1.0)], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                  note=f"Gain {n} of 1 (a delay of one step, which vanishes with the step)")
+
+
+def _integral_start(n: str, par: _Params, ki: float) -> dict[str, float]:
+    """The PID's integral state from Hopsan's start value of ``uI`` (the integral part, Ki I)."""
+    u_i = par("uI", 0.0)
+    if u_i != 0.0 and ki == 0.0:
+        par.problems.append(f"{par.where}: a start value uI = {u_i:g} with no integral gain is not supported")
+    return {f"{n}.I": u_i / ki} if u_i != 0.0 and ki != 0.0 else {}
+
+
+def _pid(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPID (Signal/Control/SignalPID.hpp): u = limit(uI + Kp (yref - y) - Kd dy, umin, umax) with
+    d(uI)/dt = KI Ierr, Ierr the error while the output is inside its limits (Hopsan's dxLimit, 1e-9 at them):
+    a ``Sum`` (yref - y) into a PID with ``derivative = "input"`` (de = dy, Kd negated) and
+    ``anti_windup = "clamping"``. Hopsan's Newton iteration and trapezoidal step of that law vanish with the
+    step. Kp, KI, Kd, umin and umax are constant (a signal driving them is refused)."""
+    from hydroservo.components import PID, Sum
+
+    ki = par("KI", 1.0)
+    umin, umax = par("umin", -1.0), par("umax", 1.0)
+    if umin >= umax:
+        par.problems.append(f"{par.where}: umin = {umin:g}, umax = {umax:g}: expected umin < umax")
+        return Mapped()
+    error = Sum(f"{n}_error", gain1=1.0, gain2=-1.0)
+    pid = PID(n, Kp=par("Kp", 1.0), Ki=ki, Kd=-par("Kd", 1.0), lower=umin, upper=umax, derivative="input",
+              anti_windup="clamping")
+    return Mapped(
+        [error, pid], inputs={"yref": f"{error.name}.u1", "y": f"{error.name}.u2", "dy": f"{n}.de"},
+        outputs={"u": f"{n}.y"}, values={"uI": Var(ki, f"{n}.I")}, internal=[(f"{error.name}.y", f"{n}.e")],
+        initial=_integral_start(n, par, ki),
+    )
+
+
+def _pid2(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPID2 (Signal/Control/SignalPID2.hpp): v = K e + I + K Td de, I' = K/Ti e, plus (Umax - v)/Tt above
+    Umax and (Umin - v)/Tt below Umin (back-calculation; Hopsan's explicit steps of it), the output v limited to
+    [Uoutmin, Uoutmax]: a PID with ``anti_windup = "tracking"`` (Ki = K/Ti, T_t = Tt, the tracked limits Umin and
+    Umax). The derivative is the input ``de`` where it is connected (``derivative = "input"``); Hopsan's
+    derivative of ``e`` by a backward difference otherwise, which is refused for Td > 0 (an unfiltered
+    derivative). Starts with I = 0, as Hopsan's."""
+    from hydroservo.components import PID
+
+    k, ti, tt, td = par("K", 1.0), par("Ti", 1.0), par("Tt", 1.0), par("Td", 0.0)
+    lims = {name: par(name, default) for name, default in
+            (("Umin", -1e100), ("Umax", 1e100), ("Uoutmin", -1e100), ("Uoutmax", 1e100))}
+    if ti <= 0.0 or tt <= 0.0 or k == 0.0:
+        par.problems.append(f"{par.where}: K = {k:g}, Ti = {ti:g} s, Tt = {tt:g} s: expected K other than 0, Ti > 0 "
+                            "and Tt > 0")
+        return Mapped()
+    if lims["Umin"] > lims["Umax"] or lims["Uoutmin"] > lims["Uoutmax"]:
+        par.problems.append(f"{par.where}: Umin > Umax or Uoutmin > Uoutmax")
+        return Mapped()
+    by_input = "de" in par.driven
+    if td != 0.0 and not by_input:
+        par.problems.append(
+            f"{par.where}: Td = {td:g} s with 'de' unconnected: Hopsan then differentiates e unfiltered (a backward "
+            "difference), which hydroservo does not; connect the derivative to 'de'"
+        )
+        return Mapped()
+    ki = k / ti
+    if ki < 0.0:
+        par.problems.append(f"{par.where}: K = {k:g}: a negative gain with anti-windup tracking is not supported")
+        return Mapped()
+    cap = 1e300  # Hopsan's +-1e100 defaults: no limit
+    pid = PID(n, Kp=k, Ki=ki, Kd=k * td, T_t=tt, anti_windup="tracking",
+              derivative="input" if by_input else "filtered",
+              track_lower=max(lims["Umin"], -cap), track_upper=min(lims["Umax"], cap),
+              lower=max(lims["Uoutmin"], -cap), upper=min(lims["Uoutmax"], cap))
+    inputs = {"e": f"{n}.e", **({"de": f"{n}.de"} if by_input else {})}
+    return Mapped([pid], inputs=inputs, outputs={"u": f"{n}.y"})
+
+
+def _pi_lead(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalPIlead (Signal/Control/SignalPIlead.hpp): a PI controller on the error of a lead-filtered
+    measurement. Hopsan's bilinear equation for ``err`` is the transfer function
+    err = yref - (1 + 2 da s/wa)/(1 + s/wa) y; u = limit(k1 err + uI, umin, umax), d(uI)/dt = k1 wa Ierr with
+    k1 = wa/kx and Ierr the error while u is inside its limits: a ``TransferFunction`` (the lead, at rest with
+    its input's start value), a ``Sum`` and a PID with ``anti_windup = "clamping"`` (Kp = k1, Ki = k1 wa). wa, kx,
+    da, umin and umax are constant (a signal driving them is refused)."""
+    from hydroservo.components import PID, Sum, TransferFunction
+
+    wa, kx, da = par("wa", 1.0), par("kx", 1.0), par("da", 1.0)
+    umin, umax = par("umin", -1.0), par("umax", 1.0)
+    if wa <= 0.0 or kx == 0.0 or da <= 0.0 or umin >= umax:
+        par.problems.append(f"{par.where}: wa = {wa:g}, kx = {kx:g}, da = {da:g}, umin = {umin:g}, umax = {umax:g}: "
+                            "expected wa > 0, kx other than 0, da > 0 and umin < umax")
+        return Mapped()
+    k1 = wa / kx
+    d = 2.0 * da  # the lead's direct part a1/b1
+    y0 = par("y", 0.0)
+    lead = TransferFunction(f"{n}_lead", order="1", a0=1.0, a1=2.0 * da / wa, b0=1.0, b1=1.0 / wa, y0=(1.0 - d) * y0)
+    error = Sum(f"{n}_err", gain1=1.0, gain2=-1.0)
+    pid = PID(n, Kp=k1, Ki=k1 * wa, lower=umin, upper=umax, anti_windup="clamping")
+    return Mapped(
+        [lead, error, pid], inputs={"yref": f"{error.name}.u1", "y": f"{lead.name}.u"},
+        outputs={"u": f"{n}.y", "err": f"{error.name}.y"}, values={"uI": Var(k1 * wa, f"{n}.I")},
+        internal=[(f"{lead.name}.y", f"{error.name}.u2"), (f"{error.name}.y", f"{n}.e")],
+        initial=_integral_start(n, par, k1 * wa),
+        start_from_input={f"{lead.name}.y0": (f"{lead.name}.u", lambda u0: (1.0 - d) * u0)},
+    )
+
+
+def _logic(function: str, ports: tuple[str, str]) -> Builder:
+    """Hopsan's comparisons and logic (Signal/Logic/SignalGreaterThan.hpp, SignalSmallerThan.hpp, SignalAnd.hpp,
+    SignalOr.hpp): a Function with that option, its two inputs ``u`` and ``u2`` (``in`` and ``x_limit``, or
+    ``in1`` and ``in2``); an unconnected one takes its start value."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Function
+
+        inputs = {ports[0]: f"{n}.u", ports[1]: f"{n}.u2"}
+        return Mapped([Function(n, function=function)], inputs=inputs, outputs={"out": f"{n}.y"})
+
+    return build
+
+
+def _hysteresis(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalHysteresis (Signal/Non-Linearities/SignalHysteresis.hpp): a Hysteresis of width ``y_h`` (constant: a
+    signal driving it is refused), its output starting at its input's start value, as Hopsan's."""
+    from hydroservo.components import Hysteresis
+
+    width = par("y_h", 1.0)
+    if width < 0.0:
+        par.problems.append(f"{par.where}: y_h = {width:g}: expected a width of 0 or more")
+        return Mapped()
+    comp = Hysteresis(n, band=width, y0=par("in", 0.0))
+    return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                  start_from_input={f"{n}.y0": (f"{n}.u", float)})
+
+
+def _sr_latch(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalSRlatch (Signal/Logic/SignalSRlatch.hpp): a Latch from the start value of ``Qstate``, its inputs
+    ``setCond`` and ``resetCond``, its outputs ``Qstate`` and ``notQstate``."""
+    from hydroservo.components import Latch
+
+    q0 = par("Qstate", 0.0)
+    if not 0.0 <= q0 <= 1.0:
+        par.problems.append(f"{par.where}: start value Qstate = {q0:g}: expected 0 to 1")
+        return Mapped()
+    return Mapped([Latch(n, Q0=q0)], inputs={"setCond": f"{n}.set", "resetCond": f"{n}.reset"},
+                  outputs={"Qstate": f"{n}.Q", "notQstate": f"{n}.notQ"})
+
+
 def _sink(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped(note="dropped: a plot window; what it shows is logged at its sources")
 
@@ -1448,12 +1932,20 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicTurbulentOrifice": _turbulent_orifice,
     "HydraulicCheckValve": _check_valve,
     "HydraulicShuttleValve": _shuttle_valve,
+    "HydraulicPilotControlledCheckValve": _pilot_check_valve,
+    "HydraulicPilotClosableCheckValve": _pilot_check_valve,
+    "HydraulicCheckValvePreLoaded": _check_valve,
+    "HydraulicCheckValveWithOrifice": _check_valve_with_orifice,
+    "Hydraulic22DirectionalCheckValve": _directional_check_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
     "HydraulicPressureReliefValve": _relief,
+    "HydraulicPressureDropValve": _pressure_drop_valve,
+    "HydraulicPressureReducingValve": _reducing_valve,
+    "HydraulicPressureControlledValve": _pressure_controlled_valve,
     "HydraulicAckumulator": _accumulator,
     "HydraulicPistonAckumulator": _piston_accumulator,
     "HydraulicPressureControlled22Valve": _pressure_controlled("22"),
@@ -1463,6 +1955,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureControlled42Valve3": _pressure_controlled("42-3"),
     "HydraulicPressureReliefValveG": _pressure_valve_g(reducing=False),
     "HydraulicPressureReducingValveG": _pressure_valve_g(reducing=True),
+    "HydraulicCounterBalanceValveG": _pressure_valve_g(reducing=False, counterbalance=True),
+    "HydraulicOverCenterValve": _over_center,
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
     "Hydraulic43LoadSensingValve": _valve43_load_sensing,
@@ -1475,6 +1969,11 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
+    "HydraulicCylinderQ": _cylinder_q,
+    "HydraulicPistonMload": _piston_mload,
+    "HydraulicSpringLoadedPistonC": _spring_loaded_piston,
+    "HydraulicPressureSourceQ": _pressure_source_q,
+    "SignalSource": _constant_old,
     "HydraulicPressureSensor": _sensor("Pressure", "Pa"),
     "HydraulicFlowSensor": _sensor("Flow", "m^3/s"),
     "MechanicTranslationalMass": _mass,
@@ -1538,6 +2037,34 @@ LIBRARY: dict[str, Builder] = {
     )},
     "SignalRateLimiter": _rate_limiter,
     "SignalDeadZone": _dead_zone,
+    "Signal1DLookupTable": _lookup_table,
+    "SignalUnitDelay": _unit_delay,
+    "SignalPID": _pid,
+    "SignalPID2": _pid2,
+    "SignalPIlead": _pi_lead,
+    "SignalFloor": _function("floor"),
+    "SignalCeil": _function("ceil"),
+    "SignalRound": _function("round"),
+    "SignalGreaterThan": _logic("greater", ("in", "x_limit")),
+    "SignalSmallerThan": _logic("smaller", ("in", "x_limit")),
+    "SignalAnd": _logic("and", ("in1", "in2")),
+    "SignalOr": _logic("or", ("in1", "in2")),
+    "SignalSRlatch": _sr_latch,
+    "SignalHysteresis": _hysteresis,
+}
+
+#: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)
+REFUSED: dict[str, str] = {
+    "SignalTimeDelay": "a pure time delay, y(t) = u(t - deltat), is no ordinary differential equation: hydroservo's "
+    "engine integrates ODEs with error control and keeps no history of a signal, and an approximation (Padé) is "
+    "not Hopsan's law",
+    "SignalVariableTimeDelay": "a pure time delay, y(t) = u(t - dT), is no ordinary differential equation: "
+    "hydroservo's engine integrates ODEs with error control and keeps no history of a signal, and an "
+    "approximation (Padé) is not Hopsan's law",
+    "SignalNoiseGenerator": "white noise drawn anew at each of Hopsan's steps has no limit as the step vanishes, "
+    "and a random trace cannot be compared sample by sample",
+    "SignalStopSimulation": "it ends the run when its input exceeds 0.5, where hydroservo's runs end at t_end; "
+    "set t_end to where the model stops",
 }
 
 
@@ -1586,7 +2113,10 @@ def import_hopsan(path: str | Path) -> HopsanImport:
         raise ModelFileError("; ".join(problems))
     unsupported = [c for c in model.components if c.typename not in LIBRARY]
     if unsupported:
-        listed = "; ".join(f"{c.full_name} ({c.typename})" for c in unsupported)
+        listed = "; ".join(
+            f"{c.full_name} ({c.typename}{': ' + REFUSED[c.typename] if c.typename in REFUSED else ''})"
+            for c in unsupported
+        )
         raise ModelFileError(
             f"{source}: {len(unsupported)} component(s) of types hydroservo does not map yet: {listed}. Supported: "
             f"{', '.join(sorted(LIBRARY))} (docs/hopsan.md)"
@@ -1622,6 +2152,7 @@ def import_hopsan(path: str | Path) -> HopsanImport:
             params = _Params(hc, where, problems, starts, connected.get(hc.full_name, frozenset()),
                              fan_in.get(hc.full_name))
             params.t0 = model.start
+            params.folder = Path(source).parent
             m = LIBRARY[hc.typename](hc, name, params)
         except Exception as exc:  # a value out of a component's range: named with the Hopsan component
             problems.append(f"{where}: {exc}")
@@ -1775,8 +2306,29 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     if not system.plots:  # no scope: what an engineer looks at first, not the first of Hopsan's many variables
         system.plots = system.default_panels(aliases=False)
     system.display_units = ["Pa_abs"]  # pressures shown absolute, as Hopsan shows them
+    _refuse_loops_of_unit_delays(system, source, [hc.full_name for hc in model.components if hc.typename == "SignalUnitDelay"])
     _start_from_inputs(system, {k: v for m in mapped.values() for k, v in m.start_from_input.items()})
     return HopsanImport(system, model, mapping, names, hopsan_names)
+
+
+def _refuse_loops_of_unit_delays(system: System, source: str, delays: list[str]) -> None:
+    """A Hopsan unit delay passes its input on in the limit of a vanishing step (:func:`_unit_delay`); where it
+    closed a loop with no state in it, that limit is an algebraic loop, which hydroservo does not solve: refused,
+    with the loop and the delays named."""
+    if not delays:
+        return
+    from hydroservo.system.assembly import assemble
+
+    try:
+        assemble(system)
+    except ModelError as exc:
+        if "algebraic loop" not in str(exc):
+            raise
+        raise ModelFileError(
+            f"{source}: {exc}. The model's unit delays ({', '.join(delays)}: SignalUnitDelay) pass their input on in "
+            "the limit of a vanishing step, which hydroservo's import takes; a loop one of them closes without a "
+            "state in it is then algebraic, and hydroservo does not solve algebraic loops of signals"
+        ) from None
 
 
 def _start_from_inputs(system: System, starts: dict[str, tuple[str, Callable[[float], float]]]) -> None:
@@ -1839,6 +2391,7 @@ def _node_starts(
 #: Hopsan's signal blocks whose output is constant when their inputs are: type -> (output, inputs, function)
 _CONSTANT_BLOCKS: dict[str, tuple[str, tuple[str, ...], Callable[..., float]]] = {
     "SignalConstant": ("y", (), lambda par: par("y")),
+    "SignalSource": ("out", (), lambda par: par("y")),
     "SignalGain": ("out", ("in",), lambda par, u: par("k") * u),
 }
 

@@ -1,4 +1,5 @@
-"""Time tables: a CSV whose first column is time [s] and another column the values (a recorded signal)."""
+"""Time tables: a CSV whose first column is time [s] and another column the values (a recorded signal); lookup
+tables: two columns of a CSV as a table's breakpoints and values, read as Hopsan's Signal1DLookupTable reads them."""
 
 from __future__ import annotations
 
@@ -6,10 +7,13 @@ from pathlib import Path
 
 import numpy as np
 
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, shorten
 from hydroservo.io.files import csv_rows, read_text
 
-__all__ = ["read_time_table"]
+__all__ = ["read_time_table", "read_lookup_table", "parse_lookup_table", "MAX_TABLE_BYTES"]
+
+#: The largest lookup-table file read [bytes].
+MAX_TABLE_BYTES = 20_000_000
 
 
 def read_time_table(path: str | Path, column: str | int = 1, what: str = "table") -> tuple[np.ndarray, np.ndarray]:
@@ -42,3 +46,96 @@ def read_time_table(path: str | Path, column: str | int = 1, what: str = "table"
             f"{what}.file: {str(path)!r} needs numbers in column 0 (time, s) and column {col}"
         ) from None
     return arr[:, 0], arr[:, 1]
+
+
+def read_lookup_table(
+    path: str | Path,
+    index_column: int = 0,
+    value_column: int = 1,
+    separator: str = ",",
+    skip: int = 0,
+    comment: str = "",
+    what: str = "table",
+) -> tuple[np.ndarray, np.ndarray]:
+    """Breakpoints and values from the CSV file ``path``, read as Hopsan reads a lookup table
+    (:func:`parse_lookup_table`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    path = Path(path)
+    try:
+        size = path.stat().st_size
+    except OSError as exc:
+        raise ParameterError(f"{what}: table file {str(path)!r}: cannot read ({exc.strerror})") from None
+    if size > MAX_TABLE_BYTES:
+        raise ParameterError(f"{what}: table file {str(path)!r}: {size} bytes, more than the {MAX_TABLE_BYTES} read")
+    text = read_text(path, f"{what}: table file")
+    return parse_lookup_table(text, index_column, value_column, separator, skip, comment, f"{what}: {str(path)!r}")
+
+
+def parse_lookup_table(
+    text: str,
+    index_column: int = 0,
+    value_column: int = 1,
+    separator: str = ",",
+    skip: int = 0,
+    comment: str = "",
+    what: str = "table",
+) -> tuple[np.ndarray, np.ndarray]:
+    """Breakpoints (column ``index_column``, 0-based) and values (``value_column``) of a lookup table in CSV
+    text, read as Hopsan's Signal1DLookupTable reads its file ([Hopsan2026]
+    Signal/Non-Linearities/Signal1DLookupTable.hpp and HopsanCore's CSVParserNG): the first ``skip`` lines are
+    left out, then the lines that start with ``comment`` (one character, or none); every other line is a row of
+    fields split at ``separator`` (one character), each a number (a decimal comma is read as a point, as
+    Hopsan's parser does where the separator is not a comma); blank lines are left out. The rows are sorted by
+    their breakpoints, which must then be strictly increasing; at least two rows.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``what`` and the line: a separator or comment of more than one character, a column out of
+        range, a field that is no finite number, fewer than two rows, two rows with the same breakpoint.
+
+    Examples
+    --------
+    >>> parse_lookup_table("# x; y\\n2;4,5\\n0;0\\n1;1\\n", separator=";", comment="#")
+    (array([0., 1., 2.]), array([0. , 1. , 4.5]))
+    """
+    if len(separator) != 1:
+        raise ParameterError(f"{what}: separator {separator!r}: expected one character")
+    if len(comment) > 1:
+        raise ParameterError(f"{what}: comment character {comment!r}: expected one character (or none)")
+    if index_column < 0 or value_column < 0:
+        raise ParameterError(f"{what}: columns {index_column} and {value_column}: expected 0-based indexes, 0 or more")
+    lines = text.splitlines()[max(skip, 0):]
+    first = 0
+    while comment and first < len(lines) and lines[first].startswith(comment):
+        first += 1
+    index: list[float] = []
+    values: list[float] = []
+    for number, line in enumerate(lines[first:], start=max(skip, 0) + first + 1):
+        if not line.strip():
+            continue
+        fields = line.split(separator)
+        row = []
+        for col in (index_column, value_column):
+            if col >= len(fields):
+                raise ParameterError(
+                    f"{what}, line {number}: {len(fields)} column(s); expected column {col} (0-based) there"
+                )
+            field = fields[col].strip().replace(",", ".", 1)
+            try:
+                value = float(field)
+            except ValueError:
+                value = float("nan")
+            if not np.isfinite(value):
+                raise ParameterError(f"{what}, line {number}, column {col}: {shorten(fields[col].strip())!r} is no finite number")
+            row.append(value)
+        index.append(row[0])
+        values.append(row[1])
+    if len(index) < 2:
+        raise ParameterError(f"{what}: {len(index)} row(s) of data; a lookup table needs at least two")
+    x, y = np.asarray(index), np.asarray(values)
+    order = np.argsort(x, kind="stable")
+    x, y = x[order], y[order]
+    same = np.flatnonzero(np.diff(x) <= 0)
+    if same.size:
+        raise ParameterError(f"{what}: two rows have the breakpoint {x[same[0]]:g}; expected each once")
+    return x, y

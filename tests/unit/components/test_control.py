@@ -158,6 +158,13 @@ def test_each_function_is_its_closed_form_and_flags_its_domain() -> None:
         "tanh": (np.tanh(u), 0 * u),
         "square": (u * u, 0 * u),
         "sign": (np.where(u >= 0, 1.0, -1.0), 0 * u),
+        "floor": (np.floor(u), 0 * u),
+        "ceil": (np.ceil(u), 0 * u),
+        "round": (np.sign(u) * np.floor(np.abs(u) + 0.5), 0 * u),  # half away from zero
+        "greater": ((u > 1.0).astype(float), 0 * u),  # u2 unconnected: 1
+        "smaller": ((u < 1.0).astype(float), 0 * u),
+        "and": ((u > 0.5).astype(float), 0 * u),
+        "or": (np.ones_like(u), 0 * u),
     }
     assert set(expected) == set(c.Function.OPTIONS["function"].choices)
     s = hs.System("functions", t_end=4.0)
@@ -202,3 +209,94 @@ def test_a_rate_limiter_ramps_at_its_limits_and_follows_a_slow_input() -> None:
     expected = np.array([0.0, 0.5, 0.9, 1.0, 1.0, 0.5, 0.0, 0.0])
     np.testing.assert_allclose(r["rl.y"], expected, atol=1e-5)
     np.testing.assert_allclose(r["follow.y"], 0.1 * np.sin(2 * np.pi * t), atol=1e-5)
+
+
+def _pid_on_unit_step(**pid: object) -> hs.Result:
+    s = hs.System("pid", t_end=3.0)
+    s.add(c.Step("r", amplitude=1.0, t_step=0.0))
+    s.add(c.Constant("d", value=0.5))
+    s.add(c.PID("p", **pid))
+    s.connect("r.y", "p.e")
+    if pid.get("derivative") == "input":
+        s.connect("d.y", "p.de")
+    return s.simulate(t_eval=[0.0, 0.25, 0.5, 1.0, 2.0, 3.0], accuracy=1e-8)
+
+
+def test_pid_tracking_anti_windup_pulls_the_integral_back_with_t_t() -> None:
+    """anti_windup = tracking (Hopsan's SignalPID2): v = 2 + I rises at Ki e = 1/s to the tracked limit 2.5
+    (t = 0.5 s), then Ki I' = 1 + (2.5 - v)/T_t, so I -> 1 as 1 - 0.5 exp(-(t - 0.5)/T_t); the output is not
+    clamped to the tracked limits, only to lower/upper (here 2.9)."""
+    r = _pid_on_unit_step(Kp=2.0, Ki=1.0, anti_windup="tracking", T_t=0.5, track_upper=2.5, upper=2.9)
+    t = r.t
+    integral = np.where(t < 0.5, t, 1.0 - 0.5 * np.exp(-(t - 0.5) / 0.5))
+    np.testing.assert_allclose(r["p.I"], integral, atol=1e-6)
+    np.testing.assert_allclose(r["p.y"], np.minimum(2.0 + integral, 2.9), atol=1e-6)
+    with pytest.raises(ParameterError, match="tracking needs Ki > 0"):
+        _pid_on_unit_step(Kp=1.0, Ki=0.0, anti_windup="tracking")
+
+
+def test_pid_clamping_stops_integrating_at_the_limit_and_takes_its_derivative_as_an_input() -> None:
+    """anti_windup = clamping (Hopsan's SignalPID): v = 2 e + I + Kd de = 2.5 + I reaches upper = 3 at t = 0.5 s
+    and the integral stops there; with derivative = input the derivative is de (no filter state)."""
+    r = _pid_on_unit_step(Kp=2.0, Ki=1.0, Kd=1.0, anti_windup="clamping", derivative="input", upper=3.0)
+    np.testing.assert_allclose(r["p.I"], np.minimum(r.t, 0.5), atol=1e-6)
+    np.testing.assert_allclose(r["p.y"], np.minimum(2.5 + r.t, 3.0), atol=1e-6)
+    assert set(c.PID("q", derivative="input").STATES) == {"I"}
+    assert set(c.PID("q").STATES) == {"I", "e_f"} and "de" not in c.PID("q").INPUTS
+
+
+def test_floor_ceil_round_comparisons_and_logic_are_hopsans() -> None:
+    """Function's floor, ceil, round (half away from zero, as C's round), greater and smaller (1 or 0, strict),
+    and and or (of u > 0.5 and u2 > 0.5), on a ramp from -2 to 2 against a constant 0.5."""
+    s = hs.System("fn", t_end=4.0)
+    s.add(c.Ramp("u", offset=-2.0, slope=1.0, t_start=0.0))
+    s.add(c.Constant("k", value=0.5))
+    for f in ("floor", "ceil", "round", "greater", "smaller", "and", "or"):
+        s.add(c.Function(f, function=f))
+        s.connect("u.y", f"{f}.u")
+        if f in ("greater", "smaller", "and", "or"):
+            s.connect("k.y", f"{f}.u2")
+    t = np.array([0.0, 0.3, 1.5, 1.75, 2.25, 2.5, 3.2, 3.5, 4.0])
+    r = s.simulate(t_eval=t)
+    u = t - 2.0
+    np.testing.assert_array_equal(r["floor.y"], np.floor(u))
+    np.testing.assert_array_equal(r["ceil.y"], np.ceil(u))
+    np.testing.assert_array_equal(r["round.y"], np.sign(u) * np.floor(np.abs(u) + 0.5))
+    np.testing.assert_array_equal(r["greater.y"], (u > 0.5).astype(float))
+    np.testing.assert_array_equal(r["smaller.y"], (u < 0.5).astype(float))
+    np.testing.assert_array_equal(r["and.y"], np.zeros_like(u))  # the constant 0.5 is not > 0.5: off
+    np.testing.assert_array_equal(r["or.y"], (u > 0.5).astype(float))
+
+
+def test_latch_sets_resets_and_holds() -> None:
+    """Latch (Hopsan's SignalSRlatch): set at 1 s, held after the set ends at 2 s, reset at 3 s (set again at
+    3.5 s while reset: both on resets), held at 0 after 4 s; notQ = 1 - Q; Q follows within a few tau."""
+    s = hs.System("latch", t_end=5.0)
+    s.add(c.Pulse("set1", t_start=1.0, duration=1.0))
+    s.add(c.Pulse("set2", t_start=3.5, duration=1.0))
+    s.add(c.Sum("set", gain1=1.0, gain2=1.0))
+    s.add(c.Pulse("reset", t_start=3.0, duration=1.0))
+    s.add(c.Latch("l"))
+    s.connect("set1.y", "set.u1")
+    s.connect("set2.y", "set.u2")
+    s.connect("set.y", "l.set")
+    s.connect("reset.y", "l.reset")
+    r = s.simulate(t_eval=[0.5, 1.5, 2.5, 3.25, 3.75, 4.25, 4.75])
+    np.testing.assert_allclose(r["l.Q"], [0, 1, 1, 0, 0, 1, 1], atol=1e-9)
+    np.testing.assert_allclose(r["l.notQ"], 1 - r["l.Q"])
+
+
+def test_hysteresis_is_the_play_operator_of_its_input() -> None:
+    """Hysteresis (Hopsan's SignalHysteresis) of width 1 on a triangle 0 -> 2 -> 0: the output stays at 0 until
+    the input is 0.5 ahead, follows at u - 0.5 up to 1.5, holds there while the input falls back through the band
+    (to 1 at t = 3 s), then follows at u + 0.5; within the 1 us tracking lag."""
+    s = hs.System("play", t_end=4.0)
+    s.add(c.Ramp("up", slope=1.0, limit=2.0))
+    s.add(c.Ramp("down", slope=-1.0, t_start=2.0, limit=2.0))
+    s.add(c.Sum("u", gain1=1.0, gain2=1.0))
+    s.add(c.Hysteresis("h", band=1.0))
+    s.connect("up.y", "u.u1")
+    s.connect("down.y", "u.u2")
+    s.connect("u.y", "h.u")
+    r = s.simulate(t_eval=[0.0, 0.25, 1.0, 2.0, 2.5, 3.0, 3.5, 4.0])
+    np.testing.assert_allclose(r["h.y"], [0.0, 0.0, 0.5, 1.5, 1.5, 1.5, 1.0, 0.5], atol=1e-5)

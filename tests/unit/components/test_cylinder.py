@@ -142,3 +142,49 @@ def test_absolute_pressures_have_units() -> None:
     assert to_si("2 bara", "Pa") == pytest.approx(98675.0)
     assert to_si("14.6959487755 psia", "Pa") == pytest.approx(0.0, abs=1e-6)
     assert c.Cylinder("cyl", p_floor="0 Pa_abs").values["p_floor"] == pytest.approx(-101325.0)
+
+
+def test_with_its_chambers_outside_the_piston_reads_their_pressures_and_displaces_their_oil() -> None:
+    """Option chambers = "ports" (Hopsan's HydraulicCylinderQ): between two tanks the damped mass reaches
+    v_∞ = (p_A A_A - p_B A_B)/B as v_∞ (1 - e^(-B t/m)); the piston takes A_A v from A and gives A_B v to B."""
+    s = hs.System("q-cylinder")
+    s.add(c.Cylinder("cyl", A_A=2e-3, A_B=1e-3, chambers="ports", k_stop=0.0, c_stop=0.0, x_min=-1e3, x_max=1e3))
+    s.add(c.Mass("load", m=50.0, incline=0.0, B=4000.0))
+    s.add(c.Tank("a", p="60 bar"))
+    s.add(c.Tank("b", p="20 bar"))
+    s.connect("cyl.A", "a.P")
+    s.connect("cyl.B", "b.P")
+    s.connect("cyl.R", "load.P2")
+    assert not s["cyl"].STATES and "pA" in s["cyl"].INPUTS and "QA" in s["cyl"].OUTPUTS
+    r = s.simulate(t_eval=[0.0, 0.01, 0.05, 0.2], accuracy=1e-9)
+    v_inf = (60e5 * 2e-3 - 20e5 * 1e-3) / 4000.0
+    np.testing.assert_allclose(r["load.v"], -v_inf * (1.0 - np.exp(-4000.0 / 50.0 * r.t)), rtol=1e-6, atol=1e-12)
+    # the rod faces the mass's end 2: it moves at -load.v
+    np.testing.assert_allclose(r["cyl.QA"], -2e-3 * r["load.v"], rtol=1e-9, atol=1e-15)
+    np.testing.assert_allclose(r["cyl.QB"], 1e-3 * r["load.v"], rtol=1e-9, atol=1e-15)
+
+
+def test_a_cylinder_with_its_chambers_outside_between_two_volumes_is_one_of_frozen_chamber_volumes() -> None:
+    """The Q variant between Volumes of V_A0 and V_B0 has the equations of the cylinder with k_V = 0."""
+    runs = []
+    for outside in (False, True):
+        s = closed_cylinder(k_V=0.0, C_Li=1e-12)
+        if outside:
+            s = hs.System("outside")
+            s.add(c.Cylinder("cyl", A_A=2e-3, A_B=1.2e-3, C_Li=1e-12, chambers="ports"))
+            s.add(c.Volume("va", V=4e-4, beta_e=1.2e9, p0=50e5))
+            s.add(c.Volume("vb", V=3e-4, beta_e=1.2e9, p0=50e5))
+            s.add(c.Mass("load", m=20.0, incline=0.0, B=2000.0))
+            s.add(c.Sine("force", unit="N", amplitude=4000.0, frequency=5.0))
+            s.add(c.Sum("sum", unit="N", gain1=1.0, gain2=1.0))
+            s.connect("force.y", "sum.u1")
+            s.connect("cyl.F", "sum.u2")
+            s.connect("sum.y", "load.F")
+            s.connect("load.x", "cyl.x")
+            s.connect("load.v", "cyl.v")
+            s.connect("cyl.A", "va.P")
+            s.connect("cyl.B", "vb.P")
+        r = s.simulate(t_end=0.4, n_points=41, accuracy=1e-8)
+        runs.append((r["load.x"], r["cyl.F"]))
+    np.testing.assert_allclose(runs[1][0], runs[0][0], rtol=1e-5, atol=1e-9)
+    np.testing.assert_allclose(runs[1][1], runs[0][1], rtol=1e-5, atol=1e-3)

@@ -75,6 +75,22 @@ def test_pump_displacement_setting_scales_its_flow() -> None:
     assert q == pytest.approx(0.4 * 10e-6 * 1500 / 60)
 
 
+def test_a_pump_driven_at_a_speed_signal_delivers_d_omega_less_its_leakage_backwards_too() -> None:
+    """Option speed = input: Q_P = D ω_in - C_leak (p_P - p_S), ω_in a ramp from -10 to 10 rad/s (backwards,
+    the pump delivers from P to S); the parameter omega is not used."""
+    s = System("pump")
+    s.add(c.Tank("t"))
+    s.add(c.Tank("out", p="10 bar"))
+    s.add(c.Pump("p", D="50 cm^3/rev", omega="1500 rpm", C_leak=1e-12, speed="input"))
+    s.add(c.Ramp("n", unit="rad/s", offset=-10.0, slope=2.0, t_start=0.0))
+    s.connect("t.P", "p.S")
+    s.connect("p.P", "out.P")
+    s.connect("n.y", "p.omega_in")
+    r = s.simulate(t_eval=[0.0, 2.5, 5.0, 10.0])
+    omega = np.array([-10.0, -5.0, 0.0, 10.0])
+    np.testing.assert_allclose(r["p.QP"], 50e-6 / (2 * np.pi) * omega - 1e-12 * 10e5, rtol=1e-9, atol=1e-15)
+
+
 def test_mass_length_places_end_1_and_a_fixed_point_holds_its_position() -> None:
     """A mass whose end 1 sits at length - x, held by a spring to a fixed point at 0.1 m: relaxed at the start
     positions, the spring holds it there; 10 N along +x moves it by 10 N / k."""

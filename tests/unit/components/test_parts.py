@@ -186,3 +186,26 @@ def test_check_valve_seat_opens_fully_at_cracking() -> None:
     assert q(2.99e5) == 0.0 and q(-5e5) == 0.0
     for dp in (3.01e5, 50e5):
         assert q(dp) == pytest.approx(0.6 * area * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p_tr * p_tr) ** 0.25, rel=1e-12)
+
+
+def test_a_piloted_check_valve_passes_both_ways_through_its_open_bore_while_its_pilot_is_above_half() -> None:
+    """Option pilot = "open" (Hopsan's Hydraulic22DirectionalCheckValve): with open <= 0.5 the seat checks (no
+    flow back, the bore d forward above p_crack); above 0.5 the bore d_open passes either way; the switch is an
+    event."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    cv = c.CheckValve("cv", opening="seat", pilot="open", d="2 mm", d_open="3 mm", p_crack="3 bar", Cd=0.6,
+                      rho=870.0)
+
+    def q(dp: float, pilot: float) -> float:
+        return float(cv.output_equations(0.0, {}, {"pA": 1e5 + dp, "pB": 1e5, "open": pilot}, cv.values)["Q"])
+
+    def law(d: float, dp: float) -> float:
+        p_tr = transition_pressure(d, 870.0, 32e-6, 1000.0)
+        return 0.6 * np.pi * d * d / 4.0 * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p_tr * p_tr) ** 0.25
+
+    assert q(-5e5, 0.5) == 0.0 and q(2.9e5, 0.2) == 0.0
+    assert q(10e5, 0.5) == pytest.approx(law(2e-3, 10e5), rel=1e-12)
+    assert q(-5e5, 0.51) == pytest.approx(law(3e-3, -5e5), rel=1e-12)
+    assert q(2.9e5, 1.0) == pytest.approx(law(3e-3, 2.9e5), rel=1e-12)
+    assert cv.switch_equations(0.0, {}, {"open": 0.7, "pA": 0.0, "pB": 0.0}, cv.values, {})["pilot"][0] == pytest.approx(0.2)

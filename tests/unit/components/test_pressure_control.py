@@ -92,6 +92,31 @@ def test_a_counterbalance_valve_holds_until_piloted_and_lets_oil_back_freely():
     assert run("0 bar", "0 bar", "10 bar") < -1e-5  # lifting: free flow B to A through the check valve
 
 
+def test_a_counterbalance_valve_piloted_against_its_drop_without_a_check_valve():
+    """Options pilot = "drop" (the spring chamber drained to B: p_A - p_B + r_p p_X over the setting) and check =
+    "none" (no free flow back: Hopsan's over-centre and counterbalance valves): held both ways while closed,
+    metering either way once piloted open."""
+
+    def run(pilot: str, pA: str, pB: str) -> float:
+        s = System("cbv", t_end=0.5)
+        s.add(c.ConstantPressure("load", p=pA))
+        s.add(c.ConstantPressure("valve_side", p=pB))
+        s.add(c.ConstantPressure("pilot", p=pilot))
+        s.add(c.CounterbalanceValve("cbv", p_crack="250 bar", r_p=4.0, tau="5 ms", q_nom="1000 L/min",
+                                    pilot="drop", check="none"))
+        s.connect("load.P", "cbv.A")
+        s.connect("valve_side.P", "cbv.B")
+        s.connect("pilot.P", "cbv.X")
+        return float(s.simulate()["cbv.Q"][-1])
+
+    assert run("0 bar", "200 bar", "50 bar") == 0.0  # 150 bar over the valve: held
+    q = run("30 bar", "200 bar", "50 bar")  # 150 + 4 x 30 = 270 bar: 20 bar over the setting
+    assert q == pytest.approx(static_K(20e5, 150e5) * np.sqrt(150e5), rel=1e-4)
+    assert run("0 bar", "0 bar", "10 bar") == 0.0  # no check valve: held backwards too
+    q = run("66 bar", "0 bar", "10 bar")  # -10 + 264 = 254 bar: open, metering back from B to A
+    assert q == pytest.approx(-static_K(4e5, -10e5) * np.sqrt(10e5), rel=1e-4)
+
+
 def test_the_bounded_lag_is_continuous_non_increasing_and_hopsans_limit():
     """limited_lag_rate: Hopsan's clamped lag away from the bounds, continuous and non-increasing in K across
     them (so an implicit step always has one solution), and no wind-up outside them."""

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -19,7 +20,7 @@ import pytest
 
 from hydroservo.data import reference_text
 from hydroservo.errors import ModelFileError
-from hydroservo.io.hopsan_library import LIBRARY, import_hopsan, read_hopsan, safe_name
+from hydroservo.io.hopsan_library import LIBRARY, REFUSED, import_hopsan, read_hopsan, safe_name
 
 COMPONENTS = [
     ('HydraulicTankC', 'Tank_C', {'p': ('100000', 'Pa')}),
@@ -154,10 +155,10 @@ def test_imported_model_file_round_trips(servo_file: Path, tmp_path: Path) -> No
 
 
 def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> None:
-    components = [*COMPONENTS, ("HydraulicValvePlate", "Plate", {}), ("SignalUnitDelay", "Wave", {})]
+    components = [*COMPONENTS, ("HydraulicValvePlate", "Plate", {}), ("SignalTimeDelay", "Wave", {})]
     path = tmp_path / "m.hmf"
     path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
-    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Plate \(HydraulicValvePlate\); Wave \(SignalUnitDelay\)"):
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Plate \(HydraulicValvePlate\); Wave \(SignalTimeDelay: a pure time delay, y\(t\) = u\(t - deltat\), is no ordinary differential equation"):
         read_hopsan(path)
 
 
@@ -183,9 +184,9 @@ def test_cli_writes_the_model_and_refuses_what_it_cannot_map(servo_file: Path, t
     data = json.loads(done.stdout)
     assert Path(data["files"]["model"]).is_file() and len(data["components"]) == len(COMPONENTS)
     bad = tmp_path / "bad.hmf"
-    bad.write_text(_hmf([*COMPONENTS, ("SignalUnitDelay", "Wave", {})], CONNECTIONS), encoding="utf-8")
+    bad.write_text(_hmf([*COMPONENTS, ("SignalTimeDelay", "Wave", {})], CONNECTIONS), encoding="utf-8")
     done = subprocess.run([*run, str(bad), "--out", str(tmp_path / "b")], capture_output=True, text=True)
-    assert done.returncode == 2 and "Wave (SignalUnitDelay)" in done.stderr and "Traceback" not in done.stderr
+    assert done.returncode == 2 and "Wave (SignalTimeDelay: a pure time delay" in done.stderr and "Traceback" not in done.stderr
     assert not (tmp_path / "b").exists()
 
 
@@ -302,15 +303,18 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 
 @pytest.mark.parametrize(
     "name",
-    ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "shuttle_valve",
-     "pressure_controlled_pump"],
+    ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
+     "shuttle_valve", "pressure_controlled_pump"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
-    its range (at least 1 % of its magnitude; forces and flows from the second point, where Hopsan logs start
-    values at t = 0). Each circuit failed before its law was imported: a spring's start force was dropped, an
-    unequal-area cylinder's force lacked p_atm (A1 - A2), a displacement setting of 0 became 1, a sensor's
-    start value overrode the spring's. The shuttle valve's (HydraulicShuttleValve) outlet follows the higher of a
+    its range (at least 1 % of its magnitude; forces, flows and signals from the second point, where Hopsan logs
+    start values at t = 0: a controller's output its start value 0). The first four failed before their laws were
+    imported: a spring's start force was dropped, an unequal-area cylinder's force lacked p_atm (A1 - A2), a
+    displacement setting of 0 became 1, a sensor's start value overrode the spring's. The last two check signal
+    blocks no model of Hopsan's repository uses (hysteresis, rounding, comparisons, logic) and the controllers
+    SignalPIlead and SignalPID (clamped at their limits, with derivative input) closing loops through unit
+    delays. The shuttle valve's (HydraulicShuttleValve) outlet follows the higher of a
     sine-wave pressure and a constant one, and drains back through the open inlet as the sine falls. The
     pressure-controlled pump (HydraulicPressureControlledPump) strokes at its rate limit, overshoots, destrokes to
     its lower bound and leaves it, and answers an orifice closed and a flow drawn (Hopsan's
@@ -326,7 +330,7 @@ def test_small_circuits_match_hopsan(name: str) -> None:
         if column not in by_hopsan:
             continue
         y, y_ref = result[by_hopsan[column]], ref[:, i]
-        if column.endswith(("#Force", "#Flow")):
+        if column.endswith(("#Force", "#Flow", "#Value")):
             y, y_ref = y[1:], y_ref[1:]
         scale = max(float(np.ptp(y_ref)), 0.01 * float(np.max(np.abs(y_ref))), 1e-12)
         assert np.max(np.abs(y - y_ref)) <= 0.005 * scale, column
@@ -745,6 +749,197 @@ def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path:
     np.testing.assert_allclose(r["RL.out.Value"], -2.0 + 0.5 * t, atol=1e-5)
 
 
+def _lookup_model(folder: Path, **table: tuple[str, str]) -> Path:
+    """A ramp from -1 to 5 over 6 s through a Signal1DLookupTable with the parameters ``table``."""
+    v = _value
+    ramp = {"y_0#Value": v("-1"), "y_A#Value": v("6"), "t_start#Value": v("0"), "t_end#Value": v("6")}
+    components = [("SignalRamp", "Ramp", ramp), ("Signal1DLookupTable", "LUT", table)]
+    text = _hmf(components, [("Ramp.out", "LUT.in")])
+    for name in ("filename", "csvsep", "comment", "text"):  # Hopsan's text parameters
+        text = text.replace(f'type="double" name="{name}"', f'type="string" name="{name}"')
+    path = folder / "lookup.hmf"
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def test_hopsans_lookup_table_reads_its_csv_beside_the_model_and_interpolates_its_input(tmp_path: Path) -> None:
+    """Signal1DLookupTable: the CSV named relative to the model, read with its separator, lines to skip,
+    comment character and columns (inid, outid); linear between the breakpoints, held outside them, as
+    Hopsan's LookupTable1D."""
+    (tmp_path / "tables").mkdir()
+    (tmp_path / "tables" / "f.csv").write_text("made by hand\n# y;x\n9;3\n1;0\n3;1\n", encoding="utf-8")
+    v = _value
+    path = _lookup_model(tmp_path, filename=v("tables/f.csv"), csvsep=v(";"), numlineskip=v("1"), comment=v("#"),
+                         inid=v("1"), outid=v("0"))
+    imp = import_hopsan(path)
+    table = imp.system["LUT"]
+    assert table.option("index") == "input" and "3 rows of 'tables/f.csv'" in dict(
+        (h, b) for h, _, b in imp.mapping)["LUT"]
+    t = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0])
+    r = imp.system.simulate(t_eval=t)
+    u = t - 1.0
+    np.testing.assert_allclose(r["LUT.out.Value"], np.interp(u, [0.0, 1.0, 3.0], [1.0, 3.0, 9.0]), atol=1e-12)
+    assert r["LUT.out.Value"][0] == 1.0 and r["LUT.out.Value"][-1] == 9.0  # held outside, as Hopsan's
+    table = import_hopsan(_lookup_model(tmp_path, text=v("0,2&#xa;1,4&#xa;"))).system["LUT"]  # the text instead
+    np.testing.assert_array_equal(table.times, [0.0, 1.0])
+    np.testing.assert_array_equal(table.table_values, [2.0, 4.0])
+
+
+def test_a_lookup_table_driven_by_a_constant_reads_its_file_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A constant into the table's input is folded (its value looked up); probing the block for its ports reads
+    no file: the table's CSV is read once, from the model's folder."""
+    import hydroservo.io.tables as tables
+
+    (tmp_path / "f.csv").write_text("0,1\n2,5\n", encoding="utf-8")
+    calls = []
+    real = tables.read_lookup_table
+    monkeypatch.setattr(tables, "read_lookup_table", lambda *a, **k: calls.append(a[0]) or real(*a, **k))
+    v = _value
+    components = [("SignalConstant", "C", {"y#Value": v("1.5")}), ("Signal1DLookupTable", "LUT", {"filename": v("f.csv")})]
+    text = _hmf(components, [("C.y", "LUT.in")]).replace('type="double" name="filename"', 'type="string" name="filename"')
+    (tmp_path / "m.hmf").write_text(text, encoding="utf-8")
+    monkeypatch.chdir(tmp_path.parent)
+    r = import_hopsan(tmp_path / "m.hmf").system.simulate(t_eval=[0.0, 1.0])
+    np.testing.assert_allclose(r["LUT.out.Value"], 4.0)
+    assert calls == [(tmp_path / "f.csv").resolve()]
+
+
+def test_hopsans_lookup_table_missing_malformed_or_outside_the_model_folder_is_refused(tmp_path: Path) -> None:
+    v = _value
+    with pytest.raises(ModelFileError, match=r"LUT \(Signal1DLookupTable\): filename: table file .*none\.csv.*cannot read"):
+        import_hopsan(_lookup_model(tmp_path, filename=v("none.csv")))
+    (tmp_path / "bad.csv").write_text("0,0\n1,one\n", encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"LUT \(Signal1DLookupTable\).*line 2, column 1: 'one' is no finite number"):
+        import_hopsan(_lookup_model(tmp_path, filename=v("bad.csv")))
+    (tmp_path / "ok.csv").write_text("0,0\n1,1\n", encoding="utf-8")
+    inner = tmp_path / "model"
+    inner.mkdir()
+    for name in ("../ok.csv", str(tmp_path / "ok.csv")):
+        with pytest.raises(ModelFileError, match="outside the model file's folder"):
+            import_hopsan(_lookup_model(inner, filename=v(name)))
+    with pytest.raises(ModelFileError, match="neither a file"):
+        import_hopsan(_lookup_model(tmp_path))
+    with pytest.raises(ModelFileError, match="out of|column 2"):  # outid beyond the file's columns
+        import_hopsan(_lookup_model(tmp_path, filename=v("ok.csv"), outid=v("2")))
+
+
+def test_hopsans_pid_controllers_map_to_a_pid_with_their_anti_windup(tmp_path: Path) -> None:
+    """SignalPID: u = limit(uI + Kp (yref - y) - Kd dy), its integral stopped at the limits (clamping), here
+    uI + 2 + 0.5 reaching umax = 3 at 0.5 s; SignalPID2 with 'de' connected: v = K e + I + K Td de = 3 + I,
+    I' = K/Ti e + (Umax - v)/Tt above Umax = 3.5, so I = 1 - 0.5 exp(-2 (t - 0.5)) from 0.5 s, the output
+    limited to Uoutmax = 3.9; SignalPIlead with its measurement at rest at 0.5 (the lead's output too):
+    err = yref - 0.5, u = k1 err + k1 wa integral (k1 = wa/kx); a unit delay passes its input on."""
+    v = _value
+    components = [
+        ("SignalConstant", "One", {"y#Value": v("1")}),
+        ("SignalConstant", "Half", {"y#Value": v("0.5")}),
+        ("SignalPID", "PID", {"Kp#Value": v("2"), "KI#Value": v("1"), "Kd#Value": v("-1"), "dy#Value": v("0.5"),
+                              "umin#Value": v("-3"), "umax#Value": v("3")}),
+        ("SignalPID2", "PID2", {"K": v("2"), "Ti": v("2"), "Tt": v("0.5"), "Td": v("1"), "Umax": v("3.5"),
+                                "Uoutmax": v("3.9")}),
+        ("SignalPIlead", "Lead", {"y#Value": v("0.5"), "wa": v("2"), "kx": v("1"), "da": v("1"), "umax": v("3")}),
+        ("SignalUnitDelay", "Delay", {}),
+    ]
+    connections = [("One.y", "PID.yref"), ("One.y", "PID2.e"), ("Half.y", "PID2.de"), ("One.y", "Lead.yref"),
+                   ("PID.u", "Delay.in")]
+    path = tmp_path / "pid.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    system = imp.system
+    pid, pid2, lead = system["PID"], system["PID2"], system["Lead"]
+    assert pid.option("anti_windup") == "clamping" and pid.option("derivative") == "input"
+    assert pid.values["Kd"] == 1.0 and pid.values["upper"] == 3.0  # -Kd dy: the input de is dy
+    assert pid2.option("anti_windup") == "tracking" and pid2.values["Ki"] == 1.0 and pid2.values["Kd"] == 2.0
+    assert pid2.values["track_upper"] == 3.5 and pid2.values["upper"] == 3.9 and pid2.values["T_t"] == 0.5
+    assert lead.values["Kp"] == 2.0 and lead.values["Ki"] == 4.0 and lead.option("anti_windup") == "clamping"
+    assert system["Lead_lead"].values["a1"] == 1.0 and system["Lead_lead"].values["b1"] == 0.5
+    t = np.array([0.0, 0.25, 0.5, 1.0, 1.5, 2.0])
+    r = system.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["PID.u.Value"], np.minimum(2.5 + t, 3.0), atol=1e-6)
+    np.testing.assert_allclose(r["PID.uI.Value"], np.minimum(t, 0.5), atol=1e-6)
+    integral = np.where(t < 0.5, t, 1.0 - 0.5 * np.exp(-2.0 * (t - 0.5)))
+    np.testing.assert_allclose(r["PID2.u.Value"], np.minimum(3.0 + integral, 3.9), atol=1e-6)
+    np.testing.assert_allclose(r["Lead.err.Value"], 0.5, atol=1e-9)
+    np.testing.assert_allclose(r["Lead.u.Value"], np.minimum(1.0 + 2.0 * t, 3.0), atol=1e-6)
+    np.testing.assert_allclose(r["Delay.out.Value"], r["PID.u.Value"])
+
+
+def test_pid2_without_its_derivative_and_unit_delays_closing_algebraic_loops_are_refused(tmp_path: Path) -> None:
+    v = _value
+    path = tmp_path / "pid2.hmf"
+    path.write_text(_hmf([("SignalPID2", "PID2", {"Td": v("0.1")})], []), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"PID2 \(SignalPID2\): Td = 0.1 s with 'de' unconnected"):
+        import_hopsan(path)
+    components = [("SignalStep", "Step", {}), ("SignalSubtract", "Error", {}), ("SignalGain", "Gain", {}),
+                  ("SignalUnitDelay", "Delay", {})]
+    connections = [("Step.out", "Error.in1"), ("Error.out", "Gain.in"), ("Gain.out", "Delay.in"),
+                   ("Delay.out", "Error.in2")]
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"algebraic loop .*unit delays \(Delay: SignalUnitDelay\)"):
+        import_hopsan(path)
+    components[2] = ("SignalIntegrator2", "Gain", {})  # a state in the loop: imported
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    assert import_hopsan(path).system["Delay"].values["K"] == 1.0
+
+
+def test_a_filter_starts_from_the_value_of_the_signal_driving_it(tmp_path: Path) -> None:
+    """Hopsan's filters start from their output's start value with their input at the value it has when the model
+    is initialised (FirstOrderTransferFunction::initialize reads the input's node): a high-pass filter behind a
+    low-pass filter that starts at 0.3 starts at rest at 0.3, its output 0, not 0.3 (the file's 'in' is 0)."""
+    v = _value
+    components = [("SignalLP1Filter", "LP", {"out#Value": v("0.3"), "omega": v("6")}),
+                  ("SignalHP1Filter", "HP", {"omega": v("100")})]
+    path = tmp_path / "filters.hmf"
+    path.write_text(_hmf(components, [("LP.out", "HP.in")]), encoding="utf-8")
+    system = import_hopsan(path).system
+    assert system["HP"].values["y0"] == pytest.approx(-0.3)
+    r = system.simulate(t_eval=[0.0, 1e-3])
+    assert abs(r["HP.out.Value"][0]) < 1e-12
+
+
+def test_hopsans_rounding_comparison_logic_blocks_and_latch_map_with_their_ports(tmp_path: Path) -> None:
+    """SignalFloor, SignalCeil, SignalRound as Functions; SignalGreaterThan and SignalSmallerThan read in and
+    x_limit (unconnected: its start value), SignalAnd and SignalOr in1 and in2; SignalSRlatch's setCond,
+    resetCond, Qstate and notQstate, from its start value of Qstate."""
+    v = _value
+    ramp = {"y_0#Value": v("-2"), "y_A#Value": v("4"), "t_start#Value": v("0"), "t_end#Value": v("4")}
+    components = [
+        ("SignalRamp", "Ramp", ramp),
+        ("SignalFloor", "Floor", {}), ("SignalCeil", "Ceil", {}), ("SignalRound", "Round", {}),
+        ("SignalGreaterThan", "GT", {"x_limit#Value": v("0.5")}), ("SignalSmallerThan", "ST", {}),
+        ("SignalAnd", "And", {}), ("SignalOr", "Or", {"in2#Value": v("0")}),
+        ("SignalSRlatch", "Latch", {"Qstate#Value": v("1")}),
+    ]
+    connections = [("Ramp.out", f"{b}.in") for b in ("Floor", "Ceil", "Round", "GT", "ST")]
+    connections += [("GT.out", "And.in1"), ("ST.out", "And.in2"), ("GT.out", "Or.in1"), ("GT.out", "Latch.resetCond")]
+    path = tmp_path / "logic.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = import_hopsan(path).system
+    assert system["GT"].option("function") == "greater" and system["Latch"].values["Q0"] == 1.0
+    t = np.array([0.0, 0.5, 1.8, 2.25, 3.0, 3.9])
+    u = t - 2.0
+    r = system.simulate(t_eval=t)
+    np.testing.assert_array_equal(r["Floor.out.Value"], np.floor(u))
+    np.testing.assert_array_equal(r["Ceil.out.Value"], np.ceil(u))
+    np.testing.assert_array_equal(r["Round.out.Value"], np.sign(u) * np.floor(np.abs(u) + 0.5))
+    np.testing.assert_array_equal(r["GT.out.Value"], (u > 0.5).astype(float))
+    np.testing.assert_array_equal(r["ST.out.Value"], (u < 0.0).astype(float))  # x_limit's start value 0
+    np.testing.assert_array_equal(r["And.out.Value"], np.zeros_like(u))
+    np.testing.assert_array_equal(r["Or.out.Value"], (u > 0.5).astype(float))
+    # the latch starts set and is reset once the ramp passes 0.5 (t = 2.5 s)
+    np.testing.assert_allclose(r["Latch.Qstate.Value"], (u <= 0.5).astype(float), atol=1e-9)
+    np.testing.assert_allclose(r["Latch.notQstate.Value"], (u > 0.5).astype(float), atol=1e-9)
+
+
+@pytest.mark.parametrize("kind", sorted(REFUSED))
+def test_blocks_hydroservo_cannot_follow_are_refused_with_why(tmp_path: Path, kind: str) -> None:
+    path = tmp_path / "refused.hmf"
+    path.write_text(_hmf([(kind, "Block", {})], []), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=rf"Block \({kind}: " + re.escape(REFUSED[kind][:40])):
+        import_hopsan(path)
+    assert kind not in LIBRARY
+
+
 def test_rate_limits_of_the_wrong_sign_and_static_friction_below_the_kinetic_are_refused(tmp_path: Path) -> None:
     v = _value
     components = [
@@ -1057,3 +1252,314 @@ def test_hopsans_load_sensing_valve_passes_the_loaded_ports_pressure_to_its_line
         r = imp.system.simulate(t_eval=[0.0, 0.2])
         assert r["LS.PL.Pressure"][-1] == pytest.approx(loaded, rel=1e-9)
         assert r["LS.xv.Value"][-1] == pytest.approx(float(spool), rel=1e-6)
+
+
+def test_hopsans_reducing_drop_and_pressure_controlled_valves_settle_on_the_relief_valves_law(tmp_path: Path) -> None:
+    """[Hopsan2026] Valves/PressureControlValves/HydraulicPressureReducingValve.hpp, HydraulicPressureDropValve.hpp
+    and HydraulicPressureControlledValve.hpp: the relief valve's spool, settled at xs = Δp_over/b1 with
+    b1 = √p_nom/k_cs + (p_1 - p_2)/(k_cf √p_nom), passing x0 √(p_1 - p_2); Δp_over = p_ref - p_2 (reducing,
+    absolute), p_1 - p_2 - p_ref (drop), p_open - p_close - p_ref (controlled, its pilots taking no flow). Each
+    valve sits between two fixed pressures, partly open (the hysteresis, 5 bar by default, only delays it)."""
+    v = _value
+    components = [
+        ("HydraulicPressureReducingValve", "RD", {"p_ref#Value": v("5e6", "Pa"), "p_h#Value": v("0", "Pa")}),
+        ("HydraulicPressureDropValve", "DR", {"p_ref#Value": v("4.1e6", "Pa")}),
+        ("HydraulicPressureControlledValve", "PC", {"p_ref#Value": v("4e6", "Pa"), "p_nom": v("5e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("4.9e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S3", {"p#Value": v("4e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S4", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S5", {"p#Value": v("6e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S6", {"p#Value": v("1.5e6", "Pa")}),
+    ]
+    connections = [("RD.P1", "S1.P1"), ("RD.P2", "S2.P1"), ("DR.P1", "S5.P1"), ("DR.P2", "S6.P1"),
+                   ("PC.P1", "S1.P1"), ("PC.P2", "S4.P1"), ("PC.P_OPEN", "S5.P1"), ("PC.P_CLOSE", "S6.P1")]
+    path = tmp_path / "pressure_valves.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert type(imp.system["PC"]).__name__ == "PilotedValve" and imp.system["DR"].option("pilot") == "drop"
+    assert imp.system["DR"].values["p_h"] == 5e5 and imp.system["RD"].values["p_h"] == 0.0
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
+    for name, p1, p2, over, p_nom in (("RD", 1e7, 4.9e6, 5e6 - 4.9e6, 7e6),
+                                      ("DR", 6e6, 1.5e6, 6e6 - 1.5e6 - 4.1e6, 7e6),
+                                      ("PC", 1e7, 1e5, 6e6 - 1.5e6 - 4e6, 5e6)):
+        dp = p1 - p2
+        b1 = np.sqrt(p_nom) / 1e-8 + dp / (1e-8 * np.sqrt(p_nom))
+        hysteresis = imp.system[name].values["p_h"] / 2.0  # the spool stops half the band short of xs
+        x0 = (over - hysteresis) / b1
+        assert 0.0 < x0 < 0.001 / np.sqrt(p_nom)  # partly open
+        assert r[f"{name}.Q"][-1] == pytest.approx(x0 * np.sqrt(dp), rel=1e-5)
+    assert r["RD.P2.Flow"][-1] == r["RD.Q"][-1]  # Hopsan's flow out of P2: the flow through
+    assert r["PC.QX"][-1] == 0.0 and r["PC.QY"][-1] == 0.0
+
+
+def test_hopsans_pilot_controlled_check_valve_opens_on_its_absolute_pilot_and_then_flows_both_ways(
+    tmp_path: Path,
+) -> None:
+    """[Hopsan2026] Restrictors/HydraulicPilotControlledCheckValve.hpp: open while p_1 + φ p_pilot - p_2 > p_f
+    (absolute pressures), then q = K_s √(p_1 - p_2) signed; closed otherwise. Reverse flow (p_2 > p_1) passes only
+    while the pilot holds the seat open."""
+    v = _value
+
+    def flow(p1: float, p2: float, pilot: float) -> float:
+        components = [
+            ("HydraulicPilotControlledCheckValve", "CV", {"phi#Value": v("3.5"), "p_f#Value": v("1e6", "Pa"),
+                                                          "K_s": v("5e-7")}),
+            ("HydraulicPressureSourceC", "S1", {"p#Value": v(repr(p1), "Pa")}),
+            ("HydraulicPressureSourceC", "S2", {"p#Value": v(repr(p2), "Pa")}),
+            ("HydraulicPressureSourceC", "S3", {"p#Value": v(repr(pilot), "Pa")}),
+        ]
+        path = tmp_path / "pcv.hmf"
+        path.write_text(_hmf(components, [("CV.P1", "S1.P1"), ("CV.P2", "S2.P1"), ("CV.P_PILOT", "S3.P1")]),
+                        encoding="utf-8")
+        imp = import_hopsan(path)
+        assert imp.system["CV"].values["p_crack"] == pytest.approx(1e6 - 3.5 * 101325.0)
+        return float(imp.system.simulate(t_eval=[0.0, 0.1])["CV.Q"][-1])
+
+    # p1 - p2 + 3.5 p_pilot (absolute) against 1 MPa
+    assert flow(2e6, 1e6, 1e5) == pytest.approx(5e-7 * np.sqrt(1e6), rel=1e-6)  # 1.35 MPa: open forwards
+    assert flow(1.2e6, 1e6, 1e5) == 0.0  # 0.55 MPa: closed
+    assert flow(1e6, 2e6, 1e5) == 0.0  # reverse, no pilot: held
+    assert flow(1e6, 2e6, 6e5) == pytest.approx(-5e-7 * np.sqrt(1e6), rel=1e-6)  # 1.1 MPa with the pilot: released
+
+
+def test_hopsans_preloaded_orificed_and_pilot_closable_check_valves(tmp_path: Path) -> None:
+    """[Hopsan2026] Restrictors/HydraulicCheckValvePreLoaded.hpp (open while p_1 > p_2 + F_s),
+    HydraulicCheckValveWithOrifice.hpp (K_s √Δp forwards, K_r √Δp backwards) and
+    HydraulicPilotClosableCheckValve.hpp (open while p_1 > p_2 + p_pilot, absolute pressures), each between fixed
+    pressures, their flows from the laws by hand."""
+    v = _value
+
+    def flows(p1: float, p2: float, pilot: float) -> dict[str, float]:
+        components = [
+            ("HydraulicCheckValvePreLoaded", "PL", {"F_s#Value": v("5e5", "Pa"), "K_s#Value": v("4e-7")}),
+            ("HydraulicCheckValveWithOrifice", "WO", {"K_s#Value": v("4e-7"), "K_r#Value": v("1e-7")}),
+            ("HydraulicPilotClosableCheckValve", "PC", {"K_s": v("4e-7")}),
+            ("HydraulicPressureSourceC", "S1", {"p#Value": v(repr(p1), "Pa")}),
+            ("HydraulicPressureSourceC", "S2", {"p#Value": v(repr(p2), "Pa")}),
+            ("HydraulicPressureSourceC", "S3", {"p#Value": v(repr(pilot), "Pa")}),
+        ]
+        connections = [("PL.P1", "S1.P1"), ("PL.P2", "S2.P1"), ("WO.P1", "S1.P1"), ("WO.P2", "S2.P1"),
+                       ("PC.P1", "S1.P1"), ("PC.P2", "S2.P1"), ("PC.P_PILOT", "S3.P1")]
+        path = tmp_path / "checks.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        r = import_hopsan(path).system.simulate(t_eval=[0.0, 0.1])
+        return {k: float(r[f"{k}.Q"][-1]) for k in ("PL", "PC")} | {
+            "WO": float(r["WO.Q"][-1] + r["WO_orifice.Q"][-1])}
+
+    f = flows(2e6, 1e6, 5e5)  # forwards 1 MPa: over the pre-load; the pilot (0.5 MPa) below the drop
+    assert f["PL"] == pytest.approx(4e-7 * 1e3, rel=1e-6)
+    assert f["WO"] == pytest.approx(4e-7 * 1e3, rel=1e-6)
+    assert f["PC"] == pytest.approx(4e-7 * 1e3, rel=1e-6)
+    f = flows(1.3e6, 1e6, 5e5)  # forwards 0.3 MPa: under the pre-load, and under the pilot
+    assert f["PL"] == 0.0 and f["PC"] == 0.0
+    assert f["WO"] == pytest.approx(4e-7 * np.sqrt(3e5), rel=1e-6)
+    f = flows(1e6, 2e6, 1e5)  # backwards 1 MPa: only the orifice of the orificed valve
+    assert f["PL"] == 0.0 and f["PC"] == 0.0
+    assert f["WO"] == pytest.approx(-1e-7 * 1e3, rel=1e-6)
+def test_hopsans_q_type_pressure_source_holds_the_volume_joined_to_it_at_its_pressure(tmp_path: Path) -> None:
+    """HydraulicPressureSourceQ sets the pressure of the C component joined to it (a volume drained by a laminar
+    orifice to a tank): in the steady state the node is at p (absolute) and the source delivers Kc (p - p_tank).
+    Its p driven by an old file's SignalSource (SignalConstant's former name, its port out) is followed, within
+    q/G of the source's conductance."""
+    v = _value
+    components = [
+        ("HydraulicPressureSourceQ", "Q", {"p#Value": v("1e5", "Pa")}),
+        ("SignalSource", "C", {"y": v("5e6")}),
+        ("HydraulicVolume", "V", {"V": v("1e-3"), "Beta_e": v("1e9"), "P1#Pressure": v("1e5", "Pa")}),
+        ("HydraulicLaminarOrifice", "O", {"Kc#Value": v("1e-10")}),
+        ("HydraulicTankC", "T", {"p": v("1e5", "Pa")}),
+    ]
+    connections = [("C.out", "Q.p"), ("Q.P1", "V.P1"), ("V.P2", "O.P1"), ("O.P2", "T.P1")]
+    path = tmp_path / "qsource.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert type(imp.system["Q_p"]).__name__ == "PressureSource" and type(imp.system["Q"]).__name__ == "LaminarOrifice"
+    r = imp.system.simulate(t_eval=[0.0, 0.01, 0.1])
+    assert r["V.P1.Pressure"][-1] == pytest.approx(5e6, rel=1e-7)
+    assert r["Q.P1.Pressure"][-1] == pytest.approx(5e6, rel=1e-7)
+    assert r["Q.P1.Flow"][-1] == pytest.approx(1e-10 * (5e6 - 1e5), rel=1e-6)
+    assert r["C.out.Value"][-1] == 5e6
+    del components[1]  # undriven: a tank at its p
+    path.write_text(_hmf(components, connections[1:]), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert type(imp.system["Q_p"]).__name__ == "Tank"
+    assert imp.system.simulate(t_eval=[0.0, 0.1])["V.P1.Pressure"][-1] == pytest.approx(1e5, rel=1e-7)
+
+
+def test_hopsans_q_type_cylinder_is_the_cylinder_with_its_chambers_outside_pushing_its_load(tmp_path: Path) -> None:
+    """HydraulicCylinderQ between two C-type pressure sources: m_l ẍ = A_1 p_1 - A_2 p_2 - (B_l + B_p) ẋ - k_l x
+    (absolute pressures), so the piston settles at x = (A_1 p_1 - A_2 p_2)/k_l from its P3 start position, or on
+    its stop at s_l; it takes A_1 ẋ from P1 and gives A_2 ẋ to P2 (Hopsan's flows count out of it)."""
+    v = _value
+    cyl = {"A_1#Value": v("2e-4"), "A_2#Value": v("1e-4"), "B_p#Value": v("300"), "B_l#Value": v("200"),
+           "k_l#Value": v("1e5"), "m_l": v("2"), "s_l": v("0.5"), "P3#Position": v("0.1")}
+    components = [
+        ("HydraulicCylinderQ", "Cyl", cyl),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e7", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("2e6", "Pa")}),
+        ("MechanicPositionSensor", "X", {}),
+    ]
+    connections = [("Cyl.P1", "S1.P1"), ("Cyl.P2", "S2.P1"), ("Cyl.P3", "X.P1")]
+    path = tmp_path / "qcyl.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Cyl"].option("chambers") == "ports" and imp.system["Cyl_load"].values["m"] == 2.0
+    r = imp.system.simulate(t_eval=[0.0, 0.05, 2.0], accuracy=1e-8)
+    x_end = (2e-4 * 1e7 - 1e-4 * 2e6) / 1e5
+    assert r["Cyl.P3.Position"][0] == pytest.approx(0.1)
+    assert r["Cyl.P3.Position"][-1] == pytest.approx(x_end, rel=1e-6)
+    speed = r["Cyl.P3.Velocity"][1]
+    assert speed < 0.0  # retracting from 0.1 m towards x_end
+    assert r["Cyl.P1.Flow"][1] == pytest.approx(-2e-4 * speed, rel=1e-9)
+    assert r["Cyl.P2.Flow"][1] == pytest.approx(1e-4 * speed, rel=1e-9)
+    cyl["k_l#Value"] = v("1e3")  # x_end = 18 m: the stop at s_l
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 2.0])
+    assert r["Cyl.P3.Position"][-1] == pytest.approx(0.5, abs=2e-5)
+
+
+def test_hopsans_spring_loaded_piston_is_the_c_cylinder_less_its_spring_force(tmp_path: Path) -> None:
+    """HydraulicSpringLoadedPistonC: HydraulicCylinderC's piston with the constant force F_s against it. Between two
+    Q-type pressure sources, pushing a damped mass (B) whose stop at 0 it leaves, it reaches the speed
+    (A_1 p_1 - A_2 p_2 - F_s)/B (Hopsan's P3 counts it negative, the piston extending)."""
+    v = _value
+    components = [
+        ("HydraulicSpringLoadedPistonC", "P", {"A_1#Value": v("1e-3"), "A_2#Value": v("5e-4"), "s_l#Value": v("10"),
+                                               "F_s#Value": v("2000"), "V_1#Value": v("1e-4"), "V_2#Value": v("1e-4"),
+                                               "B_p#Value": v("0"), "c_leak#Value": v("0"),
+                                               "P1#Pressure": v("4e6", "Pa"), "P2#Pressure": v("1e6", "Pa")}),
+        ("HydraulicPressureSourceQ", "Q1", {"p#Value": v("4e6", "Pa")}),
+        ("HydraulicPressureSourceQ", "Q2", {"p#Value": v("1e6", "Pa")}),
+        ("MechanicTranslationalMass", "M", {"m": v("10"), "B#Value": v("1000"), "k#Value": v("0"),
+                                            "x_min#Value": v("0"), "x_max#Value": v("100")}),
+    ]
+    connections = [("P.P1", "Q1.P1"), ("P.P2", "Q2.P1"), ("P.P3", "M.P1")]
+    path = tmp_path / "slp.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    cyl = imp.system["P"]
+    assert cyl.values["F_s"] == 2000.0 and cyl.option("pressure_floor") == "check-valve"
+    r = imp.system.simulate(t_eval=[0.0, 0.5], accuracy=1e-8)
+    force = 1e-3 * 4e6 - 5e-4 * 1e6 - 2000.0
+    assert r["P.P3.Velocity"][-1] == pytest.approx(-force / 1000.0, rel=1e-4)
+    assert r["P.P3.Force"][-1] == pytest.approx(force, rel=1e-4)
+
+
+def test_hopsans_fixed_pump_turns_at_the_speed_a_signal_sets(tmp_path: Path) -> None:
+    """HydraulicFixedDisplacementPump with n_p driven by a ramp: q = D_p n_p/2π - C_lp (p_2 - p_1) between two
+    C-type pressure sources, backwards while n_p < 0 (Pump with speed = input)."""
+    v = _value
+    components = [
+        ("HydraulicFixedDisplacementPump", "P", {"n_p#Value": v("250"), "D_p#Value": v("5e-5"),
+                                                 "C_lp#Value": v("1e-12")}),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("2e5", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1.2e6", "Pa")}),
+        ("SignalRamp", "R", {"y_0#Value": v("-10"), "y_A#Value": v("20"), "t_start#Value": v("0"),
+                             "t_end#Value": v("10")}),
+    ]
+    connections = [("P.P1", "S1.P1"), ("P.P2", "S2.P1"), ("R.out", "P.n_p")]
+    path = tmp_path / "pump.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["P"].option("speed") == "input"
+    r = imp.system.simulate(t_eval=[0.0, 2.5, 5.0, 10.0])
+    n = np.array([-10.0, -5.0, 0.0, 10.0])
+    np.testing.assert_allclose(r["P.P2.Flow"], 5e-5 * n / (2 * np.pi) - 1e-12 * 1e6, rtol=1e-9, atol=1e-15)
+
+
+def test_hopsans_directional_check_valve_checks_until_its_spool_passes_half_then_opens_both_ways(tmp_path: Path) -> None:
+    """Hydraulic22DirectionalCheckValve between 10 bar and 50 bar (absolute): checked, no flow back from P2; with
+    ``in`` stepped to 1 its spool (1/(s²/ω² + 2 s/ω + 1) of the step) passes 0.5 at ω t = 1.678 and the valve
+    passes Kv_open √(p_2 - p_1) from P2 to P1. Kv gives the bores (C_d 0.67, ρ 870 kg/m³); F_s the cracking."""
+    v = _value
+    valve = {"omega_h": v("100"), "delta_h": v("1"), "Kv_open#Value": v("4e-8"), "Kv_check#Value": v("2e-8"),
+             "F_s#Value": v("3e5"), "out#Value": v("0")}
+    components = [
+        ("Hydraulic22DirectionalCheckValve", "V", valve),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("5e6", "Pa")}),
+        ("SignalStep", "U", {"y_0#Value": v("0"), "y_A#Value": v("1"), "t_step#Value": v("0.1")}),
+    ]
+    connections = [("V.P1", "S1.P1"), ("V.P2", "S2.P1"), ("U.out", "V.in")]
+    path = tmp_path / "dcv.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    cv = imp.system["V"]
+    assert cv.option("pilot") == "open" and cv.values["p_crack"] == 3e5
+    area = lambda k: k / (0.67 * np.sqrt(2.0 / 870.0))  # noqa: E731
+    assert np.pi * cv.values["d_open"] ** 2 / 4 == pytest.approx(area(4e-8)) and np.pi * cv.values["d"] ** 2 / 4 == pytest.approx(area(2e-8))
+    t_half = 0.1 + 1.678347 / 100.0  # (1 + ω t) e^(-ω t) = 0.5
+    r = imp.system.simulate(t_eval=[0.0, 0.1, t_half - 1e-4, t_half + 1e-4, 0.3])
+    assert list(r["V.P1.Flow"][:3]) == [0.0, 0.0, 0.0]
+    assert r["V.P1.Flow"][3] == pytest.approx(4e-8 * np.sqrt(4e6), rel=1e-4)
+    assert r["V.out.Value"][-1] == pytest.approx(1.0, abs=1e-6)
+
+
+def test_hopsans_over_centre_and_counterbalance_valves_open_as_their_pilots_add_to_the_load(tmp_path: Path) -> None:
+    """HydraulicOverCenterValve: the relief valve's spool opened by p_1 + a_ratio p_control over p_ref (absolute),
+    K = over/(C_s + C_f Δp), Q = K √Δp, its xv that K; HydraulicCounterBalanceValveG: the G relief valve's spool
+    balance with kappa p_3 added, B_v ẋ = A_v (p_1 - p_2 + kappa p_3 - pref) - (ks + 2 Cq w cos φ Δp) x, settling
+    where the right side vanishes. Neither has a check valve (held both ways while closed)."""
+    v = _value
+    oc = {"p_ref#Value": v("2.5e7"), "p_h#Value": v("0"), "a_ratio#Value": v("4"), "tao": v("0.005"),
+          "k_cs": v("1e-8"), "k_cf": v("1e-8"), "q_nom": v("0.01"), "p_nom": v("7e6")}
+    cb = {"pref#Value": v("2e6"), "rho#Value": v("860"), "Dv#Value": v("0.01"), "frac#Value": v("0.1"),
+          "kappa#Value": v("0.5"), "Bv#Value": v("100"), "Xvmax#Value": v("0.003"), "Cq#Value": v("0.67"),
+          "phi#Value": v("0.5"), "ks#Value": v("1e5"), "p0#Value": v("1e5"), "xv#Value": v("0")}
+    components = [
+        ("HydraulicOverCenterValve", "OC", oc),
+        ("HydraulicCounterBalanceValveG", "CB", cb),
+        ("HydraulicPressureSourceC", "L1", {"p#Value": v("1.5e7", "Pa")}),
+        ("HydraulicPressureSourceC", "X1", {"p#Value": v("3e6", "Pa")}),
+        ("HydraulicTankC", "T1", {"p": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "L2", {"p#Value": v("2.1e6", "Pa")}),
+        ("HydraulicPressureSourceC", "X2", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicTankC", "T2", {"p": v("1e5", "Pa")}),
+    ]
+    connections = [("OC.P1", "L1.P1"), ("OC.P2", "T1.P1"), ("OC.P_CONTROL", "X1.P1"),
+                   ("CB.P1", "L2.P1"), ("CB.P2", "T2.P1"), ("CB.P3", "X2.P1")]
+    path = tmp_path / "cbv.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    for name, pilot in (("OC", "inlet"), ("CB", "drop")):
+        assert imp.system[name].option("check") == "none" and imp.system[name].option("pilot") == pilot
+    r = imp.system.simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
+    dp = 1.5e7 - 1e5
+    over = 1.5e7 + 4 * 3e6 - 2.5e7  # 20 bar
+    K = over / (np.sqrt(7e6) / 1e-8 + dp / (1e-8 * np.sqrt(7e6)))
+    assert r["OC.xv.Value"][-1] == pytest.approx(K, rel=1e-6)
+    assert r["OC.P2.Flow"][-1] == pytest.approx(K * np.sqrt(dp), rel=1e-5)
+    dp2 = 2.1e6 - 1e5
+    w, av = np.pi * 0.01 * 0.1 * np.sin(0.5), np.pi * 0.01**2 / 4
+    x = av * (dp2 + 0.5 * 1e6 - 2e6) / (1e5 + 2 * 0.67 * w * np.cos(0.5) * dp2)
+    assert r["CB.xv.Value"][-1] == pytest.approx(x, rel=1e-4)
+    q = 0.67 * w * x * np.sqrt(2 / 860) * dp2 / (dp2**2 + 1e10) ** 0.25
+    assert r["CB.P2.Flow"][-1] == pytest.approx(q, rel=1e-4)
+
+
+def test_hopsans_piston_with_mass_load_leaks_between_its_ports_and_stops_at_xmin_xmax(tmp_path: Path) -> None:
+    """HydraulicPistonMload: mL ẍ = A1 p_1 - A2 p_2 - f - (bL + bp) ẋ within [xmin, xmax], q_1 = -A1 ẋ - Cip
+    (p_1 - p_2): between two C-type pressure sources it accelerates at (A1 p_1 - A2 p_2)/mL from its start position
+    and rests on xmax, where only the leakage flows; its fc (declared, in no equation of Hopsan's) is ignored."""
+    v = _value
+    piston = {"A1#Value": v("2e-3"), "A2#Value": v("1e-3"), "SL#Value": v("0.4"), "Cip#Value": v("1e-12"),
+              "bp#Value": v("0"), "mL#Value": v("100"), "bL#Value": v("0"), "fc#Value": v("10"), "bfc#Value": v("1"),
+              "xmin#Value": v("0"), "xmax#Value": v("0.3"), "Pmp#Position": v("0.1")}
+    components = [
+        ("HydraulicPistonMload", "P", piston),
+        ("HydraulicPressureSourceC", "S1", {"p#Value": v("2e6", "Pa")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1e6", "Pa")}),
+        ("MechanicPositionSensor", "X", {}),
+    ]
+    connections = [("P.P1", "S1.P1"), ("P.P2", "S2.P1"), ("P.Pmp", "X.P1")]
+    path = tmp_path / "pml.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["P"].values["C_Li"] == 1e-12 and imp.system["P_load"].values["x_max"] == 0.3
+    r = imp.system.simulate(t_eval=[0.0, 0.02, 1.0], accuracy=1e-9)
+    a = (2e-3 * 2e6 - 1e-3 * 1e6) / 100.0
+    assert r["P.Pmp.Position"][1] == pytest.approx(0.1 + a * 0.02**2 / 2, rel=1e-6)
+    assert r["P.P1.Flow"][1] == pytest.approx(-2e-3 * a * 0.02 - 1e-12 * 1e6, rel=1e-6)
+    assert r["P.Pmp.Position"][-1] == pytest.approx(0.3, abs=1e-5)
+    assert r["P.P1.Flow"][-1] == pytest.approx(-1e-12 * 1e6, rel=1e-3)

@@ -22,3 +22,47 @@ def test_table_source_from_csv(tmp_path) -> None:
     np.testing.assert_allclose(r["u.y"], [0.0, 1.0, 2.0])
     with pytest.raises(ParameterError, match="'amps' is not a column"):
         c.Table("u", *read_time_table(path, "amps"))
+
+
+def test_lookup_table_parsed_as_hopsan_reads_it() -> None:
+    """Hopsan's CSV conventions (Signal1DLookupTable): lines skipped, then initial comment lines, any one-character
+    separator, a decimal comma, columns by 0-based index, rows sorted by their breakpoints."""
+    from hydroservo.io.tables import parse_lookup_table
+
+    text = "title line\n# x;a;y\n\n3;7;9,5\n1; 5 ;1\n2;6;4\n"
+    x, y = parse_lookup_table(text, 0, 2, separator=";", skip=1, comment="#")
+    np.testing.assert_array_equal(x, [1.0, 2.0, 3.0])
+    np.testing.assert_array_equal(y, [1.0, 4.0, 9.5])
+    x, y = parse_lookup_table("0,1\n1,3\n", 1, 0)  # the columns swapped
+    np.testing.assert_array_equal(x, [1.0, 3.0])
+    np.testing.assert_array_equal(y, [0.0, 1.0])
+
+
+@pytest.mark.parametrize(
+    ("text", "options", "message"),
+    [
+        ("0,1\n1,x\n", {}, r"line 2, column 1: 'x' is no finite number"),
+        ("0,1\n1,nan\n", {}, "is no finite number"),
+        ("0,1\n1\n", {}, r"line 2: 1 column\(s\); expected column 1"),
+        ("0,1\n", {}, "1 row"),
+        ("0,1\n0,2\n", {}, "two rows have the breakpoint 0"),
+        ("0,1\n1,2\n", {"separator": ";;"}, "expected one character"),
+        ("0,1\n1,2\n", {"comment": "//"}, "expected one character"),
+        ("# 0,1\n1,2\n", {}, r"line 1, column 0: '# 0' is no finite number"),  # no comment character given
+    ],
+)
+def test_malformed_lookup_tables_are_refused(text: str, options: dict, message: str) -> None:
+    from hydroservo.io.tables import parse_lookup_table
+
+    with pytest.raises(ParameterError, match=message):
+        parse_lookup_table(text, **options, what="LUT")
+
+
+def test_lookup_table_file_missing_or_binary_is_refused(tmp_path) -> None:
+    from hydroservo.io.tables import read_lookup_table
+
+    with pytest.raises(ParameterError, match="cannot read"):
+        read_lookup_table(tmp_path / "none.csv", what="LUT")
+    (tmp_path / "b.csv").write_bytes(b"0,1\x00\n1,2\n")
+    with pytest.raises(ParameterError, match="binary"):
+        read_lookup_table(tmp_path / "b.csv", what="LUT")

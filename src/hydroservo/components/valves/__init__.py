@@ -10,11 +10,16 @@ valves), :mod:`.two_stage` (the first-principles two-stage servovalve of
 """
 
 from hydroservo.components.valves.catalogue import CatalogueServovalve
-from hydroservo.components.valves.check import CheckValve
+from hydroservo.components.valves.check import CheckValve, PilotCheckValve
 from hydroservo.components.valves.directional import ThreeWayValve, TwoWayValve
 from hydroservo.components.valves.four_way import FourWayValve
 from hydroservo.components.valves.orifice import LaminarOrifice, Orifice
-from hydroservo.components.valves.pressure_control import CounterbalanceValve, PressureReducingValve, ReliefValve
+from hydroservo.components.valves.pressure_control import (
+    CounterbalanceValve,
+    PilotedValve,
+    PressureReducingValve,
+    ReliefValve,
+)
 from hydroservo.components.valves.pseudo_section import PseudoSectionValve, ServoSolenoidValve
 from hydroservo.components.valves.shuttle import ShuttleValve
 from hydroservo.components.valves.staged_slot import StagedSlotValve
@@ -31,9 +36,11 @@ __all__ = [
     "LaminarOrifice",
     "CheckValve",
     "ShuttleValve",
+    "PilotCheckValve",
     "ReliefValve",
     "PressureReducingValve",
     "CounterbalanceValve",
+    "PilotedValve",
     "TwoStageServovalve",
     "CatalogueServovalve",
 ]

@@ -1,4 +1,4 @@
-"""Pressure-control valves: relief, pressure-reducing and counterbalance valves, each a spring-loaded spool with a lag."""
+"""Pressure-control valves: relief, pressure-reducing, counterbalance and piloted valves, each a spring-loaded spool with a lag."""
 
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ from hydroservo.laws.pressure_valve import (
     valve_hysteresis,
 )
 
-__all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve"]
+__all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve", "PilotedValve"]
 
 #: The spool's characteristics, shared by every pressure-control valve ([Hopsan2026] defaults).
 SPOOL_PARAMETERS = {
@@ -204,7 +204,24 @@ class CounterbalanceValve(_PressureControl):
     The pilot-assisted opening is the usual counterbalance characteristic
     (pilot ratios 3:1 to 10:1 in catalogues); the metering law is
     :class:`ReliefValve`'s.
+
+    Option ``pilot``: ``inlet`` (default), the spring chamber at the
+    atmosphere, as above; ``drop``, drained to B:
+    :math:`\Delta p_{over} = p_A - p_B + r_p p_X - p_{crack}` (Hopsan's
+    HydraulicCounterBalanceValveG, [Hopsan2026] Hydraulic/Special/
+    HydraulicCounterBalanceValveG.hpp, with ``spool = "balance"``). Option
+    ``check``: ``integral`` (default), the check valve above; ``none``, the
+    spool alone, which meters either way once open and holds both ways
+    closed (Hopsan's HydraulicOverCenterValve, [Hopsan2026] Hydraulic/Valves/
+    PressureControlValves/HydraulicOverCenterValve.hpp, and its
+    HydraulicCounterBalanceValveG have none).
     """
+
+    OPTIONS = {
+        **_PressureControl.OPTIONS,
+        "pilot": Option("inlet", ("inlet", "drop"), "the setting against the load's pressure, or against the drop A-B"),
+        "check": Option("integral", ("integral", "none"), "an integral check valve B to A, or none"),
+    }
 
     PARAMETERS = {
         "p_crack": Param(250e5, "Pa", "setting: load pressure that opens the valve without pilot"),
@@ -225,14 +242,65 @@ class CounterbalanceValve(_PressureControl):
     HYDRAULIC = {**TWO_PORT_HYDRAULIC, "X": Hydraulic("pX", "QX", "pilot port", into=True)}
 
     def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
-        return u["pA"] + p["r_p"] * u["pX"] - p["p_crack"]
+        load = u["pA"] - u["pB"] if self.option("pilot") == "drop" else u["pA"]
+        return load + p["r_p"] * u["pX"] - p["p_crack"]
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         out = super().output_equations(t, x, u, p)
+        out["QX"] = 0.0
+        if self.option("check") == "none":
+            return out
         dp = u["pB"] - u["pA"]
         check = opening_fraction(dp, p["p_check"], p["dp_check"]) * p["K_check"]
         out["Q"] = out["Q"] - turbulent_flow(check, dp, p["p_tr"])
-        out["QX"] = 0.0
         return out
+
+
+@register
+class PilotedValve(_PressureControl):
+    r"""A valve from A to B opened by a pilot pressure at X against its setting and the pressure at Y.
+
+    The spring-loaded spool of :class:`_PressureControl` piloted by two
+    external lines: X pushes it open, Y (the spring chamber) and the spring's
+    setting ``p_ref`` push it closed,
+    :math:`\Delta p_{over} = p_X - p_Y - p_{ref}`; neither pilot takes flow.
+    A sequence or unloading valve with external pilot and drain; with X on A
+    and Y on B it is a relief valve set on the drop. The law of Hopsan's
+    HydraulicPressureControlledValve ([Hopsan2026]
+    Hydraulic/Valves/PressureControlValves/HydraulicPressureControlledValve.hpp,
+    ports P_OPEN and P_CLOSE) in the limit of a small time step, its
+    hysteresis ``p_h`` included. Hopsan's spring-and-flow-force term
+    :math:`C_s + C_f(p_1 - p_2)` is not floored at a reverse drop there (it
+    vanishes at :math:`p_2 - p_1 = C_s/C_f`, 7 MPa with its defaults); here it
+    is, as for every pressure-control valve of the package.
+    """
+
+    PARAMETERS = {
+        "p_ref": Param(20e5, "Pa", "pilot pressure over the spring chamber's that opens the valve (setting)"),
+        **SPOOL_PARAMETERS,
+    }
+    INPUTS = {
+        **TWO_PORT_PRESSURES,
+        "pX": Port("Pa", "opening pilot pressure", default=0.0),
+        "pY": Port("Pa", "closing pilot pressure (spring chamber)", default=0.0),
+    }
+    OUTPUTS = {
+        **_PressureControl.OUTPUTS,
+        "QX": Output("m^3/s", "flow into the opening pilot (none)"),
+        "QY": Output("m^3/s", "flow into the closing pilot (none)"),
+    }
+    HYDRAULIC = {
+        **TWO_PORT_HYDRAULIC,
+        "X": Hydraulic("pX", "QX", "opening pilot port", into=True),
+        "Y": Hydraulic("pY", "QY", "closing pilot port (spring chamber)", into=True),
+    }
+
+    def over(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return u["pX"] - u["pY"] - p["p_ref"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {**super().output_equations(t, x, u, p), "QX": 0.0, "QY": 0.0}
