@@ -132,6 +132,9 @@ def main() -> int:
     ap.add_argument("--tol", type=float, default=1e-4, help="change between halvings to stop at, fraction of range")
     ap.add_argument("--commit", default="", help="Hopsan's commit, when --source is no git clone (an archive)")
     ap.add_argument("--toml-only", action="store_true", help="only write the imported models again (NAME.toml)")
+    ap.add_argument("--finest", action="store_true",
+                    help="extrapolate from the three finest runs, not from those that end with the smallest change "
+                         "(a model some of whose traces do not converge: each trace's uncertainty is recorded)")
     ap.add_argument("names", nargs="*", help="models (default: all)")
     args = ap.parse_args()
     OUT.mkdir(parents=True, exist_ok=True)
@@ -178,7 +181,7 @@ def main() -> int:
                     break
             h /= 2.0
         # the three runs that end with the smallest change (past it, Hopsan's accumulated time and round-off grow)
-        last = 1 + min(range(len(table)), key=lambda k: table[k]["largest_change_percent"])
+        last = len(table) if args.finest else 1 + min(range(len(table)), key=lambda k: table[k]["largest_change_percent"])
         table = table[:last]
         last = max(last, 2)
         runs = runs[: last + 1]

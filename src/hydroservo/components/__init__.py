@@ -8,7 +8,7 @@ module                 components
 :mod:`.volume`         Volume
 :mod:`.line`           Line, Hose
 :mod:`.accumulator`    Accumulator
-:mod:`.pumps`          Pump, VariablePump, Motor, Machine
+:mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
@@ -16,7 +16,7 @@ module                 components
                        AngularVelocitySource, Vehicle, Crank
 :mod:`.valves`         FourWayValve, ThreeWayValve, ThreeWayPressureValve, TwoWayValve, PseudoSectionValve,
                        ServoSolenoidValve,
-                       StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ReliefValve,
+                       StagedSlotValve, Orifice, LaminarOrifice, CheckValve, ShuttleValve, ReliefValve,
                        PressureReducingValve, CounterbalanceValve, PressureCompensatorValve, PilotCheckValve
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
@@ -72,7 +72,7 @@ from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
-from hydroservo.components.pumps import Machine, Motor, Pump, VariablePump
+from hydroservo.components.pumps import LoadSensingPump, Machine, Motor, Pump, VariablePump
 from hydroservo.components.rotational import (
     AngularVelocitySource,
     Crank,
@@ -115,6 +115,7 @@ from hydroservo.components.valves import (
     PseudoSectionValve,
     ReliefValve,
     ServoSolenoidValve,
+    ShuttleValve,
     StagedSlotValve,
     ThreeWayPressureValve,
     ThreeWayValve,
@@ -169,6 +170,7 @@ __all__ = [
     "Accumulator",
     "Pump",
     "VariablePump",
+    "LoadSensingPump",
     "Motor",
     "Machine",
     "FourWayValve",
@@ -182,6 +184,7 @@ __all__ = [
     "CatalogueServovalve",
     "Orifice",
     "CheckValve",
+    "ShuttleValve",
     "PilotCheckValve",
     "ReliefValve",
     "PressureReducingValve",

@@ -6,6 +6,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from hydroservo import backend as bk
 from hydroservo.components.base import (
     Component,
     Hydraulic,
@@ -24,10 +25,13 @@ from hydroservo.laws.displacement import (
     floored_port_flow,
     leakage_flow,
     motor_torque,
+    regulator_rates,
 )
+from hydroservo.laws.orifice import smooth_abs
+from hydroservo.laws.pressure_valve import STOP_RELAXATION
 from hydroservo.units import VACUUM
 
-__all__ = ["Pump", "VariablePump", "Motor", "Machine"]
+__all__ = ["Pump", "VariablePump", "LoadSensingPump", "Motor", "Machine"]
 
 _PUMP_INPUTS = {
     "pS": Port("Pa", "pressure at the suction port S", default=0.0),
@@ -152,6 +156,94 @@ class VariablePump(Pump):
     ) -> dict[str, Any]:
         target = u["eps_cmd"] * compensator_displacement(u["pP"], p["p_c"], p["dp_band"])
         return {"eps": (target - x["eps"]) / p["tau"]}
+
+
+@register
+class LoadSensingPump(Pump):
+    r"""Variable pump whose regulator holds its outlet ``p_dif`` above the pressure at its port X (load sensing).
+
+    The regulator of Hopsan's HydraulicPressureControlledPump ([Hopsan2026] Hydraulic/Pumps&Motors/
+    HydraulicPressureControlledPump.hpp) in the limit of a vanishing step: the pressure error
+    :math:`u = p_{dif} - (p_P - p_X)` drives the displacement flow :math:`Q_r = \varepsilon D\omega` through
+
+    .. math:: Q_r = \frac{y}{L}, \qquad
+              \frac{\ell\,\tau_v}{L}\,\ddot y + \dot y + \frac{R_p}{L}\,y = u + \frac{\dot u}{\omega_{p1}},
+              \qquad L = \ell + R_p\tau_v,\quad
+              \ell = l_p \sqrt{p_{nom}/p_P}\;\frac{\omega_{nom}}{\omega + 0.001}
+
+    (at constant :math:`L`, :math:`(\ell s + R_p)(\tau_v s + 1)\,Q_r = (1 + s/\omega_{p1})\,u`: a control
+    valve of time constant ``tau_v`` with a lead at ``omega_p1``, acting on a regulator of inductance :math:`\ell`
+    that falls with the pressure and the speed, and static gain :math:`1/R_p`), :math:`Q_r` held in
+    :math:`[\varepsilon_{min}, 1] D\omega` and its rate within :math:`D\omega L\sqrt{|p_P - p_0|/(p_{nom} t_p)}`
+    upwards and :math:`D\omega L\sqrt{|p_P - p_0|/(p_{nom} t_m)}` downwards (``t_p``, ``t_m``: from minimum to
+    full displacement and back at ``p_nom``), without wind-up
+    (:func:`hydroservo.laws.displacement.regulator_rates`, whose states are :math:`y`, its rate :math:`v`
+    and :math:`w`, the error lagged by ``tau_v``/100 for its rate). Hopsan's TLM terms (:math:`Z_c` of the outlet in :math:`L` and
+    its pressures :math:`c_e`) vanish with the step; its pressures are absolute (:math:`p_P` in :math:`\ell` at
+    least 1 Pa absolute, :math:`p_X` at least 0), ``p_0`` is its 1e5 Pa absolute.
+
+    The flows are the :class:`Pump`'s at :math:`\varepsilon = Q_r/(D\omega)`: :math:`Q_P = Q_r - C_{leak}(p_P -
+    p_S)`. Port X only reads its pressure (no flow). The states start at 0 (no displacement, at rest); at rest
+    with a displacement flow :math:`Q_0` and an error :math:`u_0` they are :math:`y = L Q_0`, :math:`v = 0`,
+    :math:`w = u_0` (a :math:`w` off :math:`u` at the start is a step of the error: the lead kicks).
+    """
+
+    PARAMETERS = {
+        **Pump.PARAMETERS,
+        "p_dif": Param(1e6, "Pa", "pressure difference held from X to P", min=0.0),
+        "l_p": Param(7e7, "Pa*s^2/m^3", "regulator inductance at p_nom and omega_nom", min=0.0, min_inclusive=False),
+        "R_p": Param(1e9, "Pa*s/m^3", "static characteristic: pressure error per displacement flow", min=0.0),
+        "omega_p1": Param(200.0, "rad/s", "lead frequency of the regulator", min=0.0, min_inclusive=False),
+        "tau_v": Param(1e-3, "s", "time constant of the control valve", min=0.0, min_inclusive=False),
+        "t_p": Param(0.15, "s", "time from minimum to full displacement at p_nom", min=0.0, min_inclusive=False),
+        "t_m": Param(0.12, "s", "time from full to minimum displacement at p_nom", min=0.0, min_inclusive=False),
+        "eps_min": Param(0.0, "", "lowest displacement setting", min=0.0, max=1.0),
+        "p_nom": Param(7e6, "Pa", "nominal pressure of the regulator's data (Hopsan's 7 MPa)", min=0.0,
+                       min_inclusive=False),
+        "omega_nom": Param(125.0, "rad/s", "nominal speed of the regulator's data (Hopsan's 125 rad/s)", min=0.0,
+                           min_inclusive=False),
+        "p_0": Param(-1325.0, "Pa", "outlet pressure at which the rate limits vanish (Hopsan's 1e5 Pa absolute)"),
+    }
+    STATES = {
+        "y": State("Pa*s", "regulator filter output: L times the displacement flow", nominal=1e4),
+        "v": State("Pa", "rate of y", nominal=1e5),
+        "w": State("Pa", "the pressure error u lagged by tau_v/100 (its rate is the lead's)", nominal=1e6),
+    }
+    INPUTS = {**_PUMP_INPUTS, "pX": Port("Pa", "pressure at the reference port X")}
+    OUTPUTS = {
+        **Pump.OUTPUTS,
+        "eps": Output("", "displacement setting"),
+        "QX": Output("m^3/s", "flow at X (none)"),
+    }
+    HYDRAULIC = {**_PUMP_HYDRAULIC, "X": Hydraulic("pX", "QX", "reference port: its pressure only", into=True)}
+
+    def _regulator(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        q_max = p["D"] * p["omega"]
+        ell = p["l_p"] * bk.sqrt(p["p_nom"] / bk.fmax(u["pP"] - VACUUM, 1.0)) * p["omega_nom"] / (p["omega"] + 0.001)
+        big_l = ell + p["R_p"] * p["tau_v"]
+        slew = q_max * big_l * bk.sqrt(smooth_abs(u["pP"] - p["p_0"], 1.0) / p["p_nom"])
+        return {
+            "q_max": q_max, "L": big_l, "g1": ell * p["tau_v"] / big_l, "g2": p["R_p"] / big_l,
+            "u": p["p_dif"] - u["pP"] + bk.fmax(u["pX"], VACUUM),
+            "v_max": slew / bk.sqrt(p["t_p"]), "v_min": -slew / bk.sqrt(p["t_m"]),
+        }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        r = self._regulator(u, p)
+        eps = bk.clip(x["y"] / (r["L"] * r["q_max"]), p["eps_min"], 1.0)
+        return {**self._delivery(u, p, eps), "eps": eps, "QX": 0.0}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        r = self._regulator(u, p)
+        ydot, vdot, wdot = regulator_rates(
+            x["y"], x["v"], x["w"], r["u"], r["g1"], r["g2"], p["omega_p1"], p["eps_min"] * r["q_max"] * r["L"],
+            r["q_max"] * r["L"], r["v_min"], r["v_max"], 0.01 * p["tau_v"], STOP_RELAXATION * p["tau_v"],
+        )
+        return {"y": ydot, "v": vdot, "w": wdot}
 
 
 @register

@@ -274,8 +274,10 @@ def _float(text: str | None, where: str, what: str, default: float) -> float:
 class _Reader:
     """Walks the systems of a file: components, parameters in scope, connections through subsystem ports."""
 
-    def __init__(self, source: str) -> None:
+    def __init__(self, source: str, old_names: bool = False) -> None:
         self.source = source
+        #: a file of Hopsan before 0.6 names port variables P1::Pressure; Hopsan's loader reads them as P1#Pressure
+        self.old_names = old_names
         self.components: list[HopsanComponent] = []
         # port graph: "path/comp.port" <-> "path/comp.port"; a subsystem's port is "path/sub.port" seen from
         # outside and "path/sub/port.P" seen from inside (a systemport's own port), joined below
@@ -292,6 +294,8 @@ class _Reader:
             return found
         for item in element.findall("parameter"):
             name = item.get("name") or ""
+            if self.old_names:
+                name = _renamed_old_parameter(name)
             text = item.get("value") or ""
             unit = item.get("unit") or ""
             if not name:
@@ -396,6 +400,35 @@ class _Reader:
         return [tuple(port.replace(_SEP, ".") for port in group) for group in pairs]
 
 
+#: node variables Hopsan renamed after 0.6 (HmfLoader.cpp, updateOldModelFileParameter)
+_OLD_NODE_VARIABLES = {"Angular Velocity": "AngularVelocity", "Equivalent Inertia": "EquivalentInertia",
+                       "CharImp": "CharImpedance"}
+
+
+def _renamed_old_parameter(name: str) -> str:
+    """A parameter's name in a file of Hopsan before 0.6 as Hopsan's loader renames it (HmfLoader.cpp,
+    updateOldModelFileParameter): ``P1::Pressure`` is ``P1#Pressure``, the node variables renamed since
+    (``P1#CharImp`` is ``P1#CharImpedance``), and in a name with characters other than letters, digits and
+    ``_``, commas and dots dropped and spaces made ``_`` (``omega_p,1`` is ``omega_p1``)."""
+    name = name.replace("::", "#")
+    if "#" in name:
+        head, _, variable = name.rpartition("#")
+        name = f"{head}#{_OLD_NODE_VARIABLES.get(variable, variable)}"
+    if re.search(r"[^A-Za-z0-9_]", name):
+        name = "std_dev" if name == "sigma^2" else name.replace(",", "").replace(".", "").replace(" ", "_")
+    return name
+
+
+def _names_port_variables_with_colons(core_version: str) -> bool:
+    """Whether a file written by Hopsan core ``core_version`` names port variables ``P1::Pressure``: before 0.6.0
+    and the 0.6.x snapshots, as Hopsan's loader decides (HopsanCore/src/CoreUtilities/HmfLoader.cpp,
+    updateOldModelFileParameter, which renames them ``P1#Pressure``)."""
+    if "0.6.x_r" in core_version:
+        return True
+    numbers = re.findall(r"\d+", core_version.split("_")[0])
+    return bool(numbers) and tuple(int(n) for n in numbers[:3]) < (0, 6, 0)
+
+
 def read_hmf(path: str | Path) -> HopsanModel:
     """Read a Hopsan model file: its components, connections (subsystems flattened), system parameters and
     simulation settings (module notes).
@@ -411,7 +444,7 @@ def read_hmf(path: str | Path) -> HopsanModel:
     top = root.find("system")
     if top is None:
         raise ModelFileError(f"Hopsan model {str(path)!r}: no <system>; expected the model's top-level system")
-    reader = _Reader(str(path))
+    reader = _Reader(str(path), _names_port_variables_with_colons(root.get("hopsancoreversion") or ""))
     try:
         own = reader.system(top, (), {})
     except RecursionError:

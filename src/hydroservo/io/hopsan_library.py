@@ -686,6 +686,19 @@ def _open_centre_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return m
 
 
+def _valve43_load_sensing(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic43LoadSensingValve.hpp: the 4/3 valve (its spool
+    and edges as Hydraulic43Valve's) with a port PL to which it writes the pressure of A while x_v >= 0 and of B
+    otherwise, taking that node's flow (p_load - c_L)/Z_c,L from neither A nor B (an ideal connection, in the limit
+    of a vanishing step p_L = p_A or p_B): the FourWayValve with ``load_sensing = "port"``, its port L a stiff
+    laminar passage G_L from the loaded port's pressure."""
+    m = _valve43(hc, n, par)
+    m.components[-1].set(load_sensing="port")
+    m.power["PL"] = f"{n}.L"
+    m.note = m.note.replace("a FourWayValve", "a FourWayValve with a load-sensing port")
+    return m
+
+
 def _valve42(command: str, all_edges: bool) -> Builder:
     """Hopsan's 4/2 valves ([Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic42Valve.hpp,
     Hydraulic42Valve2.hpp, Hydraulic/Valves/DirectionalValves/Hydraulic42DirectionalValve.hpp): a spool in
@@ -1184,6 +1197,18 @@ def _check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
 
 
+def _shuttle_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/HydraulicShuttleValve.hpp: P3 joined without resistance to the inlet of higher
+    pressure (Hopsan's flow (c_in - c_3)/(Zc_in + Zc_3), an ideal connection of the two nodes, p_3 = max(p_1, p_2)
+    in the limit of a vanishing step), the other inlet shut: a ShuttleValve, whose open seat is a laminar
+    conductance G_open large enough that P3 follows within G_open's drop. Its output out (-1: P1 open, 1: P2) is
+    the ShuttleValve's."""
+    from hydroservo.components import ShuttleValve
+
+    return Mapped([ShuttleValve(n)], power={"P1": f"{n}.P1", "P2": f"{n}.P2", "P3": f"{n}.P3"},
+                  outputs={"out": f"{n}.out"})
+
+
 def _check_valve_with_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValveWithOrifice.hpp: q = K_s √(p_1 - p_2) forwards and
     K_r √ backwards (turbulent both ways): an Orifice of the smaller coefficient beside a seat CheckValve of the
@@ -1258,6 +1283,58 @@ def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     comp = Pump(n, D=f"{par('D_p', 5e-5)!r} m^3/rev", omega=par("omega_p", 50.0), C_leak=par("K_cp", 1e-12),
                 inlet="floor", p_floor=_abs(0.0))
     return Mapped([comp], power={"P1": f"{n}.S", "P2": f"{n}.P"}, inputs={"eps": f"{n}.eps"})
+
+
+def _pressure_controlled_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Pumps&Motors/HydraulicPressureControlledPump.hpp: a Q-type variable pump whose
+    regulator (a limited second-order filter with a lead, of the pressure error p_dif - (p_2 - p_ref)) sets the
+    displacement flow: a LoadSensingPump (its law in the limit of a vanishing step, the TLM impedances gone),
+    D ω = q_max ω/125 (q_max at Hopsan's nominal 125 rad/s), ε_min = q_min/q_max, port X on PREF (no flow),
+    inlet floored at 0 Pa absolute as Hopsan's other pumps. The filter starts at rest at Hopsan's start value of
+    eps (its displacement flow q_max ε), its error's lag at the error of the start pressures of its nodes. Output eps (Hopsan's: the
+    delivered flow over q_max ω/125) is the pump's QP scaled; the angle a is not mapped. A PREF left unconnected
+    and speeds or q_max not above 0 are refused."""
+    from hydroservo.components import LoadSensingPump
+
+    omega, q_max, q_min = par("omega_p", 125.0), par("q_max", 0.00125), par("q_min", 0.0)
+    if omega <= 0.0 or q_max <= 0.0 or not 0.0 <= q_min <= q_max:
+        par.problems.append(f"{par.where}: omega_p = {omega:g} rad/s, q_max = {q_max:g} m^3/s, q_min = {q_min:g} "
+                            "m^3/s; only omega_p and q_max above 0 and q_min in [0, q_max] are supported")
+        return Mapped()
+    if "PREF" not in par.driven:
+        par.problems.append(f"{par.where}: its reference port PREF is not connected; connect it (a tank makes the "
+                            "pump a pressure compensator at p_dif)")
+    comp = LoadSensingPump(
+        n,
+        D=q_max / 125.0,
+        omega=omega,
+        C_leak=par("C_lp", 1e-12),
+        p_dif=par("p_dif", 1e6),
+        l_p=par("l_p", 7e7),
+        R_p=par("r_p", 1e9),
+        omega_p1=par("omega_p1", 200.0),
+        tau_v=par("tao_v", 0.001),
+        t_p=par("t_p", 0.15),
+        t_m=par("t_m", 0.12),
+        eps_min=q_min / q_max,
+        inlet="floor",
+        p_floor=_abs(0.0),
+    )
+    # Hopsan's initialize(): the filter at rest at q_2 = q_max ω/125 eps (eps's start value)
+    p2 = max(par.start("P2", "Pressure", 1e5), 1.0)
+    p_ref = max(par.start("PREF", "Pressure", 1e5), 0.0)
+    v = comp.values
+    ell = v["l_p"] * math.sqrt(v["p_nom"] / p2) * v["omega_nom"] / (omega + 0.001)
+    big_l = ell + v["R_p"] * v["tau_v"]
+    u0 = v["p_dif"] - p2 + p_ref
+    eps0 = min(max(par("eps", 0.0), v["eps_min"]), 1.0)
+    q_l = q_max * omega / 125.0
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.S", "P2": f"{n}.P", "PREF": f"{n}.X"},
+        values={"eps": Var(1.0 / q_l, f"{n}.QP")},
+        initial={f"{n}.y": big_l * q_l * eps0, f"{n}.w": u0},
+    )
 
 
 # -- mechanic -------------------------------------------------------------------------------------------------
@@ -2313,12 +2390,14 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicLaminarOrifice": _laminar_orifice,
     "HydraulicTurbulentOrifice": _turbulent_orifice,
     "HydraulicCheckValve": _check_valve,
+    "HydraulicShuttleValve": _shuttle_valve,
     "HydraulicPilotControlledCheckValve": _pilot_check_valve,
     "HydraulicPilotClosableCheckValve": _pilot_check_valve,
     "HydraulicCheckValvePreLoaded": _check_valve,
     "HydraulicCheckValveWithOrifice": _check_valve_with_orifice,
     "Hydraulic22DirectionalCheckValve": _directional_check_valve,
     "HydraulicVariableDisplacementPump": _variable_pump,
+    "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,
     "HydraulicVolume": _volume,
     "HydraulicVolumeMultiPort": _volume,
@@ -2343,6 +2422,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
     "HydraulicOpenCenterValve": _open_centre_valve,
+    "Hydraulic43LoadSensingValve": _valve43_load_sensing,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),
     "Hydraulic42Valve2": _valve42("one-sided", all_edges=True),
     "Hydraulic42DirectionalValve": _valve42("on-off", all_edges=True),

@@ -17,7 +17,14 @@ from typing import Any
 
 from hydroservo import backend as bk
 
-__all__ = ["displaced_flow", "leakage_flow", "motor_torque", "compensator_displacement", "floored_port_flow"]
+__all__ = [
+    "displaced_flow",
+    "leakage_flow",
+    "motor_torque",
+    "compensator_displacement",
+    "floored_port_flow",
+    "regulator_rates",
+]
 
 
 def displaced_flow(D: Any, omega: Any, eps: Any = 1.0) -> Any:
@@ -191,3 +198,83 @@ def floored_port_flow(q: Any, p_in: Any, p_out: Any, p_floor: Any, p_reg: Any) -
         return x * x * (3.0 - 2.0 * x)
 
     return bk.fmax(q, 0.0) * gate(p_in) + bk.fmin(q, 0.0) * gate(p_out)
+
+
+def regulator_rates(
+    y: Any, v: Any, w: Any, u: Any, g1: Any, g2: Any, w1: Any, y_min: Any, y_max: Any, v_min: Any, v_max: Any,
+    tau_d: Any, delta: Any,
+) -> tuple[Any, Any, Any]:
+    r"""Rates of a pump regulator's second-order filter with a lead, its output and its rate limited, without
+    wind-up: :math:`(\dot y, \dot v, \dot w)` [unit of y / s, unit of y / s², unit of u / s].
+
+    The filter is
+
+    .. math:: g_1\ddot y + \dot y + g_2 y = u + \dot u/\omega_1,
+              \qquad y \in [y_{min}, y_{max}],\quad \dot y \in [v_{min}, v_{max}]
+
+    Hopsan's regulator of HydraulicPressureControlledPump ([Hopsan2026] Hydraulic/Pumps&Motors/
+    HydraulicPressureControlledPump.hpp, its ``fltppu``) is the bilinear transform of
+    :math:`(1 + s/\omega_1)/(g_1 s^2 + s + g_2)` with its coefficients of the current step, whose output and
+    memory it clamps to the bounds of :math:`y` and of its rate: at a bound the filter's past is the clamped
+    one, so its state is :math:`(y, \dot y)` held there, and it leaves the bound as soon as its free
+    acceleration turns back. As an ODE the states are :math:`y` and its rate :math:`v`, each stopped at its
+    bounds as :func:`hydroservo.laws.pressure_valve.limited_rate` (within :math:`\delta`):
+    :math:`\dot y = v` clipped to :math:`[v_{lo}, v_{hi}]`, :math:`v_{hi} = \min(v_{max}, (y_{max} - y)/\delta)`,
+    :math:`v_{lo} = \max(v_{min}, (y_{min} - y)/\delta)`, and :math:`\dot v = (u + \dot u/\omega_1 - \dot y
+    - g_2 y)/g_1` limited to :math:`(v_{lo} - v)/\delta` and :math:`(v_{hi} - v)/\delta` (continuous, never
+    increasing with :math:`v`, so an implicit step has one solution). The input's rate is that of a lag
+    :math:`w` of it, :math:`\dot u \approx (u - w)/\tau_d` (a step of :math:`u` gives :math:`v` its jump
+    :math:`\Delta u/(\omega_1 g_1)` over :math:`\tau_d`).
+
+    Parameters
+    ----------
+    y : array_like
+        Filter output, its state [any unit].
+    v : array_like
+        Its rate, a state [unit of y / s].
+    w : array_like
+        The input lagged by ``tau_d``, a state [unit of u].
+    u : array_like
+        Input [unit of y / s].
+    g1 : array_like
+        Coefficient of :math:`\ddot y` [s], > 0.
+    g2 : array_like
+        Coefficient of :math:`y` [1/s].
+    w1 : array_like
+        Lead frequency [rad/s], > 0.
+    y_min, y_max : array_like
+        Bounds of :math:`y` [unit of y].
+    v_min, v_max : array_like
+        Bounds of its rate [unit of y / s], :math:`v_{min} \le 0 \le v_{max}`.
+    tau_d : array_like
+        Time constant of the input's lag [s], > 0, small against :math:`1/\omega_1`.
+    delta : array_like
+        Time constant of the approach to a bound [s], > 0, small against :math:`g_1`.
+
+    Returns
+    -------
+    tuple
+        :math:`\dot y` [unit of y / s], :math:`\dot v` [unit of y / s²], :math:`\dot w` [unit of u / s].
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Pumps&Motors/HydraulicPressureControlledPump.hpp (the limited filter); the
+    realisation, the input's lag and the relaxation on the bounds are hydroservo's.
+
+    Examples
+    --------
+    At rest the free filter accelerates with :math:`(u - g_2 y)/g_1`; at its upper bound it holds:
+
+    >>> [float(r) for r in regulator_rates(1.0, 0.0, 10.0, 10.0, 0.5, 1.0, 5.0, 0.0, 2.0, -100.0, 100.0, 1e-4, 1e-6)]
+    [0.0, 18.0, 0.0]
+    >>> [float(r) + 0.0 for r in regulator_rates(2.0, 0.0, 10.0, 10.0, 0.5, 1.0, 5.0, 0.0, 2.0, -100.0, 100.0, 1e-4,
+    ...                                          1e-6)]
+    [0.0, 0.0, 0.0]
+    """
+    udot = (u - w) / tau_d
+    v_hi = bk.fmin(v_max, (y_max - y) / delta)
+    v_lo = bk.fmax(v_min, (y_min - y) / delta)
+    ydot = bk.fmin(bk.fmax(v, v_lo), v_hi)
+    free = (u + udot / w1 - ydot - g2 * y) / g1
+    vdot = bk.fmin(bk.fmax(free, (v_lo - v) / delta), (v_hi - v) / delta)
+    return ydot, vdot, udot

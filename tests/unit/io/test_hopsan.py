@@ -199,3 +199,27 @@ def test_names_may_hold_a_slash_and_a_connection_must_name_what_is_there(tmp_pat
     ghost = MODEL.replace('startcomponent="Step" startport="out" endcomponent="Scope"', 'startcomponent="Ghost" startport="out" endcomponent="Scope"')
     with pytest.raises(ModelFileError, match=r"names 'Ghost', which is no component, subsystem or port"):
         read_hmf(_file(tmp_path, ghost, "ghost.hmf"))
+
+
+@pytest.mark.parametrize(("core", "renamed"), [("0.6.x_r5334", True), ("0.5.3", True), ("0.7.x_r8296", False),
+                                               ("2.24.0", False)])
+def test_files_of_hopsan_before_0_6_name_port_variables_with_colons_as_its_loader_reads_them(
+    tmp_path: Path, core: str, renamed: bool
+) -> None:
+    """Hopsan's loader (HmfLoader.cpp, updateOldModelFileParameter) reads P1::Pressure as P1#Pressure, P1#CharImp
+    as P1#CharImpedance and omega_p,1 as omega_p1 in files of core versions before 0.6.0 and the 0.6.x snapshots
+    (HydraulicShuttleValveTest.hmf and HydraulicPressureControlPumpTest.hmf are some)."""
+    path = tmp_path / "old.hmf"
+    path.write_text(
+        f'<?xml version="1.0"?><hopsanmodelfile hmfversion="0.4" hopsancoreversion="{core}">'
+        '<system name="old" typename="Subsystem"><objects>'
+        '<component typename="HydraulicPressureSourceC" name="S"><parameters>'
+        '<parameter name="p::Value" value="1e6" type="double" unit="Pa"/>'
+        '<parameter name="P1::CharImp" value="0" type="double" unit=""/>'
+        '<parameter name="omega_p,1" value="200" type="double" unit=""/></parameters></component>'
+        "</objects><connections/></system></hopsanmodelfile>",
+        encoding="utf-8",
+    )
+    (source,) = read_hmf(path).components
+    assert ("p#Value" in source.parameters) is renamed and ("p::Value" in source.parameters) is not renamed
+    assert ("P1#CharImpedance" in source.parameters) is renamed and ("omega_p1" in source.parameters) is renamed

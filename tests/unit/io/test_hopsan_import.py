@@ -155,10 +155,10 @@ def test_imported_model_file_round_trips(servo_file: Path, tmp_path: Path) -> No
 
 
 def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> None:
-    components = [*COMPONENTS, ("HydraulicShuttleValve", "Shuttle", {}), ("SignalTimeDelay", "Wave", {})]
+    components = [*COMPONENTS, ("HydraulicValvePlate", "Plate", {}), ("SignalTimeDelay", "Wave", {})]
     path = tmp_path / "m.hmf"
     path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
-    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Shuttle \(HydraulicShuttleValve\); Wave \(SignalTimeDelay: a pure time delay, y\(t\) = u\(t - deltat\), is no ordinary differential equation"):
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Plate \(HydraulicValvePlate\); Wave \(SignalTimeDelay: a pure time delay, y\(t\) = u\(t - deltat\), is no ordinary differential equation"):
         read_hopsan(path)
 
 
@@ -302,7 +302,9 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 
 
 @pytest.mark.parametrize(
-    "name", ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers"]
+    "name",
+    ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
+     "shuttle_valve", "pressure_controlled_pump"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -312,7 +314,11 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     displacement setting of 0 became 1, a sensor's start value overrode the spring's. The last two check signal
     blocks no model of Hopsan's repository uses (hysteresis, rounding, comparisons, logic) and the controllers
     SignalPIlead and SignalPID (clamped at their limits, with derivative input) closing loops through unit
-    delays."""
+    delays. The shuttle valve's (HydraulicShuttleValve) outlet follows the higher of a
+    sine-wave pressure and a constant one, and drains back through the open inlet as the sine falls. The
+    pressure-controlled pump (HydraulicPressureControlledPump) strokes at its rate limit, overshoots, destrokes to
+    its lower bound and leaves it, and answers an orifice closed and a flow drawn (Hopsan's
+    HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw)."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -1404,6 +1410,45 @@ def test_hopsans_gear_shaft_is_a_geared_spring_of_the_stiffness_its_element_conv
     assert r["J.P2.AngularVelocity"][-1] == pytest.approx(-2.0, rel=1e-6)
     assert r["G.Pmr2.Torque"][-1] == pytest.approx(-20.0, rel=1e-6)
     assert r["G.Pmr1.Torque"][-1] == pytest.approx(20.0, rel=1e-6)
+
+
+def test_a_pressure_controlled_pump_needs_its_reference_port(tmp_path: Path) -> None:
+    """HydraulicPressureControlledPump maps to a LoadSensingPump with Hopsan's parameters (q_max at 125 rad/s);
+    its PREF left unconnected is refused (Hopsan reads an unconnected port's start value)."""
+    circuit = (CIRCUITS / "pressure_controlled_pump.hmf").read_text(encoding="utf-8")
+    system = read_hopsan(CIRCUITS / "pressure_controlled_pump.hmf")
+    pump = system["Pump"]
+    assert pump.values["D"] * pump.values["omega"] == pytest.approx(1.25e-3)
+    assert (pump.values["p_dif"], pump.values["tau_v"], pump.values["omega_p1"]) == (28e6, 3e-3, 200.0)
+    path = tmp_path / "no_ref.hmf"
+    path.write_text(circuit.replace('<connect startcomponent="TRef" startport="P1" endcomponent="Pump" '
+                                    'endport="PREF"/>', ""), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"Pump \(HydraulicPressureControlledPump\): its reference port PREF"):
+        read_hopsan(path)
+
+
+def test_hopsans_load_sensing_valve_passes_the_loaded_ports_pressure_to_its_line(tmp_path: Path) -> None:
+    """[Hopsan2026] FlowControlValves/Hydraulic43LoadSensingValve.hpp: the 4/3 valve with PL at the pressure of A
+    while x_v >= 0 and of B otherwise; its line (a volume) settles there."""
+    v = _value
+    for spool, loaded in (("0.005", 60e5), ("-0.005", 30e5)):
+        components = [
+            ("Hydraulic43LoadSensingValve", "LS", {"in#Value": v(spool, "m"), "rho#Value": v("890")}),
+            ("HydraulicPressureSourceC", "S", {"p#Value": v("1e7", "Pa")}),
+            ("HydraulicTankC", "T", {"p": v("1e5", "Pa")}),
+            ("HydraulicPressureSourceC", "A", {"p#Value": v("6e6", "Pa")}),
+            ("HydraulicPressureSourceC", "B", {"p#Value": v("3e6", "Pa")}),
+            ("HydraulicVolumeMultiPort", "Line", {"V#Value": v("1e-5"), "P1#Pressure": v("1e5", "Pa")}),
+        ]
+        connections = [("LS.PP", "S.P1"), ("LS.PT", "T.P1"), ("LS.PA", "A.P1"), ("LS.PB", "B.P1"),
+                       ("LS.PL", "Line.P1")]
+        path = tmp_path / "ls.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        imp = import_hopsan(path)
+        assert imp.system["LS"].option("load_sensing") == "port"
+        r = imp.system.simulate(t_eval=[0.0, 0.2])
+        assert r["LS.PL.Pressure"][-1] == pytest.approx(loaded, rel=1e-9)
+        assert r["LS.xv.Value"][-1] == pytest.approx(float(spool), rel=1e-6)
 
 
 def test_hopsans_reducing_drop_and_pressure_controlled_valves_settle_on_the_relief_valves_law(tmp_path: Path) -> None:

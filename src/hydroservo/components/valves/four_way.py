@@ -9,13 +9,23 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Param, Port, register
+from hydroservo.components.base import Component, Hydraulic, Option, Output, Param, Port, register
 from hydroservo.components.valves.ports import FLOW_OUTPUTS, FLUID_PARAMETERS, HYDRAULIC_PORTS, PRESSURE_PORTS
 from hydroservo.errors import ParameterError
 from hydroservo.laws.four_way import four_way_valve_flows
-from hydroservo.laws.orifice import transition_pressure
+from hydroservo.laws.orifice import laminar_flow, transition_pressure
+from hydroservo.laws.pressure_valve import opening_fraction
 
-__all__ = ["FourWayValve"]
+__all__ = ["FourWayValve", "LOAD_SENSING_CONDUCTANCE"]
+
+#: Conductance of the passage from the loaded use port to the load-sensing port L [m^3/s/Pa] (option
+#: load_sensing = port): stiff, so that a load-sensing line of 1e-5 m^3 follows within 1e-8 s and 17 Pa per L/min
+#: (Hopsan's connection is ideal); not a parameter, so that a valve without the port carries none.
+LOAD_SENSING_CONDUCTANCE = 1e-6
+#: The spool travel over which port L passes from B's pressure to A's, a fraction of ``xv_max`` [-]: Hopsan's
+#: switch at x_v = 0 rounded (:func:`hydroservo.laws.pressure_valve.opening_fraction`), so that a spool resting at
+#: its centre does not toggle the line between two pressures at every step.
+LOAD_SENSING_BAND = 1e-4
 
 
 @register
@@ -37,9 +47,23 @@ class FourWayValve(Component):
     Tables (lists, set in the constructor or model file): ``K_x``/``K`` and
     ``H_x``/``H_opening``/``H_closing`` (``H_opening`` applies while
     :math:`x_v \\dot x_v \\ge 0`). Defaults: 1 everywhere.
+
+    Option ``load_sensing``: ``none`` (default), or ``port``, a load-sensing port ``L`` that passes on the
+    pressure of the loaded use port, A while :math:`x_v \\ge 0` and B otherwise, to a load-sensing line (to a
+    shuttle valve, a pump's regulator): :math:`Q_L = G_L\\,(p_{A|B} - p_L)` out of L, a stiff passage
+    (:math:`G_L` = :data:`LOAD_SENSING_CONDUCTANCE`, 1e-6 m³/s/Pa) that keeps
+    the line within :math:`Q_L/G_L` of the loaded port's pressure. As Hopsan's Hydraulic43LoadSensingValve
+    ([Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic43LoadSensingValve.hpp), which writes that
+    pressure to its PL node (an ideal connection: its flow :math:`(p_{load} - c_L)/Z_{c,L}`), the line's flow is
+    not taken from A or B. Hopsan switches from B to A at :math:`x_v = 0`; here over
+    :data:`LOAD_SENSING_BAND` of the stroke about it (the pressures blended by a rounded ramp), so that a spool
+    resting at its centre does not toggle the line between two pressures at every step.
     """
 
     RENAMED = {"x_max": "xv_max"}
+    OPTIONS = {
+        "load_sensing": Option("none", ("none", "port"), "no load-sensing port, or port L at the loaded use port's pressure"),
+    }
     PARAMETERS = {
         "c_v": Param(3.56e-4, "m^2/s/Pa^0.5", "flow coefficient per edge, Efe2014 eq. 3.9", min=0.0),
         "xv_max": Param(
@@ -88,6 +112,15 @@ class FourWayValve(Component):
                 if np.any(self.tables[y] < 0) or np.any(self.tables[y] > 1.5):
                     raise ParameterError(f"{name}.tables.{y}: expected factors between 0 and 1.5")
 
+    def options_changed(self) -> None:
+        """Option load_sensing = port adds the port L (its pressure input and flow output)."""
+        cls = type(self)
+        self.INPUTS, self.OUTPUTS, self.HYDRAULIC = dict(cls.INPUTS), dict(cls.OUTPUTS), dict(cls.HYDRAULIC)  # type: ignore[misc]
+        if self.option("load_sensing") == "port":
+            self.INPUTS["pL"] = Port("Pa", "pressure in the load-sensing line (port L)")
+            self.OUTPUTS["QL"] = Output("m^3/s", "flow out of port L into the load-sensing line")
+            self.HYDRAULIC["L"] = Hydraulic("pL", "QL", "load-sensing port: the loaded use port's pressure", into=False)
+
     def config(self) -> dict[str, Any]:
         return {"tables": {k: v.tolist() for k, v in self.tables.items()}} if self.has_tables() else {}
 
@@ -132,5 +165,11 @@ class FourWayValve(Component):
             p["G_leak"],
             K,
         )
-        return {"QA": QA, "QB": QB, "QS": QS, "QT": QT}
+        out = {"QA": QA, "QB": QB, "QS": QS, "QT": QT}
+        if self.option("load_sensing") == "port":
+            band = LOAD_SENSING_BAND * p["xv_max"]
+            s = opening_fraction(xv, -0.5 * band, band)
+            out["QL"] = laminar_flow(LOAD_SENSING_CONDUCTANCE, s * u["pA"] + (1.0 - s) * u["pB"] - u["pL"])
+        return out
+
 

@@ -7,6 +7,7 @@ import pytest
 
 import hydroservo as hs
 from hydroservo import components as c
+from hydroservo.components.valves.four_way import LOAD_SENSING_CONDUCTANCE
 from hydroservo.errors import ParameterError
 from hydroservo.laws.orifice import transition_pressure
 
@@ -36,3 +37,22 @@ def test_valve_compensation_and_hysteresis_tables() -> None:
     assert flow(h, -0.01) == pytest.approx(0.9 * plain, rel=1e-6)  # closing, Efe2014 eq. 3.23
     with pytest.raises(ParameterError, match="tables.K"):
         c.FourWayValve("v", tables={"K_x": [0.0, 1.0], "K": [1.0]})
+
+
+def test_the_load_sensing_port_passes_on_the_loaded_use_ports_pressure() -> None:
+    """Option load_sensing = port: Q_L = G_L (p_A - p_L) once x_v is half the band (1e-4 x_vmax) above the centre,
+    G_L (p_B - p_L) as far below, between them the two blended; the bridge's flows
+    are those of the valve without the port (the line's flow is taken from neither A nor B, as Hopsan's)."""
+    plain = c.FourWayValve("v", c_v=2e-4, xv_max=1e-3)
+    ls = c.FourWayValve("v", c_v=2e-4, xv_max=1e-3, load_sensing="port")
+    assert "L" in ls.HYDRAULIC and "L" not in plain.HYDRAULIC and "pL" not in plain.INPUTS
+    u = {"pS": 200e5, "pT": 0.0, "pA": 80e5, "pB": 30e5, "vv": 0.0, "pL": 50e5}
+    for xv, loaded in ((2e-4, 80e5), (1e-7, 80e5), (-1e-4, 30e5)):
+        out = ls.output_equations(0.0, {}, {**u, "xv": xv}, ls.values)
+        ref = plain.output_equations(0.0, {}, {**u, "xv": xv}, plain.values)
+        assert float(out["QL"]) == pytest.approx(LOAD_SENSING_CONDUCTANCE * (loaded - 50e5), rel=1e-12)
+        for q in ("QA", "QB", "QS", "QT"):
+            assert float(out[q]) == float(ref[q])
+    # at the centre, within the band, the pressures blended (half each at x_v = 0)
+    out = ls.output_equations(0.0, {}, {**u, "xv": 0.0}, ls.values)
+    assert float(out["QL"]) == pytest.approx(LOAD_SENSING_CONDUCTANCE * (55e5 - 50e5), rel=1e-12)
