@@ -135,6 +135,10 @@ def main() -> int:
     ap.add_argument("--finest", action="store_true",
                     help="extrapolate from the three finest runs, not from those that end with the smallest change "
                          "(a model some of whose traces do not converge: each trace's uncertainty is recorded)")
+    ap.add_argument("--min-step", type=float, default=0.0,
+                    help="halve the step at least down to this [s] before stopping (a model whose traces move between "
+                         "two samples faster than the sampling shows: the samples on such an edge count as jumps, "
+                         "and the change between halvings does not see them converge)")
     ap.add_argument("names", nargs="*", help="models (default: all)")
     args = ap.parse_args()
     OUT.mkdir(parents=True, exist_ok=True)
@@ -171,6 +175,9 @@ def main() -> int:
                 print(f"{name}: step {h:.3g} s, largest change {100 * worst:.4f} % of range ({runs[-1][2]:.1f} s)",
                       file=sys.stderr)
                 settled = len(table) >= 2 and table[-2]["largest_change_percent"] < 1.0  # both halvings converging
+                if h > args.min_step * (1.0 + 1e-9):
+                    h /= 2.0
+                    continue
                 if worst < args.tol and settled:
                     break
                 best = min(range(len(table)), key=lambda k: table[k]["largest_change_percent"])
@@ -217,6 +224,8 @@ def main() -> int:
             "order": orders,
             "extrapolation_uncertainty_percent": {k: round(v, 5) for k, v in uncertainty.items()},
             "samples": args.samples,
+            **({"min_step": args.min_step} if args.min_step else {}),
+            **({"finest": True} if args.finest else {}),
         }
         index_path.write_text(json.dumps(index, indent=1) + "\n")
         print(f"{name}: wrote {OUT / f'{name}.csv'}", file=sys.stderr)

@@ -450,6 +450,31 @@ MODELS: dict[str, Spec] = {
         "a spool counterbalance valve (force balance with flow forces) and an over-centre valve (relief-valve "
         "spool with hysteresis), each between a pressure source and a tank, their loads and pilots soft-stepped",
     ),
+    "hydraulic-over-centre-valve-g-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicOverCentreValveGTest.hmf",
+        "a spool counterbalance valve (force balance with flow forces) and an over-centre valve (relief-valve spool "
+        "with hysteresis) between pressure sources, their loads, outlets and pilots soft-stepped",
+    ),
+    "hydraulic-pressure-compensating-valve-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureCompensatingValveTest.hmf",
+        "a pressure compensator (the relief valve's spool, normally open, with hysteresis) keeping the drop across a "
+        "laminar orifice between volumes fed by a Q-type pressure source, the pressures soft-stepped",
+    ),
+    "hydraulic-pressure-compensating-valve-g-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicPressureCompensatingValveGTest.hmf",
+        "spool pressure-compensating and pressure-control valves (force balance with flow forces) keeping the drops "
+        "across laminar orifices between volumes fed by Q-type pressure sources, the pressures soft-stepped",
+    ),
+    "pressure-controlling-valves-validation": Spec(
+        "Animation Validation/PressureControllingValvesValidation.hmf",
+        "relief, reducing, pressure-drop, pressure-controlled, compensating and over-centre valves (the relief "
+        "valve's spool with hysteresis in six forms) between pressure sources swept by sine waves",
+    ),
+    "restrictors-and-volumes-validation": Spec(
+        "Animation Validation/RestrictorsAndVolumesValidation.hmf",
+        "orifices, check valves plain and pre-loaded, a 3/2 valve, an accumulator and volumes between pressure "
+        "sources swept by sine waves, one of them Q-type",
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.
