@@ -669,6 +669,8 @@ SOLVER_OPTIONS: dict[str, tuple[list[str], list[str], bool]] = {
     # DEBATABLE: argparse's own message ("usage: ... error: argument --points: invalid int value") is not
     # "hydroservo: error:"; the standard asks for one message of that form
     "points-not-an-integer": (["--points", "ten"], [r"--points", r"ten"], False),
+    "max-steps-0": (["--max-steps", "0"], [r"--max-steps", r"\b0\b"], False),
+    "max-steps-10": (["--max-steps", "10"], [r"--max-steps", r"\b10\b", r"100"], False),
     "t-end-0": (["--t-end", "0"], [r"--t-end", r"\b0\b"], False),
     "t-end-negative": (["--t-end", "-1"], [r"--t-end", r"-1"], False),
     "t-end-nan": (["--t-end", "nan"], [r"--t-end", r"(?i)nan"], False),

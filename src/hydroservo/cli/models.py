@@ -25,7 +25,8 @@ def cmd_simulate(args: argparse.Namespace) -> int:
     write = "none" if args.write is None and args.json and args.out is None else args.write
     job = Simulate(
         args.model, args.set, t_end=args.t_end, points=args.points, initial=args.initial, accuracy=args.accuracy,
-        rtol=args.rtol, strict=args.strict, write=write, method=args.method, units=args.units, si=args.si,
+        rtol=args.rtol, strict=args.strict, write=write, method=args.method, max_steps=args.max_steps,
+        units=args.units, si=args.si,
         ascii=args.ascii, all_signals=args.all, cli=True,
     )
     return execute(job, args)
@@ -98,6 +99,14 @@ def add_parsers(sub: Any) -> None:
         "else cvodes), rodas3 (compiled "
         "Rosenbrock 3(2), stiff circuits), ros23 (compiled Rosenbrock 2(3)), dopri5 (compiled Dormand-Prince, "
         "non-stiff) or cvodes (BDF, interpreted); the compiled ones are built once per model and cached",
+    )
+    p.add_argument(
+        "--max-steps",
+        type=int,
+        default=None,
+        metavar="N",
+        help="the run's step budget, shared over the output times (default 100000 at the default accuracy; a long "
+        "run of a stiff circuit may need more)",
     )
     p.add_argument(
         "--strict",

@@ -58,9 +58,25 @@ def plot_result(
             described = result.descriptions.get(n, "")
             ax.plot(result.t, result.get(n, unit), label=f"{n}: {described}" if described and described != n else n)
         shown = [si_unit(u) for u in drawn]
-        ax.set_ylabel(f"{', '.join(panel)} [{' / '.join(dict.fromkeys(shown))}]")
+        ax.set_ylabel(_axis_label(panel, result.descriptions, " / ".join(dict.fromkeys(shown))))
         ax.legend(loc="best", fontsize="small", framealpha=0.8)
         ax.grid(True, alpha=0.3)
     axes[-1, 0].set_xlabel("t [s]")
     fig.suptitle(title or result.model)
     return finish(fig, file, plt, show)
+
+
+#: The longest list of names an axis is labelled with; past it, what the signals are (the legend names them).
+_LABEL_CHARS = 40
+
+
+def _axis_label(panel: list[str], descriptions: dict[str, str], unit: str) -> str:
+    """``"p1, p2 [Pa]"``; for a panel whose names would not fit beside the axis, what its signals have in common
+    (``"pressure [Pa]"``) or how many they are, and a long single name broken over lines."""
+    import textwrap
+
+    names = ", ".join(panel)
+    if len(panel) > 1 and len(names) > _LABEL_CHARS:
+        described = {descriptions.get(n, "") for n in panel}
+        names = described.pop() if len(described) == 1 and "" not in described else f"{len(panel)} signals"
+    return textwrap.fill(f"{names} [{unit}]", _LABEL_CHARS)

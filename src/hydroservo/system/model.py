@@ -503,7 +503,9 @@ class Model:
                 where += (
                     f" after {steps} steps in this interval (mean step {max(t_fail - t0, 0.0) / steps:.3g} s; "
                     f"max_steps = {settings.max_steps} shared over {grid.size - 1} output intervals: a model that "
-                    "is only slow here runs with a larger max_steps or fewer output points)"
+                    "is only slow here runs with a larger max_steps (simulate --max-steps) or fewer output points; a "
+                    "stiff circuit whose steps CVODES keeps short, with the compiled Rosenbrock method "
+                    "(--method rodas3))"
                 )
         z = reached[min(k_fail, len(reached) - 1)]
         why = self.unconverged(np.array([t0]), z[:, None], p)

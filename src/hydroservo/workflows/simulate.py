@@ -171,6 +171,9 @@ class Simulate(Workflow):
         ``auto`` (default: the compiled ``rodas3`` for a model of at most 20 states where a C compiler is found, else
         ``cvodes``), ``cvodes``, or
         the compiled ``rodas3``, ``ros23`` or ``dopri5`` (:meth:`~hydroservo.system.model.Model.simulate`).
+    max_steps : int, optional
+        The run's step budget, shared over the output intervals (default: 1e5 at the default accuracy,
+        :func:`~hydroservo.system.integration.default_max_steps`): a long run of a stiff circuit needs more.
     strict : bool
         Refuse a physically implausible result (:class:`~hydroservo.errors.ImplausibleResultError`).
     write : str or list of str, optional
@@ -198,6 +201,7 @@ class Simulate(Workflow):
     strict: bool = False
     write: str | Sequence[str] | None = None
     method: str = "auto"
+    max_steps: int | None = None
     units: str | Mapping[str, str] | None = None
     si: bool = False
     ascii: bool = False
@@ -242,6 +246,11 @@ class Simulate(Workflow):
                 else f"{self.name('accuracy')} {self.accuracy}"
             )
             raise ParameterError(f"{option}: {str(exc).split(': ', 1)[-1]}") from None
+        if self.max_steps is not None:
+            try:
+                SolverSettings.of(max_steps=self.max_steps)
+            except ParameterError as exc:
+                raise ParameterError(f"{self.name('max_steps')} {self.max_steps!r}: {str(exc).split(': ', 1)[-1]}") from None
         if not 2 <= self.points <= MAX_POINTS:
             raise ParameterError(
                 f"{self.name('points')} {self.points}: expected a whole number of output times from 2 to {MAX_POINTS}"
@@ -290,7 +299,7 @@ class Simulate(Workflow):
         start = time.perf_counter()
         result = self.system.simulate(
             t_end=self.duration, n_points=self.points, initial=self.initial, rtol=self.rtol,
-            accuracy=self.accuracy_value, method=self.method,
+            accuracy=self.accuracy_value, method=self.method, max_steps=self.max_steps,
         )
         wall = time.perf_counter() - start
         found = _warnings(result)

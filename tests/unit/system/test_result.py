@@ -109,3 +109,16 @@ def test_a_result_file_keeps_temperatures_in_degc(tmp_path) -> None:
     back = read_csv(path)
     assert back.units["oil.T"] == "degC" and back["oil.T"][0] == pytest.approx(40.0)
     assert back["oil.p"][1] == pytest.approx(2e5)
+
+
+def test_a_panel_of_many_long_names_is_labelled_by_what_they_are() -> None:
+    """The names of a panel label its axis while they fit (the legend names them too); past 40 characters the
+    axis says what they have in common, or how many they are, and a single long name is broken over lines."""
+    from hydroservo.plotting.results import _axis_label
+
+    assert _axis_label(["p1", "p2"], {}, "Pa") == "p1, p2 [Pa]"
+    many = [f"Hydraulic_Volume_{k}.p" for k in range(6)]
+    assert _axis_label(many, dict.fromkeys(many, "pressure"), "Pa") == "pressure [Pa]"
+    assert _axis_label(many, {many[0]: "pressure"}, "Pa") == "6 signals [Pa]"
+    long = "c_4_3_Servo_Valve_with_Load_Sensing_Port_1_spool.xv"
+    assert all(len(line) <= 40 for line in _axis_label([long], {}, "m").splitlines())

@@ -63,3 +63,12 @@ def test_changes_to_a_model_are_checked_and_named() -> None:
         load_with_sets("flight-simulator", {"load.mass": "3 kg"}, what="sets")
     with pytest.raises(ParameterError, match=r"--set 'load\.W': expected COMPONENT\.PARAMETER=VALUE"):
         parse_sets(["load.W"])
+
+
+def test_a_simulation_takes_its_step_budget_from_the_caller() -> None:
+    """Simulate(max_steps=...) (simulate --max-steps): the budget reaches the solver, whose failure names it."""
+    from hydroservo.errors import SolverError
+    from hydroservo.workflows.simulate import Simulate
+
+    with pytest.raises(SolverError, match=r"step budget of 100 steps was used up"):
+        Simulate("flight-simulator", max_steps=100, write="none").run()
