@@ -308,7 +308,7 @@ def flow_force_gradient(c_v: Any, dp: Any, rho: Any, phi: Any) -> Any:
 
     >>> c_v = 0.67 * 0.003 * (2.0 / 870.0) ** 0.5
     >>> round(float(flow_force_gradient(c_v, 100e5, 870.0, 1.2043)) * 1e-3, 2)  # N per mm
-    14.4
+    14.41
     """
     return 2.0 * bk.cos(phi) * c_v * bk.sqrt(rho / 2.0) * bk.fabs(dp)
 
