@@ -1253,19 +1253,14 @@ def _directional_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mappe
     delta_h < 1 refused, as the other on/off valves'). Output ``out``: the spool's position."""
     from hydroservo.components import CheckValve, Gain
 
-    cd, rho = 0.67, 870.0
-
-    def bore(k: float) -> float:
-        return math.sqrt(4.0 * abs(k) / (cd * math.sqrt(2.0 / rho)) / math.pi)
-
     k_open, k_check = par("Kv_open", 5e-7), par("Kv_check", 5e-7)
     if k_open <= 0.0 or k_check <= 0.0:
         par.problems.append(f"{par.where}: Kv_open = {k_open:g}, Kv_check = {k_check:g}; only values above 0 are supported")
         return Mapped()
     spool = _spool(n, par, 1.0, "on-off", par("out", 0.0))  # Hopsan's filter starts at out (not at its input)
     pilot = Gain(f"{n}_pilot", input_unit="m", K="1 1/m")  # the spool's position as the fraction of its stroke
-    valve = CheckValve(n, opening="seat", pilot="open", p_crack=par("F_s", 0.0), d=bore(k_check), d_open=bore(k_open),
-                       Cd=cd, rho=rho, lambda_crit=10.0)
+    valve = CheckValve(n, opening="seat", pilot="open", p_crack=par("F_s", 0.0), d_open=_check_bore(k_open)["d"],
+                       **_check_bore(k_check))
     return Mapped(
         [*spool.components, pilot, valve],
         power={"P1": f"{n}.A", "P2": f"{n}.B"},
