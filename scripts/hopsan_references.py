@@ -175,7 +175,7 @@ def main() -> int:
                 print(f"{name}: step {h:.3g} s, largest change {100 * worst:.4f} % of range ({runs[-1][2]:.1f} s)",
                       file=sys.stderr)
                 settled = len(table) >= 2 and table[-2]["largest_change_percent"] < 1.0  # both halvings converging
-                if h > args.min_step * (1.0 + 1e-9):
+                if args.min_step > 0.0 and h > args.min_step * (1.0 + 1e-9):
                     h /= 2.0
                     continue
                 if worst < args.tol and settled:
