@@ -87,6 +87,8 @@ class Mapped:
     #: Hopsan power port -> the output giving Hopsan's flow there (out of the component), where more than one of
     #: its hydroservo components join at the port (a valve's centre edge beside its spool's): the node's flow
     flow: dict[str, str] = field(default_factory=dict)
+    #: further variables a read port reads (a power sensor's pressure and flow), as ``read``'s entries
+    read_also: dict[str, list[tuple[str, str]]] = field(default_factory=dict)
 
 
 class _Params:
@@ -168,6 +170,7 @@ MULTIPORTS: dict[str, frozenset[str]] = {
     "MechanicMultiPortTranslationalMass": frozenset({"P1", "P2"}),
     "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts": frozenset({"P1", "P2"}),
     "MechanicFixedPositionMultiPort": frozenset({"Pm1"}),
+    "MechanicRotationalInertiaMultiPort": frozenset({"P1", "P2"}),
 }
 
 #: Hopsan's mechanical multiports whose connections each keep their node's start position (an offset from the
@@ -175,7 +178,7 @@ MULTIPORTS: dict[str, frozenset[str]] = {
 #: (the builder reads them as the port's start values; :data:`STARTS_DIFFER` marks ones that do not)
 SHARED_STARTS = frozenset({
     "MechanicMultiPortTranslationalMass", "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts",
-    "MechanicFixedPositionMultiPort",
+    "MechanicFixedPositionMultiPort", "MechanicRotationalInertiaMultiPort",
 })
 STARTS_DIFFER = "StartsDiffer"
 
@@ -1578,6 +1581,68 @@ def _sensor(variable: str, unit: str) -> Builder:
     return build
 
 
+def _differential_pressure_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sensors/HydraulicDifferentialPressureSensor.hpp: out = p_1 - p_2, its read ports
+    taking no flow: a Sum reading each node's pressure (``{n}_p1``, ``{n}_p2``, as the pressure sensor's) and a
+    Sum of their difference (the atmosphere of Hopsan's absolute pressures cancels)."""
+    from hydroservo.components import Sum
+
+    comps: list[cbase.Component] = [
+        Sum(f"{n}_p1", unit="Pa", gain2=0.0), Sum(f"{n}_p2", unit="Pa", gain2=0.0), Sum(n, unit="Pa"),
+    ]
+    return Mapped(
+        comps, read={"P1": (f"{n}_p1.u1", "Pressure"), "P2": (f"{n}_p2.u1", "Pressure")},
+        outputs={"out": f"{n}.y"}, internal=[(f"{n}_p1.y", f"{n}.u1"), (f"{n}_p2.y", f"{n}.u2")],
+    )
+
+
+def _power_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sensors/HydraulicPowerSensor.hpp: out = p q [W] of its node, Hopsan's absolute
+    pressure times the node's flow, the read port taking no flow: a Sum reading the pressure (``{n}_p``), one the
+    flow (``{n}_q``) and a Product of the two."""
+    from hydroservo.components import Product, Sum
+
+    comps = [Sum(f"{n}_p", unit="Pa", gain2=0.0), Sum(f"{n}_q", unit="m^3/s", gain2=0.0), Product(n)]
+    return Mapped(
+        comps, read={"P1": (f"{n}_p.u1", "Pressure")}, read_also={"P1": [(f"{n}_q.u1", "Flow")]},
+        outputs={"out": f"{n}.y"}, internal=[(f"{n}_p.y", f"{n}.u1"), (f"{n}_q.y", f"{n}.u2")],
+    )
+
+
+def _plug(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicPlugQ.hpp: a Q component of no flow, q = 0, p = c (Hopsan
+    logs p = 0 where c < 0; hydroservo keeps the node's pressure): a FlowSource of 0."""
+    from hydroservo.components import FlowSource
+
+    return Mapped([FlowSource(n, q=0.0)], power={"P1": f"{n}.P"})
+
+
+#: the conductance [m^3/s/Pa] that stands for Hopsan's lossless connectors' ideal connection (the shuttle
+#: valve's open seat's): the nodes' pressures within q/G of each other (17 Pa per L/min), with a time constant
+#: V/(β G) (1e-8 s on a 1e-5 m^3 line) far below anything a circuit does
+_LOSSLESS_G = 1e-6
+
+
+def _lossless_connector(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicLossLessConnector.hpp: q = (c_1 - c_2)/(Z_c1 + Z_c2), the flow
+    that makes p_1 = p_2, an ideal connection of its two C nodes (in the limit of a vanishing step, the two
+    volumes one): a LaminarOrifice of a conductance large enough that the pressures follow each other
+    (:data:`_LOSSLESS_G`). HydraulicLossLessTConnector.hpp: p = Σ(c_i/Z_ci)/Σ(1/Z_ci) at all three ports, the
+    three nodes joined: LaminarOrifices from P1 to P2 (``{n}``) and from P1 to P3 (``{n}_3``), P1's flow the
+    two summed (a Sum ``{n}_Q1``). Hopsan logs a pressure below 0 as 0; hydroservo keeps it."""
+    from hydroservo.components import LaminarOrifice, Sum
+
+    if hc.typename == "HydraulicLosslessConnector":
+        return Mapped([LaminarOrifice(n, G_lam=_LOSSLESS_G)], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+    comps = [LaminarOrifice(n, G_lam=_LOSSLESS_G), LaminarOrifice(f"{n}_3", G_lam=_LOSSLESS_G),
+             Sum(f"{n}_Q1", unit="m^3/s", gain1=-1.0, gain2=-1.0)]
+    return Mapped(
+        comps, power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}_3.B"},
+        internal=[(f"{n}.A", f"{n}_3.A"), (f"{n}.Q", f"{n}_Q1.u1"), (f"{n}_3.Q", f"{n}_Q1.u2")],
+        flow={"P1": f"{n}_Q1.y"},
+    )
+
+
 # -- mechanic, rotational -------------------------------------------------------------------------------------
 
 
@@ -1596,6 +1661,31 @@ def _rotational_inertia(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         theta0=-par.start("P1", "Angle"),
         omega0=-par.start("P1", "AngularVelocity"),
     )
+    a_min, a_max = par("a_min", -1e300), par("a_max", 1e300)
+    if abs(a_min) < 1e299 or abs(a_max) < 1e299:
+        comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _rotational_inertia_multiport(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaMultiPort.hpp: J θ'' = Σt_1 - Σt_2 - B θ' (no
+    spring), the torques of every connection to its multiports P1 and P2 summed (as on the one port of
+    RotationalInertia each joins); its integrator starts at rest at angle 0 whatever the start values, P2 at the
+    angle θ and P1 at P1's and P2's start angles added minus θ; a_min, a_max as stiff stops (as
+    :func:`_rotational_inertia`). A RotationalInertia starting at rest at 0; start angles of P1 and P2 that do not
+    add to 0 (an offset of P1's angle RotationalInertia has not), or connections that start apart, are refused."""
+    from hydroservo.components import RotationalInertia
+
+    if not _shared_starts(par, ("P1", "P2")):
+        return Mapped()
+    offset = par.start("P1", "Angle") + par.start("P2", "Angle")
+    if offset != 0.0:
+        par.problems.append(
+            f"{par.where}: start angles of P1 and P2 that add to {offset:g} rad, not 0, are not supported (Hopsan "
+            "keeps P1 that far from minus P2's angle)"
+        )
+        return Mapped()
+    comp = RotationalInertia(n, J=par("J", 100.0), B_rot=par("B", 10.0), k_rot=0.0, theta0=0.0, omega0=0.0)
     a_min, a_max = par("a_min", -1e300), par("a_max", 1e300)
     if abs(a_min) < 1e299 or abs(a_max) < 1e299:
         comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
@@ -2584,6 +2674,11 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPistonMkload": _piston_mkload,
     "HydraulicPressureSensor": _sensor("Pressure", "Pa"),
     "HydraulicFlowSensor": _sensor("Flow", "m^3/s"),
+    "HydraulicDifferentialPressureSensor": _differential_pressure_sensor,
+    "HydraulicPowerSensor": _power_sensor,
+    "HydraulicPlugQ": _plug,
+    "HydraulicLosslessConnector": _lossless_connector,
+    "HydraulicLosslessTConnector": _lossless_connector,
     "MechanicTranslationalMass": _mass,
     "MechanicTranslationalMassWithCoulombFriction": _mass_coulomb,
     "MechanicTranslationalSpring": _spring,
@@ -2610,6 +2705,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicAngleSensor": _sensor("Angle", "rad"),
     "MechanicAngularVelocitySensor": _sensor("AngularVelocity", "rad/s"),
     "MechanicTorqueSensor": _sensor("Torque", "N*m"),
+    "MechanicRotationalInertiaMultiPort": _rotational_inertia_multiport,
     "MechanicFreeLengthWall": _free_length_wall,
     "MechanicRotationalInertiaWithCoulombFriction": _rotational_inertia_coulomb,
     "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling
@@ -2889,8 +2985,7 @@ def import_hopsan(path: str | Path) -> HopsanImport:
                 aliases[f"{_alias(c)}.{p}.{var}"] = value
                 hopsan_names[f"{_alias(c)}.{p}.{var}"] = hopsan(c, p, var)
             read = mapped[c].read.get(p)
-            if read is not None:
-                target, variable = read
+            for target, variable in ([read] if read is not None else []) + mapped[c].read_also.get(p, []):
                 if variable not in node:
                     problems.append(f"{source}: {c}.{p} reads {variable}, which the node it is joined to has not")
                     continue
@@ -3014,7 +3109,7 @@ def _node_starts(
             if end not in multiports:
                 out[end] = values
             elif end[0] in by_name and by_name[end[0]].typename in SHARED_STARTS:
-                shared.setdefault(end, []).append({k: v for k, v in values.items() if k in ("Position", "Velocity")})
+                shared.setdefault(end, []).append({k: v for k, v in values.items() if k in ("Position", "Velocity", "Angle", "AngularVelocity")})
     for end, each in shared.items():  # a mechanical multiport: one start for all its connections, if they agree
         out[end] = each[0] if all(v == each[0] for v in each) else {STARTS_DIFFER: 1.0}
     for hc in model.components:  # Q components that write their own start positions (a node's values shared)

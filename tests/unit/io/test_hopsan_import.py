@@ -1329,6 +1329,90 @@ def test_hopsans_spring_with_a_free_length_pushes_from_where_it_is_relaxed(tmp_p
     assert float(r["K.Pm1.Force"][-1]) == pytest.approx(100.0, rel=1e-6)
 
 
+def test_hopsans_sensors_plug_and_lossless_connectors_against_their_laws(tmp_path: Path) -> None:
+    """[Hopsan2026] Hydraulic/Sensors/HydraulicDifferentialPressureSensor.hpp (p_1 - p_2), HydraulicPowerSensor.hpp
+    (p q, Hopsan's absolute pressure times its node's flow), Hydraulic/Sources&Sinks/HydraulicPlugQ.hpp (q = 0),
+    Hydraulic/Restrictors/HydraulicLossLessConnector.hpp and HydraulicLossLessTConnector.hpp (their nodes joined,
+    p equal at every port, up to q/G = q/1e-6 Pa): a 50 bar (absolute) source drains through laminar orifices
+    (Kc = 1e-11 and 2e-11 m^3/s/Pa) to a tank, directly, through a lossless connector and a volume, and through a T
+    connector and two volumes; a volume closed by a plug comes to the source's pressure; at rest each flow is
+    Kc (p - p_tank)."""
+    v = _value
+    ps, pt = 50e5, 1e5
+    components = [
+        ("HydraulicPressureSourceC", "S", {"p#Value": v(repr(ps), "Pa")}),
+        ("HydraulicTankC", "T", {}),
+        ("HydraulicLaminarOrifice", "O", {"Kc#Value": v("1e-11")}),
+        ("HydraulicDifferentialPressureSensor", "DP", {}),
+        ("HydraulicPowerSensor", "W", {}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v(repr(ps), "Pa")}),
+        ("HydraulicLaminarOrifice", "O2", {"Kc#Value": v("1e-11")}),
+        ("HydraulicVolume", "V", {}),
+        ("HydraulicPlugQ", "Plug", {}),
+        ("HydraulicPressureSourceC", "S3", {"p#Value": v(repr(ps), "Pa")}),
+        ("HydraulicLosslessConnector", "L", {}),
+        ("HydraulicVolume", "VL", {}),
+        ("HydraulicLaminarOrifice", "OL", {"Kc#Value": v("1e-11")}),
+        ("HydraulicTankC", "TL", {}),
+        ("HydraulicPressureSourceC", "S4", {"p#Value": v(repr(ps), "Pa")}),
+        ("HydraulicLosslessTConnector", "LT", {}),
+        ("HydraulicVolume", "V2", {}),
+        ("HydraulicVolume", "V3", {}),
+        ("HydraulicLaminarOrifice", "O3", {"Kc#Value": v("1e-11")}),
+        ("HydraulicLaminarOrifice", "O4", {"Kc#Value": v("2e-11")}),
+        ("HydraulicTankC", "T3", {}),
+        ("HydraulicTankC", "T4", {}),
+    ]
+    connections = [
+        ("S.P1", "O.P1"), ("O.P2", "T.P1"), ("DP.P1", "O.P1"), ("DP.P2", "O.P2"), ("W.P1", "O.P1"),
+        ("S2.P1", "O2.P1"), ("O2.P2", "V.P1"), ("V.P2", "Plug.P1"),
+        ("S3.P1", "L.P1"), ("L.P2", "VL.P1"), ("VL.P2", "OL.P1"), ("OL.P2", "TL.P1"),
+        ("S4.P1", "LT.P1"), ("LT.P2", "V2.P1"), ("LT.P3", "V3.P1"), ("V2.P2", "O3.P1"), ("V3.P2", "O4.P1"),
+        ("O3.P2", "T3.P1"), ("O4.P2", "T4.P1"),
+    ]
+    path = tmp_path / "sensors.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = import_hopsan(path).system.simulate(t_eval=[0.0, 3.0], accuracy=1e-9)
+    q = 1e-11 * (ps - pt)
+    assert float(r["DP.out.Value"][-1]) == pytest.approx(ps - pt, rel=1e-9)
+    assert float(r["W.out.Value"][-1]) == pytest.approx(ps * -q, rel=1e-9)  # the orifice takes q from S's node
+    assert float(r["Plug.P1.Flow"][-1]) == 0.0
+    assert float(r["V.P2.Pressure"][-1]) == pytest.approx(ps, rel=1e-6)
+    # the lossless connectors' nodes at the source's pressure, within q/G
+    assert abs(float(r["VL.P1.Pressure"][-1]) - ps) < 1.01 * q / 1e-6
+    assert float(r["L.P2.Flow"][-1]) == pytest.approx(q, rel=1e-4)
+    assert float(r["L.P1.Flow"][-1]) == pytest.approx(-q, rel=1e-4)
+    assert abs(float(r["V2.P1.Pressure"][-1]) - ps) < 3.1 * q / 1e-6
+    assert float(r["LT.P2.Flow"][-1]) == pytest.approx(q, rel=1e-4)
+    assert float(r["LT.P3.Flow"][-1]) == pytest.approx(2.0 * q, rel=1e-4)
+    assert float(r["LT.P1.Flow"][-1]) == pytest.approx(-3.0 * q, rel=1e-4)
+
+
+def test_a_multiport_rotational_inertia_sums_the_torques_of_its_connections(tmp_path: Path) -> None:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaMultiPort.hpp: J θ'' = Σt_1 - Σt_2 - B θ', from
+    rest at 0: torques of 3 and 5 N m on P1 (J 2 kg m², B 4 N m s/rad, P2 free) turn P1 at
+    -(8/B)(1 - exp(-B t/J)), its angle the integral; start angles of P1 and P2 that do not add to 0 are refused."""
+    v = _value
+    components = [
+        ("MechanicRotationalInertiaMultiPort", "J", {"J#Value": v("2"), "B#Value": v("4")}),
+        ("MechanicTorqueTransformer", "Ta", {"T#Value": v("3")}),
+        ("MechanicTorqueTransformer", "Tb", {"T#Value": v("5")}),
+    ]
+    connections = [("Ta.P1", "J.P1"), ("Tb.P1", "J.P1")]
+    path = tmp_path / "inertia.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    t = np.array([0.0, 0.2, 0.5, 1.0])
+    r = import_hopsan(path).system.simulate(t_eval=t, accuracy=1e-9)
+    np.testing.assert_allclose(r["J.P1.AngularVelocity"], -2.0 * (1.0 - np.exp(-2.0 * t)), atol=1e-7)
+    np.testing.assert_allclose(r["J.P1.Angle"], -2.0 * t + (1.0 - np.exp(-2.0 * t)), atol=1e-7)
+    for i in (1, 2):
+        components[i][2]["P1#Angle"] = v("0.3", "rad")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"J \(MechanicRotationalInertiaMultiPort\): start angles of P1 and P2 "
+                                             r"that add to 0.3 rad"):
+        read_hopsan(path)
+
+
 def test_blocks_that_start_at_their_input_take_the_value_driving_it_at_the_start(tmp_path: Path) -> None:
     """Hopsan initialises a rate limiter's output to its input, and a 4/2 on/off valve's spool to its input
     limited to the stroke: driven by a step of 1.1 before its edge, the limiter starts at 1.1 (not the file's
