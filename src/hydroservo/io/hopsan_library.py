@@ -157,7 +157,7 @@ C_TYPES = frozenset({
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
-    "MechanicSpring",
+    "MechanicSpring", "MechanicTranslationalSpringWithSlack",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -1506,6 +1506,28 @@ def _fixed_position_multiport(hc: HopsanComponent, n: str, par: _Params) -> Mapp
     return Mapped([FixedPosition(n, x0=par.start("Pm1", "Position"))], power={"Pm1": f"{n}.P"})
 
 
+def _spring_with_slack(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalSpringWithSlack.hpp: MechanicTranslationalSpring's
+    transmission-line element (it integrates its ends' velocities) while x_1 + x_2 <= 0 (its ends' positions, inward,
+    as its neighbours write them: stretched), and no force (c = Z_c = 0, the integration restarting from 0)
+    otherwise: a rope, f = k min(x_1 + x_2, 0), relaxed where x_1 + x_2 = 0. A Spring with option slack =
+    "slack" and e0 = 0. A start force other than that law's at the start positions (k min(x_1 + x_2, 0)) is
+    refused (Hopsan's integration would keep it as an offset until the rope first goes slack)."""
+    from hydroservo.components import Spring
+
+    k = par("k", 100.0)
+    stretch = par.start("P1", "Position") + par.start("P2", "Position")
+    f0 = k * min(stretch, 0.0)
+    starts = (par.start("P1", "Force"), par.start("P2", "Force"))
+    if k < 0.0 or any(abs(f - f0) > 1e-9 * max(1.0, abs(f0)) for f in starts):
+        par.problems.append(
+            f"{par.where}: k = {k:g} N/m, start forces {starts[0]:g} N and {starts[1]:g} N: only k >= 0 and start "
+            f"forces k min(x_1 + x_2, 0) = {f0:g} N at the start positions are supported"
+        )
+        return Mapped()
+    return Mapped([Spring(n, k_spring=k, e0=0.0, slack="slack")], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
 def _spring_free_length(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Mechanic/Linear/MechanicSpring.hpp: a C-type spring (ports Pm1, Pm2) whose wave variables
     stand for f = Ks (x_m1 + x_m2 - x0), Hopsan's node force (compression positive) from its ends' positions
@@ -2688,6 +2710,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicFixedPositionMultiPort": _fixed_position_multiport,
     "MechanicPulley": _pulley,
     "MechanicSpring": _spring_free_length,
+    "MechanicTranslationalSpringWithSlack": _spring_with_slack,
     "MechanicForceTransformer": _force_source,
     "MechanicPositionSensor": _sensor("Position", "m"),
     "MechanicSpeedSensor": _sensor("Velocity", "m/s"),

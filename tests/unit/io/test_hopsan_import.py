@@ -1413,6 +1413,40 @@ def test_a_multiport_rotational_inertia_sums_the_torques_of_its_connections(tmp_
         read_hopsan(path)
 
 
+def test_hopsans_spring_with_slack_pulls_while_stretched_and_goes_slack(tmp_path: Path) -> None:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalSpringWithSlack.hpp: f = k (x_1 + x_2) while x_1 + x_2 <= 0
+    (its ends' positions inward: stretched), else 0. An end moved by a velocity transformer at -0.2 m/s (the other
+    fixed) pulls with k (-0.2 t); one moved at +0.2 m/s leaves it slack (the plain spring pushes: k 0.2 t). A start
+    force the law does not give at the start positions is refused."""
+    v = _value
+    components = [
+        ("MechanicVelocityTransformer", "Out", {"v#Value": v("-0.2")}),
+        ("MechanicTranslationalSpringWithSlack", "Rope", {"k#Value": v("1000")}),
+        ("MechanicFixedPosition", "G", {}),
+        ("MechanicVelocityTransformer", "In", {"v#Value": v("0.2")}),
+        ("MechanicTranslationalSpringWithSlack", "Slack", {"k#Value": v("1000")}),
+        ("MechanicTranslationalSpring", "Plain", {"k#Value": v("1000")}),
+        ("MechanicFixedPosition", "G2", {}),
+        ("MechanicVelocityTransformer", "In2", {"v#Value": v("0.2")}),
+        ("MechanicFixedPosition", "G3", {}),
+    ]
+    connections = [("Out.Pm1", "Rope.P1"), ("Rope.P2", "G.Pm1"), ("In.Pm1", "Slack.P1"), ("Slack.P2", "G2.Pm1"),
+                   ("In2.Pm1", "Plain.P1"), ("Plain.P2", "G3.Pm1")]
+    path = tmp_path / "slack.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    t = np.array([0.0, 0.5, 1.0])
+    r = import_hopsan(path).system.simulate(t_eval=t, accuracy=1e-9)
+    np.testing.assert_allclose(r["Rope.P1.Force"], -200.0 * t, atol=1e-9)
+    np.testing.assert_allclose(r["Slack.P1.Force"], 0.0, atol=1e-9)
+    np.testing.assert_allclose(r["Plain.P1.Force"], 200.0 * t, atol=1e-9)
+    components[1] = ("MechanicTranslationalSpringWithSlack", "Rope", {"k#Value": v("1000"), "P1#Force": v("5", "N"),
+                                                                      "P2#Force": v("5", "N")})
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"Rope \(MechanicTranslationalSpringWithSlack\): k = 1000 N/m, start "
+                                             r"forces 5 N and 5 N"):
+        read_hopsan(path)
+
+
 def test_blocks_that_start_at_their_input_take_the_value_driving_it_at_the_start(tmp_path: Path) -> None:
     """Hopsan initialises a rate limiter's output to its input, and a 4/2 on/off valve's spool to its input
     limited to the stroke: driven by a step of 1.1 before its edge, the limiter starts at 1.1 (not the file's
