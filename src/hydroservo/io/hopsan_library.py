@@ -1927,6 +1927,26 @@ def _jlink(two: bool) -> Builder:
     return build
 
 
+def _rack_and_pinion(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRackAndPinion.hpp: a pinion of inertia J (P2) driving a rack (P1)
+    at the gear ratio omega [m/rad]: its filter (J s + B + ω² Z_x1 + Z_x2) w_2 = ω c_1 - c_2 is, with
+    f_1 = c_1 + Z_x1 v_1, v_1 = -ω w_2 and t_2 = c_2 + Z_x2 w_2, the law J w_2' = ω f_1 - t_2 - B w_2, the rack at
+    x_1 = -ω a_2: MechanicJLink's law on a rack, a Crank with option link = "rack", r_link = omega, x_link = 0.
+    Hopsan's filters start at rest at angle 0 whatever the start values, and so does the Crank. Its spring k (a
+    constant, 0 by default) is not supported, nor omega or J at or below 0."""
+    from hydroservo.components import Crank
+
+    ratio, inertia, k = par("omega", 1.0), par("J", 1.0), par("k", 0.0)
+    if ratio <= 0.0 or inertia <= 0.0 or k != 0.0:
+        par.problems.append(
+            f"{par.where}: omega = {ratio:g} m/rad, J = {inertia:g} kg m^2, k = {k:g} N m/rad: only omega and J above "
+            "0 and k = 0 are supported"
+        )
+        return Mapped()
+    comp = Crank(n, J=inertia, B_rot=par("B", 10.0), r_link=ratio, x_link=0.0, link="rack")
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
 def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Mechanic/Rotational/MechanicMotor.hpp: an ideal motor under speed control, a C component of no
     impedance whose torque is a PID controller's output on its speed error, T = K_p e + K_i ∫e + K_d ė with
@@ -2729,6 +2749,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicAngularVelocitySensor": _sensor("AngularVelocity", "rad/s"),
     "MechanicTorqueSensor": _sensor("Torque", "N*m"),
     "MechanicRotationalInertiaMultiPort": _rotational_inertia_multiport,
+    "MechanicRackAndPinion": _rack_and_pinion,
     "MechanicFreeLengthWall": _free_length_wall,
     "MechanicRotationalInertiaWithCoulombFriction": _rotational_inertia_coulomb,
     "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling

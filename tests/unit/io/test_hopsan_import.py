@@ -1447,6 +1447,27 @@ def test_hopsans_spring_with_slack_pulls_while_stretched_and_goes_slack(tmp_path
         read_hopsan(path)
 
 
+def test_hopsans_rack_and_pinion_turns_its_pinion_through_the_gear_ratio(tmp_path: Path) -> None:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRackAndPinion.hpp: J w' = omega f_1 - t_2 - B w, the rack at
+    -omega times the angle: 10 N on the rack (omega 0.2 m/rad, J 0.5 kg m², B 4 N m s/rad, the pinion's port free)
+    moves it at -omega w = -0.1 (1 - exp(-8 t)) outward; a spring k other than 0 is refused."""
+    v = _value
+    components = [
+        ("MechanicRackAndPinion", "RP", {"omega#Value": v("0.2"), "J#Value": v("0.5"), "B#Value": v("4")}),
+        ("MechanicForceTransformer", "F", {"F#Value": v("10")}),
+    ]
+    path = tmp_path / "rack.hmf"
+    path.write_text(_hmf(components, [("F.P1", "RP.P1")]), encoding="utf-8")
+    t = np.array([0.0, 0.1, 0.5, 2.0])
+    r = import_hopsan(path).system.simulate(t_eval=t, accuracy=1e-9)
+    np.testing.assert_allclose(r["RP.P1.Velocity"], -0.1 * (1.0 - np.exp(-8.0 * t)), atol=1e-8)
+    np.testing.assert_allclose(r["RP.P1.Position"], -0.1 * (t - (1.0 - np.exp(-8.0 * t)) / 8.0), atol=1e-8)
+    components[0] = ("MechanicRackAndPinion", "RP", {"omega#Value": v("0.2"), "k": v("3")})
+    path.write_text(_hmf(components, [("F.P1", "RP.P1")]), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"RP \(MechanicRackAndPinion\): omega = 0.2 m/rad, J = 1 kg m\^2, k = 3"):
+        read_hopsan(path)
+
+
 def test_blocks_that_start_at_their_input_take_the_value_driving_it_at_the_start(tmp_path: Path) -> None:
     """Hopsan initialises a rate limiter's output to its input, and a 4/2 on/off valve's spool to its input
     limited to the stroke: driven by a step of 1.1 before its edge, the limiter starts at 1.1 (not the file's
