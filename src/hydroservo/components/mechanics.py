@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from typing import Any
 
+from hydroservo import backend as bk
 from hydroservo.components.base import (
     Algebraic,
     Component,
@@ -58,6 +59,11 @@ class Spring(Component):
     in). ``e0`` is the extension at which it is relaxed. Hopsan's MechanicTranslationalSpring ([Hopsan2026]) is
     the same law as a transmission-line element, relaxed at its start positions. Output ``F`` is the spring's
     tension (compression negative, Hopsan's node force with the opposite sign).
+
+    Option ``slack``: ``"none"`` (the default), the law above; ``"slack"``, a rope or a chain that pulls but
+    cannot push, :math:`F_1 = F_2 = -k_{spring}\max(x_1 + x_2 - e_0, 0)`: no force while it is shorter than
+    where it is relaxed (Hopsan's MechanicTranslationalSpringWithSlack, [Hopsan2026]
+    Mechanic/Linear/MechanicTranslationalSpringWithSlack.hpp).
     """
 
     PARAMETERS = {
@@ -67,11 +73,15 @@ class Spring(Component):
     INPUTS = _END_INPUTS
     MECHANICAL = _ends("spring")
     OUTPUTS = _END_OUTPUTS
+    OPTIONS = {"slack": Option("none", ("none", "slack"), "whether it only pulls (a rope: no force while slack)")}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        tension = p["k_spring"] * (u["x1"] + u["x2"] - p["e0"])
+        stretch = u["x1"] + u["x2"] - p["e0"]
+        if self.option("slack") == "slack":
+            stretch = bk.fmax(stretch, 0.0)
+        tension = p["k_spring"] * stretch
         return {"F1": -tension, "F2": -tension, "F": tension}
 
 

@@ -15,7 +15,7 @@ from collections.abc import Mapping
 from typing import Any
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Mechanical, Output, Param, Port, State, register
+from hydroservo.components.base import Component, Mechanical, Option, Output, Param, Port, State, register
 from hydroservo.components.mechanics import ForceSource, VelocitySource
 from hydroservo.errors import ParameterError
 from hydroservo.laws.friction import aerodynamic_drag, stribeck
@@ -269,6 +269,11 @@ class Crank(Component):
     on the angle). Stiff end stops (:func:`~hydroservo.laws.stops.end_stop_force`) keep the angle within
     ``theta_min``, ``theta_max``. Hopsan's MechanicJLink (one translational port, Pm1) and MechanicJLink2 (two,
     Pm0 and Pm1) ([Hopsan2026] Mechanic/Rotational/MechanicJLink.hpp, MechanicJLink2.hpp) are this law.
+
+    Option ``link``: ``"crank"`` (the default), the law above; ``"rack"``, a rack on a pinion of pitch radius
+    ``r_link``: :math:`x = x_{link} - r\,\theta`, moving at :math:`-r\dot\theta`, the forces turning it through
+    the constant arm :math:`r` (the crank's law for :math:`\sin\theta \to \theta`, :math:`\cos\theta \to 1`).
+    Hopsan's MechanicRackAndPinion ([Hopsan2026] Mechanic/Rotational/MechanicRackAndPinion.hpp) is this law.
     """
 
     PARAMETERS = {
@@ -284,6 +289,7 @@ class Crank(Component):
         "theta0": Param(0.0, "rad", "initial angle"),
         "omega0": Param(0.0, "rad/s", "initial angular velocity"),
     }
+    OPTIONS = {"link": Option("crank", ("crank", "rack"), "the link's end on a circle (a crank) or a rack on a pinion")}
     STATES = {
         "theta": State("rad", "angle", initial="theta0", nominal=1.0),
         "omega": State("rad/s", "angular velocity", initial="omega0", nominal=1.0),
@@ -309,15 +315,18 @@ class Crank(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         theta, omega = x["theta"], x["omega"]
+        rack = self.option("link") == "rack"
+        travel, arm = (theta, 1.0) if rack else (bk.sin(theta), bk.cos(theta))
         return {
             "theta": theta, "omega": omega,
-            "x": p["x_link"] - p["r_link"] * bk.sin(theta), "v": -p["r_link"] * bk.cos(theta) * omega,
+            "x": p["x_link"] - p["r_link"] * travel, "v": -p["r_link"] * arm * omega,
         }
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         theta, omega = x["theta"], x["omega"]
-        load = u["T"] - (u["F0"] + u["F1"]) * p["r_link"] * bk.cos(theta)
+        arm = 1.0 if self.option("link") == "rack" else bk.cos(theta)
+        load = u["T"] - (u["F0"] + u["F1"]) * p["r_link"] * arm
         load = load + end_stop_force(theta, omega, p["theta_min"], p["theta_max"], p["k_stop_rot"], p["c_stop_rot"])
         return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], friction=p["B_rot"] * omega)}

@@ -84,6 +84,11 @@ class Mapped:
     #: ("comp.u", f)), as Hopsan's blocks that take their input's value when the model is initialised (a rate
     #: limiter's output, a directional valve's spool)
     start_from_input: dict[str, tuple[str, Callable[[float], float]]] = field(default_factory=dict)
+    #: Hopsan power port -> the output giving Hopsan's flow there (out of the component), where more than one of
+    #: its hydroservo components join at the port (a valve's centre edge beside its spool's): the node's flow
+    flow: dict[str, str] = field(default_factory=dict)
+    #: further variables a read port reads (a power sensor's pressure and flow), as ``read``'s entries
+    read_also: dict[str, list[tuple[str, str]]] = field(default_factory=dict)
 
 
 class _Params:
@@ -152,6 +157,7 @@ C_TYPES = frozenset({
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
+    "MechanicSpring", "MechanicTranslationalSpringWithSlack",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -161,7 +167,20 @@ MULTIPORTS: dict[str, frozenset[str]] = {
     "HydraulicMultiPressureSourceC": frozenset({"MP"}),
     "HydraulicCylinderC": frozenset({"P1", "P2"}),
     "HydraulicSpringLoadedPistonC": frozenset({"P1", "P2"}),
+    "MechanicMultiPortTranslationalMass": frozenset({"P1", "P2"}),
+    "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts": frozenset({"P1", "P2"}),
+    "MechanicFixedPositionMultiPort": frozenset({"Pm1"}),
+    "MechanicRotationalInertiaMultiPort": frozenset({"P1", "P2"}),
 }
+
+#: Hopsan's mechanical multiports whose connections each keep their node's start position (an offset from the
+#: first one's): hydroservo's one port has one, so the connections' start positions and velocities must agree
+#: (the builder reads them as the port's start values; :data:`STARTS_DIFFER` marks ones that do not)
+SHARED_STARTS = frozenset({
+    "MechanicMultiPortTranslationalMass", "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts",
+    "MechanicFixedPositionMultiPort", "MechanicRotationalInertiaMultiPort",
+})
+STARTS_DIFFER = "StartsDiffer"
 
 
 def safe_name(name: str) -> str:
@@ -575,7 +594,7 @@ class _Spool:
     initial: dict[str, float]
 
 
-def _spool(n: str, par: _Params, x_vmax: float, command: str, start: float = 0.0) -> _Spool:
+def _spool(n: str, par: _Params, x_vmax: float, command: str, start: float = 0.0, delta_h: float = 1.0) -> _Spool:
     """Hopsan's spool of the flow-control and directional valves ([Hopsan2026] Hydraulic/Valves/FlowControlValves/
     Hydraulic43Valve.hpp and its siblings): a second-order filter 1/(s²/ω_h² + 2δ_h s/ω_h + 1) of the desired
     position ``in`` [m], its output limited to the stroke; the continuous law is SpoolSecondOrder (ω_n = omega_h,
@@ -590,7 +609,7 @@ def _spool(n: str, par: _Params, x_vmax: float, command: str, start: float = 0.0
     """
     from hydroservo.components import Constant, Gain, Saturation, Selector, SpoolSecondOrder
 
-    omega, delta = par("omega_h", 100.0), par("delta_h", 1.0)
+    omega, delta = par("omega_h", 100.0), par("delta_h", delta_h)
     if command != "symmetric" and delta < 1.0:
         par.problems.append(
             f"{par.where}: delta_h = {delta:g} < 1: Hopsan limits this spool to [0, x_vmax], SpoolSecondOrder to "
@@ -624,13 +643,14 @@ _NOTE = {
 }
 
 
-def _valve43(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+def _valve43(hc: HopsanComponent, n: str, par: _Params, delta_h: float = 1.0) -> Mapped:
     from hydroservo.components import FourWayValve
 
     rho = par("rho", 870.0)
     c_v = _edge_coefficient(par, _equal_fractions(par, ("f_pa", "f_pb", "f_at", "f_bt")), rho)
     x_vmax = par("x_vmax", 0.01)
-    spool = _spool(n, par, x_vmax, "symmetric", par("xv", 0.0))  # Hopsan's start value of the spool's position
+    # Hopsan's start value of the spool's position; delta_h: the component file's default damping
+    spool = _spool(n, par, x_vmax, "symmetric", par("xv", 0.0), delta_h)
     valve = FourWayValve(
         n,
         c_v=c_v,
@@ -683,6 +703,57 @@ def _open_centre_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                    (f"{n}_flip.y", f"{n}_centre.xv")]
     m.note = (m.note + "; the centre edge C1-C2: an Absolute, a Saturation and a Gain (its opening from the "
               "spool's) and a TwoWayValve")
+    return m
+
+
+def _valve43_neutral(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/FlowControlValves/Hydraulic43ValveNeutralSupplyToTank.hpp and
+    Hydraulic43ValveNeutralToTank.hpp: the 4/3 valve (Hydraulic43Valve's spool and edges P-A, P-B, A-T, B-T,
+    :func:`_valve43`) whose centre position connects ports: an opening x_c = max(x_vmax - |x_v|/p_c, 0) (p_c, the
+    fraction of the stroke over which the centre is open) of flow coefficient C_q f_c π d √(2/ρ), turbulent as the
+    other edges. NeutralSupplyToTank: that edge from P to T (Hopsan's fifth turbulent flow q_pt); NeutralToTank:
+    one such edge from A to T and one from B to T (Hopsan adds K_c to the A-T and B-T coefficients, two parallel
+    turbulent orifices of the same pressure drop). Each centre edge is a TwoWayValve (``{n}_centre``, or
+    ``{n}_centre_a`` and ``{n}_centre_b``) of overlap x_AB = -x_vmax on -|x_v|/p_c (an Absolute and a Gain of
+    -1/p_c); its own clamp at 0 is Hopsan's max. Hopsan's flow at a port two edges meet is their sum, a Sum
+    ``{n}_Q<port>``. Hopsan's default delta_h is 1 for the first, 10 for the second. p_c <= 0 and x_vmax <= 0 are
+    refused."""
+    from hydroservo.components import Absolute, Gain, Sum, TwoWayValve
+
+    rho, x_vmax, p_c = par("rho", 870.0), par("x_vmax", 0.01), par("p_c", 0.02)
+    if x_vmax <= 0.0 or p_c <= 0.0:
+        par.problems.append(
+            f"{par.where}: x_vmax = {x_vmax:g} m, p_c = {p_c:g}; only a stroke and a centre fraction above 0 are "
+            "supported"
+        )
+        return Mapped()
+    supply = hc.typename == "Hydraulic43ValveNeutralSupplyToTank"
+    m = _valve43(hc, n, par, delta_h=1.0 if supply else 10.0)
+    c_v = _edge_coefficient(par, par("f_c", 0.1), rho)
+    m.components += [Absolute(f"{n}_abs", unit="m"), Gain(f"{n}_centre_x", unit="m", input_unit="m", K=-1.0 / p_c)]
+    m.internal += [(f"{n}_spool.xv", f"{n}_abs.u"), (f"{n}_abs.y", f"{n}_centre_x.u")]
+    edges = {"": ("P", "T")} if supply else {"_a": ("A", "T"), "_b": ("B", "T")}
+    # Hopsan's flow at each port (out of the valve): the FourWayValve's and the centre edges' there, summed
+    flows: dict[str, list[tuple[float, str]]] = {"P": [(-1.0, f"{n}.QS")], "T": [(1.0, f"{n}.QT")],
+                                                  "A": [(1.0, f"{n}.QA")], "B": [(1.0, f"{n}.QB")]}
+    for suffix, (a, b) in edges.items():
+        edge = f"{n}_centre{suffix}"
+        m.components.append(
+            TwoWayValve(edge, c_v=c_v, x_AB=-x_vmax, rho=rho, D_h="1 mm", lambda_crit=10.0)
+        )
+        m.internal += [(f"{n}_centre_x.y", f"{edge}.xv"), (f"{n}.{a}", f"{edge}.A"), (f"{n}.{b}", f"{edge}.B")]
+        flows[a].append((-1.0, f"{edge}.Q"))
+        flows[b].append((1.0, f"{edge}.Q"))
+    for port, terms in flows.items():
+        if len(terms) > 1:
+            total = f"{n}_Q{port}"
+            m.components.append(Sum(total, unit="m^3/s", **{f"gain{i}": g for i, (g, _) in enumerate(terms, 1)}))
+            m.internal += [(q, f"{total}.u{i}") for i, (_, q) in enumerate(terms, 1)]
+            m.flow[f"P{port}"] = f"{total}.y"
+    m.note += (
+        "; the centre " + ("edge P-T" if supply else "edges A-T and B-T")
+        + ": an Absolute and a Gain (the opening from the spool's) and " + ("a TwoWayValve" if supply else "two TwoWayValves")
+    )
     return m
 
 
@@ -1373,6 +1444,101 @@ def _mass_coulomb(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return m
 
 
+def _shared_starts(par: _Params, ports: tuple[str, ...]) -> bool:
+    """Whether each of a mechanical multiport's connections starts at the same position and velocity (hydroservo's
+    one port has one; Hopsan keeps each connection's offset from the first): a problem is noted if not."""
+    differ = [p for p in ports if STARTS_DIFFER in par.node_start.get(p, {})]
+    if differ:
+        par.problems.append(
+            f"{par.where}: the connections to {', '.join(differ)} start at different positions or velocities; "
+            "only connections that start together are supported (hydroservo's port has one position)"
+        )
+    return not differ
+
+
+def _multiport_mass(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicMultiPortTranslationalMass.hpp and
+    MechanicTranslationalMassWithCoulombFrictionAndMultiPorts.hpp: MechanicTranslationalMass's and
+    MechanicTranslationalMassWithCoulombFriction's laws (:func:`_mass`, :func:`_mass_coulomb`; the multiport mass
+    has no spring k) with multiports P1 and P2: Hopsan sums the wave variables and impedances of every connection
+    to a port, that is the forces of all of them act on the mass, as on hydroservo's Mass whose port each joins.
+    Hopsan writes each connection's position as its own start position plus the mass's travel; hydroservo's port
+    has one, so connections that start at different positions or velocities are refused."""
+    if not _shared_starts(par, ("P1", "P2")):
+        return Mapped()
+    if hc.typename == "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts":
+        return _mass_coulomb(hc, n, par)
+    return _mass(hc, n, par, k_spring=0.0)
+
+
+def _pulley(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicPulley.hpp: a movable pulley of mass m at P2 whose rope end is P1:
+    x_1 = -2 x_2, v_1 = -2 v_2, and Hopsan's filter (m s² + (B + 4 Z_x1 + Z_x2) s) x_2 = 2 c_1 - c_2 is, with
+    f_1 = c_1 + Z_x1 v_1 and f_2 = c_2 + Z_x2 v_2, the law m ẍ_2 = 2 f_1 - f_2 - B ẋ_2 (the rope's force
+    doubled). MechanicTranslationalMassWithLever's law with P1 moving twice as far: a Mass with n_lever = 2, starting
+    at minus half P1's start position and velocity, as Hopsan's filters. (Hopsan labels B "Nms/rad"; its law is
+    N s/m.)"""
+    from hydroservo.components import Mass
+
+    if par("m", 1.0) <= 0.0:
+        par.problems.append(f"{par.where}: m = {par('m', 1.0):g} kg; only a mass above 0 is supported")
+        return Mapped()
+    comp = Mass(
+        n, m=par("m", 1.0), B=par("B", 10.0), incline=0.0, n_lever=2.0,
+        x0=-0.5 * par.start("P1", "Position"), v0=-0.5 * par.start("P1", "Velocity"),
+    )
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _fixed_position_multiport(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicFixedPositionMultiPort.hpp: MechanicFixedPosition with a multiport Pm1,
+    each connection standing still at its node's start position, taking the force of what is joined to it: a
+    FixedPosition all of them join (connections that start at different positions are refused)."""
+    from hydroservo.components import FixedPosition
+
+    if not _shared_starts(par, ("Pm1",)):
+        return Mapped()
+    return Mapped([FixedPosition(n, x0=par.start("Pm1", "Position"))], power={"Pm1": f"{n}.P"})
+
+
+def _spring_with_slack(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalSpringWithSlack.hpp: MechanicTranslationalSpring's
+    transmission-line element (it integrates its ends' velocities) while x_1 + x_2 <= 0 (its ends' positions, inward,
+    as its neighbours write them: stretched), and no force (c = Z_c = 0, the integration restarting from 0)
+    otherwise: a rope, f = k min(x_1 + x_2, 0), relaxed where x_1 + x_2 = 0. A Spring with option slack =
+    "slack" and e0 = 0. A start force other than that law's at the start positions (k min(x_1 + x_2, 0)) is
+    refused (Hopsan's integration would keep it as an offset until the rope first goes slack)."""
+    from hydroservo.components import Spring
+
+    k = par("k", 100.0)
+    stretch = par.start("P1", "Position") + par.start("P2", "Position")
+    f0 = k * min(stretch, 0.0)
+    starts = (par.start("P1", "Force"), par.start("P2", "Force"))
+    if k < 0.0 or any(abs(f - f0) > 1e-9 * max(1.0, abs(f0)) for f in starts):
+        par.problems.append(
+            f"{par.where}: k = {k:g} N/m, start forces {starts[0]:g} N and {starts[1]:g} N: only k >= 0 and start "
+            f"forces k min(x_1 + x_2, 0) = {f0:g} N at the start positions are supported"
+        )
+        return Mapped()
+    return Mapped([Spring(n, k_spring=k, e0=0.0, slack="slack")], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _spring_free_length(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicSpring.hpp: a C-type spring (ports Pm1, Pm2) whose wave variables
+    stand for f = Ks (x_m1 + x_m2 - x0), Hopsan's node force (compression positive) from its ends' positions
+    (inward, as Hopsan's Q components write them), x0 the free length (not its start positions, as
+    MechanicTranslationalSpring's); alpha (numerical damping) and eps (drift removal) shape the discretisation
+    and vanish with the step. A Spring with k_spring = Ks relaxed at the extension e0 = -x0 (hydroservo's ends
+    count outward)."""
+    from hydroservo.components import Spring
+
+    k = par("Ks", 100.0)
+    if k < 0.0:
+        par.problems.append(f"{par.where}: Ks = {k:g} N/m; only a stiffness of at least 0 is supported")
+        return Mapped()
+    return Mapped([Spring(n, k_spring=k, e0=-par("x0", 0.0))], power={"Pm1": f"{n}.P1", "Pm2": f"{n}.P2"})
+
+
 def _spring(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Spring
 
@@ -1432,6 +1598,68 @@ def _sensor(variable: str, unit: str) -> Builder:
     return build
 
 
+def _differential_pressure_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sensors/HydraulicDifferentialPressureSensor.hpp: out = p_1 - p_2, its read ports
+    taking no flow: a Sum reading each node's pressure (``{n}_p1``, ``{n}_p2``, as the pressure sensor's) and a
+    Sum of their difference (the atmosphere of Hopsan's absolute pressures cancels)."""
+    from hydroservo.components import Sum
+
+    comps: list[cbase.Component] = [
+        Sum(f"{n}_p1", unit="Pa", gain2=0.0), Sum(f"{n}_p2", unit="Pa", gain2=0.0), Sum(n, unit="Pa"),
+    ]
+    return Mapped(
+        comps, read={"P1": (f"{n}_p1.u1", "Pressure"), "P2": (f"{n}_p2.u1", "Pressure")},
+        outputs={"out": f"{n}.y"}, internal=[(f"{n}_p1.y", f"{n}.u1"), (f"{n}_p2.y", f"{n}.u2")],
+    )
+
+
+def _power_sensor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sensors/HydraulicPowerSensor.hpp: out = p q [W] of its node, Hopsan's absolute
+    pressure times the node's flow, the read port taking no flow: a Sum reading the pressure (``{n}_p``), one the
+    flow (``{n}_q``) and a Product of the two."""
+    from hydroservo.components import Product, Sum
+
+    comps = [Sum(f"{n}_p", unit="Pa", gain2=0.0), Sum(f"{n}_q", unit="m^3/s", gain2=0.0), Product(n)]
+    return Mapped(
+        comps, read={"P1": (f"{n}_p.u1", "Pressure")}, read_also={"P1": [(f"{n}_q.u1", "Flow")]},
+        outputs={"out": f"{n}.y"}, internal=[(f"{n}_p.y", f"{n}.u1"), (f"{n}_q.y", f"{n}.u2")],
+    )
+
+
+def _plug(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicPlugQ.hpp: a Q component of no flow, q = 0, p = c (Hopsan
+    logs p = 0 where c < 0; hydroservo keeps the node's pressure): a FlowSource of 0."""
+    from hydroservo.components import FlowSource
+
+    return Mapped([FlowSource(n, q=0.0)], power={"P1": f"{n}.P"})
+
+
+#: the conductance [m^3/s/Pa] that stands for Hopsan's lossless connectors' ideal connection (the shuttle
+#: valve's open seat's): the nodes' pressures within q/G of each other (17 Pa per L/min), with a time constant
+#: V/(β G) (1e-8 s on a 1e-5 m^3 line) far below anything a circuit does
+_LOSSLESS_G = 1e-6
+
+
+def _lossless_connector(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicLossLessConnector.hpp: q = (c_1 - c_2)/(Z_c1 + Z_c2), the flow
+    that makes p_1 = p_2, an ideal connection of its two C nodes (in the limit of a vanishing step, the two
+    volumes one): a LaminarOrifice of a conductance large enough that the pressures follow each other
+    (:data:`_LOSSLESS_G`). HydraulicLossLessTConnector.hpp: p = Σ(c_i/Z_ci)/Σ(1/Z_ci) at all three ports, the
+    three nodes joined: LaminarOrifices from P1 to P2 (``{n}``) and from P1 to P3 (``{n}_3``), P1's flow the
+    two summed (a Sum ``{n}_Q1``). Hopsan logs a pressure below 0 as 0; hydroservo keeps it."""
+    from hydroservo.components import LaminarOrifice, Sum
+
+    if hc.typename == "HydraulicLosslessConnector":
+        return Mapped([LaminarOrifice(n, G_lam=_LOSSLESS_G)], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+    comps = [LaminarOrifice(n, G_lam=_LOSSLESS_G), LaminarOrifice(f"{n}_3", G_lam=_LOSSLESS_G),
+             Sum(f"{n}_Q1", unit="m^3/s", gain1=-1.0, gain2=-1.0)]
+    return Mapped(
+        comps, power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}_3.B"},
+        internal=[(f"{n}.A", f"{n}_3.A"), (f"{n}.Q", f"{n}_Q1.u1"), (f"{n}_3.Q", f"{n}_Q1.u2")],
+        flow={"P1": f"{n}_Q1.y"},
+    )
+
+
 # -- mechanic, rotational -------------------------------------------------------------------------------------
 
 
@@ -1450,6 +1678,31 @@ def _rotational_inertia(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         theta0=-par.start("P1", "Angle"),
         omega0=-par.start("P1", "AngularVelocity"),
     )
+    a_min, a_max = par("a_min", -1e300), par("a_max", 1e300)
+    if abs(a_min) < 1e299 or abs(a_max) < 1e299:
+        comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
+def _rotational_inertia_multiport(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaMultiPort.hpp: J θ'' = Σt_1 - Σt_2 - B θ' (no
+    spring), the torques of every connection to its multiports P1 and P2 summed (as on the one port of
+    RotationalInertia each joins); its integrator starts at rest at angle 0 whatever the start values, P2 at the
+    angle θ and P1 at P1's and P2's start angles added minus θ; a_min, a_max as stiff stops (as
+    :func:`_rotational_inertia`). A RotationalInertia starting at rest at 0; start angles of P1 and P2 that do not
+    add to 0 (an offset of P1's angle RotationalInertia has not), or connections that start apart, are refused."""
+    from hydroservo.components import RotationalInertia
+
+    if not _shared_starts(par, ("P1", "P2")):
+        return Mapped()
+    offset = par.start("P1", "Angle") + par.start("P2", "Angle")
+    if offset != 0.0:
+        par.problems.append(
+            f"{par.where}: start angles of P1 and P2 that add to {offset:g} rad, not 0, are not supported (Hopsan "
+            "keeps P1 that far from minus P2's angle)"
+        )
+        return Mapped()
+    comp = RotationalInertia(n, J=par("J", 100.0), B_rot=par("B", 10.0), k_rot=0.0, theta0=0.0, omega0=0.0)
     a_min, a_max = par("a_min", -1e300), par("a_max", 1e300)
     if abs(a_min) < 1e299 or abs(a_max) < 1e299:
         comp.set(theta_min=max(a_min, -1e30), theta_max=min(a_max, 1e30), k_stop_rot=1e9, c_stop_rot=1e6)
@@ -1667,6 +1920,26 @@ def _jlink(two: bool) -> Builder:
         return Mapped([comp], power=power)
 
     return build
+
+
+def _rack_and_pinion(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRackAndPinion.hpp: a pinion of inertia J (P2) driving a rack (P1)
+    at the gear ratio omega [m/rad]: its filter (J s + B + ω² Z_x1 + Z_x2) w_2 = ω c_1 - c_2 is, with
+    f_1 = c_1 + Z_x1 v_1, v_1 = -ω w_2 and t_2 = c_2 + Z_x2 w_2, the law J w_2' = ω f_1 - t_2 - B w_2, the rack at
+    x_1 = -ω a_2: MechanicJLink's law on a rack, a Crank with option link = "rack", r_link = omega, x_link = 0.
+    Hopsan's filters start at rest at angle 0 whatever the start values, and so does the Crank. Its spring k (a
+    constant, 0 by default) is not supported, nor omega or J at or below 0."""
+    from hydroservo.components import Crank
+
+    ratio, inertia, k = par("omega", 1.0), par("J", 1.0), par("k", 0.0)
+    if ratio <= 0.0 or inertia <= 0.0 or k != 0.0:
+        par.problems.append(
+            f"{par.where}: omega = {ratio:g} m/rad, J = {inertia:g} kg m^2, k = {k:g} N m/rad: only omega and J above "
+            "0 and k = 0 are supported"
+        )
+        return Mapped()
+    comp = Crank(n, J=inertia, B_rot=par("B", 10.0), r_link=ratio, x_link=0.0, link="rack")
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
 def _mechanic_motor(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -2417,6 +2690,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicFixedDisplacementPump": _fixed_pump,
     "Hydraulic43Valve": _valve43,
     "HydraulicOpenCenterValve": _open_centre_valve,
+    "Hydraulic43ValveNeutralSupplyToTank": _valve43_neutral,
+    "Hydraulic43ValveNeutralToTank": _valve43_neutral,
     "Hydraulic43LoadSensingValve": _valve43_load_sensing,
     "Hydraulic42Valve": _valve42("one-sided", all_edges=False),
     "Hydraulic42Valve2": _valve42("one-sided", all_edges=True),
@@ -2436,10 +2711,21 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPistonMkload": _piston_mkload,
     "HydraulicPressureSensor": _sensor("Pressure", "Pa"),
     "HydraulicFlowSensor": _sensor("Flow", "m^3/s"),
+    "HydraulicDifferentialPressureSensor": _differential_pressure_sensor,
+    "HydraulicPowerSensor": _power_sensor,
+    "HydraulicPlugQ": _plug,
+    "HydraulicLosslessConnector": _lossless_connector,
+    "HydraulicLosslessTConnector": _lossless_connector,
     "MechanicTranslationalMass": _mass,
     "MechanicTranslationalMassWithCoulombFriction": _mass_coulomb,
     "MechanicTranslationalSpring": _spring,
     "MechanicFixedPosition": _fixed_position,
+    "MechanicMultiPortTranslationalMass": _multiport_mass,
+    "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts": _multiport_mass,
+    "MechanicFixedPositionMultiPort": _fixed_position_multiport,
+    "MechanicPulley": _pulley,
+    "MechanicSpring": _spring_free_length,
+    "MechanicTranslationalSpringWithSlack": _spring_with_slack,
     "MechanicForceTransformer": _force_source,
     "MechanicPositionSensor": _sensor("Position", "m"),
     "MechanicSpeedSensor": _sensor("Velocity", "m/s"),
@@ -2457,6 +2743,8 @@ LIBRARY: dict[str, Builder] = {
     "MechanicAngleSensor": _sensor("Angle", "rad"),
     "MechanicAngularVelocitySensor": _sensor("AngularVelocity", "rad/s"),
     "MechanicTorqueSensor": _sensor("Torque", "N*m"),
+    "MechanicRotationalInertiaMultiPort": _rotational_inertia_multiport,
+    "MechanicRackAndPinion": _rack_and_pinion,
     "MechanicFreeLengthWall": _free_length_wall,
     "MechanicRotationalInertiaWithCoulombFriction": _rotational_inertia_coulomb,
     "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling
@@ -2727,14 +3015,16 @@ def import_hopsan(path: str | Path) -> HopsanImport:
             system.connect(*dict.fromkeys(refs))
         node = _node_variables(system, refs, port_of)
         for c, p in node_ends:
+            if p in mapped[c].flow and _port_kind(mapped[c], p) == "power" and "Flow" in node:
+                node["Flow"] = Var(1.0, mapped[c].flow[p])
+        for c, p in node_ends:
             for var, value in node.items():
                 if (var == "Flow" and (c, p) in multiports) or f"{_alias(c)}.{p}.{var}" in aliases:
                     continue  # a multiport's flow is one per connection: Hopsan logs none of them by the port
                 aliases[f"{_alias(c)}.{p}.{var}"] = value
                 hopsan_names[f"{_alias(c)}.{p}.{var}"] = hopsan(c, p, var)
             read = mapped[c].read.get(p)
-            if read is not None:
-                target, variable = read
+            for target, variable in ([read] if read is not None else []) + mapped[c].read_also.get(p, []):
                 if variable not in node:
                     problems.append(f"{source}: {c}.{p} reads {variable}, which the node it is joined to has not")
                     continue
@@ -2843,6 +3133,7 @@ def _node_starts(
         return 0 if hc.cqs == "C" or hc.typename in C_TYPES else 1
 
     out: dict[tuple[str, str], dict[str, float]] = {}
+    shared: dict[tuple[str, str], list[dict[str, float]]] = {}
     for group in groups:
         values: dict[str, float] = {}
         for comp, port in sorted(group, key=rank, reverse=True):
@@ -2856,6 +3147,10 @@ def _node_starts(
         for end in group:
             if end not in multiports:
                 out[end] = values
+            elif end[0] in by_name and by_name[end[0]].typename in SHARED_STARTS:
+                shared.setdefault(end, []).append({k: v for k, v in values.items() if k in ("Position", "Velocity", "Angle", "AngularVelocity")})
+    for end, each in shared.items():  # a mechanical multiport: one start for all its connections, if they agree
+        out[end] = each[0] if all(v == each[0] for v in each) else {STARTS_DIFFER: 1.0}
     for hc in model.components:  # Q components that write their own start positions (a node's values shared)
         written = WRITTEN_STARTS.get(hc.typename)
         if written is not None:

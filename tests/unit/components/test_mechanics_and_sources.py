@@ -123,6 +123,26 @@ def test_velocity_source_moves_its_node() -> None:
     assert r["k.F"][1] == pytest.approx(500.0 * (-0.21 + 0.01))  # compressed by 0.2 m: tension -100 N
 
 
+def test_a_spring_with_slack_pulls_but_never_pushes() -> None:
+    """Spring with option slack = "slack": tension k max(x1 + x2 - e0, 0). A velocity source at -0.1 m moving at
+    0.2 m/s (e0 = 0, end 2 fixed at 0) stretches it by 0.1 - 0.2 t (its end 1 faces the source): pulling with
+    k (0.1 - 0.2 t) until t = 0.5 s, then slack (no force); the plain spring then pushes."""
+    r = {}
+    for slack in ("slack", "none"):
+        s = System(f"rope {slack}")
+        s.add(c.VelocitySource("src", x0=-0.1))
+        s.add(c.Constant("v", unit="m/s", value=0.2))
+        s.add(c.Spring("k", k_spring=500.0, slack=slack))
+        s.add(c.FixedPosition("g"))
+        s.connect("v.y", "src.u")
+        s.connect("src.P", "k.P1")
+        s.connect("k.P2", "g.P")
+        r[slack] = s.simulate(t_eval=[0.0, 0.25, 0.5, 1.0])
+    assert list(r["slack"]["k.F"]) == pytest.approx([50.0, 25.0, 0.0, 0.0], abs=1e-9)
+    assert list(r["slack"]["k.F1"]) == pytest.approx([-50.0, -25.0, 0.0, 0.0], abs=1e-9)
+    assert list(r["none"]["k.F"]) == pytest.approx([50.0, 25.0, 0.0, -50.0], abs=1e-9)
+
+
 def test_arithmetic_blocks() -> None:
     s = System("math")
     s.add(c.Constant("a", value=-3.0))

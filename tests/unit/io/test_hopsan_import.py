@@ -533,6 +533,60 @@ def test_hopsans_open_centre_valve_is_the_43_valve_with_a_centre_edge_closing_to
         read_hopsan(path)
 
 
+def test_hopsans_43_valves_with_a_neutral_to_tank_centre_add_edges_closing_within_p_c_of_the_stroke(
+    tmp_path: Path,
+) -> None:
+    """[Hopsan2026] FlowControlValves/Hydraulic43ValveNeutralSupplyToTank.hpp and Hydraulic43ValveNeutralToTank.hpp,
+    each case held 0.3 s at a command: the 4/3 valve's edges and, open at the centre by x_c = max(x_vmax - |x_v|/p_c,
+    0), an edge P-T (SupplyToTank) or the edges A-T and B-T (NeutralToTank), each C_q f_c π d x_c √(2/ρ) √Δp. A
+    p_c of 0 is refused."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    p_tr = transition_pressure(1e-3, 870.0, 32e-6, 10.0)
+
+    def q(f: float, x: float, dp: float) -> float:
+        return 0.67 * f * np.pi * 0.01 * max(x, 0.0) * np.sqrt(2.0 / 870.0) * dp / (dp * dp + p_tr * p_tr) ** 0.25
+
+    v = _value
+    pp, pt, pa, pb = 100e5, 1e5, 60e5, 30e5
+    ports = {"PP": pp, "PT": pt, "PA": pa, "PB": pb}
+    cases = [  # type, p_c, command, x_v, centre opening
+        ("Hydraulic43ValveNeutralSupplyToTank", "0.5", "0.0", 0.0, 0.01),  # at rest the centre is open by x_vmax
+        ("Hydraulic43ValveNeutralSupplyToTank", "0.5", "-0.002", -0.002, 0.006),
+        ("Hydraulic43ValveNeutralSupplyToTank", "0.5", "0.007", 0.007, 0.0),  # closed from |x_v| = p_c x_vmax on
+        ("Hydraulic43ValveNeutralToTank", "0.25", "0.001", 0.001, 0.006),
+        ("Hydraulic43ValveNeutralToTank", "0.25", "-0.02", -0.01, 0.0),  # the command limited to the stroke
+    ]
+    for i, (kind, p_c, command, x, centre) in enumerate(cases):
+        params = {"p_c#Value": v(p_c), "f_c#Value": v("0.3"), "delta_h#Value": v("1")}
+        _, components, connections = _valve_circuit(kind, ports, params, command)
+        path = tmp_path / f"neutral{i}.hmf"
+        path.write_text(_hmf(components, connections), encoding="utf-8")
+        imp = import_hopsan(path)
+        assert dict((h, t) for h, t, _ in imp.mapping)["V"] == kind
+        r = imp.system.simulate(t_eval=[0.0, 0.3], accuracy=1e-8)
+        lap = -1e-6
+        q_pa, q_bt = q(1.0, x - lap, pp - pa), q(1.0, x - lap, pb - pt)
+        q_pb, q_at = q(1.0, -x - lap, pp - pb), q(1.0, -x - lap, pa - pt)
+        if kind.endswith("SupplyToTank"):
+            q_pt = q(0.3, centre, pp - pt)
+        else:
+            q_pt = 0.0
+            q_at += q(0.3, centre, pa - pt)
+            q_bt += q(0.3, centre, pb - pt)
+        expected = {
+            "V.xv.Value": x, "V.PA.Flow": q_pa - q_at, "V.PB.Flow": q_pb - q_bt, "V.PT.Flow": q_at + q_bt + q_pt,
+            "V.PP.Flow": -q_pa - q_pb - q_pt,
+        }
+        for alias, value in expected.items():
+            assert float(r[alias][-1]) == pytest.approx(value, rel=1e-6, abs=1e-12), (kind, command, alias)
+    _, components, connections = _valve_circuit("Hydraulic43ValveNeutralToTank", ports, {"p_c#Value": v("0")}, "0")
+    path = tmp_path / "neutral_refused.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(Hydraulic43ValveNeutralToTank\): x_vmax = 0.01 m, p_c = 0; only"):
+        read_hopsan(path)
+
+
 def test_hopsans_valve33_is_a_three_way_valve_with_its_underlap_and_laminar_onset(tmp_path: Path) -> None:
     """[Hopsan2026] Special/HydraulicValve33.hpp: the position xv is the input (no spool), limited to ±Xvmax;
     each edge passes Cq √(2/ρ) π Fr Sd (Xap0 ± xv) Δp/(Δp² + plam²)^(1/4). A valve whose Xat0 is not its Xap0
@@ -1188,6 +1242,230 @@ def test_a_mass_with_coulomb_friction_maps_to_the_stribeck_law_and_a_positioned_
     np.testing.assert_allclose(r["VS.Pm1.Position"], 0.25)
     np.testing.assert_allclose(r["VS.Pm1.Velocity"], 0.1)
     np.testing.assert_allclose(r["K.P1.Force"], 1000.0 * 0.25, rtol=1e-9)  # Hopsan's k (x1 + x2), ends outward
+
+
+def test_multiport_masses_sum_the_forces_of_every_connection_and_a_pulley_doubles_its_ropes(tmp_path: Path) -> None:
+    """[Hopsan2026] Mechanic/Linear/MechanicMultiPortTranslationalMass.hpp, MechanicTranslationalMassWithCoulomb-
+    FrictionAndMultiPorts.hpp, MechanicPulley.hpp, MechanicFixedPositionMultiPort.hpp, each against its closed
+    form: two forces of 30 N and 50 N on a multiport mass's P1 (m 10 kg, B 20 N s/m) add, v = 80/B (1 - exp(-B t/m));
+    on the friction multiport mass (f_s 50 N, f_k 45 N, b 10 N s/m) 2 x 20 N keep it stuck and 2 x 40 N slide it
+    against f_k, v = 35/b (1 - exp(-b t/m)); a pulley (m 1 kg, B 10 N s/m) pulled at P1 by 100 N, P2 free, moves at
+    v_2 = 2 F/B (1 - exp(-B t/m)), P1 twice as fast the other way; another held at P2 by a spring of 1000 N/m on a
+    multiport fixed point comes to rest with the spring's force 2 F and P1 at -2 x_2, while a second spring on that
+    fixed point, pushed by 50 N, is compressed by 50 N / 2000 N/m."""
+    v = _value
+    components = [
+        ("MechanicMultiPortTranslationalMass", "M", {"m#Value": v("10"), "B#Value": v("20")}),
+        ("MechanicForceTransformer", "Fa", {"F#Value": v("30")}),
+        ("MechanicForceTransformer", "Fb", {"F#Value": v("50")}),
+        ("MechanicTranslationalMassWithCoulombFrictionAndMultiPorts", "Stuck",
+         {"m": v("10"), "b#Value": v("10"), "f_s#Value": v("50"), "f_k#Value": v("45")}),
+        ("MechanicTranslationalMassWithCoulombFrictionAndMultiPorts", "Slides",
+         {"m": v("10"), "b#Value": v("10"), "f_s#Value": v("50"), "f_k#Value": v("45")}),
+        ("MechanicForceTransformer", "S1", {"F#Value": v("20")}),
+        ("MechanicForceTransformer", "S2", {"F#Value": v("20")}),
+        ("MechanicForceTransformer", "L1", {"F#Value": v("40")}),
+        ("MechanicForceTransformer", "L2", {"F#Value": v("40")}),
+        ("MechanicPulley", "Free", {"m": v("1"), "B#Value": v("10")}),
+        ("MechanicForceTransformer", "Rope", {"F#Value": v("100")}),
+        ("MechanicPulley", "Held", {"m": v("1"), "B#Value": v("10")}),
+        ("MechanicForceTransformer", "Rope2", {"F#Value": v("100")}),
+        ("MechanicTranslationalSpring", "K", {"k#Value": v("1000")}),
+        ("MechanicFixedPositionMultiPort", "G", {}),
+        ("MechanicTranslationalSpring", "K2", {"k#Value": v("2000")}),
+        ("MechanicTranslationalMass", "M2", {"m#Value": v("1"), "B#Value": v("100"), "k#Value": v("0")}),
+        ("MechanicForceTransformer", "Push", {"F#Value": v("50")}),
+    ]
+    connections = [
+        ("Fa.P1", "M.P1"), ("Fb.P1", "M.P1"), ("S1.P1", "Stuck.P1"), ("S2.P1", "Stuck.P1"),
+        ("L1.P1", "Slides.P1"), ("L2.P1", "Slides.P1"), ("Rope.P1", "Free.P1"),
+        ("Rope2.P1", "Held.P1"), ("Held.P2", "K.P1"), ("K.P2", "G.Pm1"),
+        ("Push.P1", "M2.P1"), ("M2.P2", "K2.P1"), ("K2.P2", "G.Pm1"),
+    ]
+    path = tmp_path / "multiport.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    mapped = dict((h, t) for h, t, _ in imp.mapping)
+    assert mapped["Held"] == "MechanicPulley" and mapped["G"] == "MechanicFixedPositionMultiPort"
+    t = np.array([0.0, 0.1, 0.3, 3.0])
+    r = imp.system.simulate(t_eval=t, accuracy=1e-7)
+    # Hopsan's force at P1 pushes the mass towards +x at P2: P1 moves outward at -v (P2 is free: not logged)
+    np.testing.assert_allclose(r["M.P1.Velocity"], -4.0 * (1.0 - np.exp(-2.0 * t)), atol=1e-5)
+    assert np.max(np.abs(r["Stuck.P1.Velocity"])) < 3e-5  # creeping at most at about v_reg
+    np.testing.assert_allclose(r["Slides.P1.Velocity"], -3.5 * (1.0 - np.exp(-t)), atol=2e-3)
+    np.testing.assert_allclose(r["Free.P1.Velocity"], -40.0 * (1.0 - np.exp(-10.0 * t)), atol=1e-4)
+    np.testing.assert_allclose(r["Free.x"], 2.0 * (10.0 * t - 1.0 + np.exp(-10.0 * t)), atol=1e-5)  # P2's
+    assert float(r["K.P1.Force"][-1]) == pytest.approx(200.0, rel=1e-6)
+    assert float(r["Held.P2.Position"][-1]) == pytest.approx(0.2, rel=1e-6)
+    assert float(r["Held.P1.Position"][-1]) == pytest.approx(-0.4, rel=1e-6)
+    assert float(r["K2.P1.Force"][-1]) == pytest.approx(50.0, rel=1e-6)
+    assert float(r["M2.P2.Position"][-1]) == pytest.approx(0.025, rel=1e-6)
+    np.testing.assert_allclose(r["G.Pm1.Velocity"], 0.0)
+    # connections to a multiport that start at different positions are refused (hydroservo's port has one)
+    components[13] = ("MechanicTranslationalSpring", "K", {"k#Value": v("1000"), "P2#Position": v("0.1", "m")})
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"G \(MechanicFixedPositionMultiPort\): the connections to Pm1 start at "
+                                             r"different positions"):
+        read_hopsan(path)
+
+
+def test_hopsans_spring_with_a_free_length_pushes_from_where_it_is_relaxed(tmp_path: Path) -> None:
+    """[Hopsan2026] Mechanic/Linear/MechanicSpring.hpp: f = Ks (x_m1 + x_m2 - x0), Hopsan's node force from its
+    ends' positions whatever they start at: a mass (m 1 kg, B 60 N s/m) between a force of 100 N and such a spring
+    (Ks 1000 N/m, x0 0.05 m) on a fixed point comes to rest at x = x0 + F/Ks = 0.15 m; at the start, both ends at
+    0, the spring pulls with Ks x0 = 50 N (Hopsan's force -50 N)."""
+    v = _value
+    components = [
+        ("MechanicForceTransformer", "F", {"F#Value": v("100")}),
+        ("MechanicTranslationalMass", "M", {"m#Value": v("1"), "B#Value": v("60"), "k#Value": v("0")}),
+        ("MechanicSpring", "K", {"Ks#Value": v("1000"), "x0#Value": v("0.05")}),
+        ("MechanicFixedPosition", "G", {}),
+    ]
+    path = tmp_path / "spring.hmf"
+    path.write_text(_hmf(components, [("F.P1", "M.P1"), ("M.P2", "K.Pm1"), ("K.Pm2", "G.Pm1")]), encoding="utf-8")
+    r = import_hopsan(path).system.simulate(t_eval=[0.0, 1.0], accuracy=1e-9)
+    assert float(r["K.Pm1.Force"][0]) == pytest.approx(-50.0, rel=1e-9)
+    assert float(r["M.P2.Position"][-1]) == pytest.approx(0.15, rel=1e-6)
+    assert float(r["K.Pm1.Force"][-1]) == pytest.approx(100.0, rel=1e-6)
+
+
+def test_hopsans_sensors_plug_and_lossless_connectors_against_their_laws(tmp_path: Path) -> None:
+    """[Hopsan2026] Hydraulic/Sensors/HydraulicDifferentialPressureSensor.hpp (p_1 - p_2), HydraulicPowerSensor.hpp
+    (p q, Hopsan's absolute pressure times its node's flow), Hydraulic/Sources&Sinks/HydraulicPlugQ.hpp (q = 0),
+    Hydraulic/Restrictors/HydraulicLossLessConnector.hpp and HydraulicLossLessTConnector.hpp (their nodes joined,
+    p equal at every port, up to q/G = q/1e-6 Pa): a 50 bar (absolute) source drains through laminar orifices
+    (Kc = 1e-11 and 2e-11 m^3/s/Pa) to a tank, directly, through a lossless connector and a volume, and through a T
+    connector and two volumes; a volume closed by a plug comes to the source's pressure; at rest each flow is
+    Kc (p - p_tank)."""
+    v = _value
+    ps, pt = 50e5, 1e5
+    components = [
+        ("HydraulicPressureSourceC", "S", {"p#Value": v(repr(ps), "Pa")}),
+        ("HydraulicTankC", "T", {}),
+        ("HydraulicLaminarOrifice", "O", {"Kc#Value": v("1e-11")}),
+        ("HydraulicDifferentialPressureSensor", "DP", {}),
+        ("HydraulicPowerSensor", "W", {}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v(repr(ps), "Pa")}),
+        ("HydraulicLaminarOrifice", "O2", {"Kc#Value": v("1e-11")}),
+        ("HydraulicVolume", "V", {}),
+        ("HydraulicPlugQ", "Plug", {}),
+        ("HydraulicPressureSourceC", "S3", {"p#Value": v(repr(ps), "Pa")}),
+        ("HydraulicLosslessConnector", "L", {}),
+        ("HydraulicVolume", "VL", {}),
+        ("HydraulicLaminarOrifice", "OL", {"Kc#Value": v("1e-11")}),
+        ("HydraulicTankC", "TL", {}),
+        ("HydraulicPressureSourceC", "S4", {"p#Value": v(repr(ps), "Pa")}),
+        ("HydraulicLosslessTConnector", "LT", {}),
+        ("HydraulicVolume", "V2", {}),
+        ("HydraulicVolume", "V3", {}),
+        ("HydraulicLaminarOrifice", "O3", {"Kc#Value": v("1e-11")}),
+        ("HydraulicLaminarOrifice", "O4", {"Kc#Value": v("2e-11")}),
+        ("HydraulicTankC", "T3", {}),
+        ("HydraulicTankC", "T4", {}),
+    ]
+    connections = [
+        ("S.P1", "O.P1"), ("O.P2", "T.P1"), ("DP.P1", "O.P1"), ("DP.P2", "O.P2"), ("W.P1", "O.P1"),
+        ("S2.P1", "O2.P1"), ("O2.P2", "V.P1"), ("V.P2", "Plug.P1"),
+        ("S3.P1", "L.P1"), ("L.P2", "VL.P1"), ("VL.P2", "OL.P1"), ("OL.P2", "TL.P1"),
+        ("S4.P1", "LT.P1"), ("LT.P2", "V2.P1"), ("LT.P3", "V3.P1"), ("V2.P2", "O3.P1"), ("V3.P2", "O4.P1"),
+        ("O3.P2", "T3.P1"), ("O4.P2", "T4.P1"),
+    ]
+    path = tmp_path / "sensors.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = import_hopsan(path).system.simulate(t_eval=[0.0, 3.0], accuracy=1e-9)
+    q = 1e-11 * (ps - pt)
+    assert float(r["DP.out.Value"][-1]) == pytest.approx(ps - pt, rel=1e-9)
+    assert float(r["W.out.Value"][-1]) == pytest.approx(ps * -q, rel=1e-9)  # the orifice takes q from S's node
+    assert float(r["Plug.P1.Flow"][-1]) == 0.0
+    assert float(r["V.P2.Pressure"][-1]) == pytest.approx(ps, rel=1e-6)
+    # the lossless connectors' nodes at the source's pressure, within q/G
+    assert abs(float(r["VL.P1.Pressure"][-1]) - ps) < 1.01 * q / 1e-6
+    assert float(r["L.P2.Flow"][-1]) == pytest.approx(q, rel=1e-4)
+    assert float(r["L.P1.Flow"][-1]) == pytest.approx(-q, rel=1e-4)
+    assert abs(float(r["V2.P1.Pressure"][-1]) - ps) < 3.1 * q / 1e-6
+    assert float(r["LT.P2.Flow"][-1]) == pytest.approx(q, rel=1e-4)
+    assert float(r["LT.P3.Flow"][-1]) == pytest.approx(2.0 * q, rel=1e-4)
+    assert float(r["LT.P1.Flow"][-1]) == pytest.approx(-3.0 * q, rel=1e-4)
+
+
+def test_a_multiport_rotational_inertia_sums_the_torques_of_its_connections(tmp_path: Path) -> None:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaMultiPort.hpp: J θ'' = Σt_1 - Σt_2 - B θ', from
+    rest at 0: torques of 3 and 5 N m on P1 (J 2 kg m², B 4 N m s/rad, P2 free) turn P1 at
+    -(8/B)(1 - exp(-B t/J)), its angle the integral; start angles of P1 and P2 that do not add to 0 are refused."""
+    v = _value
+    components = [
+        ("MechanicRotationalInertiaMultiPort", "J", {"J#Value": v("2"), "B#Value": v("4")}),
+        ("MechanicTorqueTransformer", "Ta", {"T#Value": v("3")}),
+        ("MechanicTorqueTransformer", "Tb", {"T#Value": v("5")}),
+    ]
+    connections = [("Ta.P1", "J.P1"), ("Tb.P1", "J.P1")]
+    path = tmp_path / "inertia.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    t = np.array([0.0, 0.2, 0.5, 1.0])
+    r = import_hopsan(path).system.simulate(t_eval=t, accuracy=1e-9)
+    np.testing.assert_allclose(r["J.P1.AngularVelocity"], -2.0 * (1.0 - np.exp(-2.0 * t)), atol=1e-7)
+    np.testing.assert_allclose(r["J.P1.Angle"], -2.0 * t + (1.0 - np.exp(-2.0 * t)), atol=1e-7)
+    for i in (1, 2):
+        components[i][2]["P1#Angle"] = v("0.3", "rad")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"J \(MechanicRotationalInertiaMultiPort\): start angles of P1 and P2 "
+                                             r"that add to 0.3 rad"):
+        read_hopsan(path)
+
+
+def test_hopsans_spring_with_slack_pulls_while_stretched_and_goes_slack(tmp_path: Path) -> None:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalSpringWithSlack.hpp: f = k (x_1 + x_2) while x_1 + x_2 <= 0
+    (its ends' positions inward: stretched), else 0. An end moved by a velocity transformer at -0.2 m/s (the other
+    fixed) pulls with k (-0.2 t); one moved at +0.2 m/s leaves it slack (the plain spring pushes: k 0.2 t). A start
+    force the law does not give at the start positions is refused."""
+    v = _value
+    components = [
+        ("MechanicVelocityTransformer", "Out", {"v#Value": v("-0.2")}),
+        ("MechanicTranslationalSpringWithSlack", "Rope", {"k#Value": v("1000")}),
+        ("MechanicFixedPosition", "G", {}),
+        ("MechanicVelocityTransformer", "In", {"v#Value": v("0.2")}),
+        ("MechanicTranslationalSpringWithSlack", "Slack", {"k#Value": v("1000")}),
+        ("MechanicTranslationalSpring", "Plain", {"k#Value": v("1000")}),
+        ("MechanicFixedPosition", "G2", {}),
+        ("MechanicVelocityTransformer", "In2", {"v#Value": v("0.2")}),
+        ("MechanicFixedPosition", "G3", {}),
+    ]
+    connections = [("Out.Pm1", "Rope.P1"), ("Rope.P2", "G.Pm1"), ("In.Pm1", "Slack.P1"), ("Slack.P2", "G2.Pm1"),
+                   ("In2.Pm1", "Plain.P1"), ("Plain.P2", "G3.Pm1")]
+    path = tmp_path / "slack.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    t = np.array([0.0, 0.5, 1.0])
+    r = import_hopsan(path).system.simulate(t_eval=t, accuracy=1e-9)
+    np.testing.assert_allclose(r["Rope.P1.Force"], -200.0 * t, atol=1e-9)
+    np.testing.assert_allclose(r["Slack.P1.Force"], 0.0, atol=1e-9)
+    np.testing.assert_allclose(r["Plain.P1.Force"], 200.0 * t, atol=1e-9)
+    components[1] = ("MechanicTranslationalSpringWithSlack", "Rope", {"k#Value": v("1000"), "P1#Force": v("5", "N"),
+                                                                      "P2#Force": v("5", "N")})
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"Rope \(MechanicTranslationalSpringWithSlack\): k = 1000 N/m, start "
+                                             r"forces 5 N and 5 N"):
+        read_hopsan(path)
+
+
+def test_hopsans_rack_and_pinion_turns_its_pinion_through_the_gear_ratio(tmp_path: Path) -> None:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRackAndPinion.hpp: J w' = omega f_1 - t_2 - B w, the rack at
+    -omega times the angle: 10 N on the rack (omega 0.2 m/rad, J 0.5 kg m², B 4 N m s/rad, the pinion's port free)
+    moves it at -omega w = -0.1 (1 - exp(-8 t)) outward; a spring k other than 0 is refused."""
+    v = _value
+    components = [
+        ("MechanicRackAndPinion", "RP", {"omega#Value": v("0.2"), "J#Value": v("0.5"), "B#Value": v("4")}),
+        ("MechanicForceTransformer", "F", {"F#Value": v("10")}),
+    ]
+    path = tmp_path / "rack.hmf"
+    path.write_text(_hmf(components, [("F.P1", "RP.P1")]), encoding="utf-8")
+    t = np.array([0.0, 0.1, 0.5, 2.0])
+    r = import_hopsan(path).system.simulate(t_eval=t, accuracy=1e-9)
+    np.testing.assert_allclose(r["RP.P1.Velocity"], -0.1 * (1.0 - np.exp(-8.0 * t)), atol=1e-8)
+    np.testing.assert_allclose(r["RP.P1.Position"], -0.1 * (t - (1.0 - np.exp(-8.0 * t)) / 8.0), atol=1e-8)
+    components[0] = ("MechanicRackAndPinion", "RP", {"omega#Value": v("0.2"), "k": v("3")})
+    path.write_text(_hmf(components, [("F.P1", "RP.P1")]), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"RP \(MechanicRackAndPinion\): omega = 0.2 m/rad, J = 1 kg m\^2, k = 3"):
+        read_hopsan(path)
 
 
 def test_blocks_that_start_at_their_input_take_the_value_driving_it_at_the_start(tmp_path: Path) -> None:
