@@ -1283,8 +1283,9 @@ def _shuttle_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _check_valve_with_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Restrictors/HydraulicCheckValveWithOrifice.hpp: q = K_s √(p_1 - p_2) forwards and
     K_r √ backwards (turbulent both ways): an Orifice of the smaller coefficient beside a seat CheckValve of the
-    difference, facing the way of the larger (``{n}_orifice`` and ``{n}``)."""
-    from hydroservo.components import CheckValve, Orifice
+    difference, facing the way of the larger (``{n}_orifice`` and ``{n}``); the flows at P1 and P2 their sum
+    (``{n}_Q1``, ``{n}_Q2``)."""
+    from hydroservo.components import CheckValve, Orifice, Sum
 
     k_s, k_r = abs(par("K_s", 5e-7)), abs(par("K_r", 5e-9))
     forward = k_s >= k_r
@@ -1292,8 +1293,15 @@ def _check_valve_with_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapp
     bore = _check_bore(min(k_s, k_r))
     orifice = Orifice(f"{n}_orifice", d=bore["d"], Cd=_CHECK_CD, rho=_CHECK_RHO, lambda_crit=10.0)
     a, b = ("A", "B") if forward else ("B", "A")
-    return Mapped([check, orifice], power={"P1": f"{n}.{a}", "P2": f"{n}.{b}"},
-                  internal=[(f"{n}.{a}", f"{n}_orifice.A"), (f"{n}.{b}", f"{n}_orifice.B")])
+    sign = 1.0 if forward else -1.0  # the check valve's Q runs from P1 to P2, or back
+    flows = [Sum(f"{n}_Q1", unit="m^3/s", gain1=-sign, gain2=-1.0), Sum(f"{n}_Q2", unit="m^3/s", gain1=sign, gain2=1.0)]
+    return Mapped(
+        [check, orifice, *flows],
+        power={"P1": f"{n}.{a}", "P2": f"{n}.{b}"},
+        internal=[(f"{n}.{a}", f"{n}_orifice.A"), (f"{n}.{b}", f"{n}_orifice.B"), (f"{n}.Q", f"{n}_Q1.u1"),
+                  (f"{n}_orifice.Q", f"{n}_Q1.u2"), (f"{n}.Q", f"{n}_Q2.u1"), (f"{n}_orifice.Q", f"{n}_Q2.u2")],
+        flow={"P1": f"{n}_Q1.y", "P2": f"{n}_Q2.y"},  # Hopsan's flows out of the component: the two summed
+    )
 
 
 def _pilot_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:

@@ -1819,8 +1819,10 @@ def test_hopsans_preloaded_orificed_and_pilot_closable_check_valves(tmp_path: Pa
         path = tmp_path / "checks.hmf"
         path.write_text(_hmf(components, connections), encoding="utf-8")
         r = import_hopsan(path).system.simulate(t_eval=[0.0, 0.1])
-        return {k: float(r[f"{k}.Q"][-1]) for k in ("PL", "PC")} | {
-            "WO": float(r["WO.Q"][-1] + r["WO_orifice.Q"][-1])}
+        total = float(r["WO.Q"][-1] + r["WO_orifice.Q"][-1])
+        # Hopsan's flows at the ports, out of the component: the seat's and the orifice's together
+        assert float(r["WO_Q1.y"][-1]) == pytest.approx(-total) and float(r["WO_Q2.y"][-1]) == pytest.approx(total)
+        return {k: float(r[f"{k}.Q"][-1]) for k in ("PL", "PC")} | {"WO": total}
 
     f = flows(2e6, 1e6, 5e5)  # forwards 1 MPa: over the pre-load; the pilot (0.5 MPa) below the drop
     assert f["PL"] == pytest.approx(4e-7 * 1e3, rel=1e-6)
