@@ -1127,6 +1127,91 @@ def test_hopsans_rounding_comparison_logic_blocks_and_latch_map_with_their_ports
     np.testing.assert_allclose(r["Latch.notQstate.Value"], (u > 0.5).astype(float), atol=1e-9)
 
 
+def test_hopsans_max_min_sub_not_and_xor_read_their_ports_and_multiports(tmp_path: Path) -> None:
+    """SignalMax and SignalMin: the largest and smallest of the signals joining 'in' (three: chained; one passes
+    on; none is 0); SignalSub: sum(insum) - sum(insub) (either may be empty); SignalNot: in <= 0.5; SignalXor:
+    in1 > 0.5 or in2 > 0.5, not both. On a ramp u from -2 to 2, its negative and constants 0.5 and 1."""
+    v = _value
+    ramp = {"y_0#Value": v("-2"), "y_A#Value": v("4"), "t_start#Value": v("0"), "t_end#Value": v("4")}
+    components = [
+        ("SignalRamp", "Ramp", ramp), ("SignalGain", "Neg", {"k#Value": v("-1")}),
+        ("SignalConstant", "A", {"y#Value": v("0.5")}), ("SignalConstant", "B", {"y#Value": v("1")}),
+        ("SignalMax", "Max", {}), ("SignalMin", "Min", {}), ("SignalMax", "Max1", {}), ("SignalMin", "Min0", {}),
+        ("SignalSub", "Sub", {}), ("SignalSub", "Sub0", {}), ("SignalNot", "Not", {}), ("SignalXor", "Xor", {}),
+    ]
+    connections = [("Ramp.out", "Neg.in"), ("Ramp.out", "Max.in"), ("Neg.out", "Max.in"), ("A.y", "Max.in"),
+                   ("Ramp.out", "Min.in"), ("A.y", "Min.in"), ("Ramp.out", "Max1.in"),
+                   ("Ramp.out", "Sub.insum"), ("B.y", "Sub.insum"), ("A.y", "Sub.insub"), ("Neg.out", "Sub.insub"),
+                   ("A.y", "Sub0.insub"), ("Ramp.out", "Not.in"), ("Ramp.out", "Xor.in1"), ("Neg.out", "Xor.in2")]
+    path = tmp_path / "arith.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["Max"] == "2 Functions (max) chained (Max, ...)" and kinds["Min"] == "Function Min"
+    assert kinds["Max1"] == "Gain Max1" and kinds["Min0"] == "Constant Min0" and kinds["Not"] == "Function Not"
+    t = np.array([0.0, 0.5, 1.8, 2.25, 3.0, 3.9])
+    u = t - 2.0
+    r = imp.system.simulate(t_eval=t)
+    np.testing.assert_allclose(r["Max.out.Value"], np.maximum(np.abs(u), 0.5), atol=1e-12)
+    np.testing.assert_allclose(r["Min.out.Value"], np.minimum(u, 0.5), atol=1e-12)
+    np.testing.assert_allclose(r["Max1.out.Value"], u, atol=1e-12)
+    np.testing.assert_array_equal(r["Min0.out.Value"], np.zeros_like(u))
+    np.testing.assert_allclose(r["Sub.out.Value"], u + 1.0 - 0.5 + u, atol=1e-12)
+    np.testing.assert_allclose(r["Sub0.out.Value"], np.full_like(u, -0.5), atol=1e-12)
+    np.testing.assert_array_equal(r["Not.out.Value"], (u <= 0.5).astype(float))
+    np.testing.assert_array_equal(r["Xor.out.Value"], (np.abs(u) > 0.5).astype(float))
+
+
+def test_hopsans_second_order_filter_and_high_pass_answer_a_step_with_their_continuous_laws(tmp_path: Path) -> None:
+    """SignalSecondOrderFilter k (s^2/w1^2 + 2 d1 s/w1 + 1)/(s^2/w2^2 + 2 d2 s/w2 + 1) with k = 2, w1 = 5, d1 = 1,
+    w2 = 20, d2 = 1 is 32 (s + 5)^2/(s + 20)^2: its step response 2 + 30 e^-20t - 360 t e^-20t; SignalHP2Filter
+    (s^2/w^2)/(s^2/w^2 + 2 d s/w + 1) with w = 10, d = 1 is s^2/(s + 10)^2: e^-10t (1 - 10 t). The step at 1 s."""
+    v = _value
+    components = [
+        ("SignalStep", "Step", {"y_0#Value": v("0"), "y_A#Value": v("1"), "t_step#Value": v("0")}),
+        ("SignalSecondOrderFilter", "F2", {"k": v("2"), "omega_1": v("5"), "delta_1": v("1"), "omega_2": v("20"),
+                                           "delta_2": v("1")}),
+        ("SignalHP2Filter", "HP2", {"omega": v("10"), "delta": v("1")}),
+    ]
+    path = tmp_path / "filters2.hmf"
+    text = _hmf(components, [("Step.out", "F2.in"), ("Step.out", "HP2.in")]).replace('start="0"', 'start="-1"')
+    path.write_text(text, encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["F2"].option("order") == "2" and imp.system["HP2"].option("order") == "2"
+    t = np.array([0.5, 1.02, 1.05, 1.1, 1.3, 2.0])
+    tau = t - 1.0
+    r = imp.system.simulate(t_eval=t, accuracy=1e-6)
+    f2 = 2 + 30 * np.exp(-20 * tau) - 360 * tau * np.exp(-20 * tau)
+    np.testing.assert_allclose(r["F2.out.Value"], np.where(tau >= 0, f2, 0.0), atol=1e-5)
+    np.testing.assert_allclose(r["HP2.out.Value"], np.where(tau >= 0, np.exp(-10 * tau) * (1 - 10 * tau), 0.0),
+                               atol=1e-6)
+
+
+def test_hopsans_displays_and_loggers_are_dropped_and_gui_inputs_hold_their_start_values(tmp_path: Path) -> None:
+    """SignalDisplay, SignalAnimationGauge, SignalAnimationLamp and SignalLogger compute nothing (dropped);
+    SignalNumericalInput and SignalAnimationSwitch output their start value of out; SignalAnimationSlider
+    min + (max - min) in, in at its start value where nothing drives it."""
+    v = _value
+    components = [
+        ("SignalNumericalInput", "Num", {"out#Value": v("3")}), ("SignalAnimationSwitch", "Switch", {}),
+        ("SignalAnimationSlider", "Slider", {"min": v("2"), "max": v("4"), "in#Value": v("0.5")}),
+        ("SignalAnimationSlider", "Driven", {"min": v("2"), "max": v("4")}), ("SignalConstant", "C", {"y#Value": v("0.25")}),
+        ("SignalDisplay", "Display", {}), ("SignalAnimationGauge", "Gauge", {}), ("SignalAnimationLamp", "Lamp", {}),
+        ("SignalLogger", "Logger", {}),
+    ]
+    connections = [("Num.out", "Display.in"), ("Slider.out", "Gauge.in"), ("Switch.out", "Lamp.in"),
+                   ("Num.out", "Logger.in"), ("Switch.out", "Logger.in"), ("C.y", "Driven.in")]
+    path = tmp_path / "gui.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert all(kinds[k].startswith("dropped") for k in ("Display", "Gauge", "Lamp", "Logger"))
+    assert not {"Display", "Gauge", "Lamp", "Logger"} & set(imp.system.components)
+    r = imp.system.simulate(t_eval=[0.0, 1.0])
+    assert list(r["Num.out.Value"]) == [3.0, 3.0] and list(r["Switch.out.Value"]) == [0.0, 0.0]
+    assert list(r["Slider.out.Value"]) == [3.0, 3.0] and list(r["Driven.out.Value"]) == [2.5, 2.5]
+
+
 @pytest.mark.parametrize("kind", sorted(REFUSED))
 def test_blocks_hydroservo_cannot_follow_are_refused_with_why(tmp_path: Path, kind: str) -> None:
     path = tmp_path / "refused.hmf"
