@@ -24,8 +24,8 @@ module                 components
                        Staircase, Ramp, Sine, Square, Table
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
                        Lag, TransferFunction, Integrator, Saturation, DeadZone,
-                       RateLimiter, Hysteresis, Latch, Selector, PID, Amplifier,
-                       Transducer
+                       RateLimiter, Hysteresis, Latch, Counter, Selector, PID,
+                       Amplifier, Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -50,6 +50,7 @@ from hydroservo.components.control import (
     PID,
     Absolute,
     Amplifier,
+    Counter,
     DeadZone,
     Function,
     Gain,
@@ -213,6 +214,7 @@ __all__ = [
     "RateLimiter",
     "Hysteresis",
     "Latch",
+    "Counter",
     "Selector",
     "PID",
     "Amplifier",

@@ -21,7 +21,8 @@ from hydroservo.units import coherent_unit, is_absolute_pressure
 
 __all__ = [
     "Sum", "Product", "Quotient", "Absolute", "Power", "Function", "Gain", "Lag", "TransferFunction", "Integrator",
-    "Saturation", "DeadZone", "RateLimiter", "Hysteresis", "Latch", "Selector", "PID", "Amplifier", "Transducer",
+    "Saturation", "DeadZone", "RateLimiter", "Hysteresis", "Latch", "Counter", "Selector", "PID", "Amplifier",
+    "Transducer",
 ]
 
 
@@ -581,6 +582,53 @@ class Latch(Component):
         S, R, Q = u["set"], u["reset"], x["Q"]
         law = lim(lim(S * (1.0 - lim(R))) - lim(R * (1.0 - lim(S))) + lim(Q * lim((1.0 - lim(R)) * (1.0 - lim(S)))))
         return {"Q": (law - Q) / p["tau"]}
+
+
+@register
+class Counter(Component):
+    r"""Counts the edges of a logic signal: how often ``u`` has crossed 0.5 upwards (option ``edges = "rising"``),
+    downwards (``"falling"``) or either way (``"both"``), from 0 (Hopsan's SignalCounter, [Hopsan2026]
+    Signal/Logic/SignalCounter.hpp).
+
+    Hopsan's step reads :math:`b_n = u_n > 0.5` (doubleToBool) and adds 1 where :math:`b_n \ne b_{n-1}` in a
+    direction counted, from :math:`b_{-1}` false: as the step vanishes the output is the number of those
+    crossings of 0.5 up to :math:`t` (an input above 0.5 at the start is a rising edge, as Hopsan's). Here that law
+    is an ODE: the state ``b`` follows the logic value, :math:`\dot b = ([u > 0.5] - b)/\tau`, and the count
+    grows by its rate in the directions counted, :math:`\dot n = \max(\dot b, 0)` (rising),
+    :math:`\max(-\dot b, 0)` (falling) or :math:`|\dot b|` (both): over an edge ``b`` moves monotonically from
+    0 to 1 (1 to 0), which adds exactly 1 once it has settled, within a few ``tau`` (1 µs by default, as
+    :class:`Latch`'s). The crossings of 0.5 are switch events.
+    """
+
+    PARAMETERS = {
+        "tau": Param(1e-6, "s", "time constant with which b follows the input's logic value", min=0.0,
+                     min_inclusive=False),
+    }
+    STATES = {
+        "b": State("", "the input's logic value, followed (Hopsan's previous value, false at the start)", nominal=1.0),
+        "n": State("", "the count", nominal=1.0),
+    }
+    INPUTS = {"u": Port("", "logic signal (on above 0.5)")}
+    OUTPUTS = {"y": Output("", "the count of edges")}
+    OPTIONS = {"edges": Option("both", ("both", "rising", "falling"), "which crossings of 0.5 are counted")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": x["n"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        rate = (bk.if_else(u["u"] > 0.5, 1.0, 0.0) - x["b"]) / p["tau"]
+        edges = self.option("edges")
+        count = bk.fabs(rate) if edges == "both" else bk.fmax(rate if edges == "rising" else -rate, 0.0)
+        return {"b": rate, "n": count}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        return {"edge": (u["u"] - 0.5, 1.0)}
 
 
 @register

@@ -2443,6 +2443,20 @@ def _sub(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                   note="" if len(sums) == 1 else f"{len(sums)} Sums chained ({n}, ...), {len(inputs)} inputs")
 
 
+def _counter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalCounter (Signal/Logic/SignalCounter.hpp): the count of the edges of ``in`` (crossings of 0.5), rising
+    ones where ``r``, falling ones where ``f``: a Counter with ``edges = "both"``, ``"rising"`` or ``"falling"``;
+    neither counted, Hopsan's output stays 0 (a Gain of 0)."""
+    from hydroservo.components import Counter, Gain
+
+    rising, falling = par("r", 1.0) != 0.0, par("f", 1.0) != 0.0
+    if not (rising or falling):
+        return Mapped([Gain(n, K=0.0)], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                      note=f"Gain {n} of 0 (r and f false: it counts nothing)")
+    edges = "both" if rising and falling else "rising" if rising else "falling"
+    return Mapped([Counter(n, edges=edges)], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
 def _sink(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped(note="dropped: a plot window; what it shows is logged at its sources")
 
@@ -2639,6 +2653,7 @@ LIBRARY: dict[str, Builder] = {
     "SignalNumericalInput": _numerical_input,
     "SignalAnimationSwitch": _numerical_input,
     "SignalAnimationSlider": _slider,
+    "SignalCounter": _counter,
 }
 
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)

@@ -295,6 +295,28 @@ def test_latch_sets_resets_and_holds() -> None:
     np.testing.assert_allclose(r["l.notQ"], 1 - r["l.Q"])
 
 
+def test_counter_counts_the_crossings_of_one_half_in_the_directions_asked() -> None:
+    """Counter (Hopsan's SignalCounter) of sin(2 pi t), which crosses 0.5 upwards at k + 1/12 s and downwards at
+    k + 5/12 s: the rising, falling and both counts at times between the edges; an input on from the start counts
+    one rising edge, as Hopsan's (its previous value starts false)."""
+    s = hs.System("counter", t_end=2.2)
+    s.add(c.Sine("u", amplitude=1.0, frequency=1.0))
+    s.add(c.Constant("on", value=1.0))
+    for edges in ("both", "rising", "falling"):
+        s.add(c.Counter(edges, edges=edges))
+        s.connect("u.y", f"{edges}.u")
+    s.add(c.Counter("start", edges="rising"))
+    s.connect("on.y", "start.u")
+    t = np.array([0.0, 0.05, 0.2, 0.5, 1.0, 1.2, 1.5, 2.0, 2.2])
+    r = s.simulate(t_eval=t)
+    rising = np.floor(t - 1 / 12) + 1
+    falling = np.floor(t - 5 / 12) + 1
+    np.testing.assert_allclose(r["rising.y"], rising, atol=1e-6)
+    np.testing.assert_allclose(r["falling.y"], falling, atol=1e-6)
+    np.testing.assert_allclose(r["both.y"], rising + falling, atol=1e-6)
+    np.testing.assert_allclose(r["start.y"], (t > 0).astype(float), atol=1e-6)  # counted within a few tau
+
+
 def test_hysteresis_is_the_play_operator_of_its_input() -> None:
     """Hysteresis (Hopsan's SignalHysteresis) of width 1 on a triangle 0 -> 2 -> 0: the output stays at 0 until
     the input is 0.5 ahead, follows at u - 0.5 up to 1.5, holds there while the input falls back through the band

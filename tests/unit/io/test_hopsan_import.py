@@ -1162,6 +1162,28 @@ def test_hopsans_max_min_sub_not_and_xor_read_their_ports_and_multiports(tmp_pat
     np.testing.assert_array_equal(r["Xor.out.Value"], (np.abs(u) > 0.5).astype(float))
 
 
+def test_hopsans_counter_counts_the_edges_of_its_input_it_is_asked_to(tmp_path: Path) -> None:
+    """SignalCounter's r and f (bool) choose the edges counted: of a square wave of 1 Hz between -1 and 1 from
+    t = 0 (rising at 0, 1, 2 s, falling at 0.5, 1.5 s), the rising ones, the falling ones, both; neither: 0."""
+    v = _value
+    square = {"y_0#Value": v("0"), "y_A#Value": v("1"), "f#Value": v("1"), "t_start#Value": v("0")}
+    components = [("SignalSquareWave", "Sq", square),
+                  ("SignalCounter", "Both", {}), ("SignalCounter", "Up", {"f": v("false")}),
+                  ("SignalCounter", "Down", {"r": v("false")}), ("SignalCounter", "Neither", {"r": v("false"), "f": v("false")})]
+    connections = [("Sq.out", f"{k}.in") for k in ("Both", "Up", "Down", "Neither")]
+    path = tmp_path / "counter.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Up"].option("edges") == "rising" and imp.system["Down"].option("edges") == "falling"
+    t = np.array([0.0, 0.25, 0.75, 1.25, 1.75, 2.25])
+    r = imp.system.simulate(t_eval=t)
+    up, down = np.array([0, 1, 1, 2, 2, 3]), np.array([0, 0, 1, 1, 2, 2])
+    np.testing.assert_allclose(r["Up.out.Value"], up, atol=1e-6)
+    np.testing.assert_allclose(r["Down.out.Value"], down, atol=1e-6)
+    np.testing.assert_allclose(r["Both.out.Value"], up + down, atol=1e-6)
+    np.testing.assert_array_equal(r["Neither.out.Value"], np.zeros_like(t))
+
+
 def test_hopsans_second_order_filter_and_high_pass_answer_a_step_with_their_continuous_laws(tmp_path: Path) -> None:
     """SignalSecondOrderFilter k (s^2/w1^2 + 2 d1 s/w1 + 1)/(s^2/w2^2 + 2 d2 s/w2 + 1) with k = 2, w1 = 5, d1 = 1,
     w2 = 20, d2 = 1 is 32 (s + 5)^2/(s + 20)^2: its step response 2 + 30 e^-20t - 360 t e^-20t; SignalHP2Filter
