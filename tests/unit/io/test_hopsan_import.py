@@ -304,7 +304,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 @pytest.mark.parametrize(
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
-     "shuttle_valve", "pressure_controlled_pump"],
+     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -318,7 +318,10 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     sine-wave pressure and a constant one, and drains back through the open inlet as the sine falls. The
     pressure-controlled pump (HydraulicPressureControlledPump) strokes at its rate limit, overshoots, destrokes to
     its lower bound and leaves it, and answers an orifice closed and a flow drawn (Hopsan's
-    HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw)."""
+    HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw). The
+    second signal circuit checks the blocks no Hopsan example uses either: SignalMax, SignalMin and SignalSub over
+    their multiports, SignalNot, SignalXor, SignalCounter (both edges, rising only), SignalSecondOrderFilter,
+    SignalHP2Filter, a numerical input into a slider and a display."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
