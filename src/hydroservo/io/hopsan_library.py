@@ -2209,6 +2209,23 @@ def _integrator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([Integrator(n, y0=par("out", 0.0))], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
 
 
+def _table_file(par: _Params, folder: Path, filename: str) -> Path:
+    """The table file ``filename`` a lookup table names, inside the model file's ``folder`` (a file named by an
+    absolute path or outside it is refused: a model file from someone else reads nothing else of the user's
+    disk)."""
+    if not filename:
+        raise ModelFileError(f"{par.where}: no table: neither a file (filename) nor a text (text) given")
+    folder = folder.resolve()
+    file = (folder / filename).resolve()
+    if Path(filename).is_absolute() or not file.is_relative_to(folder):
+        raise ModelFileError(
+            f"{par.where}: filename = {filename!r}: outside the model file's folder {str(folder)!r}; hydroservo "
+            "reads a table only beside the model or below its folder (copy it there and name it relative "
+            "to the model)"
+        )
+    return file
+
+
 def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """Signal1DLookupTable (Signal/Non-Linearities/Signal1DLookupTable.hpp): a Table with ``index = "input"``,
     its breakpoints and values columns ``inid`` and ``outid`` of the CSV file ``filename`` (or of the text
@@ -2230,17 +2247,37 @@ def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         if text:
             x, y = parse_lookup_table(par.text("text"), inid, outid, sep, skip, comment, what=f"{par.where}: text")
         else:
-            if not filename:
-                raise ModelFileError(f"{par.where}: no table: neither a file (filename) nor a text (text) given")
-            folder = par.folder.resolve()
-            file = (folder / filename).resolve()
-            if Path(filename).is_absolute() or not file.is_relative_to(folder):
-                raise ModelFileError(
-                    f"{par.where}: filename = {filename!r}: outside the model file's folder {str(folder)!r}; hydroservo "
-                    "reads a table only beside the model or below its folder (copy it there and name it relative "
-                    "to the model)"
-                )
+            file = _table_file(par, par.folder, filename)
             x, y = read_lookup_table(file, inid, outid, sep, skip, comment, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table(n, times=x, values=y, index="input")
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+
+
+def _plo_lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal1DPLOLookupTable (Signal/Non-Linearities/Signal1DPLOLookupTable.hpp): Signal1DLookupTable's law
+    (a Table with ``index = "input"``), its breakpoints and values the columns named ``invar`` and ``outvar`` of
+    the PLO file ``filename`` (or of the text ``text``), read at import as Hopsan's PLOParser reads them
+    (:func:`hydroservo.io.tables.parse_plo_table`); the file only inside the model file's folder, as
+    Signal1DLookupTable's; ``reload`` is moot."""
+    from hydroservo.components import Table
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_plo_table, read_plo_table
+
+    inputs, outputs = {"in": f"{n}.u"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        return Mapped([Table(n, times=[0.0, 1.0], values=[0.0, 0.0], index="input")], inputs=inputs, outputs=outputs)
+    invar, outvar = par.text("invar", "Time"), par.text("outvar", "Data")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            x, y = parse_plo_table(par.text("text"), invar, outvar, what=f"{par.where}: text")
+        else:
+            file = _table_file(par, par.folder, filename)
+            x, y = read_plo_table(file, invar, outvar, what=f"{par.where}: filename")
     except HydroservoError as exc:
         par.problems.append(str(exc))
         return Mapped()
@@ -2654,6 +2691,7 @@ LIBRARY: dict[str, Builder] = {
     "SignalAnimationSwitch": _numerical_input,
     "SignalAnimationSlider": _slider,
     "SignalCounter": _counter,
+    "Signal1DPLOLookupTable": _plo_lookup_table,
 }
 
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)

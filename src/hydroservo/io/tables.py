@@ -10,7 +10,9 @@ import numpy as np
 from hydroservo.errors import ParameterError, shorten
 from hydroservo.io.files import csv_rows, read_text
 
-__all__ = ["read_time_table", "read_lookup_table", "parse_lookup_table", "MAX_TABLE_BYTES"]
+__all__ = [
+    "read_time_table", "read_lookup_table", "parse_lookup_table", "read_plo_table", "parse_plo_table", "MAX_TABLE_BYTES",
+]
 
 #: The largest lookup-table file read [bytes].
 MAX_TABLE_BYTES = 20_000_000
@@ -60,14 +62,19 @@ def read_lookup_table(
     """Breakpoints and values from the CSV file ``path``, read as Hopsan reads a lookup table
     (:func:`parse_lookup_table`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
     path = Path(path)
+    text = _table_text(path, what)
+    return parse_lookup_table(text, index_column, value_column, separator, skip, comment, f"{what}: {str(path)!r}")
+
+
+def _table_text(path: Path, what: str) -> str:
+    """The text of a table file: at most :data:`MAX_TABLE_BYTES`, UTF-8."""
     try:
         size = path.stat().st_size
     except OSError as exc:
         raise ParameterError(f"{what}: table file {str(path)!r}: cannot read ({exc.strerror})") from None
     if size > MAX_TABLE_BYTES:
         raise ParameterError(f"{what}: table file {str(path)!r}: {size} bytes, more than the {MAX_TABLE_BYTES} read")
-    text = read_text(path, f"{what}: table file")
-    return parse_lookup_table(text, index_column, value_column, separator, skip, comment, f"{what}: {str(path)!r}")
+    return read_text(path, f"{what}: table file")
 
 
 def parse_lookup_table(
@@ -130,12 +137,86 @@ def parse_lookup_table(
             row.append(value)
         index.append(row[0])
         values.append(row[1])
+    return _sorted_table(index, values, what)
+
+
+def _sorted_table(index: list[float], values: list[float], what: str) -> tuple[np.ndarray, np.ndarray]:
+    """The rows sorted by their breakpoints (stable, as Hopsan's LookupTable1D::sortIncreasing), which must then be
+    strictly increasing; at least two rows."""
     if len(index) < 2:
         raise ParameterError(f"{what}: {len(index)} row(s) of data; a lookup table needs at least two")
-    x, y = np.asarray(index), np.asarray(values)
+    x, y = np.asarray(index, dtype=float), np.asarray(values, dtype=float)
     order = np.argsort(x, kind="stable")
     x, y = x[order], y[order]
     same = np.flatnonzero(np.diff(x) <= 0)
     if same.size:
         raise ParameterError(f"{what}: two rows have the breakpoint {x[same[0]]:g}; expected each once")
     return x, y
+
+
+def read_plo_table(path: str | Path, invar: str = "Time", outvar: str = "Data", what: str = "table") -> tuple[np.ndarray, np.ndarray]:
+    """Breakpoints and values from the PLO file ``path`` (:func:`parse_plo_table`); at most
+    :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    path = Path(path)
+    return parse_plo_table(_table_text(path, what), invar, outvar, f"{what}: {str(path)!r}")
+
+
+def parse_plo_table(text: str, invar: str = "Time", outvar: str = "Data", what: str = "table") -> tuple[np.ndarray, np.ndarray]:
+    """Breakpoints (the column named ``invar``) and values (``outvar``) of a lookup table in Hopsan's PLO text,
+    read as Hopsan's Signal1DPLOLookupTable reads it ([Hopsan2026] Signal/Non-Linearities/Signal1DPLOLookupTable.hpp
+    and HopsanCore's PLOParser.cpp): ``'VERSION'`` and the version (1 or 2), the rest of that line and the next
+    (a title) left out, the numbers of columns and rows, the columns' quoted names (a first column ``'Time'`` or
+    ``'Frequency'`` is not counted in the number), one plot scale per column, then the numbers row by row; what
+    follows (the DAT line, the model's name) is left out. The rows are sorted by their breakpoints, which must then
+    be strictly increasing; at least two rows.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``what``: no PLO text (no ``'VERSION'``, a version other than 1 or 2), too few numbers, a name not
+        among the columns.
+
+    Examples
+    --------
+    >>> parse_plo_table("'VERSION'\\n1\\n'title'\\n1 3\\n'Time',  'Data'\\n1 1\\n0 0\\n1 2\\n2 8\\n")
+    (array([0., 1., 2.]), array([0., 2., 8.]))
+    """
+    lines = text.splitlines()
+    tokens = [(k, token) for k, line in enumerate(lines) for token in line.split()]
+    if not tokens or tokens[0][1] != "'VERSION'" or len(tokens) < 2:
+        raise ParameterError(f"{what}: not a PLO table: it does not begin with 'VERSION'")
+    try:
+        version = int(tokens[1][1])
+    except ValueError:
+        version = 0
+    if version not in (1, 2):
+        raise ParameterError(f"{what}: PLO version {shorten(tokens[1][1])!r}: expected 1 or 2")
+    # the rest of the version's line and the next line (the title) are skipped, as Hopsan's getline twice
+    rest = [token for k, token in tokens if k > tokens[1][0] + 1]
+
+    def numbers(count: int, start: int, kind: str) -> list[float]:
+        if len(rest) < start + count:
+            raise ParameterError(f"{what}: {max(len(rest) - start, 0)} {kind} where the header announces {count}")
+        try:
+            out = [float(t) for t in rest[start:start + count]]
+        except ValueError:
+            raise ParameterError(f"{what}: {kind}: a field that is no number") from None
+        if not all(np.isfinite(out)):
+            raise ParameterError(f"{what}: {kind}: a field that is no finite number")
+        return out
+
+    n_cols_f, n_rows_f = numbers(2, 0, "numbers of columns and rows")
+    n_cols, n_rows = int(n_cols_f), int(n_rows_f)
+    if n_cols < 1 or n_rows < 1 or n_cols != n_cols_f or n_rows != n_rows_f:
+        raise ParameterError(f"{what}: {n_cols_f:g} columns and {n_rows_f:g} rows: expected whole numbers, 1 or more")
+    if len(rest) > 2 and rest[2] in ("'Time',", "'Frequency',"):
+        n_cols += 1  # PLO 1 and 2 do not count a first column of time or frequency
+    if len(rest) < 2 + n_cols:
+        raise ParameterError(f"{what}: fewer column names than the {n_cols} columns")
+    names = [t.replace("',", "").replace("'", "") for t in rest[2:2 + n_cols]]
+    data = numbers(n_cols * n_rows, 2 + 2 * n_cols, "numbers of data")  # after one plot scale per column
+    for name in (invar, outvar):
+        if name not in names:
+            raise ParameterError(f"{what}: no column {name!r}; its columns: {', '.join(names)}")
+    i, o = names.index(invar), names.index(outvar)
+    return _sorted_table(data[i::n_cols], data[o::n_cols], what)

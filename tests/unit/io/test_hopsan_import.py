@@ -321,7 +321,7 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw). The
     second signal circuit checks the blocks no Hopsan example uses either: SignalMax, SignalMin and SignalSub over
     their multiports, SignalNot, SignalXor, SignalCounter (both edges, rising only), SignalSecondOrderFilter,
-    SignalHP2Filter, a numerical input into a slider and a display."""
+    SignalHP2Filter, Signal1DPLOLookupTable, a numerical input into a slider and a display."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -982,6 +982,36 @@ def test_hopsans_lookup_table_reads_its_csv_beside_the_model_and_interpolates_it
     table = import_hopsan(_lookup_model(tmp_path, text=v("0,2&#xa;1,4&#xa;"))).system["LUT"]  # the text instead
     np.testing.assert_array_equal(table.times, [0.0, 1.0])
     np.testing.assert_array_equal(table.table_values, [2.0, 4.0])
+
+
+def test_hopsans_plo_lookup_table_reads_its_named_columns_beside_the_model(tmp_path: Path) -> None:
+    """Signal1DPLOLookupTable: the PLO file named relative to the model, its columns invar and outvar by name (a
+    first 'Time' column not counted in the header's number, as Hopsan's PLOParser), rows sorted; linear between
+    the breakpoints, held outside; a column that is not there and a file outside the model's folder refused."""
+    (tmp_path / "tables").mkdir()
+    plo = ("    'VERSION'\n    1\n    'f.plo' 'model' 'today'\n    2    3\n    'Time',    'x',    'y'\n"
+           "  Time 1 1\n  0.0 3 9\n  0.1 0 1\n  0.2 1 3\n  DAT model\n")
+    (tmp_path / "tables" / "f.plo").write_text(plo, encoding="utf-8")
+    v = _value
+    ramp = {"y_0#Value": v("-1"), "y_A#Value": v("6"), "t_start#Value": v("0"), "t_end#Value": v("6")}
+
+    def model(**table: tuple[str, str]) -> Path:
+        text = _hmf([("SignalRamp", "Ramp", ramp), ("Signal1DPLOLookupTable", "LUT", table)], [("Ramp.out", "LUT.in")])
+        for name in ("filename", "invar", "outvar"):
+            text = text.replace(f'type="double" name="{name}"', f'type="string" name="{name}"')
+        path = tmp_path / "plo.hmf"
+        path.write_text(text, encoding="utf-8")
+        return path
+
+    imp = import_hopsan(model(filename=v("tables/f.plo"), invar=v("x"), outvar=v("y")))
+    assert imp.system["LUT"].option("index") == "input"
+    t = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0])
+    r = imp.system.simulate(t_eval=t)
+    np.testing.assert_allclose(r["LUT.out.Value"], np.interp(t - 1.0, [0.0, 1.0, 3.0], [1.0, 3.0, 9.0]), atol=1e-12)
+    with pytest.raises(ModelFileError, match="no column 'z'; its columns: Time, x, y"):
+        import_hopsan(model(filename=v("tables/f.plo"), invar=v("x"), outvar=v("z")))
+    with pytest.raises(ModelFileError, match="outside the model file's folder"):
+        import_hopsan(model(filename=v("../f.plo"), invar=v("x"), outvar=v("y")))
 
 
 def test_a_lookup_table_driven_by_a_constant_reads_its_file_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
