@@ -21,7 +21,7 @@ module                 components
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
-                       Staircase, Ramp, Sine, Square, Table
+                       Staircase, Ramp, Sine, Square, Table, Table2D
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
                        Lag, TransferFunction, Integrator, Saturation, DeadZone,
                        RateLimiter, Hysteresis, Latch, Counter, Selector, PID,
@@ -94,6 +94,7 @@ from hydroservo.components.signals import (
     Staircase,
     Step,
     Table,
+    Table2D,
 )
 from hydroservo.components.sources import ConstantPressure, FlowSource, PressureSource, PressureTable, Tank
 from hydroservo.components.spools import (
@@ -205,6 +206,7 @@ __all__ = [
     "Sine",
     "Square",
     "Table",
+    "Table2D",
     "Sum",
     "Gain",
     "Lag",

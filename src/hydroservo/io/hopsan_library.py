@@ -2286,6 +2286,40 @@ def _plo_lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                   note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
 
 
+def _lookup_table_2d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal2DLookupTable (Signal/Non-Linearities/Signal2DLookupTable.hpp): a Table2D of its inputs ``row`` and
+    ``col``, bilinear and held at its edges as Hopsan's LookupTable2D, its table read at import from the CSV file
+    ``filename`` (or the text ``text``) as Hopsan reads it (:func:`hydroservo.io.tables.parse_lookup_table_2d`),
+    the file only inside the model file's folder, as Signal1DLookupTable's. Hopsan never hands ``numlineskip`` to
+    its parser (it reads every line): a value other than 0 is refused; ``reload`` is moot."""
+    from hydroservo.components import Table2D
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_lookup_table_2d, read_lookup_table_2d
+
+    inputs, outputs = {"row": f"{n}.row", "col": f"{n}.col"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        return Mapped([Table2D(n, rows=[0.0, 1.0], cols=[0.0, 1.0], values=[[0.0, 0.0], [0.0, 0.0]])], inputs=inputs,
+                      outputs=outputs)
+    if par("numlineskip", 0.0) != 0.0:
+        par.problems.append(f"{par.where}: numlineskip = {par('numlineskip', 0.0):g}: Hopsan's 2D lookup table never "
+                            "skips lines (it does not pass numlineskip to its parser); remove the lines or use comment")
+        return Mapped()
+    comment = par.text("comment", "")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            r, c, v = parse_lookup_table_2d(par.text("text"), comment, what=f"{par.where}: text")
+        else:
+            file = _table_file(par, par.folder, filename)
+            r, c, v = read_lookup_table_2d(file, comment, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table2D(n, rows=r, cols=c, values=v)
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table2D {n}, {r.size} x {c.size} of {text and 'its text' or repr(filename)}")
+
+
 def _unit_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """SignalUnitDelay (Signal/Non-Linearities/SignalUnitDelay.hpp): its output is its input one step late,
     which vanishes as the step does: in the limit it passes its input on (a Gain of 1). In Hopsan it breaks
@@ -2692,6 +2726,7 @@ LIBRARY: dict[str, Builder] = {
     "SignalAnimationSlider": _slider,
     "SignalCounter": _counter,
     "Signal1DPLOLookupTable": _plo_lookup_table,
+    "Signal2DLookupTable": _lookup_table_2d,
 }
 
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)

@@ -11,7 +11,8 @@ from hydroservo.errors import ParameterError, shorten
 from hydroservo.io.files import csv_rows, read_text
 
 __all__ = [
-    "read_time_table", "read_lookup_table", "parse_lookup_table", "read_plo_table", "parse_plo_table", "MAX_TABLE_BYTES",
+    "read_time_table", "read_lookup_table", "parse_lookup_table", "read_plo_table", "parse_plo_table",
+    "read_lookup_table_2d", "parse_lookup_table_2d", "MAX_TABLE_BYTES",
 ]
 
 #: The largest lookup-table file read [bytes].
@@ -111,32 +112,9 @@ def parse_lookup_table(
         raise ParameterError(f"{what}: comment character {comment!r}: expected one character (or none)")
     if index_column < 0 or value_column < 0:
         raise ParameterError(f"{what}: columns {index_column} and {value_column}: expected 0-based indexes, 0 or more")
-    lines = text.splitlines()[max(skip, 0):]
-    first = 0
-    while comment and first < len(lines) and lines[first].startswith(comment):
-        first += 1
-    index: list[float] = []
-    values: list[float] = []
-    for number, line in enumerate(lines[first:], start=max(skip, 0) + first + 1):
-        if not line.strip():
-            continue
-        fields = line.split(separator)
-        row = []
-        for col in (index_column, value_column):
-            if col >= len(fields):
-                raise ParameterError(
-                    f"{what}, line {number}: {len(fields)} column(s); expected column {col} (0-based) there"
-                )
-            field = fields[col].strip().replace(",", ".", 1)
-            try:
-                value = float(field)
-            except ValueError:
-                value = float("nan")
-            if not np.isfinite(value):
-                raise ParameterError(f"{what}, line {number}, column {col}: {shorten(fields[col].strip())!r} is no finite number")
-            row.append(value)
-        index.append(row[0])
-        values.append(row[1])
+    rows = _numeric_rows(text, (index_column, value_column), separator, skip, comment, what)
+    index = [row[0] for _, row in rows]
+    values = [row[1] for _, row in rows]
     return _sorted_table(index, values, what)
 
 
@@ -220,3 +198,93 @@ def parse_plo_table(text: str, invar: str = "Time", outvar: str = "Data", what: 
             raise ParameterError(f"{what}: no column {name!r}; its columns: {', '.join(names)}")
     i, o = names.index(invar), names.index(outvar)
     return _sorted_table(data[i::n_cols], data[o::n_cols], what)
+
+
+def _numeric_rows(
+    text: str, columns: tuple[int, ...], separator: str, skip: int, comment: str, what: str
+) -> list[tuple[int, list[float]]]:
+    """The (line number, numbers in ``columns``) of each row of CSV text as Hopsan's CSVParserNG reads it: the
+    first ``skip`` lines left out, then the lines starting with ``comment``, blank lines left out, fields split at
+    ``separator``, a decimal comma read as a point."""
+    lines = text.splitlines()[max(skip, 0):]
+    first = 0
+    while comment and first < len(lines) and lines[first].startswith(comment):
+        first += 1
+    rows: list[tuple[int, list[float]]] = []
+    for number, line in enumerate(lines[first:], start=max(skip, 0) + first + 1):
+        if not line.strip():
+            continue
+        fields = line.split(separator)
+        row = []
+        for col in columns:
+            if col >= len(fields):
+                raise ParameterError(
+                    f"{what}, line {number}: {len(fields)} column(s); expected column {col} (0-based) there"
+                )
+            field = fields[col].strip().replace(",", ".", 1)
+            try:
+                value = float(field)
+            except ValueError:
+                value = float("nan")
+            if not np.isfinite(value):
+                raise ParameterError(f"{what}, line {number}, column {col}: {shorten(fields[col].strip())!r} is no finite number")
+            row.append(value)
+        rows.append((number, row))
+    return rows
+
+
+def read_lookup_table_2d(path: str | Path, comment: str = "", what: str = "table") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Row and column breakpoints and values from the CSV file ``path``, read as Hopsan reads a two-dimensional
+    lookup table (:func:`parse_lookup_table_2d`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    path = Path(path)
+    return parse_lookup_table_2d(_table_text(path, what), comment, f"{what}: {str(path)!r}")
+
+
+def parse_lookup_table_2d(text: str, comment: str = "", what: str = "table") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Row and column breakpoints and the values (a matrix, rows by columns) of a two-dimensional lookup table in
+    CSV text, read as Hopsan's Signal2DLookupTable reads it ([Hopsan2026]
+    Signal/Non-Linearities/Signal2DLookupTable.hpp): three comma-separated fields per line (after the initial lines
+    starting with ``comment``), line i nC + j holding row i's breakpoint (read from j = 0), column j's breakpoint
+    (read from i = 0) and the value at (i, j); a last line gives the numbers of rows and columns nR, nC (and a
+    third field). The breakpoints must be listed strictly increasing, at least two of each: Hopsan sorts breakpoints
+    listed out of order but leaves the values as listed (its run pairs the sorted breakpoints with the values in
+    the file's order), which no reading of the file as a table reproduces.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``what`` and the line: a line of fewer than three fields or a field that is no finite number, a last
+        line that is no whole numbers, a count of lines other than nR nC + 1, breakpoints not strictly increasing.
+
+    Examples
+    --------
+    >>> rows, cols, v = parse_lookup_table_2d("0,0,1\\n0,10,2\\n1,0,3\\n1,10,5\\n2,2,0\\n")
+    >>> rows, cols, v.tolist()
+    (array([0., 1.]), array([ 0., 10.]), [[1.0, 2.0], [3.0, 5.0]])
+    """
+    rows = _numeric_rows(text, (0, 1, 2), ",", 0, comment, what)
+    if not rows:
+        raise ParameterError(f"{what}: no data")
+    number, last = rows[-1]
+    n_rows, n_cols = last[0], last[1]
+    if n_rows != int(n_rows) or n_cols != int(n_cols) or n_rows < 2 or n_cols < 2:
+        raise ParameterError(
+            f"{what}, line {number}: {n_rows:g} rows and {n_cols:g} columns: expected whole numbers, 2 or more (the "
+            "last line gives the table's numbers of rows and columns)"
+        )
+    nr, nc = int(n_rows), int(n_cols)
+    data = [row for _, row in rows[:-1]]
+    if len(data) != nr * nc:
+        raise ParameterError(f"{what}: {len(data)} lines of data where the last line announces {nr} x {nc} = {nr * nc}")
+    r = np.array([data[i * nc][0] for i in range(nr)])
+    c = np.array([data[j][1] for j in range(nc)])
+    v = np.array([row[2] for row in data]).reshape(nr, nc)
+    for name, index in (("row", r), ("column", c)):
+        down = np.flatnonzero(np.diff(index) <= 0)
+        if down.size:
+            raise ParameterError(
+                f"{what}: the {name} breakpoints {index[down[0]]:g}, {index[down[0] + 1]:g}: expected them strictly "
+                "increasing as listed (Hopsan sorts a 2D table's breakpoints but leaves its values in the order "
+                "listed, which pairs them otherwise than the file does)"
+            )
+    return r, c, v

@@ -321,7 +321,7 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw). The
     second signal circuit checks the blocks no Hopsan example uses either: SignalMax, SignalMin and SignalSub over
     their multiports, SignalNot, SignalXor, SignalCounter (both edges, rising only), SignalSecondOrderFilter,
-    SignalHP2Filter, Signal1DPLOLookupTable, a numerical input into a slider and a display."""
+    SignalHP2Filter, Signal1DPLOLookupTable, Signal2DLookupTable, a numerical input into a slider and a display."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -1012,6 +1012,54 @@ def test_hopsans_plo_lookup_table_reads_its_named_columns_beside_the_model(tmp_p
         import_hopsan(model(filename=v("tables/f.plo"), invar=v("x"), outvar=v("z")))
     with pytest.raises(ModelFileError, match="outside the model file's folder"):
         import_hopsan(model(filename=v("../f.plo"), invar=v("x"), outvar=v("y")))
+
+
+def test_hopsans_2d_lookup_table_is_bilinear_held_at_its_edges_and_round_trips(tmp_path: Path) -> None:
+    """Signal2DLookupTable: the CSV beside the model (row, col, value per line, row-major; the last line nR, nC),
+    bilinear in row and col as Hopsan's LookupTable2D (along row in the two columns about col, then along col),
+    held at the edges; written to a model file and read back; numlineskip (which Hopsan ignores) and breakpoints
+    listed out of order (which Hopsan sorts without their values) refused."""
+    (tmp_path / "m.csv").write_text("# row,col,value\n0,0,1\n0,4,2\n0,5,6\n2,0,7\n2,4,9\n2,5,3\n2,3,0\n",
+                                    encoding="utf-8")
+    v = _value
+    components = [
+        ("SignalRamp", "R", {"y_0#Value": v("-1"), "y_A#Value": v("4"), "t_start#Value": v("0"), "t_end#Value": v("4")}),
+        ("SignalSineWave", "C", {"y_A#Value": v("3"), "f#Value": v("0.25")}),
+        ("Signal2DLookupTable", "LUT", {"filename": v("m.csv"), "comment": v("#")}),
+    ]
+
+    def model(**extra: tuple[str, str]) -> Path:
+        table = [(k, n, {**p, **extra} if n == "LUT" else p) for k, n, p in components]
+        text = _hmf(table, [("R.out", "LUT.row"), ("C.out", "LUT.col")])
+        for name in ("filename", "comment"):
+            text = text.replace(f'type="double" name="{name}"', f'type="string" name="{name}"')
+        path = tmp_path / "lut2.hmf"
+        path.write_text(text, encoding="utf-8")
+        return path
+
+    imp = import_hopsan(model())
+    lut = imp.system["LUT"]
+    np.testing.assert_array_equal(lut.rows, [0.0, 2.0])
+    np.testing.assert_array_equal(lut.table_values, [[1.0, 2.0, 6.0], [7.0, 9.0, 3.0]])
+    t = np.linspace(0.0, 4.0, 17)
+    r = imp.system.simulate(t_eval=t)
+    row = np.clip(t - 1.0, 0.0, 2.0) / 2.0  # the fraction along rows
+    col = np.clip(3.0 * np.sin(2 * np.pi * 0.25 * t), 0.0, 5.0)
+    left = np.where(col <= 4.0, (1 - row) * 1 + row * 7, (1 - row) * 2 + row * 9)
+    right = np.where(col <= 4.0, (1 - row) * 2 + row * 9, (1 - row) * 6 + row * 3)
+    w = np.where(col <= 4.0, col / 4.0, col - 4.0)
+    np.testing.assert_allclose(r["LUT.out.Value"], (1 - w) * left + w * right, atol=1e-12)
+    from hydroservo.io.model_file import load_model
+    from hydroservo.workflows.hopsan import ImportHopsan
+
+    files = ImportHopsan(model()).run().write(tmp_path / "out")
+    again = load_model(files["model"])
+    np.testing.assert_allclose(again.simulate(t_eval=t)["LUT.out.Value"], r["LUT.out.Value"], atol=1e-12)
+    with pytest.raises(ModelFileError, match="numlineskip = 1: Hopsan's 2D lookup table never skips lines"):
+        import_hopsan(model(numlineskip=v("1")))
+    (tmp_path / "m.csv").write_text("2,0,7\n2,4,9\n2,5,3\n0,0,1\n0,4,2\n0,5,6\n2,3,0\n", encoding="utf-8")
+    with pytest.raises(ModelFileError, match="the row breakpoints 2, 0: expected them strictly increasing as listed"):
+        import_hopsan(model())
 
 
 def test_a_lookup_table_driven_by_a_constant_reads_its_file_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
