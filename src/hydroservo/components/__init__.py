@@ -21,11 +21,11 @@ module                 components
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
-                       Staircase, Ramp, Sine, Square, Table
+                       Staircase, Ramp, Sine, Square, Table, Table2D
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
                        Lag, TransferFunction, Integrator, Saturation, DeadZone,
-                       RateLimiter, Hysteresis, Latch, Selector, PID, Amplifier,
-                       Transducer
+                       RateLimiter, Hysteresis, Latch, Counter, Selector, PID,
+                       Amplifier, Transducer
 :mod:`.linearized`     Linearized, LoadPressureCylinder (any component, or a
                        cylinder, expanded about an operating point)
 =====================  ==========================================================
@@ -50,6 +50,7 @@ from hydroservo.components.control import (
     PID,
     Absolute,
     Amplifier,
+    Counter,
     DeadZone,
     Function,
     Gain,
@@ -93,6 +94,7 @@ from hydroservo.components.signals import (
     Staircase,
     Step,
     Table,
+    Table2D,
 )
 from hydroservo.components.sources import ConstantPressure, FlowSource, PressureSource, PressureTable, Tank
 from hydroservo.components.spools import (
@@ -204,6 +206,7 @@ __all__ = [
     "Sine",
     "Square",
     "Table",
+    "Table2D",
     "Sum",
     "Gain",
     "Lag",
@@ -213,6 +216,7 @@ __all__ = [
     "RateLimiter",
     "Hysteresis",
     "Latch",
+    "Counter",
     "Selector",
     "PID",
     "Amplifier",

@@ -21,7 +21,8 @@ from hydroservo.units import coherent_unit, is_absolute_pressure
 
 __all__ = [
     "Sum", "Product", "Quotient", "Absolute", "Power", "Function", "Gain", "Lag", "TransferFunction", "Integrator",
-    "Saturation", "DeadZone", "RateLimiter", "Hysteresis", "Latch", "Selector", "PID", "Amplifier", "Transducer",
+    "Saturation", "DeadZone", "RateLimiter", "Hysteresis", "Latch", "Counter", "Selector", "PID", "Amplifier",
+    "Transducer",
 ]
 
 
@@ -99,7 +100,7 @@ class Power(Component):
 #: The functions of :class:`Function` (its option ``function``).
 FUNCTIONS = (
     "sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh",
-    "square", "sign", "floor", "ceil", "round", "greater", "smaller", "and", "or",
+    "square", "sign", "floor", "ceil", "round", "greater", "smaller", "and", "or", "xor", "not", "max", "min",
 )
 
 
@@ -118,9 +119,13 @@ class Function(Component):
     SignalFloor, SignalCeil and SignalRound (Signal/MathFunctions/). The comparisons and logic of Hopsan's
     Signal/Logic/ read two signals and give 1 or 0: ``greater`` :math:`u > u_2` and ``smaller`` :math:`u < u_2`
     (SignalGreaterThan, SignalSmallerThan: ``in`` and ``x_limit``), ``and`` and ``or`` of :math:`u > 0.5` and
-    :math:`u_2 > 0.5` (SignalAnd, SignalOr: Hopsan's doubleToBool). Where the output or the error jumps or has a
+    :math:`u_2 > 0.5` (SignalAnd, SignalOr: Hopsan's doubleToBool), ``xor`` of the two (SignalXor) and ``not``
+    1 where :math:`u \le 0.5`, else 0 (SignalNot, which reads ``u`` only). ``max`` and ``min`` are
+    :math:`\max(u, u_2)` and :math:`\min(u, u_2)` (two inputs of Hopsan's SignalMax and SignalMin,
+    Signal/Arithmetics/SignalMax.hpp and SignalMin.hpp). Where the output or the error jumps or has a
     kink (the domain's edges, the sign's and atan2's jumps at :math:`u = 0`, the tangent's poles, the integers
-    or half-integers where floor, ceil and round step, the comparisons' and logic's switching), a switch event.
+    or half-integers where floor, ceil and round step, the comparisons' and logic's switching, the crossing of
+    ``u`` and ``u2`` of max and min), a switch event.
     """
 
     INPUTS = {
@@ -163,6 +168,12 @@ class Function(Component):
         elif f in ("and", "or"):
             both = (a > 0.5) * (u["u2"] > 0.5) if f == "and" else (a > 0.5) + (u["u2"] > 0.5)
             y = bk.if_else(both > 0, 1.0, 0.0)
+        elif f == "xor":
+            y = bk.fabs(bk.if_else(a > 0.5, 1.0, 0.0) - bk.if_else(u["u2"] > 0.5, 1.0, 0.0))
+        elif f == "not":
+            y = bk.if_else(a > 0.5, 0.0, 1.0)
+        elif f in ("max", "min"):
+            y = bk.fmax(a, u["u2"]) if f == "max" else bk.fmin(a, u["u2"])
         else:
             y = getattr(bk, f)(a)
         return {"y": y, "error": error}
@@ -183,9 +194,23 @@ class Function(Component):
             return {"step": (bk.cos(math.pi * a), 1.0)}
         if f in ("greater", "smaller"):
             return {"switch": (a - u["u2"], 1.0)}
-        if f in ("and", "or"):
+        if f in ("and", "or", "xor"):
             return {"switch1": (a - 0.5, 1.0), "switch2": (u["u2"] - 0.5, 1.0)}
+        if f == "not":
+            return {"switch": (a - 0.5, 1.0)}
+        if f in ("max", "min"):
+            return {"kink": (a - u["u2"], 1.0)}
         return {}
+
+
+def _bound(unit: str, y: str) -> str:
+    """A declared unit with the block's signal unit ``y`` (SI) in place of its placeholder, as
+    :meth:`Component._bind_signal_unit` binds the declarations (for those an option adds later)."""
+    if SIGNAL not in unit:
+        return unit
+    if y == "":
+        return unit.replace(SIGNAL + "/", "1/").replace(SIGNAL + "*", "").replace(SIGNAL, "")
+    return unit.replace(SIGNAL, y if y.isidentifier() else f"({y})")
 
 
 #: Placeholder unit of a gain's input (``input_unit``); the output keeps ``SIGNAL`` (``unit``).
@@ -327,6 +352,9 @@ class TransferFunction(Component):
         self.STATES = dict(cls.STATES)  # type: ignore[misc]
         if self.option("order") == "2":
             self.STATES["x2"] = State(SIGNAL + "/s", "rate of x1 less its direct part c1 u", nominal=1.0)
+        # in the block's unit, as _bind_signal_unit gave the declarations (a run's messages name the states' units)
+        y = self.OUTPUTS["y"].unit
+        self.STATES = {k: replace(v, unit=_bound(v.unit, y)) for k, v in self.STATES.items()}  # type: ignore[misc]
 
     def check(self) -> None:
         v = self.values
@@ -557,6 +585,53 @@ class Latch(Component):
 
 
 @register
+class Counter(Component):
+    r"""Counts the edges of a logic signal: how often ``u`` has crossed 0.5 upwards (option ``edges = "rising"``),
+    downwards (``"falling"``) or either way (``"both"``), from 0 (Hopsan's SignalCounter, [Hopsan2026]
+    Signal/Logic/SignalCounter.hpp).
+
+    Hopsan's step reads :math:`b_n = u_n > 0.5` (doubleToBool) and adds 1 where :math:`b_n \ne b_{n-1}` in a
+    direction counted, from :math:`b_{-1}` false: as the step vanishes the output is the number of those
+    crossings of 0.5 up to :math:`t` (an input above 0.5 at the start is a rising edge, as Hopsan's). Here that law
+    is an ODE: the state ``b`` follows the logic value, :math:`\dot b = ([u > 0.5] - b)/\tau`, and the count
+    grows by its rate in the directions counted, :math:`\dot n = \max(\dot b, 0)` (rising),
+    :math:`\max(-\dot b, 0)` (falling) or :math:`|\dot b|` (both): over an edge ``b`` moves monotonically from
+    0 to 1 (1 to 0), which adds exactly 1 once it has settled, within a few ``tau`` (1 µs by default, as
+    :class:`Latch`'s). The crossings of 0.5 are switch events.
+    """
+
+    PARAMETERS = {
+        "tau": Param(1e-6, "s", "time constant with which b follows the input's logic value", min=0.0,
+                     min_inclusive=False),
+    }
+    STATES = {
+        "b": State("", "the input's logic value, followed (Hopsan's previous value, false at the start)", nominal=1.0),
+        "n": State("", "the count", nominal=1.0),
+    }
+    INPUTS = {"u": Port("", "logic signal (on above 0.5)")}
+    OUTPUTS = {"y": Output("", "the count of edges")}
+    OPTIONS = {"edges": Option("both", ("both", "rising", "falling"), "which crossings of 0.5 are counted")}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"y": x["n"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        rate = (bk.if_else(u["u"] > 0.5, 1.0, 0.0) - x["b"]) / p["tau"]
+        edges = self.option("edges")
+        count = bk.fabs(rate) if edges == "both" else bk.fmax(rate if edges == "rising" else -rate, 0.0)
+        return {"b": rate, "n": count}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        return {"edge": (u["u"] - 0.5, 1.0)}
+
+
+@register
 class Selector(Component):
     """One of up to four inputs, chosen by ``route``: ``u1`` while ``route < limit12``, ``u2`` while
     ``route < limit23``, ``u3`` while ``route < limit34``, else ``u4`` (Hopsan's SignalDualRoute,
@@ -656,12 +731,7 @@ class PID(Component):
         self.INPUTS = {k: replace(v, unit=self._unit(v.unit)) for k, v in self.INPUTS.items()}  # type: ignore[misc]
 
     def _unit(self, unit: str) -> str:
-        y = self.OUTPUTS["y"].unit
-        if SIGNAL not in unit:
-            return unit
-        if y == "":
-            return unit.replace(SIGNAL + "/", "1/").replace(SIGNAL + "*", "").replace(SIGNAL, "")
-        return unit.replace(SIGNAL, y if y.isidentifier() else f"({y})")
+        return _bound(unit, self.OUTPUTS["y"].unit)
 
     def check(self) -> None:
         if self.option("anti_windup") == "tracking" and self.values["Ki"] <= 0.0:

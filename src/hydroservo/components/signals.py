@@ -18,7 +18,7 @@ from hydroservo.errors import ParameterError
 
 __all__ = [
     "Constant", "Step", "SoftStep", "DecayingStep", "Pulse", "PulseWave", "Staircase", "Ramp", "Sine", "Square", "Table",
-    "SIGNAL_OUTPUT",
+    "Table2D", "SIGNAL_OUTPUT",
 ]
 
 #: The output of every signal block.
@@ -348,3 +348,64 @@ class Table(Component):
     ) -> dict[str, Any]:
         index = u["u"] if self.option("index") == "input" else t
         return {"y": p["scale"] * bk.interp(index, self.times, self.table_values)}
+
+
+@register
+class Table2D(Component):
+    r"""A lookup table of two inputs, bilinear between its breakpoints and held at its edges outside them: Hopsan's
+    Signal2DLookupTable ([Hopsan2026] Signal/Non-Linearities/Signal2DLookupTable.hpp, its LookupTable2D's
+    interpolation).
+
+    ``rows`` (the breakpoints of input ``row``) and ``cols`` (of ``col``) are strictly increasing; ``values`` is
+    the matrix of ``len(rows)`` by ``len(cols)`` values, :math:`V_{ij}` at (rows_i, cols_j). Each input is first
+    held within its breakpoints; then, as Hopsan's, the table is interpolated along ``row`` in the two columns
+    about ``col`` and between them along ``col``: :math:`y = \sum_j h_j(c)\, f_j(r)` with :math:`f_j` column
+    j interpolated in r and :math:`h_j` the piecewise-linear hat of breakpoint j. A table read from a file keeps
+    its name in ``source`` so that a model file can be written again.
+    """
+
+    PARAMETERS = {"scale": Param(1.0, "", "factor applied to the values")}
+    INPUTS = {"row": Port("", "the first index (along rows)"), "col": Port("", "the second index (along cols)")}
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def __init__(
+        self,
+        name: str,
+        rows: Any = None,
+        cols: Any = None,
+        values: Any = None,
+        source: Mapping[str, Any] | None = None,
+        **params: Any,
+    ) -> None:
+        super().__init__(name, **params)
+        self.source = None if source is None else dict(source)
+        if rows is None or cols is None or values is None:
+            raise ParameterError(f"{name}: a Table2D needs rows, cols and values")
+        r = np.asarray(rows, dtype=float).ravel()
+        c = np.asarray(cols, dtype=float).ravel()
+        v = np.asarray(values, dtype=float)
+        if r.size < 2 or c.size < 2 or v.shape != (r.size, c.size):
+            raise ParameterError(
+                f"{name}: expected at least two rows and two cols and values of {r.size} by {c.size}; got values of "
+                f"shape {v.shape}"
+            )
+        for what, index in (("rows", r), ("cols", c)):
+            if np.any(np.diff(index) <= 0) or not np.all(np.isfinite(index)):
+                raise ParameterError(f"{name}.{what}: expected strictly increasing breakpoints")
+        if not np.all(np.isfinite(v)):
+            raise ParameterError(f"{name}.values: expected finite numbers")
+        self.rows, self.cols, self.table_values = r, c, v
+
+    def config(self) -> dict[str, Any]:
+        if self.source is not None:
+            return dict(self.source)
+        return {"rows": self.rows.tolist(), "cols": self.cols.tolist(), "values": self.table_values.tolist()}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        unit = np.eye(self.cols.size)
+        y = 0.0
+        for j in range(self.cols.size):
+            y = y + bk.interp(u["col"], self.cols, unit[j]) * bk.interp(u["row"], self.rows, self.table_values[:, j])
+        return {"y": p["scale"] * y}

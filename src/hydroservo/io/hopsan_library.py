@@ -2296,21 +2296,33 @@ def _dead_zone(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
 
 
+def _sum_chain(n: str, gains: list[float]) -> tuple[list[cbase.Component], list[str], list[tuple[str, str]]]:
+    """Sums of three inputs chained (``n``, ``n_sum2``, ...: each further one adds two inputs and passes its total
+    on to the one before) for ``gains`` (at least three: the weights of the inputs in turn); the Sums, their
+    inputs in the order of ``gains``, and the internal links."""
+    from hydroservo.components import Sum
+
+    count = max(len(gains), 3)
+    gains = [*gains, *[1.0] * (count - len(gains))]
+    slots = [(0, 1), (0, 2)]
+    k = 1
+    while len(slots) + 1 < count:
+        slots += [(k, 1), (k, 2)]
+        k += 1
+    slots.append((k - 1, 3))
+    weights = [[1.0, 1.0, 1.0] for _ in range(k)]
+    for (which, i), gain in zip(slots, gains):
+        weights[which][i - 1] = gain
+    names = [n, *(f"{n}_sum{j + 1}" for j in range(1, k))]
+    sums: list[cbase.Component] = [Sum(m, gain1=w[0], gain2=w[1], gain3=w[2]) for m, w in zip(names, weights)]
+    internal = [(f"{names[j]}.y", f"{names[j - 1]}.u3") for j in range(1, k)]
+    return sums, [f"{names[w]}.u{i}" for w, i in slots], internal
+
+
 def _sum(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """Hopsan's multiport sum: one ``Sum`` of three inputs, chained through further ones (``n_sum2``, ...) where
     more signals are connected (each further sum adds two inputs and passes its total on)."""
-    from hydroservo.components import Sum
-
-    count = max(par.fan_in.get("in", 0), 3)
-    sums: list[cbase.Component] = [Sum(n, gain1=1.0, gain2=1.0, gain3=1.0)]
-    inputs = [f"{n}.u1", f"{n}.u2"]
-    internal = []
-    while len(inputs) + 1 < count:
-        nxt = Sum(f"{n}_sum{len(sums) + 1}", gain1=1.0, gain2=1.0, gain3=1.0)
-        internal.append((f"{nxt.name}.y", f"{sums[-1].name}.u3"))
-        sums.append(nxt)
-        inputs += [f"{nxt.name}.u1", f"{nxt.name}.u2"]
-    inputs.append(f"{sums[-1].name}.u3")
+    sums, inputs, internal = _sum_chain(n, [1.0] * par.fan_in.get("in", 0))
     return Mapped(sums, multi={"in": inputs}, outputs={"out": f"{n}.y"}, internal=internal,
                   note="" if len(sums) == 1 else f"{len(sums)} Sums chained ({n}, ...), {len(inputs)} inputs")
 
@@ -2371,6 +2383,19 @@ def _low_pass2(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     # SignalLP2Filter.hpp: 1/(s^2/omega^2 + 2 delta s/omega + 1)
     w = par("omega", 1000.0)
     return _transfer(n, par, [1.0], [1.0, 2.0 * par("delta", 1.0) / w, 1.0 / (w * w)])
+
+
+def _second_order_filter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    # SignalSecondOrderFilter.hpp: k (s^2/omega_1^2 + 2 delta_1 s/omega_1 + 1)/(s^2/omega_2^2 + 2 delta_2 s/omega_2 + 1)
+    k, w1, w2 = par("k", 1.0), par("omega_1", 1e10), par("omega_2", 1000.0)
+    num = [k, 2.0 * k * par("delta_1", 1.0) / w1, k / (w1 * w1)]
+    return _transfer(n, par, num, [1.0, 2.0 * par("delta_2", 1.0) / w2, 1.0 / (w2 * w2)])
+
+
+def _high_pass2(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    # SignalHP2Filter.hpp: (s^2/omega^2)/(s^2/omega^2 + 2 delta s/omega + 1)
+    w = par("omega", 1000.0)
+    return _transfer(n, par, [0.0, 0.0, 1.0 / (w * w)], [1.0, 2.0 * par("delta", 1.0) / w, 1.0 / (w * w)])
 
 
 def _first_order_tf(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -2460,6 +2485,23 @@ def _integrator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([Integrator(n, y0=par("out", 0.0))], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
 
 
+def _table_file(par: _Params, folder: Path, filename: str) -> Path:
+    """The table file ``filename`` a lookup table names, inside the model file's ``folder`` (a file named by an
+    absolute path or outside it is refused: a model file from someone else reads nothing else of the user's
+    disk)."""
+    if not filename:
+        raise ModelFileError(f"{par.where}: no table: neither a file (filename) nor a text (text) given")
+    folder = folder.resolve()
+    file = (folder / filename).resolve()
+    if Path(filename).is_absolute() or not file.is_relative_to(folder):
+        raise ModelFileError(
+            f"{par.where}: filename = {filename!r}: outside the model file's folder {str(folder)!r}; hydroservo "
+            "reads a table only beside the model or below its folder (copy it there and name it relative "
+            "to the model)"
+        )
+    return file
+
+
 def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """Signal1DLookupTable (Signal/Non-Linearities/Signal1DLookupTable.hpp): a Table with ``index = "input"``,
     its breakpoints and values columns ``inid`` and ``outid`` of the CSV file ``filename`` (or of the text
@@ -2481,16 +2523,7 @@ def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         if text:
             x, y = parse_lookup_table(par.text("text"), inid, outid, sep, skip, comment, what=f"{par.where}: text")
         else:
-            if not filename:
-                raise ModelFileError(f"{par.where}: no table: neither a file (filename) nor a text (text) given")
-            folder = par.folder.resolve()
-            file = (folder / filename).resolve()
-            if Path(filename).is_absolute() or not file.is_relative_to(folder):
-                raise ModelFileError(
-                    f"{par.where}: filename = {filename!r}: outside the model file's folder {str(folder)!r}; hydroservo "
-                    "reads a table only beside the model or below its folder (copy it there and name it relative "
-                    "to the model)"
-                )
+            file = _table_file(par, par.folder, filename)
             x, y = read_lookup_table(file, inid, outid, sep, skip, comment, what=f"{par.where}: filename")
     except HydroservoError as exc:
         par.problems.append(str(exc))
@@ -2498,6 +2531,69 @@ def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     comp = Table(n, times=x, values=y, index="input")
     return Mapped([comp], inputs=inputs, outputs=outputs,
                   note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+
+
+def _plo_lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal1DPLOLookupTable (Signal/Non-Linearities/Signal1DPLOLookupTable.hpp): Signal1DLookupTable's law
+    (a Table with ``index = "input"``), its breakpoints and values the columns named ``invar`` and ``outvar`` of
+    the PLO file ``filename`` (or of the text ``text``), read at import as Hopsan's PLOParser reads them
+    (:func:`hydroservo.io.tables.parse_plo_table`); the file only inside the model file's folder, as
+    Signal1DLookupTable's; ``reload`` is moot."""
+    from hydroservo.components import Table
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_plo_table, read_plo_table
+
+    inputs, outputs = {"in": f"{n}.u"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        return Mapped([Table(n, times=[0.0, 1.0], values=[0.0, 0.0], index="input")], inputs=inputs, outputs=outputs)
+    invar, outvar = par.text("invar", "Time"), par.text("outvar", "Data")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            x, y = parse_plo_table(par.text("text"), invar, outvar, what=f"{par.where}: text")
+        else:
+            file = _table_file(par, par.folder, filename)
+            x, y = read_plo_table(file, invar, outvar, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table(n, times=x, values=y, index="input")
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+
+
+def _lookup_table_2d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal2DLookupTable (Signal/Non-Linearities/Signal2DLookupTable.hpp): a Table2D of its inputs ``row`` and
+    ``col``, bilinear and held at its edges as Hopsan's LookupTable2D, its table read at import from the CSV file
+    ``filename`` (or the text ``text``) as Hopsan reads it (:func:`hydroservo.io.tables.parse_lookup_table_2d`),
+    the file only inside the model file's folder, as Signal1DLookupTable's. Hopsan never hands ``numlineskip`` to
+    its parser (it reads every line): a value other than 0 is refused; ``reload`` is moot."""
+    from hydroservo.components import Table2D
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_lookup_table_2d, read_lookup_table_2d
+
+    inputs, outputs = {"row": f"{n}.row", "col": f"{n}.col"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        return Mapped([Table2D(n, rows=[0.0, 1.0], cols=[0.0, 1.0], values=[[0.0, 0.0], [0.0, 0.0]])], inputs=inputs,
+                      outputs=outputs)
+    if par("numlineskip", 0.0) != 0.0:
+        par.problems.append(f"{par.where}: numlineskip = {par('numlineskip', 0.0):g}: Hopsan's 2D lookup table never "
+                            "skips lines (it does not pass numlineskip to its parser); remove the lines or use comment")
+        return Mapped()
+    comment = par.text("comment", "")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            r, c, v = parse_lookup_table_2d(par.text("text"), comment, what=f"{par.where}: text")
+        else:
+            file = _table_file(par, par.folder, filename)
+            r, c, v = read_lookup_table_2d(file, comment, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table2D(n, rows=r, cols=c, values=v)
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table2D {n}, {r.size} x {c.size} of {text and 'its text' or repr(filename)}")
 
 
 def _unit_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -2651,8 +2747,95 @@ def _sr_latch(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                   outputs={"Qstate": f"{n}.Q", "notQstate": f"{n}.notQ"})
 
 
+def _not(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalNot (Signal/Logic/SignalNot.hpp): 1 where ``in`` is 0.5 or less (Hopsan's doubleToBool), else 0: a
+    Function with ``function = "not"``."""
+    from hydroservo.components import Function
+
+    return Mapped([Function(n, function="not")], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
+def _extreme(function: str) -> Builder:
+    """SignalMax and SignalMin (Signal/Arithmetics/SignalMax.hpp, SignalMin.hpp): the largest or smallest of the
+    signals joining their one port ``in``: a Function with ``function = "max"`` (``"min"``) of two of them,
+    chained through further ones (``n_max2``, ...) for each further signal; one signal passes on (a Gain of
+    1), none gives 0 (Hopsan reads a node of 0)."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Constant, Function, Gain
+
+        count = par.fan_in.get("in", 0)
+        if count == 0:
+            return Mapped([Constant(n, value=0.0)], outputs={"out": f"{n}.y"})
+        if count == 1:
+            return Mapped([Gain(n, K=1.0)], multi={"in": [f"{n}.u"]}, outputs={"out": f"{n}.y"})
+        names = [n, *(f"{n}_{function}{j}" for j in range(2, count))]
+        blocks: list[cbase.Component] = [Function(m, function=function) for m in names]
+        inputs = [f"{n}.u", f"{n}.u2", *(f"{m}.u2" for m in names[1:])]
+        internal = [(f"{a}.y", f"{b}.u") for a, b in zip(names, names[1:])]
+        return Mapped(blocks, multi={"in": inputs}, outputs={"out": f"{names[-1]}.y"}, internal=internal,
+                      note="" if count == 2 else f"{len(names)} Functions ({function}) chained ({n}, ...)")
+
+    return build
+
+
+def _sub(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalSub (Signal/Arithmetics/SignalSub.hpp): the sum of the signals joining its port ``insum`` less that
+    of those joining ``insub`` (SignalSubtract's two ports are ``in1`` and ``in2``): Sums chained as
+    SignalSum's, each signal of ``insub`` weighted -1."""
+    n_sum, n_sub = par.fan_in.get("insum", 0), par.fan_in.get("insub", 0)
+    sums, inputs, internal = _sum_chain(n, [1.0] * n_sum + [-1.0] * n_sub)
+    return Mapped(sums, multi={"insum": inputs[:n_sum], "insub": inputs[n_sum:n_sum + n_sub]},
+                  outputs={"out": f"{n}.y"}, internal=internal,
+                  note="" if len(sums) == 1 else f"{len(sums)} Sums chained ({n}, ...), {len(inputs)} inputs")
+
+
+def _counter(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalCounter (Signal/Logic/SignalCounter.hpp): the count of the edges of ``in`` (crossings of 0.5), rising
+    ones where ``r``, falling ones where ``f``: a Counter with ``edges = "both"``, ``"rising"`` or ``"falling"``;
+    neither counted, Hopsan's output stays 0 (a Gain of 0)."""
+    from hydroservo.components import Counter, Gain
+
+    rising, falling = par("r", 1.0) != 0.0, par("f", 1.0) != 0.0
+    if not (rising or falling):
+        return Mapped([Gain(n, K=0.0)], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"},
+                      note=f"Gain {n} of 0 (r and f false: it counts nothing)")
+    edges = "both" if rising and falling else "rising" if rising else "falling"
+    return Mapped([Counter(n, edges=edges)], inputs={"in": f"{n}.u"}, outputs={"out": f"{n}.y"})
+
+
 def _sink(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped(note="dropped: a plot window; what it shows is logged at its sources")
+
+
+def _display(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalDisplay, SignalAnimationGauge and SignalAnimationLamp (Signal/Animation/): they show their input in
+    Hopsan's GUI and compute nothing; dropped as SignalSink is."""
+    return Mapped(note="dropped: shows its input in Hopsan's GUI; what it shows is logged at its source")
+
+
+def _logger(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalLogger (Signal/Sources&Sinks/SignalLogger.hpp): it writes its inputs to a file (``path``) and
+    computes nothing; dropped (hydroservo's result holds what it logs)."""
+    return Mapped(note=f"dropped: writes its inputs to {par.text('path') or 'a file'}; they are in the result")
+
+
+def _numerical_input(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalNumericalInput and SignalAnimationSwitch (Signal/Animation/): an output ``out`` that Hopsan's GUI sets
+    while it runs and that stays at its start value in a run without the GUI: a Constant at that value."""
+    from hydroservo.components import Constant
+
+    return Mapped([Constant(n, value=par("out", 0.0))], outputs={"out": f"{n}.y"})
+
+
+def _slider(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """SignalAnimationSlider (Signal/Animation/SignalAnimationSlider.hpp): out = min + (max - min) in, ``in``
+    set by Hopsan's GUI (its start value where nothing drives it): a Sum of gain max - min and offset min."""
+    from hydroservo.components import Sum
+
+    lo, hi = par("min", 0.0), par("max", 1.0)
+    return Mapped([Sum(n, gain1=hi - lo, gain2=0.0, gain3=0.0, offset=lo)], inputs={"in": f"{n}.u1"},
+                  outputs={"out": f"{n}.y"})
 
 
 #: Hopsan type -> the function that maps it (each follows the Hopsan component file of that name in
@@ -2818,6 +3001,23 @@ LIBRARY: dict[str, Builder] = {
     "SignalOr": _logic("or", ("in1", "in2")),
     "SignalSRlatch": _sr_latch,
     "SignalHysteresis": _hysteresis,
+    "SignalMax": _extreme("max"),
+    "SignalMin": _extreme("min"),
+    "SignalSub": _sub,
+    "SignalNot": _not,
+    "SignalXor": _logic("xor", ("in1", "in2")),
+    "SignalSecondOrderFilter": _second_order_filter,
+    "SignalHP2Filter": _high_pass2,
+    "SignalDisplay": _display,
+    "SignalAnimationGauge": _display,
+    "SignalAnimationLamp": _display,
+    "SignalLogger": _logger,
+    "SignalNumericalInput": _numerical_input,
+    "SignalAnimationSwitch": _numerical_input,
+    "SignalAnimationSlider": _slider,
+    "SignalCounter": _counter,
+    "Signal1DPLOLookupTable": _plo_lookup_table,
+    "Signal2DLookupTable": _lookup_table_2d,
 }
 
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)
@@ -2832,6 +3032,13 @@ REFUSED: dict[str, str] = {
     "and a random trace cannot be compared sample by sample",
     "SignalStopSimulation": "it ends the run when its input exceeds 0.5, where hydroservo's runs end at t_end; "
     "set t_end to where the model stops",
+    "SignalJKlatch": "while both its inputs are set, Hopsan's JK latch toggles its output at every step "
+    "(Signal/Logic/SignalJKlatch.hpp: Q_n = 1 - Q_n-1), which has no limit as the step vanishes, and the state it "
+    "keeps after depends on the count of steps; an SR latch (SignalSRlatch) has a limit",
+    "SignalTimestep": "it outputs Hopsan's fixed time step, which hydroservo's engine, choosing its steps by error "
+    "control, has not",
+    "SignalAdditiveNoise": "white noise drawn anew at each of Hopsan's steps has no limit as the step vanishes, "
+    "and a random trace cannot be compared sample by sample",
 }
 
 

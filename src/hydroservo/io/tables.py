@@ -10,7 +10,10 @@ import numpy as np
 from hydroservo.errors import ParameterError, shorten
 from hydroservo.io.files import csv_rows, read_text
 
-__all__ = ["read_time_table", "read_lookup_table", "parse_lookup_table", "MAX_TABLE_BYTES"]
+__all__ = [
+    "read_time_table", "read_lookup_table", "parse_lookup_table", "read_plo_table", "parse_plo_table",
+    "read_lookup_table_2d", "parse_lookup_table_2d", "MAX_TABLE_BYTES",
+]
 
 #: The largest lookup-table file read [bytes].
 MAX_TABLE_BYTES = 20_000_000
@@ -60,14 +63,19 @@ def read_lookup_table(
     """Breakpoints and values from the CSV file ``path``, read as Hopsan reads a lookup table
     (:func:`parse_lookup_table`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
     path = Path(path)
+    text = _table_text(path, what)
+    return parse_lookup_table(text, index_column, value_column, separator, skip, comment, f"{what}: {str(path)!r}")
+
+
+def _table_text(path: Path, what: str) -> str:
+    """The text of a table file: at most :data:`MAX_TABLE_BYTES`, UTF-8."""
     try:
         size = path.stat().st_size
     except OSError as exc:
         raise ParameterError(f"{what}: table file {str(path)!r}: cannot read ({exc.strerror})") from None
     if size > MAX_TABLE_BYTES:
         raise ParameterError(f"{what}: table file {str(path)!r}: {size} bytes, more than the {MAX_TABLE_BYTES} read")
-    text = read_text(path, f"{what}: table file")
-    return parse_lookup_table(text, index_column, value_column, separator, skip, comment, f"{what}: {str(path)!r}")
+    return read_text(path, f"{what}: table file")
 
 
 def parse_lookup_table(
@@ -104,18 +112,111 @@ def parse_lookup_table(
         raise ParameterError(f"{what}: comment character {comment!r}: expected one character (or none)")
     if index_column < 0 or value_column < 0:
         raise ParameterError(f"{what}: columns {index_column} and {value_column}: expected 0-based indexes, 0 or more")
+    rows = _numeric_rows(text, (index_column, value_column), separator, skip, comment, what)
+    index = [row[0] for _, row in rows]
+    values = [row[1] for _, row in rows]
+    return _sorted_table(index, values, what)
+
+
+def _sorted_table(index: list[float], values: list[float], what: str) -> tuple[np.ndarray, np.ndarray]:
+    """The rows sorted by their breakpoints (stable, as Hopsan's LookupTable1D::sortIncreasing), which must then be
+    strictly increasing; at least two rows."""
+    if len(index) < 2:
+        raise ParameterError(f"{what}: {len(index)} row(s) of data; a lookup table needs at least two")
+    x, y = np.asarray(index, dtype=float), np.asarray(values, dtype=float)
+    order = np.argsort(x, kind="stable")
+    x, y = x[order], y[order]
+    same = np.flatnonzero(np.diff(x) <= 0)
+    if same.size:
+        raise ParameterError(f"{what}: two rows have the breakpoint {x[same[0]]:g}; expected each once")
+    return x, y
+
+
+def read_plo_table(path: str | Path, invar: str = "Time", outvar: str = "Data", what: str = "table") -> tuple[np.ndarray, np.ndarray]:
+    """Breakpoints and values from the PLO file ``path`` (:func:`parse_plo_table`); at most
+    :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    path = Path(path)
+    return parse_plo_table(_table_text(path, what), invar, outvar, f"{what}: {str(path)!r}")
+
+
+def parse_plo_table(text: str, invar: str = "Time", outvar: str = "Data", what: str = "table") -> tuple[np.ndarray, np.ndarray]:
+    """Breakpoints (the column named ``invar``) and values (``outvar``) of a lookup table in Hopsan's PLO text,
+    read as Hopsan's Signal1DPLOLookupTable reads it ([Hopsan2026] Signal/Non-Linearities/Signal1DPLOLookupTable.hpp
+    and HopsanCore's PLOParser.cpp): ``'VERSION'`` and the version (1 or 2), the rest of that line and the next
+    (a title) left out, the numbers of columns and rows, the columns' quoted names (a first column ``'Time'`` or
+    ``'Frequency'`` is not counted in the number), one plot scale per column, then the numbers row by row; what
+    follows (the DAT line, the model's name) is left out. The rows are sorted by their breakpoints, which must then
+    be strictly increasing; at least two rows.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``what``: no PLO text (no ``'VERSION'``, a version other than 1 or 2), too few numbers, a name not
+        among the columns.
+
+    Examples
+    --------
+    >>> parse_plo_table("'VERSION'\\n1\\n'title'\\n1 3\\n'Time',  'Data'\\n1 1\\n0 0\\n1 2\\n2 8\\n")
+    (array([0., 1., 2.]), array([0., 2., 8.]))
+    """
+    lines = text.splitlines()
+    tokens = [(k, token) for k, line in enumerate(lines) for token in line.split()]
+    if not tokens or tokens[0][1] != "'VERSION'" or len(tokens) < 2:
+        raise ParameterError(f"{what}: not a PLO table: it does not begin with 'VERSION'")
+    try:
+        version = int(tokens[1][1])
+    except ValueError:
+        version = 0
+    if version not in (1, 2):
+        raise ParameterError(f"{what}: PLO version {shorten(tokens[1][1])!r}: expected 1 or 2")
+    # the rest of the version's line and the next line (the title) are skipped, as Hopsan's getline twice
+    rest = [token for k, token in tokens if k > tokens[1][0] + 1]
+
+    def numbers(count: int, start: int, kind: str) -> list[float]:
+        if len(rest) < start + count:
+            raise ParameterError(f"{what}: {max(len(rest) - start, 0)} {kind} where the header announces {count}")
+        try:
+            out = [float(t) for t in rest[start:start + count]]
+        except ValueError:
+            raise ParameterError(f"{what}: {kind}: a field that is no number") from None
+        if not all(np.isfinite(out)):
+            raise ParameterError(f"{what}: {kind}: a field that is no finite number")
+        return out
+
+    n_cols_f, n_rows_f = numbers(2, 0, "numbers of columns and rows")
+    n_cols, n_rows = int(n_cols_f), int(n_rows_f)
+    if n_cols < 1 or n_rows < 1 or n_cols != n_cols_f or n_rows != n_rows_f:
+        raise ParameterError(f"{what}: {n_cols_f:g} columns and {n_rows_f:g} rows: expected whole numbers, 1 or more")
+    if len(rest) > 2 and rest[2] in ("'Time',", "'Frequency',"):
+        n_cols += 1  # PLO 1 and 2 do not count a first column of time or frequency
+    if len(rest) < 2 + n_cols:
+        raise ParameterError(f"{what}: fewer column names than the {n_cols} columns")
+    names = [t.replace("',", "").replace("'", "") for t in rest[2:2 + n_cols]]
+    data = numbers(n_cols * n_rows, 2 + 2 * n_cols, "numbers of data")  # after one plot scale per column
+    for name in (invar, outvar):
+        if name not in names:
+            raise ParameterError(f"{what}: no column {name!r}; its columns: {', '.join(names)}")
+    i, o = names.index(invar), names.index(outvar)
+    return _sorted_table(data[i::n_cols], data[o::n_cols], what)
+
+
+def _numeric_rows(
+    text: str, columns: tuple[int, ...], separator: str, skip: int, comment: str, what: str
+) -> list[tuple[int, list[float]]]:
+    """The (line number, numbers in ``columns``) of each row of CSV text as Hopsan's CSVParserNG reads it: the
+    first ``skip`` lines left out, then the lines starting with ``comment``, blank lines left out, fields split at
+    ``separator``, a decimal comma read as a point."""
     lines = text.splitlines()[max(skip, 0):]
     first = 0
     while comment and first < len(lines) and lines[first].startswith(comment):
         first += 1
-    index: list[float] = []
-    values: list[float] = []
+    rows: list[tuple[int, list[float]]] = []
     for number, line in enumerate(lines[first:], start=max(skip, 0) + first + 1):
         if not line.strip():
             continue
         fields = line.split(separator)
         row = []
-        for col in (index_column, value_column):
+        for col in columns:
             if col >= len(fields):
                 raise ParameterError(
                     f"{what}, line {number}: {len(fields)} column(s); expected column {col} (0-based) there"
@@ -128,14 +229,62 @@ def parse_lookup_table(
             if not np.isfinite(value):
                 raise ParameterError(f"{what}, line {number}, column {col}: {shorten(fields[col].strip())!r} is no finite number")
             row.append(value)
-        index.append(row[0])
-        values.append(row[1])
-    if len(index) < 2:
-        raise ParameterError(f"{what}: {len(index)} row(s) of data; a lookup table needs at least two")
-    x, y = np.asarray(index), np.asarray(values)
-    order = np.argsort(x, kind="stable")
-    x, y = x[order], y[order]
-    same = np.flatnonzero(np.diff(x) <= 0)
-    if same.size:
-        raise ParameterError(f"{what}: two rows have the breakpoint {x[same[0]]:g}; expected each once")
-    return x, y
+        rows.append((number, row))
+    return rows
+
+
+def read_lookup_table_2d(path: str | Path, comment: str = "", what: str = "table") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Row and column breakpoints and values from the CSV file ``path``, read as Hopsan reads a two-dimensional
+    lookup table (:func:`parse_lookup_table_2d`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    path = Path(path)
+    return parse_lookup_table_2d(_table_text(path, what), comment, f"{what}: {str(path)!r}")
+
+
+def parse_lookup_table_2d(text: str, comment: str = "", what: str = "table") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Row and column breakpoints and the values (a matrix, rows by columns) of a two-dimensional lookup table in
+    CSV text, read as Hopsan's Signal2DLookupTable reads it ([Hopsan2026]
+    Signal/Non-Linearities/Signal2DLookupTable.hpp): three comma-separated fields per line (after the initial lines
+    starting with ``comment``), line i nC + j holding row i's breakpoint (read from j = 0), column j's breakpoint
+    (read from i = 0) and the value at (i, j); a last line gives the numbers of rows and columns nR, nC (and a
+    third field). The breakpoints must be listed strictly increasing, at least two of each: Hopsan sorts breakpoints
+    listed out of order but leaves the values as listed (its run pairs the sorted breakpoints with the values in
+    the file's order), which no reading of the file as a table reproduces.
+
+    Raises
+    ------
+    ParameterError
+        Naming ``what`` and the line: a line of fewer than three fields or a field that is no finite number, a last
+        line that is no whole numbers, a count of lines other than nR nC + 1, breakpoints not strictly increasing.
+
+    Examples
+    --------
+    >>> rows, cols, v = parse_lookup_table_2d("0,0,1\\n0,10,2\\n1,0,3\\n1,10,5\\n2,2,0\\n")
+    >>> rows, cols, v.tolist()
+    (array([0., 1.]), array([ 0., 10.]), [[1.0, 2.0], [3.0, 5.0]])
+    """
+    rows = _numeric_rows(text, (0, 1, 2), ",", 0, comment, what)
+    if not rows:
+        raise ParameterError(f"{what}: no data")
+    number, last = rows[-1]
+    n_rows, n_cols = last[0], last[1]
+    if n_rows != int(n_rows) or n_cols != int(n_cols) or n_rows < 2 or n_cols < 2:
+        raise ParameterError(
+            f"{what}, line {number}: {n_rows:g} rows and {n_cols:g} columns: expected whole numbers, 2 or more (the "
+            "last line gives the table's numbers of rows and columns)"
+        )
+    nr, nc = int(n_rows), int(n_cols)
+    data = [row for _, row in rows[:-1]]
+    if len(data) != nr * nc:
+        raise ParameterError(f"{what}: {len(data)} lines of data where the last line announces {nr} x {nc} = {nr * nc}")
+    r = np.array([data[i * nc][0] for i in range(nr)])
+    c = np.array([data[j][1] for j in range(nc)])
+    v = np.array([row[2] for row in data]).reshape(nr, nc)
+    for name, index in (("row", r), ("column", c)):
+        down = np.flatnonzero(np.diff(index) <= 0)
+        if down.size:
+            raise ParameterError(
+                f"{what}: the {name} breakpoints {index[down[0]]:g}, {index[down[0] + 1]:g}: expected them strictly "
+                "increasing as listed (Hopsan sorts a 2D table's breakpoints but leaves its values in the order "
+                "listed, which pairs them otherwise than the file does)"
+            )
+    return r, c, v

@@ -165,6 +165,10 @@ def test_each_function_is_its_closed_form_and_flags_its_domain() -> None:
         "smaller": ((u < 1.0).astype(float), 0 * u),
         "and": ((u > 0.5).astype(float), 0 * u),
         "or": (np.ones_like(u), 0 * u),
+        "xor": ((u <= 0.5).astype(float), 0 * u),  # u2 unconnected: 1, on
+        "not": ((u <= 0.5).astype(float), 0 * u),
+        "max": (np.maximum(u, 1.0), 0 * u),
+        "min": (np.minimum(u, 1.0), 0 * u),
     }
     assert set(expected) == set(c.Function.OPTIONS["function"].choices)
     s = hs.System("functions", t_end=4.0)
@@ -247,14 +251,15 @@ def test_pid_clamping_stops_integrating_at_the_limit_and_takes_its_derivative_as
 
 def test_floor_ceil_round_comparisons_and_logic_are_hopsans() -> None:
     """Function's floor, ceil, round (half away from zero, as C's round), greater and smaller (1 or 0, strict),
-    and and or (of u > 0.5 and u2 > 0.5), on a ramp from -2 to 2 against a constant 0.5."""
+    and and or (of u > 0.5 and u2 > 0.5), xor (one of them, not both), not (u <= 0.5), max and min, on a ramp
+    from -2 to 2 against a constant 0.5."""
     s = hs.System("fn", t_end=4.0)
     s.add(c.Ramp("u", offset=-2.0, slope=1.0, t_start=0.0))
     s.add(c.Constant("k", value=0.5))
-    for f in ("floor", "ceil", "round", "greater", "smaller", "and", "or"):
+    for f in ("floor", "ceil", "round", "greater", "smaller", "and", "or", "xor", "not", "max", "min"):
         s.add(c.Function(f, function=f))
         s.connect("u.y", f"{f}.u")
-        if f in ("greater", "smaller", "and", "or"):
+        if f in ("greater", "smaller", "and", "or", "xor", "max", "min"):
             s.connect("k.y", f"{f}.u2")
     t = np.array([0.0, 0.3, 1.5, 1.75, 2.25, 2.5, 3.2, 3.5, 4.0])
     r = s.simulate(t_eval=t)
@@ -266,6 +271,10 @@ def test_floor_ceil_round_comparisons_and_logic_are_hopsans() -> None:
     np.testing.assert_array_equal(r["smaller.y"], (u < 0.5).astype(float))
     np.testing.assert_array_equal(r["and.y"], np.zeros_like(u))  # the constant 0.5 is not > 0.5: off
     np.testing.assert_array_equal(r["or.y"], (u > 0.5).astype(float))
+    np.testing.assert_array_equal(r["xor.y"], (u > 0.5).astype(float))  # 0.5 is off: xor is u's
+    np.testing.assert_array_equal(r["not.y"], (u <= 0.5).astype(float))
+    np.testing.assert_array_equal(r["max.y"], np.maximum(u, 0.5))
+    np.testing.assert_array_equal(r["min.y"], np.minimum(u, 0.5))
 
 
 def test_latch_sets_resets_and_holds() -> None:
@@ -284,6 +293,28 @@ def test_latch_sets_resets_and_holds() -> None:
     r = s.simulate(t_eval=[0.5, 1.5, 2.5, 3.25, 3.75, 4.25, 4.75])
     np.testing.assert_allclose(r["l.Q"], [0, 1, 1, 0, 0, 1, 1], atol=1e-9)
     np.testing.assert_allclose(r["l.notQ"], 1 - r["l.Q"])
+
+
+def test_counter_counts_the_crossings_of_one_half_in_the_directions_asked() -> None:
+    """Counter (Hopsan's SignalCounter) of sin(2 pi t), which crosses 0.5 upwards at k + 1/12 s and downwards at
+    k + 5/12 s: the rising, falling and both counts at times between the edges; an input on from the start counts
+    one rising edge, as Hopsan's (its previous value starts false)."""
+    s = hs.System("counter", t_end=2.2)
+    s.add(c.Sine("u", amplitude=1.0, frequency=1.0))
+    s.add(c.Constant("on", value=1.0))
+    for edges in ("both", "rising", "falling"):
+        s.add(c.Counter(edges, edges=edges))
+        s.connect("u.y", f"{edges}.u")
+    s.add(c.Counter("start", edges="rising"))
+    s.connect("on.y", "start.u")
+    t = np.array([0.0, 0.05, 0.2, 0.5, 1.0, 1.2, 1.5, 2.0, 2.2])
+    r = s.simulate(t_eval=t)
+    rising = np.floor(t - 1 / 12) + 1
+    falling = np.floor(t - 5 / 12) + 1
+    np.testing.assert_allclose(r["rising.y"], rising, atol=1e-6)
+    np.testing.assert_allclose(r["falling.y"], falling, atol=1e-6)
+    np.testing.assert_allclose(r["both.y"], rising + falling, atol=1e-6)
+    np.testing.assert_allclose(r["start.y"], (t > 0).astype(float), atol=1e-6)  # counted within a few tau
 
 
 def test_hysteresis_is_the_play_operator_of_its_input() -> None:

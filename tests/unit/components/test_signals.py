@@ -97,3 +97,29 @@ def test_lookup_table_and_pid_options_are_written_to_and_read_from_model_files(t
     np.testing.assert_allclose(b["f.y"], a["f.y"])
     np.testing.assert_allclose(b["p.y"], a["p.y"])
     np.testing.assert_allclose(a["f.y"], np.interp(np.array(t) - 0.5, [0.0, 1.0], [2.0, 4.0]))
+
+
+def test_table2d_is_bilinear_between_its_breakpoints_and_held_outside() -> None:
+    """Table2D (Hopsan's Signal2DLookupTable): within its breakpoints the bilinear interpolation
+    y = sum_ij V_ij a_i(r) b_j(c) of the hats a_i, b_j, each input held at its first and last breakpoint outside;
+    a table of unequal breakpoints (rows 0, 1, 3; cols -1, 2) against that closed form along a diagonal."""
+    V = np.array([[0.0, 3.0], [1.0, -2.0], [5.0, 4.0]])
+    s = hs.System("t2", t_end=6.0)
+    s.add(c.Ramp("r", offset=-1.0, slope=1.0))
+    s.add(c.Ramp("q", offset=-2.0, slope=1.0))
+    s.add(c.Table2D("T", rows=[0.0, 1.0, 3.0], cols=[-1.0, 2.0], values=V, scale=2.0))
+    s.connect("r.y", "T.row")
+    s.connect("q.y", "T.col")
+    t = np.linspace(0.0, 6.0, 25)
+    r = s.simulate(t_eval=t)
+    row, col = np.clip(t - 1.0, 0.0, 3.0), np.clip(t - 2.0, -1.0, 2.0)
+    a = [np.interp(row, [0.0, 1.0, 3.0], e) for e in np.eye(3)]
+    b = [np.interp(col, [-1.0, 2.0], e) for e in np.eye(2)]
+    expected = sum(V[i, j] * a[i] * b[j] for i in range(3) for j in range(2))
+    np.testing.assert_allclose(r["T.y"], 2.0 * expected, atol=1e-12)
+    from hydroservo.errors import ParameterError
+
+    with pytest.raises(ParameterError, match="T.rows: expected strictly increasing breakpoints"):
+        c.Table2D("T", rows=[0.0, 0.0, 1.0], cols=[0.0, 1.0], values=np.zeros((3, 2)))
+    with pytest.raises(ParameterError, match="values of 2 by 2"):
+        c.Table2D("T", rows=[0.0, 1.0], cols=[0.0, 1.0], values=np.zeros((3, 2)))

@@ -304,7 +304,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 @pytest.mark.parametrize(
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
-     "shuttle_valve", "pressure_controlled_pump"],
+     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -318,7 +318,10 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     sine-wave pressure and a constant one, and drains back through the open inlet as the sine falls. The
     pressure-controlled pump (HydraulicPressureControlledPump) strokes at its rate limit, overshoots, destrokes to
     its lower bound and leaves it, and answers an orifice closed and a flow drawn (Hopsan's
-    HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw)."""
+    HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw). The
+    second signal circuit checks the blocks no Hopsan example uses either: SignalMax, SignalMin and SignalSub over
+    their multiports, SignalNot, SignalXor, SignalCounter (both edges, rising only), SignalSecondOrderFilter,
+    SignalHP2Filter, Signal1DPLOLookupTable, Signal2DLookupTable, a numerical input into a slider and a display."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -1035,6 +1038,84 @@ def test_hopsans_lookup_table_reads_its_csv_beside_the_model_and_interpolates_it
     np.testing.assert_array_equal(table.table_values, [2.0, 4.0])
 
 
+def test_hopsans_plo_lookup_table_reads_its_named_columns_beside_the_model(tmp_path: Path) -> None:
+    """Signal1DPLOLookupTable: the PLO file named relative to the model, its columns invar and outvar by name (a
+    first 'Time' column not counted in the header's number, as Hopsan's PLOParser), rows sorted; linear between
+    the breakpoints, held outside; a column that is not there and a file outside the model's folder refused."""
+    (tmp_path / "tables").mkdir()
+    plo = ("    'VERSION'\n    1\n    'f.plo' 'model' 'today'\n    2    3\n    'Time',    'x',    'y'\n"
+           "  Time 1 1\n  0.0 3 9\n  0.1 0 1\n  0.2 1 3\n  DAT model\n")
+    (tmp_path / "tables" / "f.plo").write_text(plo, encoding="utf-8")
+    v = _value
+    ramp = {"y_0#Value": v("-1"), "y_A#Value": v("6"), "t_start#Value": v("0"), "t_end#Value": v("6")}
+
+    def model(**table: tuple[str, str]) -> Path:
+        text = _hmf([("SignalRamp", "Ramp", ramp), ("Signal1DPLOLookupTable", "LUT", table)], [("Ramp.out", "LUT.in")])
+        for name in ("filename", "invar", "outvar"):
+            text = text.replace(f'type="double" name="{name}"', f'type="string" name="{name}"')
+        path = tmp_path / "plo.hmf"
+        path.write_text(text, encoding="utf-8")
+        return path
+
+    imp = import_hopsan(model(filename=v("tables/f.plo"), invar=v("x"), outvar=v("y")))
+    assert imp.system["LUT"].option("index") == "input"
+    t = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0])
+    r = imp.system.simulate(t_eval=t)
+    np.testing.assert_allclose(r["LUT.out.Value"], np.interp(t - 1.0, [0.0, 1.0, 3.0], [1.0, 3.0, 9.0]), atol=1e-12)
+    with pytest.raises(ModelFileError, match="no column 'z'; its columns: Time, x, y"):
+        import_hopsan(model(filename=v("tables/f.plo"), invar=v("x"), outvar=v("z")))
+    with pytest.raises(ModelFileError, match="outside the model file's folder"):
+        import_hopsan(model(filename=v("../f.plo"), invar=v("x"), outvar=v("y")))
+
+
+def test_hopsans_2d_lookup_table_is_bilinear_held_at_its_edges_and_round_trips(tmp_path: Path) -> None:
+    """Signal2DLookupTable: the CSV beside the model (row, col, value per line, row-major; the last line nR, nC),
+    bilinear in row and col as Hopsan's LookupTable2D (along row in the two columns about col, then along col),
+    held at the edges; written to a model file and read back; numlineskip (which Hopsan ignores) and breakpoints
+    listed out of order (which Hopsan sorts without their values) refused."""
+    (tmp_path / "m.csv").write_text("# row,col,value\n0,0,1\n0,4,2\n0,5,6\n2,0,7\n2,4,9\n2,5,3\n2,3,0\n",
+                                    encoding="utf-8")
+    v = _value
+    components = [
+        ("SignalRamp", "R", {"y_0#Value": v("-1"), "y_A#Value": v("4"), "t_start#Value": v("0"), "t_end#Value": v("4")}),
+        ("SignalSineWave", "C", {"y_A#Value": v("3"), "f#Value": v("0.25")}),
+        ("Signal2DLookupTable", "LUT", {"filename": v("m.csv"), "comment": v("#")}),
+    ]
+
+    def model(**extra: tuple[str, str]) -> Path:
+        table = [(k, n, {**p, **extra} if n == "LUT" else p) for k, n, p in components]
+        text = _hmf(table, [("R.out", "LUT.row"), ("C.out", "LUT.col")])
+        for name in ("filename", "comment"):
+            text = text.replace(f'type="double" name="{name}"', f'type="string" name="{name}"')
+        path = tmp_path / "lut2.hmf"
+        path.write_text(text, encoding="utf-8")
+        return path
+
+    imp = import_hopsan(model())
+    lut = imp.system["LUT"]
+    np.testing.assert_array_equal(lut.rows, [0.0, 2.0])
+    np.testing.assert_array_equal(lut.table_values, [[1.0, 2.0, 6.0], [7.0, 9.0, 3.0]])
+    t = np.linspace(0.0, 4.0, 17)
+    r = imp.system.simulate(t_eval=t)
+    row = np.clip(t - 1.0, 0.0, 2.0) / 2.0  # the fraction along rows
+    col = np.clip(3.0 * np.sin(2 * np.pi * 0.25 * t), 0.0, 5.0)
+    left = np.where(col <= 4.0, (1 - row) * 1 + row * 7, (1 - row) * 2 + row * 9)
+    right = np.where(col <= 4.0, (1 - row) * 2 + row * 9, (1 - row) * 6 + row * 3)
+    w = np.where(col <= 4.0, col / 4.0, col - 4.0)
+    np.testing.assert_allclose(r["LUT.out.Value"], (1 - w) * left + w * right, atol=1e-12)
+    from hydroservo.io.model_file import load_model
+    from hydroservo.workflows.hopsan import ImportHopsan
+
+    files = ImportHopsan(model()).run().write(tmp_path / "out")
+    again = load_model(files["model"])
+    np.testing.assert_allclose(again.simulate(t_eval=t)["LUT.out.Value"], r["LUT.out.Value"], atol=1e-12)
+    with pytest.raises(ModelFileError, match="numlineskip = 1: Hopsan's 2D lookup table never skips lines"):
+        import_hopsan(model(numlineskip=v("1")))
+    (tmp_path / "m.csv").write_text("2,0,7\n2,4,9\n2,5,3\n0,0,1\n0,4,2\n0,5,6\n2,3,0\n", encoding="utf-8")
+    with pytest.raises(ModelFileError, match="the row breakpoints 2, 0: expected them strictly increasing as listed"):
+        import_hopsan(model())
+
+
 def test_a_lookup_table_driven_by_a_constant_reads_its_file_once(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """A constant into the table's input is folded (its value looked up); probing the block for its ports reads
     no file: the table's CSV is read once, from the model's folder."""
@@ -1179,6 +1260,113 @@ def test_hopsans_rounding_comparison_logic_blocks_and_latch_map_with_their_ports
     # the latch starts set and is reset once the ramp passes 0.5 (t = 2.5 s)
     np.testing.assert_allclose(r["Latch.Qstate.Value"], (u <= 0.5).astype(float), atol=1e-9)
     np.testing.assert_allclose(r["Latch.notQstate.Value"], (u > 0.5).astype(float), atol=1e-9)
+
+
+def test_hopsans_max_min_sub_not_and_xor_read_their_ports_and_multiports(tmp_path: Path) -> None:
+    """SignalMax and SignalMin: the largest and smallest of the signals joining 'in' (three: chained; one passes
+    on; none is 0); SignalSub: sum(insum) - sum(insub) (either may be empty); SignalNot: in <= 0.5; SignalXor:
+    in1 > 0.5 or in2 > 0.5, not both. On a ramp u from -2 to 2, its negative and constants 0.5 and 1."""
+    v = _value
+    ramp = {"y_0#Value": v("-2"), "y_A#Value": v("4"), "t_start#Value": v("0"), "t_end#Value": v("4")}
+    components = [
+        ("SignalRamp", "Ramp", ramp), ("SignalGain", "Neg", {"k#Value": v("-1")}),
+        ("SignalConstant", "A", {"y#Value": v("0.5")}), ("SignalConstant", "B", {"y#Value": v("1")}),
+        ("SignalMax", "Max", {}), ("SignalMin", "Min", {}), ("SignalMax", "Max1", {}), ("SignalMin", "Min0", {}),
+        ("SignalSub", "Sub", {}), ("SignalSub", "Sub0", {}), ("SignalNot", "Not", {}), ("SignalXor", "Xor", {}),
+    ]
+    connections = [("Ramp.out", "Neg.in"), ("Ramp.out", "Max.in"), ("Neg.out", "Max.in"), ("A.y", "Max.in"),
+                   ("Ramp.out", "Min.in"), ("A.y", "Min.in"), ("Ramp.out", "Max1.in"),
+                   ("Ramp.out", "Sub.insum"), ("B.y", "Sub.insum"), ("A.y", "Sub.insub"), ("Neg.out", "Sub.insub"),
+                   ("A.y", "Sub0.insub"), ("Ramp.out", "Not.in"), ("Ramp.out", "Xor.in1"), ("Neg.out", "Xor.in2")]
+    path = tmp_path / "arith.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["Max"] == "2 Functions (max) chained (Max, ...)" and kinds["Min"] == "Function Min"
+    assert kinds["Max1"] == "Gain Max1" and kinds["Min0"] == "Constant Min0" and kinds["Not"] == "Function Not"
+    t = np.array([0.0, 0.5, 1.8, 2.25, 3.0, 3.9])
+    u = t - 2.0
+    r = imp.system.simulate(t_eval=t)
+    np.testing.assert_allclose(r["Max.out.Value"], np.maximum(np.abs(u), 0.5), atol=1e-12)
+    np.testing.assert_allclose(r["Min.out.Value"], np.minimum(u, 0.5), atol=1e-12)
+    np.testing.assert_allclose(r["Max1.out.Value"], u, atol=1e-12)
+    np.testing.assert_array_equal(r["Min0.out.Value"], np.zeros_like(u))
+    np.testing.assert_allclose(r["Sub.out.Value"], u + 1.0 - 0.5 + u, atol=1e-12)
+    np.testing.assert_allclose(r["Sub0.out.Value"], np.full_like(u, -0.5), atol=1e-12)
+    np.testing.assert_array_equal(r["Not.out.Value"], (u <= 0.5).astype(float))
+    np.testing.assert_array_equal(r["Xor.out.Value"], (np.abs(u) > 0.5).astype(float))
+
+
+def test_hopsans_counter_counts_the_edges_of_its_input_it_is_asked_to(tmp_path: Path) -> None:
+    """SignalCounter's r and f (bool) choose the edges counted: of a square wave of 1 Hz between -1 and 1 from
+    t = 0 (rising at 0, 1, 2 s, falling at 0.5, 1.5 s), the rising ones, the falling ones, both; neither: 0."""
+    v = _value
+    square = {"y_0#Value": v("0"), "y_A#Value": v("1"), "f#Value": v("1"), "t_start#Value": v("0")}
+    components = [("SignalSquareWave", "Sq", square),
+                  ("SignalCounter", "Both", {}), ("SignalCounter", "Up", {"f": v("false")}),
+                  ("SignalCounter", "Down", {"r": v("false")}), ("SignalCounter", "Neither", {"r": v("false"), "f": v("false")})]
+    connections = [("Sq.out", f"{k}.in") for k in ("Both", "Up", "Down", "Neither")]
+    path = tmp_path / "counter.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["Up"].option("edges") == "rising" and imp.system["Down"].option("edges") == "falling"
+    t = np.array([0.0, 0.25, 0.75, 1.25, 1.75, 2.25])
+    r = imp.system.simulate(t_eval=t)
+    up, down = np.array([0, 1, 1, 2, 2, 3]), np.array([0, 0, 1, 1, 2, 2])
+    np.testing.assert_allclose(r["Up.out.Value"], up, atol=1e-6)
+    np.testing.assert_allclose(r["Down.out.Value"], down, atol=1e-6)
+    np.testing.assert_allclose(r["Both.out.Value"], up + down, atol=1e-6)
+    np.testing.assert_array_equal(r["Neither.out.Value"], np.zeros_like(t))
+
+
+def test_hopsans_second_order_filter_and_high_pass_answer_a_step_with_their_continuous_laws(tmp_path: Path) -> None:
+    """SignalSecondOrderFilter k (s^2/w1^2 + 2 d1 s/w1 + 1)/(s^2/w2^2 + 2 d2 s/w2 + 1) with k = 2, w1 = 5, d1 = 1,
+    w2 = 20, d2 = 1 is 32 (s + 5)^2/(s + 20)^2: its step response 2 + 30 e^-20t - 360 t e^-20t; SignalHP2Filter
+    (s^2/w^2)/(s^2/w^2 + 2 d s/w + 1) with w = 10, d = 1 is s^2/(s + 10)^2: e^-10t (1 - 10 t). The step at 1 s."""
+    v = _value
+    components = [
+        ("SignalStep", "Step", {"y_0#Value": v("0"), "y_A#Value": v("1"), "t_step#Value": v("0")}),
+        ("SignalSecondOrderFilter", "F2", {"k": v("2"), "omega_1": v("5"), "delta_1": v("1"), "omega_2": v("20"),
+                                           "delta_2": v("1")}),
+        ("SignalHP2Filter", "HP2", {"omega": v("10"), "delta": v("1")}),
+    ]
+    path = tmp_path / "filters2.hmf"
+    text = _hmf(components, [("Step.out", "F2.in"), ("Step.out", "HP2.in")]).replace('start="0"', 'start="-1"')
+    path.write_text(text, encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["F2"].option("order") == "2" and imp.system["HP2"].option("order") == "2"
+    t = np.array([0.5, 1.02, 1.05, 1.1, 1.3, 2.0])
+    tau = t - 1.0
+    r = imp.system.simulate(t_eval=t, accuracy=1e-6)
+    f2 = 2 + 30 * np.exp(-20 * tau) - 360 * tau * np.exp(-20 * tau)
+    np.testing.assert_allclose(r["F2.out.Value"], np.where(tau >= 0, f2, 0.0), atol=1e-5)
+    np.testing.assert_allclose(r["HP2.out.Value"], np.where(tau >= 0, np.exp(-10 * tau) * (1 - 10 * tau), 0.0),
+                               atol=1e-6)
+
+
+def test_hopsans_displays_and_loggers_are_dropped_and_gui_inputs_hold_their_start_values(tmp_path: Path) -> None:
+    """SignalDisplay, SignalAnimationGauge, SignalAnimationLamp and SignalLogger compute nothing (dropped);
+    SignalNumericalInput and SignalAnimationSwitch output their start value of out; SignalAnimationSlider
+    min + (max - min) in, in at its start value where nothing drives it."""
+    v = _value
+    components = [
+        ("SignalNumericalInput", "Num", {"out#Value": v("3")}), ("SignalAnimationSwitch", "Switch", {}),
+        ("SignalAnimationSlider", "Slider", {"min": v("2"), "max": v("4"), "in#Value": v("0.5")}),
+        ("SignalAnimationSlider", "Driven", {"min": v("2"), "max": v("4")}), ("SignalConstant", "C", {"y#Value": v("0.25")}),
+        ("SignalDisplay", "Display", {}), ("SignalAnimationGauge", "Gauge", {}), ("SignalAnimationLamp", "Lamp", {}),
+        ("SignalLogger", "Logger", {}),
+    ]
+    connections = [("Num.out", "Display.in"), ("Slider.out", "Gauge.in"), ("Switch.out", "Lamp.in"),
+                   ("Num.out", "Logger.in"), ("Switch.out", "Logger.in"), ("C.y", "Driven.in")]
+    path = tmp_path / "gui.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert all(kinds[k].startswith("dropped") for k in ("Display", "Gauge", "Lamp", "Logger"))
+    assert not {"Display", "Gauge", "Lamp", "Logger"} & set(imp.system.components)
+    r = imp.system.simulate(t_eval=[0.0, 1.0])
+    assert list(r["Num.out.Value"]) == [3.0, 3.0] and list(r["Switch.out.Value"]) == [0.0, 0.0]
+    assert list(r["Slider.out.Value"]) == [3.0, 3.0] and list(r["Driven.out.Value"]) == [2.5, 2.5]
 
 
 @pytest.mark.parametrize("kind", sorted(REFUSED))

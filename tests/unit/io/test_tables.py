@@ -66,3 +66,27 @@ def test_lookup_table_file_missing_or_binary_is_refused(tmp_path) -> None:
     (tmp_path / "b.csv").write_bytes(b"0,1\x00\n1,2\n")
     with pytest.raises(ParameterError, match="binary"):
         read_lookup_table(tmp_path / "b.csv", what="LUT")
+
+
+@pytest.mark.parametrize(
+    ("text", "message"),
+    [
+        ("0 1\n1 2\n", "does not begin with 'VERSION'"),
+        ("'VERSION'\n3\n't'\n1 2\n'x'\n1\n0\n1\n", "PLO version '3': expected 1 or 2"),
+        ("'VERSION'\n1\n't'\n2 3\n'Time', 'x', 'y'\n1 1 1\n0 0 0\n1 1 1\n", "6 numbers of data where the header announces 9"),
+        ("'VERSION'\n1\n't'\n1 2\n'Time', 'Data'\n1 1\n0 x\n1 2\n", "a field that is no number"),
+        ("'VERSION'\n1\n't'\n1 2\n'Time', 'Data'\n1 1\n0 1\n0 2\n", "two rows have the breakpoint 0"),
+    ],
+)
+def test_plo_tables_are_read_as_hopsans_ploparser_and_malformed_ones_refused(text: str, message: str) -> None:
+    """Hopsan's PLO text (Signal1DPLOLookupTable): a first 'Time' column is not counted in the header's number of
+    columns, the plot scales are skipped, the rows sorted; no 'VERSION', another version, too few numbers, a field
+    that is no number and a repeated breakpoint are refused."""
+    from hydroservo.io.tables import parse_plo_table
+
+    text_ok = "'VERSION'\n2\n'title' 'm'\n2 3\n'Time',  'a',  'b'\n1 1 1\n0 5 9\n1 3 1\n2 4 4\nDAT m\n"
+    x, y = parse_plo_table(text_ok, "a", "b")
+    np.testing.assert_array_equal(x, [3.0, 4.0, 5.0])
+    np.testing.assert_array_equal(y, [1.0, 4.0, 9.0])
+    with pytest.raises(ParameterError, match=message):
+        parse_plo_table(text, "Time", "Data" if "Data" in text else "x", what="LUT")
