@@ -2502,6 +2502,35 @@ def _table_file(par: _Params, folder: Path, filename: str) -> Path:
     return file
 
 
+def _input_table(
+    n: str,
+    par: _Params,
+    parse: Callable[[str, str], tuple[Any, Any]],
+    read: Callable[[Path, str], tuple[Any, Any]],
+) -> Mapped:
+    """A Table of its input (``index = "input"``) whose breakpoints and values Hopsan's table block reads from its
+    ``text`` or, else, its file ``filename`` (inside the model file's folder: :func:`_table_file`): ``parse(text,
+    what)`` or ``read(file, what)``. Probed for its ports outside an import, it reads nothing."""
+    from hydroservo.components import Table
+    from hydroservo.errors import HydroservoError
+
+    inputs, outputs = {"in": f"{n}.u"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        return Mapped([Table(n, times=[0.0, 1.0], values=[0.0, 0.0], index="input")], inputs=inputs, outputs=outputs)
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            x, y = parse(par.text("text"), f"{par.where}: text")
+        else:
+            x, y = read(_table_file(par, par.folder, filename), f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table(n, times=x, values=y, index="input")
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+
+
 def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """Signal1DLookupTable (Signal/Non-Linearities/Signal1DLookupTable.hpp): a Table with ``index = "input"``,
     its breakpoints and values columns ``inid`` and ``outid`` of the CSV file ``filename`` (or of the text
@@ -2509,28 +2538,15 @@ def _lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     read only inside the model file's folder: a file named by an absolute path or outside it is refused (a
     model file from someone else reads nothing else of the user's disk); ``reload`` is moot (the table is
     read once, at import)."""
-    from hydroservo.components import Table
-    from hydroservo.errors import HydroservoError
     from hydroservo.io.tables import parse_lookup_table, read_lookup_table
 
-    inputs, outputs = {"in": f"{n}.u"}, {"out": f"{n}.y"}
-    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
-        return Mapped([Table(n, times=[0.0, 1.0], values=[0.0, 0.0], index="input")], inputs=inputs, outputs=outputs)
     inid, outid, skip = int(par("inid", 0)), int(par("outid", 1)), int(par("numlineskip", 0))
     sep, comment = par.text("csvsep", ","), par.text("comment", "")
-    text, filename = par.text("text").strip(), par.text("filename").strip()
-    try:
-        if text:
-            x, y = parse_lookup_table(par.text("text"), inid, outid, sep, skip, comment, what=f"{par.where}: text")
-        else:
-            file = _table_file(par, par.folder, filename)
-            x, y = read_lookup_table(file, inid, outid, sep, skip, comment, what=f"{par.where}: filename")
-    except HydroservoError as exc:
-        par.problems.append(str(exc))
-        return Mapped()
-    comp = Table(n, times=x, values=y, index="input")
-    return Mapped([comp], inputs=inputs, outputs=outputs,
-                  note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+    return _input_table(
+        n, par,
+        lambda text, what: parse_lookup_table(text, inid, outid, sep, skip, comment, what=what),
+        lambda file, what: read_lookup_table(file, inid, outid, sep, skip, comment, what=what),
+    )
 
 
 def _plo_lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -2539,27 +2555,14 @@ def _plo_lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     the PLO file ``filename`` (or of the text ``text``), read at import as Hopsan's PLOParser reads them
     (:func:`hydroservo.io.tables.parse_plo_table`); the file only inside the model file's folder, as
     Signal1DLookupTable's; ``reload`` is moot."""
-    from hydroservo.components import Table
-    from hydroservo.errors import HydroservoError
     from hydroservo.io.tables import parse_plo_table, read_plo_table
 
-    inputs, outputs = {"in": f"{n}.u"}, {"out": f"{n}.y"}
-    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
-        return Mapped([Table(n, times=[0.0, 1.0], values=[0.0, 0.0], index="input")], inputs=inputs, outputs=outputs)
     invar, outvar = par.text("invar", "Time"), par.text("outvar", "Data")
-    text, filename = par.text("text").strip(), par.text("filename").strip()
-    try:
-        if text:
-            x, y = parse_plo_table(par.text("text"), invar, outvar, what=f"{par.where}: text")
-        else:
-            file = _table_file(par, par.folder, filename)
-            x, y = read_plo_table(file, invar, outvar, what=f"{par.where}: filename")
-    except HydroservoError as exc:
-        par.problems.append(str(exc))
-        return Mapped()
-    comp = Table(n, times=x, values=y, index="input")
-    return Mapped([comp], inputs=inputs, outputs=outputs,
-                  note=f"Table {n} (index = input), {x.size} rows of {text and 'its text' or repr(filename)}")
+    return _input_table(
+        n, par,
+        lambda text, what: parse_plo_table(text, invar, outvar, what=what),
+        lambda file, what: read_plo_table(file, invar, outvar, what=what),
+    )
 
 
 def _lookup_table_2d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
