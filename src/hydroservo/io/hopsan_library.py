@@ -961,6 +961,23 @@ def _pressure_controlled(kind: str) -> Builder:
     return build
 
 
+def _valve33_edges(par: _Params, rho: float, x0: float, plam: float) -> dict[str, Any]:
+    """The edges of Hopsan's HydraulicValve33 and HydraulicPressureControlValve33 as a ThreeWayValve's: P-A
+    opening as Xap0 + xv and A-T as Xap0 - xv, each C_q √(2/ρ) π Fr Sd wide, turbulent above the laminar onset
+    plam (the transition pressure of D_h)."""
+    nu, lambda_crit = 32e-6, 1000.0
+    return {
+        "c_PA": _edge_coefficient(par, par("Frap", 1.0), rho, d="Sd", c_q="Cq"),
+        "c_AT": _edge_coefficient(par, par("Frat", 1.0), rho, d="Sd", c_q="Cq"),
+        "x_PA": -x0,
+        "x_AT": -x0,
+        "rho": rho,
+        "nu": nu,
+        "lambda_crit": lambda_crit,
+        "D_h": lambda_crit * nu * math.sqrt(rho / (2.0 * plam)),  # transition_pressure(D_h) = plam
+    }
+
+
 def _valve33_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Special/HydraulicValve33.hpp: a 3/3 valve whose spool position xv [m] is its input
     (no spool dynamics). Its edges' conductances are Ks π Fr Sd limit(Xap0 ± xv, 0, X0 + Xvmax) with
@@ -981,18 +998,7 @@ def _valve33_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     if plam <= 0.0:
         par.problems.append(f"{par.where}: plam = {plam:g} Pa; a turbulence onset pressure above 0 is supported")
         plam = 1e4
-    nu, lambda_crit = 32e-6, 1000.0
-    valve = ThreeWayValve(
-        n,
-        c_PA=_edge_coefficient(par, par("Frap", 1.0), rho, d="Sd", c_q="Cq"),
-        c_AT=_edge_coefficient(par, par("Frat", 1.0), rho, d="Sd", c_q="Cq"),
-        x_PA=-x0,
-        x_AT=-x0,
-        rho=rho,
-        nu=nu,
-        lambda_crit=lambda_crit,
-        D_h=lambda_crit * nu * math.sqrt(rho / (2.0 * plam)),  # transition_pressure(D_h) = plam
-    )
+    valve = ThreeWayValve(n, **_valve33_edges(par, rho, x0, plam))
     limit = Saturation(f"{n}_xv", unit="m", lower=-x_vmax, upper=x_vmax)
     return Mapped(
         [limit, valve],
@@ -1036,17 +1042,9 @@ def _pressure_control_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapp
         )
     if len(par.problems) > before:
         return Mapped()
-    nu, lambda_crit = 32e-6, 1000.0
     valve = ThreeWayPressureValve(
         n,
-        c_PA=_edge_coefficient(par, par("Frap", 1.0), rho, d="Sd", c_q="Cq"),
-        c_AT=_edge_coefficient(par, par("Frat", 1.0), rho, d="Sd", c_q="Cq"),
-        x_PA=-x0,
-        x_AT=-x0,
-        rho=rho,
-        nu=nu,
-        lambda_crit=lambda_crit,
-        D_h=lambda_crit * nu * math.sqrt(rho / (2.0 * plam)),  # transition_pressure(D_h) = plam
+        **_valve33_edges(par, rho, x0, plam),
         A_v=math.pi * sd * sd / 4.0,
         p_ref=_abs(par("pref", 1e6)),
         k_s=par("ks", 100.0),
