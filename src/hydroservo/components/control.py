@@ -461,6 +461,14 @@ class DeadZone(Component):
         return {"start": (u["u"] - p["u_dstart"], 1.0), "end": (u["u"] - p["u_dend"], 1.0)}
 
 
+def tracking_time(what: str) -> Param:
+    """The time constant ``tau`` with which a block follows Hopsan's step-by-step update of its output (a rate
+    limiter's, a hysteresis', a latch's, a counter's): the update's limit as the step vanishes is a jump or a
+    kink, which an ODE follows within a few ``tau``. 1 µs by default, far below a servo loop's time scales and
+    stiff only for an explicit solver."""
+    return Param(1e-6, "s", f"time constant with which {what}", min=0.0, min_inclusive=False)
+
+
 @register
 class RateLimiter(Component):
     r"""The input with its rate limited: the output follows ``u``, but rises at most at ``c_up`` and falls at
@@ -480,7 +488,7 @@ class RateLimiter(Component):
     PARAMETERS = {
         "c_up": Param(1.0, SIGNAL + "/s", "largest rate of rise", min=0.0),
         "c_down": Param(-1.0, SIGNAL + "/s", "largest rate of fall (negative, as Hopsan's)", max=0.0),
-        "tau": Param(1e-6, "s", "time constant of the tracking", min=0.0, min_inclusive=False),
+        "tau": tracking_time("the output tracks the input within the limits"),
         "y0": Param(0.0, SIGNAL, "initial output"),
     }
     STATES = {"y": State(SIGNAL, "output", initial="y0", nominal=1.0)}
@@ -520,7 +528,7 @@ class Hysteresis(Component):
 
     PARAMETERS = {
         "band": Param(1.0, SIGNAL, "width of the hysteresis band (y_h)", min=0.0),
-        "tau": Param(1e-6, "s", "time constant with which the output follows the band", min=0.0, min_inclusive=False),
+        "tau": tracking_time("the output follows the band"),
         "y0": Param(0.0, SIGNAL, "initial output"),
     }
     STATES = {"y": State(SIGNAL, "output", initial="y0", nominal=1.0)}
@@ -561,7 +569,7 @@ class Latch(Component):
     """
 
     PARAMETERS = {
-        "tau": Param(1e-6, "s", "time constant with which Q follows the latch's law", min=0.0, min_inclusive=False),
+        "tau": tracking_time("Q follows the latch's law"),
         "Q0": Param(0.0, "", "initial state", min=0.0, max=1.0),
     }
     STATES = {"Q": State("", "the latch's state", initial="Q0", nominal=1.0)}
@@ -601,8 +609,7 @@ class Counter(Component):
     """
 
     PARAMETERS = {
-        "tau": Param(1e-6, "s", "time constant with which b follows the input's logic value", min=0.0,
-                     min_inclusive=False),
+        "tau": tracking_time("b follows the input's logic value"),
     }
     STATES = {
         "b": State("", "the input's logic value, followed (Hopsan's previous value, false at the start)", nominal=1.0),
