@@ -922,6 +922,7 @@ def test_hopsans_gas_accumulator_charges_through_its_inlet_coefficient(tmp_path:
     assert r["Acc.vmp.Value"][0] == pytest.approx(2e-9 * (1.5e7 - pa) / 0.002, rel=1e-9)
     x_end = 1.0 - (8e6 / 1.5e7) ** (1 / 1.3)  # charged until pa reaches the source's pressure
     assert r["Acc.xmp.Value"][-1] == pytest.approx(x_end, rel=1e-5)
+    assert (r.units["Acc.xmp.Value"], r.units["Acc.vmp.Value"]) == ("", "1/s")  # a state of charge and its rate
     components[0][2]["kappa#Value"] = v("2")
     path.write_text(_hmf(components, [("Acc.P1", "S.P1")]), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"Acc \(HydraulicAckumulator\): kappa = 2"):
@@ -955,6 +956,7 @@ def test_hopsans_piston_accumulator_settles_where_its_gas_takes_the_source_press
     x_end = 0.4 * (1.0 - (8e6 / 1.5e7) ** (1 / 1.3))
     assert r["Acc.xmp.Value"][-1] == pytest.approx(x_end, rel=1e-5)
     assert r["Acc.pa.Value"][-1] == pytest.approx(1.5e7, rel=1e-6)
+    assert (r.units["Acc.xmp.Value"], r.units["Acc.vmp.Value"]) == ("m", "m/s")  # the piston's position, speed
 
 
 def test_math_blocks_rate_limiter_and_dead_zone_map_with_hopsans_ports(tmp_path: Path) -> None:
@@ -1193,6 +1195,8 @@ def test_hopsans_pid_controllers_map_to_a_pid_with_their_anti_windup(tmp_path: P
     np.testing.assert_allclose(r["Lead.err.Value"], 0.5, atol=1e-9)
     np.testing.assert_allclose(r["Lead.u.Value"], np.minimum(1.0 + 2.0 * t, 3.0), atol=1e-6)
     np.testing.assert_allclose(r["Delay.out.Value"], r["PID.u.Value"])
+    # uI is Ki (or k1 wa) times the integral of the error [s]: a control signal as u is, without unit
+    assert system.aliases["PID.uI.Value"].unit == "" and system.aliases["Lead.uI.Value"].unit == ""
 
 
 def test_pid2_without_its_derivative_and_unit_delays_closing_algebraic_loops_are_refused(tmp_path: Path) -> None:
@@ -1886,6 +1890,8 @@ def test_a_pressure_controlled_pump_needs_its_reference_port(tmp_path: Path) -> 
     pump = system["Pump"]
     assert pump.values["D"] * pump.values["omega"] == pytest.approx(1.25e-3)
     assert (pump.values["p_dif"], pump.values["tau_v"], pump.values["omega_p1"]) == (28e6, 3e-3, 200.0)
+    # its eps is a fraction (QP over q_max ω/125), not a flow
+    assert system.aliases["Pump.eps.Value"].unit == ""
     path = tmp_path / "no_ref.hmf"
     path.write_text(circuit.replace('<connect startcomponent="TRef" startport="P1" endcomponent="Pump" '
                                     'endport="PREF"/>', ""), encoding="utf-8")
