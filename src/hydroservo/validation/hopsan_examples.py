@@ -366,28 +366,23 @@ MODELS: dict[str, Spec] = {
         "valves for a pressure-controlled pump's regulator, a relief valve with hysteresis on the supply",
         method="rodas3",
         known=(
-            ("Velocity", "2.8 % of range: mass 3's velocity at t = 3.12, 10.32 and 24.72 s (0.27 m/s where Hopsan's "
-             "reference has 0.12), the instants where the forces and the idle chambers' pressures differ too; "
-             "Hopsan's own result does not converge there (its extrapolation is uncertain by 2.3 % of that trace's "
-             "range: the reference is the three finest of eleven halvings of the step, to 9.8e-7 s, none of which "
-             "changed the largest trace by less than its range). At t = 3.12 s itself, though, Hopsan's runs from "
-             "6.3e-5 to 9.8e-7 s agree on 0.12 m/s within 0.01 m/s, where hydroservo gives 0.28 m/s: a difference "
-             "not explained yet (the next sample, 3.18 s, Hopsan's runs do not settle: 0.03 to 0.18 m/s; the "
-             "shuttle valves switch there, whose switches hydroservo rounds over 100 Pa; docs/validation.md)"),
-            ("Force", "25 % of range: the rods' forces of masses 1 and 2 at the same instants (1627 N where Hopsan's "
-             "reference has 942 N), 72 of 501 samples beyond 0.5 %; Hopsan's own extrapolation of these traces is "
-             "uncertain by 9.5 % and 27 % of range (docs/validation.md)"),
-            ("Pressure", "40 % of range: the chambers of idle cylinders (valve 1's B at 2.0 MPa where Hopsan's "
-             "reference has 0.17 MPa), whose pressures behind a centred spool are set by its 1e-6 m underlaps' "
-             "leakage, that is by where within a micrometre the P-controlled spool rests; the positions agree "
-             "within 0.30 % (docs/validation.md)"),
-            ("Flow", "33 % of range: the load-sensing lines' flows, pulses at each switch of a line's pressure "
-             "(Hopsan fills a line within a step: its own extrapolation of these traces is uncertain by up to 63 % "
-             "of range), and the pump's flow with them (its displacement setting eps 6.3 %; docs/validation.md)"),
-            ("Value", "85 % of range: the shuttle valves' outputs out, which in Hopsan toggle between -1 and 1 "
-             "while both inlets sit at one pressure (its extrapolation of them is meaningless, 5.8 for a ±1 "
-             "signal), where hydroservo's ball floats (0); the pump's eps 6.3 %, the sensors and controllers' "
-             "signals within 0.06 % at the median (docs/validation.md)"),
+            ("Force", "17 % of range: the rods' forces in the 20 ms after a cylinder's chamber, drawn to 0 Pa absolute "
+             "(cavitating) while its piston runs on, is refilled (t = 3.12, 5.52, 7.92, 10.32 s ...: mass 3's rod "
+             "1616 N where Hopsan's reference has 588 N). Hopsan's instant of refilling converges at first order in "
+             "its step and slowly: mass 3's B chamber refills at 3.164, 3.137, 3.122, 3.114, 3.109 s at steps of 4, "
+             "2, 1, 0.5, 0.25 µs, heading for 3.100 ± 0.004 s, where hydroservo's refills at 3.097 s; the samples in "
+             "the transient after it compare a refill some ms apart (docs/validation.md)"),
+            ("Pressure", "14 % of range: the same cylinders' chamber pressures in the same transients (valve 1's A "
+             "at 3.48 MPa where Hopsan's reference has 2.36 MPa at t = 5.52 s; Hopsan's runs at 1 and 0.25 µs give "
+             "1.01 and 1.86 MPa there, refilling later; docs/validation.md)"),
+            ("Flow", "28 % of range: the load-sensing lines' flows, pulses at each switch of a line's pressure "
+             "(Hopsan fills a line within a step: its own extrapolation of these traces is uncertain by up to 52 % "
+             "of range), and the cylinders' flows in the refill transients (docs/validation.md)"),
+            ("Value", "50 % of range: the shuttle valves' outputs out, which in Hopsan toggle between -1 and 1 "
+             "while both inlets sit at one pressure (its extrapolation of them is meaningless), where hydroservo's "
+             "ball floats (0); the pump's eps 1.3 % at t = 9.78 s, where its outlet is drawn to 0 Pa absolute and "
+             "Hopsan's eps heads for hydroservo's as its step shrinks (0.281, 0.295 at 1 and 0.25 µs; hydroservo "
+             "0.304); the sensors and controllers' signals within 0.07 % (docs/validation.md)"),
         ),
     ),
     "1d-lookup-table": Spec(
