@@ -3040,6 +3040,17 @@ REFUSED: dict[str, str] = {
     "control, has not",
     "SignalAdditiveNoise": "white noise drawn anew at each of Hopsan's steps has no limit as the step vanishes, "
     "and a random trace cannot be compared sample by sample",
+    "SignalSteadyStateIdentifier": "its methods have no ODE form (Signal/Logic/SignalSteadyStateIdentifier.hpp): "
+    "the rectangular window (method 1) compares the largest and smallest input over the last wl seconds, a history "
+    "of the signal such as a time delay keeps and hydroservo's engine does not; the variance-ratio tests (2 and "
+    "3) add white noise of deviation sd to the input at each step, which has no limit as the step vanishes, and "
+    "method 3's filter factors l1, l2, l3 act per step (time constants of Ts/l that vanish with it)",
+    "MechanicGearClutch": "its generated code (Mechanic/Rotational/MechanicGearClutch.hpp) is the trapezoidal rule "
+    "of Jg w2' = gearRatio T1 + T2 - Bg w2, the torque T2 at Pmr2 driving the gear where every other Q component "
+    "takes it as a load (MechanicRotationalInertiaWithGearRatio: U T1 - T2; the .nb holds both signs, the later "
+    "one kept): no power balance at Pmr2 (a spring there has negative stiffness). hydroservo's ports are "
+    "power-conjugate, so it cannot reproduce that law, and the physical clutch (T1 limited to tmax by slip, "
+    "which is sound) would run opposite to Hopsan's result; myfric and wc are in none of its equations",
 }
 
 
