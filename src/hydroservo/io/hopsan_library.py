@@ -2721,6 +2721,22 @@ def _logic(function: str, ports: tuple[str, str]) -> Builder:
     return build
 
 
+def _round_port(function: str, output: str) -> Builder:
+    """SignalSegare and SignalDxSegare ([Hopsan2026] Signal/Non-Linearities/SignalSegare.hpp, SignalDxSegare.hpp):
+    the opened area (output ``area``) and width (``width``) of a round port of diameter ``diameter`` uncovered by
+    ``x`` (HopsanCore's segare and dxSegare), stateless: a Function with option ``round_port_area`` or
+    ``round_port_width``, ``x`` its ``u``, ``diameter`` its ``u2``; an unconnected one takes its start value.
+    Hopsan's laws divide by the diameter (0 gives NaN); hydroservo's give 0 there."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Function
+
+        inputs = {"x": f"{n}.u", "diameter": f"{n}.u2"}
+        return Mapped([Function(n, function=function)], inputs=inputs, outputs={output: f"{n}.y"})
+
+    return build
+
+
 def _hysteresis(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """SignalHysteresis (Signal/Non-Linearities/SignalHysteresis.hpp): a Hysteresis of width ``y_h`` (constant: a
     signal driving it is refused), its output starting at its input's start value, as Hopsan's."""
@@ -3002,6 +3018,8 @@ LIBRARY: dict[str, Builder] = {
     "SignalOr": _logic("or", ("in1", "in2")),
     "SignalSRlatch": _sr_latch,
     "SignalHysteresis": _hysteresis,
+    "SignalSegare": _round_port("round_port_area", "area"),
+    "SignalDxSegare": _round_port("round_port_width", "width"),
     "SignalMax": _extreme("max"),
     "SignalMin": _extreme("min"),
     "SignalSub": _sub,

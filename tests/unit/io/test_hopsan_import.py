@@ -1297,6 +1297,39 @@ def test_hopsans_max_min_sub_not_and_xor_read_their_ports_and_multiports(tmp_pat
     np.testing.assert_array_equal(r["Xor.out.Value"], (np.abs(u) > 0.5).astype(float))
 
 
+def test_hopsans_segare_and_dxsegare_are_a_round_ports_area_and_width(tmp_path: Path) -> None:
+    """SignalSegare (area) and SignalDxSegare (width) of a round port: x uncovering it, its diameter from a
+    signal or, unconnected, from its start value; closed below 0, the whole circle beyond the diameter (the
+    segment from its central angle phi, (d^2/8)(phi - sin phi), and its chord 2 sqrt(x (d - x)))."""
+    v = _value
+    ramp = {"y_0#Value": v("-0.01"), "y_A#Value": v("0.1"), "t_start#Value": v("0"), "t_end#Value": v("1")}
+    components = [
+        ("SignalRamp", "Ramp", ramp), ("SignalConstant", "D", {"y#Value": v("0.06")}),
+        ("SignalSegare", "Area", {"diameter#Value": v("1")}), ("SignalDxSegare", "Width", {}),
+        ("SignalSegare", "Own", {"diameter#Value": v(".04")}),
+    ]
+    connections = [("Ramp.out", "Area.x"), ("D.y", "Area.diameter"), ("Ramp.out", "Width.x"),
+                   ("D.y", "Width.diameter"), ("Ramp.out", "Own.x")]
+    path = tmp_path / "segare.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["Area"] == "Function Area" and kinds["Width"] == "Function Width"
+    t = np.array([0.0, 0.1, 0.25, 0.4, 0.55, 0.7, 1.0])
+    r = imp.system.simulate(t_eval=t)
+    x = -0.01 + 0.1 * t
+
+    def area(d: float) -> np.ndarray:
+        h = np.clip(x, 0.0, d)
+        phi = 2.0 * np.arccos(1.0 - 2.0 * h / d)
+        return d * d / 8.0 * (phi - np.sin(phi))
+
+    np.testing.assert_allclose(r["Area.area.Value"], area(0.06), rtol=1e-12, atol=1e-10)  # acos near 1: 1e-11
+    np.testing.assert_allclose(r["Own.area.Value"], area(0.04), rtol=1e-12, atol=1e-10)
+    np.testing.assert_allclose(r["Width.width.Value"], 2.0 * np.sqrt(np.clip(x, 0, 0.06) * (0.06 - np.clip(x, 0, 0.06))),
+                               rtol=1e-12, atol=1e-15)
+
+
 def test_hopsans_counter_counts_the_edges_of_its_input_it_is_asked_to(tmp_path: Path) -> None:
     """SignalCounter's r and f (bool) choose the edges counted: of a square wave of 1 Hz between -1 and 1 from
     t = 0 (rising at 0, 1, 2 s, falling at 0.5, 1.5 s), the rising ones, the falling ones, both; neither: 0."""
