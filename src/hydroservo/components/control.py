@@ -16,6 +16,7 @@ from hydroservo import backend as bk
 from hydroservo.components.base import SIGNAL, Component, Option, Output, Param, Port, State, register
 from hydroservo.components.signals import SIGNAL_OUTPUT
 from hydroservo.errors import ParameterError, UnitError
+from hydroservo.laws.orifice import round_port_area, round_port_width
 from hydroservo.laws.pressure_valve import valve_hysteresis
 from hydroservo.units import coherent_unit, is_absolute_pressure
 
@@ -101,6 +102,7 @@ class Power(Component):
 FUNCTIONS = (
     "sqrt", "exp", "log", "log10", "sin", "cos", "tan", "asin", "acos", "atan", "atan2", "sinh", "cosh", "tanh",
     "square", "sign", "floor", "ceil", "round", "greater", "smaller", "and", "or", "xor", "not", "max", "min",
+    "round_port_area", "round_port_width",
 )
 
 
@@ -122,10 +124,14 @@ class Function(Component):
     :math:`u_2 > 0.5` (SignalAnd, SignalOr: Hopsan's doubleToBool), ``xor`` of the two (SignalXor) and ``not``
     1 where :math:`u \le 0.5`, else 0 (SignalNot, which reads ``u`` only). ``max`` and ``min`` are
     :math:`\max(u, u_2)` and :math:`\min(u, u_2)` (two inputs of Hopsan's SignalMax and SignalMin,
-    Signal/Arithmetics/SignalMax.hpp and SignalMin.hpp). Where the output or the error jumps or has a
+    Signal/Arithmetics/SignalMax.hpp and SignalMin.hpp). ``round_port_area`` and ``round_port_width`` are the
+    opened area and width of a round port of diameter ``u2`` uncovered by ``u``
+    (:func:`~hydroservo.laws.orifice.round_port_area`, :func:`~hydroservo.laws.orifice.round_port_width`;
+    Hopsan's SignalSegare and SignalDxSegare, Signal/Non-Linearities/, with ``x`` and ``diameter``), 0 and
+    ``error = 1`` for a diameter of 0 or less. Where the output or the error jumps or has a
     kink (the domain's edges, the sign's and atan2's jumps at :math:`u = 0`, the tangent's poles, the integers
     or half-integers where floor, ceil and round step, the comparisons' and logic's switching, the crossing of
-    ``u`` and ``u2`` of max and min), a switch event.
+    ``u`` and ``u2`` of max and min, the port's edges :math:`u = 0` and :math:`u = u_2`), a switch event.
     """
 
     INPUTS = {
@@ -174,6 +180,9 @@ class Function(Component):
             y = bk.if_else(a > 0.5, 0.0, 1.0)
         elif f in ("max", "min"):
             y = bk.fmax(a, u["u2"]) if f == "max" else bk.fmin(a, u["u2"])
+        elif f in ("round_port_area", "round_port_width"):
+            error = bk.if_else(u["u2"] <= 0.0, 1.0, 0.0)
+            y = (round_port_area if f == "round_port_area" else round_port_width)(a, u["u2"])
         else:
             y = getattr(bk, f)(a)
         return {"y": y, "error": error}
@@ -200,6 +209,8 @@ class Function(Component):
             return {"switch": (a - 0.5, 1.0)}
         if f in ("max", "min"):
             return {"kink": (a - u["u2"], 1.0)}
+        if f in ("round_port_area", "round_port_width"):
+            return {"closed": (a, 1.0), "open": (a - u["u2"], 1.0)}
         return {}
 
 

@@ -1877,6 +1877,48 @@ def _rotational_inertia_gear(hc: HopsanComponent, n: str, par: _Params) -> Mappe
     return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
 
 
+def _rotational_inertia_single_gear(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaWithSingleGear.hpp: MechanicRotationalInertia-
+    WithGearRatio's code with U = -omega (one pair of gears reverses the turn): J θ'' = -omega T1 - T2 - B θ', P1
+    turning at omega ω, a RotationalInertia with n_gear = -omega (:func:`_rotational_inertia_gear`)."""
+    mapped = _rotational_inertia_gear(hc, n, par)
+    for comp in mapped.components:
+        comp.set(n_gear=-par("omega", 1.0))
+    return mapped
+
+
+def _ball_screw(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Rotational/MechanicBallScrew.hpp: a screw of inertia J (P2) whose nut is P1, moving
+    L/(2π) per radian: its filter s/(J s² + (B + Z_x1 + Z_x2) s + k) of g c_1 - c_2 is, as the step vanishes,
+    J w_2' = g f_1 - t_2 - B w_2 - k a_2 with v_1 = -(L/2π) w_2, x_1 = -(L/2π) a_2, starting at rest at 0; lossless
+    (ny = ny2 = 1, g = L/2π) MechanicRackAndPinion's law (:func:`_rack_and_pinion`), a Crank with link = "rack",
+    r_link = L/2π. Its efficiencies are refused: Hopsan takes g = L/(2π ny) while g f_1 ≤ t_2 and L ny2/2π
+    otherwise, by which torque is the larger rather than by which way the power flows, so that turning forward
+    (w_2 > 0) the forward and reverse efficiencies are swapped: driven by its screw, the nut's load is reflected
+    with ny2 (less torque than a lossless screw needs), driven by its nut, the screw gets the force through 1/ny
+    (more torque than the force gives): power out of nothing. The spring k (a constant, 0 by default), L, J at or
+    below 0 are refused too."""
+    from hydroservo.components import Crank
+
+    lead, inertia, k = par("L", 0.001), par("J", 1.0), par("k", 0.0)
+    ny, ny2 = par("ny", 0.9), par("ny2", 0.8)
+    if lead <= 0.0 or inertia <= 0.0 or k != 0.0:
+        par.problems.append(
+            f"{par.where}: L = {lead:g} m, J = {inertia:g} kg m^2, k = {k:g} N m/rad: only L and J above 0 and k = 0 "
+            "are supported"
+        )
+        return Mapped()
+    if ny != 1.0 or ny2 != 1.0:
+        par.problems.append(
+            f"{par.where}: efficiencies ny = {ny:g}, ny2 = {ny2:g}: only a lossless screw (1 and 1) is supported. "
+            "Hopsan chooses ny or ny2 by which of the torques is the larger, not by which way the power flows, so "
+            "that turning forward the two are swapped and the screw gives out more power than it takes"
+        )
+        return Mapped()
+    comp = Crank(n, J=inertia, B_rot=par("B", 10.0), r_link=lead / (2.0 * math.pi), x_link=0.0, link="rack")
+    return Mapped([comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
 def _vehicle(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Special/MechanicVehicle1D.hpp: a vehicle of mass Mc on wheels of radius rwheel, both ports its
     wheels' shaft turning at -vc/rwheel. Its generated equations, solved by Newton steps each time step, are the
@@ -2725,6 +2767,22 @@ def _logic(function: str, ports: tuple[str, str]) -> Builder:
     return build
 
 
+def _round_port(function: str, output: str) -> Builder:
+    """SignalSegare and SignalDxSegare ([Hopsan2026] Signal/Non-Linearities/SignalSegare.hpp, SignalDxSegare.hpp):
+    the opened area (output ``area``) and width (``width``) of a round port of diameter ``diameter`` uncovered by
+    ``x`` (HopsanCore's segare and dxSegare), stateless: a Function with option ``round_port_area`` or
+    ``round_port_width``, ``x`` its ``u``, ``diameter`` its ``u2``; an unconnected one takes its start value.
+    Hopsan's laws divide by the diameter (0 gives NaN); hydroservo's give 0 there."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Function
+
+        inputs = {"x": f"{n}.u", "diameter": f"{n}.u2"}
+        return Mapped([Function(n, function=function)], inputs=inputs, outputs={output: f"{n}.y"})
+
+    return build
+
+
 def _hysteresis(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """SignalHysteresis (Signal/Non-Linearities/SignalHysteresis.hpp): a Hysteresis of width ``y_h`` (constant: a
     signal driving it is refused), its output starting at its input's start value, as Hopsan's."""
@@ -2945,6 +3003,8 @@ LIBRARY: dict[str, Builder] = {
     "MechanicRotationalInertiaWithCoulombFriction": _rotational_inertia_coulomb,
     "MechanicRotationalInertiaWithCoulumbFriction": _rotational_inertia_coulomb,  # older files' spelling
     "MechanicRotationalInertiaWithGearRatio": _rotational_inertia_gear,
+    "MechanicRotationalInertiaWithSingleGear": _rotational_inertia_single_gear,
+    "MechanicBallScrew": _ball_screw,
     "MechanicMotor": _mechanic_motor,
     "MechanicVehicle1D": _vehicle,
     "MechanicJLink": _jlink(two=False),
@@ -3006,6 +3066,8 @@ LIBRARY: dict[str, Builder] = {
     "SignalOr": _logic("or", ("in1", "in2")),
     "SignalSRlatch": _sr_latch,
     "SignalHysteresis": _hysteresis,
+    "SignalSegare": _round_port("round_port_area", "area"),
+    "SignalDxSegare": _round_port("round_port_width", "width"),
     "SignalMax": _extreme("max"),
     "SignalMin": _extreme("min"),
     "SignalSub": _sub,
@@ -3044,6 +3106,23 @@ REFUSED: dict[str, str] = {
     "control, has not",
     "SignalAdditiveNoise": "white noise drawn anew at each of Hopsan's steps has no limit as the step vanishes, "
     "and a random trace cannot be compared sample by sample",
+    "SignalSteadyStateIdentifier": "its methods have no ODE form (Signal/Logic/SignalSteadyStateIdentifier.hpp): "
+    "the rectangular window (method 1) compares the largest and smallest input over the last wl seconds, a history "
+    "of the signal such as a time delay keeps and hydroservo's engine does not; the variance-ratio tests (2 and "
+    "3) add white noise of deviation sd to the input at each step, which has no limit as the step vanishes, and "
+    "method 3's filter factors l1, l2, l3 act per step (time constants of Ts/l that vanish with it)",
+    "MechanicWormDrive": "its code (Mechanic/Rotational/MechanicWormDrive.hpp) is MechanicRotationalInertiaWith"
+    "GearRatio's with the net torque limited to max(0, omega c1 - c2): nothing but its damping B ever slows the "
+    "wheel, so a worm whose input stops or turns back does not stop it (the worm's port keeps turning with it and "
+    "winds up the input shaft: -8200 Nm within a second in a test circuit), and it never turns backwards. That is "
+    "no self-locking worm (which stops when its input does) nor any physical drive, so hydroservo reproduces it "
+    "with none of its components",
+    "MechanicGearClutch": "its generated code (Mechanic/Rotational/MechanicGearClutch.hpp) is the trapezoidal rule "
+    "of Jg w2' = gearRatio T1 + T2 - Bg w2, the torque T2 at Pmr2 driving the gear where every other Q component "
+    "takes it as a load (MechanicRotationalInertiaWithGearRatio: U T1 - T2; the .nb holds both signs, the later "
+    "one kept): no power balance at Pmr2 (a spring there has negative stiffness). hydroservo's ports are "
+    "power-conjugate, so it cannot reproduce that law, and the physical clutch (T1 limited to tmax by slip, "
+    "which is sound) would run opposite to Hopsan's result; myfric and wc are in none of its equations",
 }
 
 

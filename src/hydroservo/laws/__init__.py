@@ -13,7 +13,7 @@ module                  laws
                         temperature (Maré & Attar eqs. 1-2, Walther)
 :mod:`.orifice`         the turbulent orifice law and its one regularisation at
                         null; flow number, transition pressure; catalogue flow
-                        coefficient
+                        coefficient; the opened area and width of a round port
 :mod:`.four_way`        the four-way bridge assembly; the sharp-edged spool
                         valve with per-edge laps (Efe)
 :mod:`.pseudo_section`  pseudo-section valve (Ferreira et al.)

@@ -60,6 +60,8 @@ __all__ = [
     "turbulent_flow",
     "orifice_flow",
     "opening",
+    "round_port_area",
+    "round_port_width",
     "flow_coefficient_from_catalogue",
     "short_tube_discharge",
 ]
@@ -372,6 +374,80 @@ def opening(x: Any) -> Any:
     [0.0, 0.0002]
     """
     return bk.fmax(x, 0.0)
+
+
+def round_port_area(x: Any, d: Any) -> Any:
+    r"""Opened area of a round port of diameter :math:`d` that an edge has uncovered by :math:`x`: the circular
+    segment of height :math:`x_1` = :math:`x` limited to :math:`[0, d]` [m^2].
+
+    .. math:: A = \frac{d^2}{4}\arccos\left(1 - \frac{2 x_1}{d}\right)
+              - \left(\frac{d}{2} - x_1\right)\sqrt{(d - x_1)\,x_1}
+
+    0 while the edge covers the port, :math:`\pi d^2/4` once it has passed it; 0 for :math:`d \le 0` (no port).
+
+    Parameters
+    ----------
+    x : array_like
+        How far the edge has uncovered the port, the segment's height [m].
+    d : array_like
+        Diameter of the port [m].
+
+    Returns
+    -------
+    array_like
+        Opened area [m^2].
+
+    References
+    ----------
+    [Hopsan2026] HopsanCore/src/ComponentUtilities/AuxiliarySimulationFunctions.cpp, ``segare`` (the area of a
+    circular segment, elementary geometry), used by Signal/Non-Linearities/SignalSegare.hpp.
+
+    Examples
+    --------
+    >>> round(float(round_port_area(0.05, 0.1)) / (np.pi * 0.1**2 / 8), 12)  # half the port
+    1.0
+    >>> float(round_port_area(-1.0, 0.1)), round(float(round_port_area(1.0, 0.1)), 8)
+    (0.0, 0.00785398)
+    """
+    d_pos = bk.fmax(d, 1e-300)
+    x1 = bk.clip(x, 0.0, d_pos)
+    area = d_pos * d_pos / 4.0 * bk.acos(1.0 - 2.0 * x1 / d_pos) - (d_pos / 2.0 - x1) * bk.sqrt((d_pos - x1) * x1)
+    return bk.if_else(d > 0.0, area, 0.0 * area)
+
+
+def round_port_width(x: Any, d: Any) -> Any:
+    r"""Width of the opening of a round port of diameter :math:`d` uncovered by :math:`x`, the chord
+    :math:`2\sqrt{(d - x_1)\,x_1}` at the edge (:math:`x_1` = :math:`x` limited to :math:`[0, d]`): the
+    derivative of :func:`round_port_area` with :math:`x` inside the port [m].
+
+    Parameters
+    ----------
+    x : array_like
+        How far the edge has uncovered the port, the segment's height [m].
+    d : array_like
+        Diameter of the port [m].
+
+    Returns
+    -------
+    array_like
+        Width of the opening at the edge [m]; 0 for :math:`d \le 0`.
+
+    References
+    ----------
+    [Hopsan2026] HopsanCore/src/ComponentUtilities/AuxiliarySimulationFunctions.cpp, ``dxSegare``, used by
+    Signal/Non-Linearities/SignalDxSegare.hpp.
+
+    Examples
+    --------
+    >>> float(round_port_width(0.05, 0.1))  # the diameter, at the port's middle
+    0.1
+    >>> float(round_port_width(0.0, 0.1)), float(round_port_width(0.2, 0.1))
+    (0.0, 0.0)
+    """
+    d_pos = bk.fmax(d, 1e-300)
+    x1 = bk.clip(x, 0.0, d_pos)
+    width = 2.0 * bk.sqrt(bk.fmax((d_pos - x1) * x1, 0.0))
+    return bk.if_else(d > 0.0, width, 0.0 * width)
 
 
 def flow_coefficient_from_catalogue(Q_N: float, dp_N: float, x_max: float) -> float:

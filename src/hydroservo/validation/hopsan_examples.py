@@ -415,6 +415,11 @@ MODELS: dict[str, Spec] = {
         "Component Test/SignalComponent Test/Logic/SRlatchTest.hmf",
         "a set-reset latch set and reset by sums of pulses, both at once among them",
     ),
+    "segare-test": Spec(
+        "Component Test/SignalComponent Test/Non-linear/SegareTest.hmf",
+        "the opened area and width of a round port of 0.1 diameter, uncovered by a ramp from 0 to twice the "
+        "diameter",
+    ),
     "hydraulic-spring-loaded-piston-c": Spec(
         "Component Test/HydraulicComponent Test/HydraulicSpringLoadedPistonC.hmf",
         "a spring-loaded piston (C-type) between two Q-type pressure sources, one ramped up and down, pushing a "

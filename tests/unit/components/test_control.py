@@ -139,8 +139,9 @@ def test_a_selector_routes_the_input_its_route_chooses() -> None:
 def test_each_function_is_its_closed_form_and_flags_its_domain() -> None:
     """Function against NumPy's functions on a ramp from -2 to 2; outside a domain Hopsan's values (sqrt and log
     of what is not positive: 0; asin and acos clamped at +-1) with error = 1; sign is 1 at 0, as Hopsan's."""
-    t = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0])
+    t = np.array([0.0, 0.5, 1.0, 1.5, 2.0, 2.2, 2.5, 3.0, 3.5, 4.0])
     u = t - 2.0
+    h = np.clip(u, 0.0, 1.0)
     expected = {
         "sqrt": (np.sqrt(np.clip(u, 0, None)), u < 0),
         "exp": (np.exp(u), 0 * u),
@@ -169,6 +170,10 @@ def test_each_function_is_its_closed_form_and_flags_its_domain() -> None:
         "not": ((u <= 0.5).astype(float), 0 * u),
         "max": (np.maximum(u, 1.0), 0 * u),
         "min": (np.minimum(u, 1.0), 0 * u),
+        # a round port of diameter 1 (u2 unconnected), radius 0.5, uncovered by h: the textbook segment
+        # r^2 acos((r - h)/r) - (r - h) sqrt(2 r h - h^2), and its chord
+        "round_port_area": (0.25 * np.arccos((0.5 - h) / 0.5) - (0.5 - h) * np.sqrt(h - h * h), 0 * u),
+        "round_port_width": (2.0 * np.sqrt(h * (1.0 - h)), 0 * u),
     }
     assert set(expected) == set(c.Function.OPTIONS["function"].choices)
     s = hs.System("functions", t_end=4.0)
@@ -182,6 +187,26 @@ def test_each_function_is_its_closed_form_and_flags_its_domain() -> None:
     for f, (y, error) in expected.items():
         np.testing.assert_allclose(r[f"f_{f}.y"], y, atol=1e-12, err_msg=f)
         np.testing.assert_array_equal(r[f"f_{f}.error"], np.asarray(error, dtype=float), err_msg=f)
+
+
+def test_a_round_port_of_no_diameter_is_closed_and_flagged() -> None:
+    """The round port's area and width are 0 with error = 1 for a diameter of 0 or less (Hopsan divides by it),
+    and its switches sit at the port's edges u = 0 and u = u2."""
+    s = hs.System("ports", t_end=1.0)
+    s.add(c.Ramp("r", offset=-0.5, slope=1.0))
+    s.add(c.Constant("d", value=0.0))
+    s.add(c.Constant("neg", value=-0.2))
+    for name, d in (("a0", "d"), ("w0", "d"), ("an", "neg")):
+        s.add(c.Function(name, function="round_port_width" if name.startswith("w") else "round_port_area"))
+        s.connect("r.y", f"{name}.u")
+        s.connect(f"{d}.y", f"{name}.u2")
+    r = s.simulate(t_eval=[0.0, 0.5, 1.0])
+    for name in ("a0", "w0", "an"):
+        np.testing.assert_array_equal(r[f"{name}.y"], [0.0, 0.0, 0.0], err_msg=name)
+        np.testing.assert_array_equal(r[f"{name}.error"], [1.0, 1.0, 1.0], err_msg=name)
+    f = c.Function("f", function="round_port_area")
+    switches = f.switch_equations(0.0, {}, {"u": 0.3, "u2": 0.1}, {}, {})
+    assert {k: v[0] for k, v in switches.items()} == pytest.approx({"closed": 0.3, "open": 0.2})
 
 
 def test_a_dead_zone_subtracts_its_edges_outside_and_is_zero_inside() -> None:

@@ -304,7 +304,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 @pytest.mark.parametrize(
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
-     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2"],
+     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -321,7 +321,9 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw). The
     second signal circuit checks the blocks no Hopsan example uses either: SignalMax, SignalMin and SignalSub over
     their multiports, SignalNot, SignalXor, SignalCounter (both edges, rising only), SignalSecondOrderFilter,
-    SignalHP2Filter, Signal1DPLOLookupTable, Signal2DLookupTable, a numerical input into a slider and a display."""
+    SignalHP2Filter, Signal1DPLOLookupTable, Signal2DLookupTable, a numerical input into a slider and a display.
+    The gears (MechanicRotationalInertiaWithSingleGear, driven through a shaft by a sine-wave speed against a
+    torque, and a lossless MechanicBallScrew driving a spring by a sine-wave torque) have no model of Hopsan's."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -1299,6 +1301,73 @@ def test_hopsans_max_min_sub_not_and_xor_read_their_ports_and_multiports(tmp_pat
     np.testing.assert_allclose(r["Sub0.out.Value"], np.full_like(u, -0.5), atol=1e-12)
     np.testing.assert_array_equal(r["Not.out.Value"], (u <= 0.5).astype(float))
     np.testing.assert_array_equal(r["Xor.out.Value"], (np.abs(u) > 0.5).astype(float))
+
+
+def test_hopsans_segare_and_dxsegare_are_a_round_ports_area_and_width(tmp_path: Path) -> None:
+    """SignalSegare (area) and SignalDxSegare (width) of a round port: x uncovering it, its diameter from a
+    signal or, unconnected, from its start value; closed below 0, the whole circle beyond the diameter (the
+    segment from its central angle phi, (d^2/8)(phi - sin phi), and its chord 2 sqrt(x (d - x)))."""
+    v = _value
+    ramp = {"y_0#Value": v("-0.01"), "y_A#Value": v("0.1"), "t_start#Value": v("0"), "t_end#Value": v("1")}
+    components = [
+        ("SignalRamp", "Ramp", ramp), ("SignalConstant", "D", {"y#Value": v("0.06")}),
+        ("SignalSegare", "Area", {"diameter#Value": v("1")}), ("SignalDxSegare", "Width", {}),
+        ("SignalSegare", "Own", {"diameter#Value": v(".04")}),
+    ]
+    connections = [("Ramp.out", "Area.x"), ("D.y", "Area.diameter"), ("Ramp.out", "Width.x"),
+                   ("D.y", "Width.diameter"), ("Ramp.out", "Own.x")]
+    path = tmp_path / "segare.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["Area"] == "Function Area" and kinds["Width"] == "Function Width"
+    t = np.array([0.0, 0.1, 0.25, 0.4, 0.55, 0.7, 1.0])
+    r = imp.system.simulate(t_eval=t)
+    x = -0.01 + 0.1 * t
+
+    def area(d: float) -> np.ndarray:
+        h = np.clip(x, 0.0, d)
+        phi = 2.0 * np.arccos(1.0 - 2.0 * h / d)
+        return d * d / 8.0 * (phi - np.sin(phi))
+
+    np.testing.assert_allclose(r["Area.area.Value"], area(0.06), rtol=1e-12, atol=1e-10)  # acos near 1: 1e-11
+    np.testing.assert_allclose(r["Own.area.Value"], area(0.04), rtol=1e-12, atol=1e-10)
+    np.testing.assert_allclose(r["Width.width.Value"], 2.0 * np.sqrt(np.clip(x, 0, 0.06) * (0.06 - np.clip(x, 0, 0.06))),
+                               rtol=1e-12, atol=1e-15)
+
+
+def test_hopsans_single_gear_and_lossless_ball_screw_follow_their_closed_forms(tmp_path: Path) -> None:
+    """MechanicRotationalInertiaWithSingleGear between two torque sources: J w2' = -omega T1 - T2 - B w2 (Hopsan's
+    gear-ratio law with U = -omega), P1 turning at omega w2; MechanicBallScrew (ny = ny2 = 1) between a force source
+    at its nut P1 and a torque source at P2: J w2' = (L/2 pi) F - T - B w2, the nut at v1 = -(L/2 pi) w2. Both from
+    rest: w2 = (drive/B) (1 - exp(-B t/J)). The screw's efficiencies are refused with the reason."""
+    v = _value
+    components = [
+        ("MechanicTorqueTransformer", "T1", {"T#Value": v("-3")}), ("MechanicTorqueTransformer", "T2", {"T#Value": v("2")}),
+        ("MechanicRotationalInertiaWithSingleGear", "SG", {"omega#Value": v("2"), "B#Value": v("0.5"), "J": v("0.1")}),
+        ("MechanicForceTransformer", "F", {"F#Value": v("1000")}), ("MechanicTorqueTransformer", "T3", {"T#Value": v("0.5")}),
+        ("MechanicBallScrew", "BS", {"L#Value": v("0.01"), "ny#Value": v("1"), "ny2#Value": v("1"), "J#Value": v("0.001"),
+                                     "B#Value": v("0.01")}),
+    ]
+    connections = [("T1.P1", "SG.P1"), ("SG.P2", "T2.P1"), ("F.P1", "BS.P1"), ("BS.P2", "T3.P1")]
+    path = tmp_path / "gears.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["SG"] == "RotationalInertia SG" and kinds["BS"] == "Crank BS"
+    t = np.array([0.0, 0.05, 0.2, 0.5, 1.0])
+    r = imp.system.simulate(t_eval=t)
+    w_gear = (2.0 * 3.0 - 2.0) / 0.5 * (1.0 - np.exp(-0.5 * t / 0.1))
+    np.testing.assert_allclose(r["SG.P2.AngularVelocity"], w_gear, rtol=1e-5, atol=1e-8)
+    np.testing.assert_allclose(r["SG.P1.AngularVelocity"], 2.0 * w_gear, rtol=1e-5, atol=1e-8)
+    lead = 0.01 / (2.0 * np.pi)
+    w_screw = (lead * 1000.0 - 0.5) / 0.01 * (1.0 - np.exp(-0.01 * t / 0.001))
+    np.testing.assert_allclose(r["BS.P2.AngularVelocity"], w_screw, rtol=1e-5, atol=1e-8)
+    np.testing.assert_allclose(r["BS.P1.Velocity"], -lead * w_screw, rtol=1e-5, atol=1e-10)
+    lossy = [c if c[1] != "BS" else ("MechanicBallScrew", "BS", {"ny#Value": v("0.9"), "ny2#Value": v("1")}) for c in components]
+    path.write_text(_hmf(lossy, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"BS.*efficiencies ny = 0\.9, ny2 = 1: only a lossless screw"):
+        import_hopsan(path)
 
 
 def test_hopsans_counter_counts_the_edges_of_its_input_it_is_asked_to(tmp_path: Path) -> None:

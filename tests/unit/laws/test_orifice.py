@@ -51,3 +51,26 @@ def test_catalogue_flow_coefficient() -> None:
     assert q == pytest.approx(40 / 60000)
     with pytest.raises(ParameterError, match="x_max"):
         orifice.flow_coefficient_from_catalogue(1e-3, 35e5, 0.0)
+
+
+def test_a_round_ports_area_is_the_circular_segment_and_its_width_the_derivative() -> None:
+    """round_port_area against the segment's area from its central angle, (d^2/8)(phi - sin phi) with
+    cos(phi/2) = 1 - 2x/d; its numerical derivative is round_port_width; the small-opening limit
+    (4/3) sqrt(d x) x; closed below 0, the whole circle beyond d; NumPy and CasADi alike."""
+    d = 0.012
+    x = np.linspace(0.0, d, 41)[1:-1]
+    phi = 2.0 * np.arccos(1.0 - 2.0 * x / d)
+    np.testing.assert_allclose(orifice.round_port_area(x, d), d * d / 8.0 * (phi - np.sin(phi)), rtol=1e-9)
+    dx = 1e-9
+    slope = (orifice.round_port_area(x + dx, d) - orifice.round_port_area(x - dx, d)) / (2 * dx)
+    np.testing.assert_allclose(slope, orifice.round_port_width(x, d), rtol=1e-5)
+    small = np.array([1e-7, 1e-6])
+    np.testing.assert_allclose(orifice.round_port_area(small, d), 4.0 / 3.0 * np.sqrt(d * small) * small, rtol=1e-3)
+    outside = np.array([-1.0, 0.0, d, 1.0])
+    np.testing.assert_allclose(orifice.round_port_area(outside, d), [0.0, 0.0, np.pi * d * d / 4, np.pi * d * d / 4])
+    np.testing.assert_allclose(orifice.round_port_width(outside, d), 0.0, atol=0.0)
+    xs = ca.SX.sym("x")
+    area = ca.Function("a", [xs], [orifice.round_port_area(xs, d)])
+    width = ca.Function("w", [xs], [orifice.round_port_width(xs, d)])
+    assert float(area(0.3 * d)) == pytest.approx(float(orifice.round_port_area(0.3 * d, d)), rel=1e-14)
+    assert float(width(0.3 * d)) == pytest.approx(float(orifice.round_port_width(0.3 * d, d)), rel=1e-14)
