@@ -1441,7 +1441,10 @@ def _mass_coulomb(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     f_s, and slides against f_k (and b v) once it moves; Hopsan stops it whenever its velocity would change sign.
     That law is the limit of the Stribeck law (laws.friction.stribeck) with F_c0 = f_k and F_s0 = f_s - f_k as
     its velocity scales vanish: here v_reg = 1e-5 m/s (a stuck mass creeps at v_reg atanh(F/f_s), under 3e-5 m/s
-    below 0.99 f_s) and c_s = 1e-3 m/s (the friction falls from f_s to f_k over about 3 c_s)."""
+    below 0.99 f_s) and c_s = 1e-3 m/s (the friction falls from f_s to f_k over about 3 c_s). Not mapped: Hopsan's
+    integrator (HopsanCore DoubleIntegratorWithDampingAndCoulombFriction) keeps the trapezoidal rule's memory of the
+    last acceleration when the mass stops, so a mass that stopped while slowing under a net force F_stop breaks away
+    again in its direction only above 2 f_k - F_stop where that exceeds f_s: an artefact, not a friction law."""
     f_s, f_k = par("f_s", 50.0), par("f_k", 45.0)
     if f_s < f_k or f_k < 0.0:
         par.problems.append(

@@ -490,16 +490,14 @@ MODELS: dict[str, Spec] = {
         "masses plain, multiport, with Coulomb friction (single and multiport ports) and a movable pulley in a chain of "
         "springs to a fixed point, pushed by a constant force; the friction masses stick for good after 7 s",
         known=tuple(zip(("Position", "Velocity", "Force"), 3 * (
-            "two Coulomb-friction masses coupled by a spring: from the plain friction mass's first stop (2.05 s) on, "
-            "its break-away and the next stops differ (hydroservo's regularised stick-slip, Hopsan2026's stop-and-hold "
-            "integrator of MechanicTranslationalMassWithCoulombFriction.hpp), and the difference carries over to where "
-            "the masses stick for good: positions 0.61 %, velocities 2.1 %, forces 4.0 % of range (a spring's force "
-            "at rest 469 N against Hopsan's 477 N; sampled on the reference's grid alone, hydroservo's steps end "
-            "elsewhere and the forces are 3.2 % off: the stick events are that sensitive; the solver's accuracy, "
-            "1e-4 to 1e-8, changes them by under 0.001 %). Not the pulley's nor the multiport masses' laws: the model with "
-            "its friction set to 0 agrees with Hopsan's run at its step 1e-5 s within 0.012 % of range, and with "
-            "friction on either mass alone within 0.1 %; a smaller v_reg (1e-6 m/s) or c_s (1e-4 m/s) changes the "
-            "figures by under 0.1 % of range",
+            "two Coulomb-friction masses coupled by a spring part from the plain one's first stop (2.03 s) on: "
+            "Hopsan2026's integrator (HopsanCore DoubleIntegratorWithDampingAndCoulombFriction) keeps the trapezoidal "
+            "rule's memory of the last acceleration when a mass stops, so the mass breaks away again in the direction "
+            "it had moved only at a net force of 2 f_k - F_stop (73.9 N: it stopped under 16.1 N; Hopsan's runs at "
+            "16, 1 and 0.25 µs break it away at 73.6 N, at 2.088 s) instead of f_s (50 N, hydroservo's, at 2.054 s), "
+            "and the difference carries over to where the masses stick for good: positions 0.61 %, velocities 2.1 %, "
+            "forces 4.0 % of range. Not the pulley's nor the multiport masses' laws: the model with its friction set "
+            "to 0 agrees with Hopsan's run within 0.012 % of range (docs/validation.md)",
         ), strict=True)),
     ),
 }
