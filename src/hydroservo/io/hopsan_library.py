@@ -47,16 +47,16 @@ class Var:
     coef: float
     signal: str
     absolute: bool = False
-    scale: str | None = None  # instead of ``coef``, where the factor has a unit: an expression of parameters
-    unit: str | None = None  # the variable's unit, with ``scale`` (else the signal's)
+    text: str | None = None  # the expression itself, where a factor has a unit (the component's parameters)
+    unit: str | None = None  # the variable's unit, with ``text`` (else the signal's)
 
     @property
     def offset(self) -> float:
         return ATMOSPHERE if self.absolute else 0.0
 
     def expr(self) -> str:
-        if self.scale is not None:
-            return f"{self.scale}*{self.signal}" + (" + p_atm" if self.absolute else "")
+        if self.text is not None:
+            return f"{self.text} + p_atm" if self.absolute else self.text
         text = self.signal if self.coef == 1.0 else f"-{self.signal}" if self.coef == -1.0 else f"{self.coef!r}*{self.signal}"
         return f"{text} + p_atm" if self.absolute else text
 
@@ -362,7 +362,7 @@ def _compensating(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped(
         [comp],
         power={"P1": f"{n}.A", "P2": f"{n}.B", "P_OPEN": f"{n}.X", "P_CLOSE": f"{n}.Y"},
-        values={"xv": Var(1.0, f"{n}.s", scale=f"{n}.q_nom/sqrt({n}.p_nom)", unit="m^3/s/Pa^0.5")},
+        values={"xv": Var(1.0, f"{n}.s", text=f"{n}.q_nom/sqrt({n}.p_nom)*{n}.s", unit="m^3/s/Pa^0.5")},
     )
 
 
@@ -515,8 +515,8 @@ def _accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         values={
             "pa": Var(1.0, f"{n}.p", absolute=True),
             "Va": Var(1.0, f"{n}.V_gas"),
-            "xmp": Var(1.0, f"{n}.V_oil", scale=f"1/{n}.V0", unit=""),
-            "vmp": Var(1.0, f"{n}.Q", scale=f"1/{n}.V0", unit="1/s"),
+            "xmp": Var(1.0, f"{n}.V_oil", text=f"{n}.V_oil/{n}.V0", unit=""),
+            "vmp": Var(1.0, f"{n}.Q", text=f"{n}.Q/{n}.V0", unit="1/s"),
         },
         initial={f"{n}.V_oil": min(max(par("xmp", 0.0), 0.0), 1.0) * v0},
     )
@@ -553,8 +553,8 @@ def _piston_accumulator(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         values={
             "pa": Var(1.0, f"{n}.p", absolute=True),
             "Va": Var(1.0, f"{n}.V_gas"),
-            "xmp": Var(1.0, f"{n}.V_oil", scale=f"1/{n}.A_p", unit="m"),
-            "vmp": Var(1.0, f"{n}.Q", scale=f"1/{n}.A_p", unit="m/s"),
+            "xmp": Var(1.0, f"{n}.V_oil", text=f"{n}.V_oil/{n}.A_p", unit="m"),
+            "vmp": Var(1.0, f"{n}.Q", text=f"{n}.Q/{n}.A_p", unit="m/s"),
         },
         initial={f"{n}.x_p": min(max(par("xmp", 0.0), 0.0), sl), f"{n}.v_p": par("vmp", 0.0)},
     )
@@ -1408,7 +1408,7 @@ def _pressure_controlled_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapp
     return Mapped(
         [comp],
         power={"P1": f"{n}.S", "P2": f"{n}.P", "PREF": f"{n}.X"},
-        values={"eps": Var(1.0, f"{n}.QP", scale=f"1/({n}.D*{n}.omega)", unit="")},
+        values={"eps": Var(1.0, f"{n}.QP", text=f"{n}.QP/({n}.D*{n}.omega)", unit="")},
         initial={f"{n}.y": big_l * q_l * eps0, f"{n}.w": u0},
     )
 
@@ -2081,7 +2081,7 @@ def _mkc_load(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         x0=min(max(par.start("Pm2", "Position"), x_min), x_max),
         v0=par.start("Pm2", "Velocity"),
     )
-    return Mapped([comp], power={"Pm1": f"{n}.P1", "Pm2": f"{n}.P2"}, values={"fs": Var(1.0, f"{n}.x", scale=f"{n}.k_spring", unit="N")})
+    return Mapped([comp], power={"Pm1": f"{n}.P1", "Pm2": f"{n}.P2"}, values={"fs": Var(1.0, f"{n}.x", text=f"{n}.k_spring*{n}.x", unit="N")})
 
 
 def _m2_load(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -2682,7 +2682,7 @@ def _pid(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
               anti_windup="clamping")
     return Mapped(
         [error, pid], inputs={"yref": f"{error.name}.u1", "y": f"{error.name}.u2", "dy": f"{n}.de"},
-        outputs={"u": f"{n}.y"}, values={"uI": Var(1.0, f"{n}.I", scale=f"{n}.Ki", unit="")}, internal=[(f"{error.name}.y", f"{n}.e")],
+        outputs={"u": f"{n}.y"}, values={"uI": Var(1.0, f"{n}.I", text=f"{n}.Ki*{n}.I", unit="")}, internal=[(f"{error.name}.y", f"{n}.e")],
         initial=_integral_start(n, par, ki),
     )
 
@@ -2749,7 +2749,7 @@ def _pi_lead(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     pid = PID(n, Kp=k1, Ki=k1 * wa, lower=umin, upper=umax, anti_windup="clamping")
     return Mapped(
         [lead, error, pid], inputs={"yref": f"{error.name}.u1", "y": f"{lead.name}.u"},
-        outputs={"u": f"{n}.y", "err": f"{error.name}.y"}, values={"uI": Var(1.0, f"{n}.I", scale=f"{n}.Ki", unit="")},
+        outputs={"u": f"{n}.y", "err": f"{error.name}.y"}, values={"uI": Var(1.0, f"{n}.I", text=f"{n}.Ki*{n}.I", unit="")},
         internal=[(f"{lead.name}.y", f"{error.name}.u2"), (f"{error.name}.y", f"{n}.e")],
         initial=_integral_start(n, par, k1 * wa),
         start_from_input={f"{lead.name}.y0": (f"{lead.name}.u", lambda u0: (1.0 - d) * u0)},
