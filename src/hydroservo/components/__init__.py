@@ -8,7 +8,8 @@ module                 components
 :mod:`.volume`         Volume
 :mod:`.line`           Line, Hose
 :mod:`.accumulator`    Accumulator
-:mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine
+:mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine,
+                       CentrifugalPump, CentrifugalPumpInertia
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
@@ -73,7 +74,15 @@ from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
-from hydroservo.components.pumps import LoadSensingPump, Machine, Motor, Pump, VariablePump
+from hydroservo.components.pumps import (
+    CentrifugalPump,
+    CentrifugalPumpInertia,
+    LoadSensingPump,
+    Machine,
+    Motor,
+    Pump,
+    VariablePump,
+)
 from hydroservo.components.rotational import (
     AngularVelocitySource,
     Crank,
@@ -175,6 +184,8 @@ __all__ = [
     "LoadSensingPump",
     "Motor",
     "Machine",
+    "CentrifugalPump",
+    "CentrifugalPumpInertia",
     "FourWayValve",
     "ThreeWayValve",
     "ThreeWayPressureValve",
