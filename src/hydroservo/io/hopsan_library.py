@@ -2146,6 +2146,59 @@ def _machine_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return m
 
 
+
+def _centrifugal_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] HydroDynamicComponents/HydraulicCentrifugalPump.hpp: q2 = Ap signedSquareL(2 (p1 − p2 + Δp_th)/(kl
+    ρ), 10) + Kcp (p1 − p2) with Euler's Δp_th = ρ U2² − ρ² U2 q2 cot β2/(π d b), U2 = ω d/2, solved by Newton's
+    method at each step, and the torque torp = Bp ω + (p2 − p1 + kl ρ q2²/(2 Ap²)) (q2 − Kcp (p1 − p2))/(ω + 0.001):
+    a CentrifugalPump with ``slip = "hopsan"`` (its ρ², as Hopsan writes it) and ``inlet = "floor"`` (no flow
+    drawn from an inlet at 0 Pa absolute, as Hopsan's gate onPositive(p1)); its speed omegap a parameter or, driven,
+    the input ``omega_in``. Its output q2e, which Hopsan never writes (it stays at its start value), is not mapped;
+    torp, Pin and Pout are."""
+    from hydroservo.components import CentrifugalPump
+
+    driven = "omegap" in par.driven
+    comp = CentrifugalPump(
+        n, speed="input" if driven else "constant", slip="hopsan", inlet="floor", p_floor=_abs(0.0),
+        omegap=0.0 if driven else par("omegap", 157.0), **_centrifugal_parameters(par),
+    )
+    return Mapped(
+        [comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"},
+        inputs={"omegap": f"{n}.omega_in"} if driven else {},
+        outputs={"torp": f"{n}.torp", "Pin": f"{n}.Pin", "Pout": f"{n}.Pout"},
+    )
+
+
+def _centrifugal_pump_j(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] HydroDynamicComponents/HydraulicCentrifugalPumpJ.hpp: HydraulicCentrifugalPump's law (its
+    U2 = −d wmr1/2 at its port's speed wmr1) with the impeller an inertia, (tormr1 + Bp wmr1 + Jp dwmr1/dt)(|wmr1|
+    + 0.001) = (p2 − p1 + kl ρ q2²/(2 Ap²)) (q2e − Kcp (p1 − p2)): a CentrifugalPumpInertia (ω = −wmr1, its shaft
+    Pmr1 counted into the pump) with ``slip = "hopsan"`` and ``inlet = "floor"``, starting at its port's start
+    speed. Hopsan's port angle stays at its start value (its code never integrates it); here it is the speed's
+    integral. Jp is an inertia [kg m²] (Hopsan's file calls it a friction coefficient in N/m/s). Its output Pin =
+    −tormr1 wmr1, the torque at Pmr1 times ω, is a Product (``{n}_Pin``) of a Sum reading the node's torque
+    (``{n}_torque``, as a torque sensor's) and the pump's speed."""
+    from hydroservo.components import CentrifugalPumpInertia, Product, Sum
+
+    comp = CentrifugalPumpInertia(
+        n, slip="hopsan", inlet="floor", p_floor=_abs(0.0), Jp=par("Jp", 0.1),
+        omega0=-par.start("Pmr1", "AngularVelocity"), theta0=-par.start("Pmr1", "Angle"),
+        **_centrifugal_parameters(par),
+    )
+    return Mapped(
+        [comp, Sum(f"{n}_torque", unit="N*m", gain2=0.0), Product(f"{n}_Pin")],
+        power={"P1": f"{n}.P1", "P2": f"{n}.P2", "Pmr1": f"{n}.Pmr1"},
+        read={"Pmr1": (f"{n}_torque.u1", "Torque")},
+        internal=[(f"{n}_torque.y", f"{n}_Pin.u1"), (f"{n}.omega", f"{n}_Pin.u2")],
+        outputs={"q2e": f"{n}.q2e", "Pin": f"{n}_Pin.y", "Pout": f"{n}.Pout"},
+    )
+
+
+def _centrifugal_parameters(par: _Params) -> dict[str, Any]:
+    """The parameters Hopsan's two centrifugal pumps share, with their defaults."""
+    return {"kl": par("kl", 0.1), "b": par("b", 0.03), "d": par("d", 0.3), "beta2": par("beta2", 1.57),
+            "Ap": par("Ap", 0.001), "rho": par("rho", 870.0), "Kcp": par("Kcp", 1e-11), "Bp": par("Bp", 0.1)}
+
 # -- signal ---------------------------------------------------------------------------------------------------
 
 
@@ -2951,6 +3004,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
+    "HydraulicCentrifugalPump": _centrifugal_pump,
+    "HydraulicCentrifugalPumpJ": _centrifugal_pump_j,
     "SignalStep": _step,
     "SignalRamp": _ramp,
     "SignalSineWave": _sine,

@@ -2133,6 +2133,50 @@ def test_hopsans_fixed_pump_turns_at_the_speed_a_signal_sets(tmp_path: Path) -> 
     np.testing.assert_allclose(r["P.P2.Flow"], 5e-5 * n / (2 * np.pi) - 1e-12 * 1e6, rtol=1e-9, atol=1e-15)
 
 
+
+def test_hopsans_centrifugal_pumps_are_centrifugal_pumps_with_hopsans_slip_term(tmp_path: Path) -> None:
+    """HydraulicCentrifugalPump (omegap driven by a signal, 126 rad/s: speed = input) and HydraulicCentrifugalPumpJ (turned by a
+    torque of 150 N m at Pmr1), each between 1 and 3 bar (absolute): CentrifugalPump and CentrifugalPumpInertia
+    with Hopsan's ρ² slip term and inlet floor; the J pump's port turns at -ω (Hopsan counts outward), its Pin is
+    the torque at Pmr1 times ω, and it settles where that torque is the power it gives over ω + 0.001."""
+    v = _value
+    pars = {"kl#Value": v("0.1"), "b#Value": v("0.03"), "d#Value": v("0.3"), "beta2#Value": v("1.57"),
+            "Ap#Value": v("0.001"), "rho#Value": v("860"), "Kcp#Value": v("1e-11"), "Bp#Value": v("0")}
+    components = [
+        ("HydraulicCentrifugalPump", "CP", {**pars, "omegap#Value": v("157")}),
+        ("HydraulicCentrifugalPumpJ", "CJ", {**pars, "Jp#Value": v("0.1")}),
+        ("HydraulicPressureSourceC", "I1", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "O1", {"p#Value": v("3e5", "Pa")}),
+        ("HydraulicPressureSourceC", "I2", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "O2", {"p#Value": v("3e5", "Pa")}),
+        ("SignalConstant", "W", {"y#Value": v("126")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("150")}),
+    ]
+    connections = [("CP.P1", "I1.P1"), ("CP.P2", "O1.P1"), ("W.y", "CP.omegap"),
+                   ("CJ.P1", "I2.P1"), ("CJ.P2", "O2.P1"), ("T.P1", "CJ.Pmr1")]
+    path = tmp_path / "centrifugal.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    cp, cj = imp.system["CP"], imp.system["CJ"]
+    assert (cp.option("slip"), cp.option("inlet"), cj.option("slip"), cj.option("inlet")) == ("hopsan", "floor") * 2
+    assert cp.option("speed") == "input" and cp.values["rho"] == 860.0 and cj.values["Jp"] == 0.1
+    r = imp.system.simulate(t_eval=[0.0, 4.0], method="cvodes")
+    u2, k = 126.0 * 0.15, 0.1 * 860.0 / (2.0 * 1e-6)
+    c = 860.0**2 * u2 / (np.pi * 0.3 * 0.03 * np.tan(1.57))
+    q = (-c + np.sqrt(c**2 + 4.0 * k * (860.0 * u2**2 - 2e5))) / (2.0 * k)
+    assert r["CP.P2.Flow"][-1] == pytest.approx(q, rel=1e-4)
+    torque = (2e5 + k * q**2) * q / 126.001
+    assert r["CP.torp.Value"][-1] == pytest.approx(torque, rel=1e-4)
+    assert r["CP.Pin.Value"][-1] == pytest.approx(126.0 * torque, rel=1e-4)
+    omega = -r["CJ.Pmr1.AngularVelocity"][-1]
+    assert omega > 100.0
+    u2 = omega * 0.15
+    c = 860.0**2 * u2 / (np.pi * 0.3 * 0.03 * np.tan(1.57))
+    q = (-c + np.sqrt(c**2 + 4.0 * k * (860.0 * u2**2 - 2e5))) / (2.0 * k)
+    assert r["CJ.P2.Flow"][-1] == pytest.approx(q, rel=1e-4)
+    assert (2e5 + k * q**2) * q / (omega + 0.001) == pytest.approx(150.0, rel=1e-4)
+    assert r["CJ.Pin.Value"][-1] == pytest.approx(150.0 * omega, rel=1e-6)
+
 def test_hopsans_directional_check_valve_checks_until_its_spool_passes_half_then_opens_both_ways(tmp_path: Path) -> None:
     """Hydraulic22DirectionalCheckValve between 10 bar and 50 bar (absolute): checked, no flow back from P2; with
     ``in`` stepped to 1 its spool (1/(s²/ω² + 2 s/ω + 1) of the step) passes 0.5 at ω t = 1.678 and the valve
