@@ -10,7 +10,7 @@ module                 components
 :mod:`.accumulator`    Accumulator
 :mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine,
                        CentrifugalPump, CentrifugalPumpInertia
-:mod:`.cylinder`       Cylinder
+:mod:`.cylinder`       Cylinder, FourChamberCylinder
 :mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
@@ -69,7 +69,7 @@ from hydroservo.components.control import (
     Transducer,
     TransferFunction,
 )
-from hydroservo.components.cylinder import Cylinder
+from hydroservo.components.cylinder import Cylinder, FourChamberCylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass, MassPair
@@ -147,6 +147,7 @@ __all__ = [
     "Limit",
     "RenamedWarning",
     "Cylinder",
+    "FourChamberCylinder",
     "Mass",
     "MassPair",
     "Spring",
