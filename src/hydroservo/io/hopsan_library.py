@@ -157,7 +157,7 @@ C_TYPES = frozenset({
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
-    "MechanicSpring", "MechanicTranslationalSpringWithSlack",
+    "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicFourChamberPiston",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -167,6 +167,7 @@ MULTIPORTS: dict[str, frozenset[str]] = {
     "HydraulicMultiPressureSourceC": frozenset({"MP"}),
     "HydraulicCylinderC": frozenset({"P1", "P2"}),
     "HydraulicSpringLoadedPistonC": frozenset({"P1", "P2"}),
+    "HydraulicFourChamberPiston": frozenset({"P1", "P2", "P3", "P4"}),
     "MechanicMultiPortTranslationalMass": frozenset({"P1", "P2"}),
     "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts": frozenset({"P1", "P2"}),
     "MechanicFixedPositionMultiPort": frozenset({"Pm1"}),
@@ -1089,6 +1090,26 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         comp.set(k_stop=0.0, c_stop=0.0)  # Hopsan's end stops switched off
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.R"})
 
+
+def _four_chamber_piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/LinearActuators/HydraulicFourChamberPiston.hpp: four transmission-line chambers on one
+    piston, in the limit of a vanishing step a FourChamberCylinder (Hopsan's names and dead volumes; its position
+    from the retracted end, Hopsan's −x5) with its chambers floored at 0 Pa absolute, the force of absolute
+    pressures (``p_amb`` 0 Pa absolute), its stroke limit as stiff stops (none with use_sl false); each chamber
+    starts at its port's start pressure."""
+    from hydroservo.components import FourChamberCylinder
+
+    values: dict[str, Any] = {f"A_{i}": par(f"A_{i}", 0.001) for i in (1, 2, 3, 4)}
+    values.update({f"V_{i}": par(f"V_{i}", 0.0003) for i in (1, 2, 3, 4)})
+    values.update({f"c_leak{i}{j}": par(f"c_leak{i}{j}", 1e-11 if f"{i}{j}" in ("12", "14", "34") else 0.0)
+                   for i, j in ((1, 2), (1, 3), (1, 4), (2, 3), (2, 4), (3, 4))})
+    values.update({f"p{i}_0": _abs(par.start(f"P{i}", "Pressure", 1e5)) for i in (1, 2, 3, 4)})
+    comp = FourChamberCylinder(n, s_l=par("s_l", 1.0), B_p=par("B_p", 1000.0), Beta_e=par("Beta_e", 1e9),
+                               p_floor=_abs(0.0), p_amb=_abs(0.0), **values)
+    use_sl = hc.parameters.get("use_sl")
+    if use_sl is not None and use_sl.text.strip().lower() in ("false", "0"):
+        comp.set(k_stop=0.0, c_stop=0.0)  # Hopsan's end stops switched off
+    return Mapped([comp], power={**{f"P{i}": f"{n}.P{i}" for i in (1, 2, 3, 4)}, "P5": f"{n}.P5"})
 
 def _cylinder_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/LinearActuators/HydraulicCylinderQ.hpp: a Q-type piston with its load, between the
@@ -2949,6 +2970,7 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
     "HydraulicCylinderQ": _cylinder_q,
+    "HydraulicFourChamberPiston": _four_chamber_piston,
     "HydraulicPistonMload": _piston_mload,
     "HydraulicSpringLoadedPistonC": _spring_loaded_piston,
     "HydraulicPressureSourceQ": _pressure_source_q,

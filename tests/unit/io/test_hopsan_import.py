@@ -2134,6 +2134,40 @@ def test_hopsans_fixed_pump_turns_at_the_speed_a_signal_sets(tmp_path: Path) -> 
 
 
 
+def test_hopsans_four_chamber_piston_is_a_four_chamber_cylinder_pushing_its_mass(tmp_path: Path) -> None:
+    """HydraulicFourChamberPiston with its chambers held by Q-type pressure sources at 30, 10, 20 and 5 bar
+    (absolute) drives a damped mass (m 100 kg, B 1000 N s/m) from x = 1 m: F = A_1 p_1 − A_2 p_2 + A_3 p_3 − A_4 p_4
+    of the absolute pressures, so the mass reaches F/B as F/B (1 − e^(−B t/m)), out of the piston (Hopsan's P5
+    position falls). A FourChamberCylinder with Hopsan's names, its position from the retracted end, its chambers
+    floored at 0 Pa absolute; use_sl false removes its stops."""
+    v = _value
+    piston = {"A_1#Value": v("1e-3"), "A_2#Value": v("5e-4"), "A_3#Value": v("2e-4"), "A_4#Value": v("1e-4"),
+              "s_l#Value": v("10"), "V_1#Value": v("0.001"), "V_2#Value": v("0.002"), "V_3#Value": v("0.003"),
+              "V_4#Value": v("0.004"), "B_p#Value": v("0"), "c_leak13#Value": v("2e-12"),
+              "P5#Position": v("-1"), "P1#Pressure": v("3e6", "Pa")}
+    components = [
+        ("HydraulicFourChamberPiston", "FC", piston),
+        ("MechanicTranslationalMass", "M", {"m": v("100"), "B#Value": v("1000"), "k#Value": v("0")}),
+        *[("HydraulicPressureSourceQ", f"S{i}", {"p#Value": v(p, "Pa")})
+          for i, p in ((1, "3e6"), (2, "1e6"), (3, "2e6"), (4, "5e5"))],
+    ]
+    connections = [("FC.P5", "M.P1"), *[(f"FC.P{i}", f"S{i}.P1") for i in (1, 2, 3, 4)]]
+    path = tmp_path / "four.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    fc = imp.system["FC"]
+    assert fc.values["V_4"] == 0.004 and fc.values["c_leak13"] == 2e-12 and fc.values["c_leak12"] == 1e-11
+    assert fc.values["p_floor"] == pytest.approx(-101325.0) and fc.values["k_stop"] == 1e9
+    assert fc.values["p1_0"] == pytest.approx(3e6 - 101325.0) and fc.values["p2_0"] == pytest.approx(1e5 - 101325.0)
+    t = np.array([0.0, 0.05, 0.2, 0.5])
+    r = imp.system.simulate(t_eval=t, method="cvodes", accuracy=1e-8)
+    v_end = (1e-3 * 3e6 - 5e-4 * 1e6 + 2e-4 * 2e6 - 1e-4 * 5e5) / 1000.0
+    np.testing.assert_allclose(r["FC.P5.Velocity"], -v_end * (1.0 - np.exp(-10.0 * t)), rtol=1e-4, atol=1e-6)
+    np.testing.assert_allclose(r["FC.P1.Pressure"], 3e6, rtol=1e-6)
+    piston["use_sl"] = ("false", "")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    assert import_hopsan(path).system["FC"].values["k_stop"] == 0.0
+
 def test_hopsans_centrifugal_pumps_are_centrifugal_pumps_with_hopsans_slip_term(tmp_path: Path) -> None:
     """HydraulicCentrifugalPump (omegap driven by a signal, 126 rad/s: speed = input) and HydraulicCentrifugalPumpJ (turned by a
     torque of 150 N m at Pmr1), each between 1 and 3 bar (absolute): CentrifugalPump and CentrifugalPumpInertia
