@@ -1010,6 +1010,49 @@ def _valve33_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _valve416(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/HydraulicValve416.hpp: a 4/3 valve whose four edges each have a spool position of
+    their own as input (xvpa, xvta, xvpb, xvtb [m], no spool dynamics), each edge's conductance Ks π Fr Sd
+    limit(X0 + xv, 0, X0 + Xvmax) with Ks = Cq √(2/ρ) and its flow Ks·signedSquareL(Δp, plam) (Hopsan's
+    equation system, solved by Newton iterations each step, stands for these algebraic flows): four TwoWayValves
+    (``{n}_pa``, ``{n}_ta``, ``{n}_pb``, ``{n}_tb``: P to A, A to T, P to B, B to T), each behind a Saturation of
+    its input to at most Xvmax, with the overlap −X0 (X0 is an underlap) and the transition pressure plam
+    (HydraulicValve33's edges, :func:`_valve33_edges`). Each of Hopsan's ports joins two edges: its flow, out of
+    the valve, is a Sum of theirs (``{n}_qp`` ...). π where Hopsan writes 3.14159 (8e-7 apart)."""
+    from hydroservo.components import Saturation, Sum, TwoWayValve
+
+    rho, x_vmax, plam = par("rho", 870.0), par("Xvmax", 0.01), par("plam", 1e4)
+    if plam <= 0.0:
+        par.problems.append(f"{par.where}: plam = {plam:g} Pa; a turbulence onset pressure above 0 is supported")
+        plam = 1e4
+    comps: list[cbase.Component] = []
+    internal: list[tuple[str, str]] = []
+    inputs: dict[str, str] = {}
+    # edge -> (its ports A, B on Hopsan's ports, its fraction, underlap and input)
+    edges = {"pa": ("Pp", "Pa"), "ta": ("Pa", "Pt"), "pb": ("Pp", "Pb"), "tb": ("Pb", "Pt")}
+    for edge in edges:
+        fraction, underlap = par(f"Fr{edge}", 1.0), par(f"X{edge}0", 0.0)
+        laws = _valve33_edges(par, rho, underlap, plam)
+        comps.append(Saturation(f"{n}_x{edge}", unit="m", lower=-1e30, upper=x_vmax))
+        comps.append(TwoWayValve(f"{n}_{edge}", c_v=_edge_coefficient(par, fraction, rho, d="Sd", c_q="Cq"),
+                                 x_AB=-underlap, **{k: laws[k] for k in ("rho", "nu", "lambda_crit", "D_h")}))
+        internal.append((f"{n}_x{edge}.y", f"{n}_{edge}.xv"))
+        inputs[f"xv{edge}"] = f"{n}_x{edge}.u"
+    power: dict[str, str] = {}
+    flow: dict[str, str] = {}
+    for port in ("Pp", "Pt", "Pa", "Pb"):
+        ends = [(f"{n}_{edge}.{'AB'[ab.index(port)]}", 1.0 if ab.index(port) == 1 else -1.0)
+                for edge, ab in edges.items() if port in ab]
+        power[port] = ends[0][0]
+        internal.append((ends[0][0], ends[1][0]))
+        total = f"{n}_q{port[1]}"
+        comps.append(Sum(total, unit="m^3/s", gain1=ends[0][1], gain2=ends[1][1]))
+        for k, (end, _) in enumerate(ends, start=1):
+            internal.append((f"{end.split('.')[0]}.Q", f"{total}.u{k}"))
+        flow[port] = f"{total}.y"
+    return Mapped(comps, power=power, inputs=inputs, internal=internal, flow=flow,
+                  note="four TwoWayValves, one per edge, each behind a Saturation of its spool position")
+
 def _pressure_control_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Valves/HydraulicPressureControlValve33.hpp: a 3/3 valve (P1 supply, P2 tank, P3 the
     controlled line) whose massless spool, damped by Bv, is pushed by the pilot pressure at P4 against the setting
@@ -2964,6 +3007,7 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic42DirectionalValve": _valve42("on-off", all_edges=True),
     "Hydraulic33Valve": _valve33,
     "HydraulicValve33": _valve33_special,
+    "HydraulicValve416": _valve416,
     "HydraulicPressureControlValve33": _pressure_control_valve33,
     "Hydraulic32DirectionalValve": _valve32_directional,
     "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),

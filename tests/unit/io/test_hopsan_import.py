@@ -304,7 +304,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 @pytest.mark.parametrize(
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
-     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2"],
+     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "valve416"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -321,7 +321,10 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     HydraulicPressureControlPumpVolumeTest.hmf, which its loader no longer reads, with a smaller draw). The
     second signal circuit checks the blocks no Hopsan example uses either: SignalMax, SignalMin and SignalSub over
     their multiports, SignalNot, SignalXor, SignalCounter (both edges, rising only), SignalSecondOrderFilter,
-    SignalHP2Filter, Signal1DPLOLookupTable, Signal2DLookupTable, a numerical input into a slider and a display."""
+    SignalHP2Filter, Signal1DPLOLookupTable, Signal2DLookupTable, a numerical input into a slider and a display.
+    The 4/3 valve of four independent edges (HydraulicValve416, whose own test file Hopsan's loader no longer reads)
+    fills and drains two volumes through edges of different widths and laps, their spool positions swept past
+    Xvmax and below closing."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -2133,6 +2136,39 @@ def test_hopsans_fixed_pump_turns_at_the_speed_a_signal_sets(tmp_path: Path) -> 
     np.testing.assert_allclose(r["P.P2.Flow"], 5e-5 * n / (2 * np.pi) - 1e-12 * 1e6, rtol=1e-9, atol=1e-15)
 
 
+
+def test_hopsans_valve416_is_four_edges_each_opened_by_its_own_spool_position(tmp_path: Path) -> None:
+    """HydraulicValve416 between C-type sources at 100 bar (P), 1 bar (T), 50 bar (A) and 20 bar (B), its four
+    spool positions constant: each edge passes Cq √(2/ρ) π Fr Sd limit(X0 + xv, 0, X0 + Xvmax) Δp/(Δp² + plam²)^¼
+    (P-A saturated at Xvmax, A-T opened, P-B shut by its overlap, B-T open by its underlap alone); Hopsan's flow at
+    each port, out of the valve, is the sum of its two edges'."""
+    v = _value
+    valve = {"rho": v("860"), "Cq": v("0.67"), "Sd": v("0.01"), "Frpa": v("1"), "Frta": v("0.8"), "Frpb": v("0.6"),
+             "Frtb": v("0.5"), "Xpa0": v("0"), "Xta0": v("1e-4"), "Xpb0": v("5e-5"), "Xtb0": v("2e-5"),
+             "Xvmax": v("1e-3"), "plam": v("5e4")}
+    positions = {"xvpa": "2e-3", "xvta": "3e-4", "xvpb": "-1e-4", "xvtb": "0"}
+    components = [
+        ("HydraulicValve416", "V", valve),
+        *[("HydraulicPressureSourceC", f"S{port}", {"p#Value": v(p, "Pa")})
+          for port, p in (("p", "1e7"), ("t", "1e5"), ("a", "5e6"), ("b", "2e6"))],
+        *[("SignalConstant", f"C{k}", {"y#Value": v(x)}) for k, x in positions.items()],
+    ]
+    connections = [*[(f"V.P{port}", f"S{port}.P1") for port in "ptab"], *[(f"C{k}.y", f"V.{k}") for k in positions]]
+    path = tmp_path / "valve416.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["V_pb"].values["x_AB"] == -5e-5 and imp.system["V_xpa"].values["upper"] == 1e-3
+    r = imp.system.simulate(t_eval=[0.0, 1e-3], method="cvodes")
+
+    def edge(fraction: float, opening: float, dp: float) -> float:
+        return 0.67 * np.sqrt(2.0 / 860.0) * np.pi * fraction * 0.01 * max(opening, 0.0) * dp / (dp**2 + 5e4**2) ** 0.25
+
+    q_pa, q_ta = edge(1.0, 1e-3, 1e7 - 5e6), edge(0.8, 4e-4, 5e6 - 1e5)
+    q_pb, q_tb = edge(0.6, -5e-5, 1e7 - 2e6), edge(0.5, 2e-5, 2e6 - 1e5)
+    assert q_pb == 0.0
+    expected = {"Pp": -(q_pa + q_pb), "Pt": q_ta + q_tb, "Pa": q_pa - q_ta, "Pb": q_pb - q_tb}
+    for port, q in expected.items():
+        assert r[f"V.{port}.Flow"][-1] == pytest.approx(q, rel=1e-9), port
 
 def test_hopsans_four_chamber_piston_is_a_four_chamber_cylinder_pushing_its_mass(tmp_path: Path) -> None:
     """HydraulicFourChamberPiston with its chambers held by Q-type pressure sources at 30, 10, 20 and 5 bar
