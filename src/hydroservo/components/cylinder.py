@@ -365,8 +365,9 @@ class FourChamberCylinder(Component):
     memory of it: the floor above, not the cavity of HydraulicCylinderC (whose waves are not floored: Cylinder's
     ``pressure_floor = "cavity"``). On HydraulicFourChamberPistonTest, whose chamber 1 sits at 0 Pa absolute
     while the piston draws it out and pushes it back, a cavity to refill made the flow out of it 14 % of range
-    off Hopsan's. Its
-    stroke limit, a spring of stiffness 0.1 m_e/Ts², tends to a hard stop: stiff stops here. Hopsan's smallest
+    off Hopsan's, the floor 7.2 %: there Hopsan's chamber passes twice the oil it displaces, at any step (its
+    floored waves do not conserve the oil of a chamber held at the floor; docs/validation.md). Its stroke limit,
+    a spring of stiffness 0.1 m_e/Ts², tends to a hard stop: stiff stops here. Hopsan's smallest
     volume β_e Ts² A²/(0.1 m_e) vanishes with the step. Four chambers rather than an option of :class:`Cylinder`:
     four areas, four dead volumes and six leakage paths, which a two-chamber cylinder would carry unused.
 
