@@ -8,8 +8,9 @@ module                 components
 :mod:`.volume`         Volume
 :mod:`.line`           Line, Hose
 :mod:`.accumulator`    Accumulator
-:mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine
-:mod:`.cylinder`       Cylinder
+:mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine,
+                       CentrifugalPump, CentrifugalPumpInertia
+:mod:`.cylinder`       Cylinder, FourChamberCylinder
 :mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
@@ -68,12 +69,20 @@ from hydroservo.components.control import (
     Transducer,
     TransferFunction,
 )
-from hydroservo.components.cylinder import Cylinder
+from hydroservo.components.cylinder import Cylinder, FourChamberCylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
-from hydroservo.components.pumps import LoadSensingPump, Machine, Motor, Pump, VariablePump
+from hydroservo.components.pumps import (
+    CentrifugalPump,
+    CentrifugalPumpInertia,
+    LoadSensingPump,
+    Machine,
+    Motor,
+    Pump,
+    VariablePump,
+)
 from hydroservo.components.rotational import (
     AngularVelocitySource,
     Crank,
@@ -138,6 +147,7 @@ __all__ = [
     "Limit",
     "RenamedWarning",
     "Cylinder",
+    "FourChamberCylinder",
     "Mass",
     "MassPair",
     "Spring",
@@ -175,6 +185,8 @@ __all__ = [
     "LoadSensingPump",
     "Motor",
     "Machine",
+    "CentrifugalPump",
+    "CentrifugalPumpInertia",
     "FourWayValve",
     "ThreeWayValve",
     "ThreeWayPressureValve",

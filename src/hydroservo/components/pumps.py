@@ -1,5 +1,5 @@
 """Pumps and motors: displacement machines with leakage; a pressure-compensated pump; a motor driving an inertia; a
-machine whose shaft what it is joined to turns."""
+machine whose shaft what it is joined to turns; centrifugal pumps, at a speed or turned through their shaft."""
 
 from __future__ import annotations
 
@@ -8,6 +8,7 @@ from typing import Any
 
 from hydroservo import backend as bk
 from hydroservo.components.base import (
+    Algebraic,
     Component,
     Hydraulic,
     Limit,
@@ -18,6 +19,13 @@ from hydroservo.components.base import (
     Port,
     State,
     register,
+)
+from hydroservo.laws.centrifugal import (
+    hydraulic_power,
+    impeller_flow,
+    loss_transition_pressure,
+    shaft_torque,
+    theoretical_pressure,
 )
 from hydroservo.laws.displacement import (
     compensator_displacement,
@@ -31,7 +39,7 @@ from hydroservo.laws.orifice import smooth_abs
 from hydroservo.laws.pressure_valve import STOP_RELAXATION
 from hydroservo.units import VACUUM
 
-__all__ = ["Pump", "VariablePump", "LoadSensingPump", "Motor", "Machine"]
+__all__ = ["Pump", "VariablePump", "LoadSensingPump", "Motor", "Machine", "CentrifugalPump", "CentrifugalPumpInertia"]
 
 _PUMP_INPUTS = {
     "pS": Port("Pa", "pressure at the suction port S", default=0.0),
@@ -392,3 +400,183 @@ class Machine(Component):
         dp = u["pA"] - u["pB"]
         q = displaced_flow(p["D"], u["omega"], u["eps"]) + leakage_flow(p["C_im"], dp)
         return {"QA": q, "QB": q, "T": motor_torque(u["eps"] * p["D"], dp) - p["B_m"] * u["omega"]}
+
+
+@register
+class CentrifugalPump(Component):
+    r"""Centrifugal pump at a speed: Euler's impeller pressure driving the flow through the pump's losses.
+
+    The flow :math:`Q` from P1 (inlet) to P2 (outlet) solves
+
+    .. math::
+        Q = A_p\sqrt{\frac{2}{k_l\rho}}\,\operatorname{sign}(\Delta p_{th} - \Delta p)\sqrt{|\Delta p_{th} -
+        \Delta p|} + K_{cp}\,(p_1 - p_2), \qquad
+        \Delta p_{th} = \rho U_2^2 - \rho_s U_2\,\frac{Q\cot\beta_2}{\pi d b}, \quad U_2 = \frac{\omega d}{2}
+
+    with :math:`\Delta p = p_2 - p_1` (:mod:`hydroservo.laws.centrifugal`: Euler's pump equation for the impeller,
+    a loss of ``kl`` dynamic heads at the outlet area ``Ap``, laminar leakage ``Kcp`` back through the pump). As
+    :math:`\Delta p_{th}` falls with :math:`Q`, the flow is an algebraic unknown (``q2e``) solved by Newton's method
+    inside the model (:mod:`hydroservo.system.implicit`). The shaft takes
+
+    .. math:: T = B_p\,\omega + \frac{(\Delta p + k_l\rho Q^2/(2A_p^2))\,(Q - K_{cp}(p_1 - p_2))}{|\omega| + 0.001}
+
+    (the power given to the fluid over the speed, :func:`~hydroservo.laws.centrifugal.shaft_torque`); outputs
+    ``torp`` (that torque), ``Pin`` = :math:`T\omega` and ``Pout`` = :math:`\Delta p\,Q`.
+
+    This is Hopsan's HydraulicCentrifugalPump ([Hopsan2026] HydroDynamicComponents/HydraulicCentrifugalPump.hpp)
+    with its parameters' names: its Newton iterations of that implicit law at each step, and its pressures at the
+    ports from their wave variables, are the law at a vanishing step. Option ``slip = "hopsan"`` writes the slip
+    term as Hopsan does, with :math:`\rho_s = \rho^2\cdot 1\,\mathrm{m^3/kg}` (a density too many in its
+    notebook); ``"euler"`` (default), :math:`\rho_s = \rho`. Its loss is laminar below a loss velocity of
+    :math:`\sqrt{10}` m/s (its signedSquareL: :func:`~hydroservo.laws.centrifugal.loss_transition_pressure`).
+
+    Option ``inlet``: ``free`` (default) delivers the flow whatever the inlet pressure; ``floor`` draws no port
+    below ``p_floor`` (:func:`~hydroservo.laws.displacement.floored_port_flow`), the continuous form of Hopsan's
+    pump, whose flow stops where its inlet's pressure reaches 0 (absolute).
+
+    Option ``speed``: ``constant`` (default), the parameter ``omegap``; ``input``, the input ``omega_in`` (Hopsan's
+    ``omegap`` driven by a signal).
+    """
+
+    OPTIONS = {
+        "speed": Option("constant", ("constant", "input"), "the speed: the parameter omegap, or the input omega_in"),
+        "slip": Option("euler", ("euler", "hopsan"),
+                       "the slip term of Euler's equation with the density (euler) or its square (Hopsan's law)"),
+        "inlet": Option("free", ("free", "floor"),
+                        "the flow whatever the inlet pressure, or no port drawn below p_floor (Hopsan)"),
+    }
+    PARAMETERS = {
+        "kl": Param(0.1, "", "loss coefficient: dynamic heads lost at the outlet area", min=0.0, min_inclusive=False),
+        "b": Param(0.03, "m", "impeller outlet width", min=0.0, min_inclusive=False),
+        "d": Param(0.3, "m", "diameter: the impeller's, at its outlet", min=0.0, min_inclusive=False),
+        "beta2": Param(1.57, "rad", "blade angle at the outlet (pi/2: radial)", min=0.0, max=3.141592653589793,
+                       min_inclusive=False, max_inclusive=False),
+        "Ap": Param(0.001, "m^2", "outlet flow area", min=0.0, min_inclusive=False),
+        "rho": Param(870.0, "kg/m^3", "oil density", min=0.0, min_inclusive=False, fluid="density"),
+        "Kcp": Param(1e-11, "m^3/s/Pa", "leakage coefficient, P2 back to P1", min=0.0),
+        "Bp": Param(0.1, "N*m*s/rad", "viscous friction coefficient of the shaft", min=0.0),
+        "omegap": Param(157.0, "rad/s", "speed (option speed = constant)"),
+        "p_floor": Param(VACUUM, "Pa", "lowest pressure a port is drawn to (option inlet = floor)", min=VACUUM),
+        "p_reg": Param(100.0, "Pa", "pressure over which the flow falls to nothing at the floor (option floor)",
+                       min=0.0, min_inclusive=False),
+    }
+    ALGEBRAIC = {"q2e": Algebraic("m^3/s", "flow of the impeller law, before the inlet's floor", nominal=1e-3)}
+    INPUTS = {
+        "p1": Port("Pa", "pressure at the inlet P1"),
+        "p2": Port("Pa", "pressure at the outlet P2"),
+        "omega_in": Port("rad/s", "speed (option speed = input)", default=0.0),
+    }
+    OUTPUTS = {
+        "Q1": Output("m^3/s", "flow drawn at P1"),
+        "Q2": Output("m^3/s", "flow delivered at P2"),
+        "q2e": Output("m^3/s", "flow of the impeller law, before the inlet's floor"),
+        "torp": Output("N*m", "torque the shaft takes"),
+        "Pin": Output("W", "power into the shaft"),
+        "Pout": Output("W", "hydraulic power delivered, (p2 - p1) Q"),
+    }
+    HYDRAULIC = {
+        "P1": Hydraulic("p1", "Q1", "inlet", into=True),
+        "P2": Hydraulic("p2", "Q2", "outlet", into=False),
+    }
+
+    def _speed(self, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return u["omega_in"] if self.option("speed") == "input" else p["omegap"]
+
+    def _slip_density(self, p: Mapping[str, Any]) -> Any:
+        return p["rho"] * p["rho"] if self.option("slip") == "hopsan" else p["rho"]
+
+    def _pump(self, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], omega: Any) -> dict[str, Any]:
+        """The flows, the torque the shaft takes and the powers at speed ``omega``."""
+        dp = u["p2"] - u["p1"]
+        q = x["q2e"]
+        if self.option("inlet") == "floor":
+            q = floored_port_flow(q, u["p1"], u["p2"], p["p_floor"], p["p_reg"])
+        power = hydraulic_power(dp, q, q + leakage_flow(p["Kcp"], dp), p["Ap"], p["kl"], p["rho"])
+        torque = shaft_torque(power, omega, p["Bp"])
+        return {"Q1": q, "Q2": q, "q2e": x["q2e"], "torp": torque, "Pin": torque * omega, "Pout": dp * q}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return self._pump(x, u, p, self._speed(x, u, p))
+
+    def residual_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        dp = u["p2"] - u["p1"]
+        omega = self._speed(x, u, p)
+        dp_th = theoretical_pressure(omega, x["q2e"], p["d"], p["b"], p["beta2"], p["rho"], self._slip_density(p))
+        q = impeller_flow(dp_th, dp, p["Ap"], p["kl"], p["rho"], loss_transition_pressure(p["kl"], p["rho"]))
+        return {"q2e": x["q2e"] - q + leakage_flow(p["Kcp"], dp)}
+
+    def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        """The flow of the law without the laminar part: :math:`k Q_i|Q_i| + c Q_i = a`, a quadratic."""
+        dp = u["p2"] - u["p1"]
+        omega = self._speed(x, u, p)
+        leak = -leakage_flow(p["Kcp"], dp)
+        head = theoretical_pressure(omega, 0.0, p["d"], p["b"], p["beta2"], p["rho"])
+        c = head - theoretical_pressure(omega, 1.0, p["d"], p["b"], p["beta2"], p["rho"], self._slip_density(p))
+        k = 0.5 * p["kl"] * p["rho"] / (p["Ap"] * p["Ap"])
+        a = head - dp - c * leak
+        return {"q2e": leak + 2.0 * a / (bk.fabs(c) + bk.sqrt(c * c + 4.0 * k * (bk.fabs(a) + 1.0)))}
+
+
+@register
+class CentrifugalPumpInertia(CentrifugalPump):
+    r"""Centrifugal pump turned through its shaft: :class:`CentrifugalPump`'s law, its impeller an inertia.
+
+    .. math:: J_p\,\dot\omega = T_{shaft} - T, \qquad \dot\theta = \omega
+
+    with :math:`T` the torque the pump takes (:class:`CentrifugalPump`: viscous friction ``Bp`` and the power given
+    to the fluid over :math:`|\omega| + 0.001`) and :math:`T_{shaft}` that of what turns it. The shaft is the
+    rotational port ``Pmr1``, counted along the drive's turning, into the pump (a drive and the pump joined turn the
+    same way; Hopsan's port counts outward, so its speed there is :math:`-\omega`). Outputs: ``Pout``, ``q2e``, the
+    angle and the speed (the power into the shaft, :math:`T_{shaft}\,\omega`, is no output: an output that read the
+    torque of what turns the shaft would close an algebraic loop through it).
+
+    Hopsan's HydraulicCentrifugalPumpJ ([Hopsan2026] HydroDynamicComponents/HydraulicCentrifugalPumpJ.hpp):
+    its notebook's :math:`(t + B_p w + J_p \dot w)(|w| + 0.001) = P` at its port's speed :math:`w = -\omega`,
+    integrated by its implicit steps, is the law above. Hopsan's component never writes its port's angle (it stays
+    at its start value); here :math:`\theta` is the speed's integral, which a spring joined to it needs.
+    """
+
+    OPTIONS = {k: v for k, v in CentrifugalPump.OPTIONS.items() if k != "speed"}
+    PARAMETERS = {
+        **{k: v for k, v in CentrifugalPump.PARAMETERS.items() if k != "omegap"},
+        "Jp": Param(0.1, "kg*m^2", "inertia of the impeller and shaft", min=0.0, min_inclusive=False),
+        "omega0": Param(0.0, "rad/s", "initial angular velocity"),
+        "theta0": Param(0.0, "rad", "initial angle"),
+    }
+    STATES = {
+        "theta": State("rad", "shaft angle", initial="theta0", nominal=1.0),
+        "omega": State("rad/s", "shaft speed", initial="omega0", nominal=100.0),
+    }
+    INPUTS = {
+        "p1": CentrifugalPump.INPUTS["p1"],
+        "p2": CentrifugalPump.INPUTS["p2"],
+        "T_shaft": Port("N*m", "torque of what turns the shaft Pmr1, along its turning", default=0.0),
+    }
+    OUTPUTS = {
+        **{k: v for k, v in CentrifugalPump.OUTPUTS.items() if k not in ("torp", "Pin")},
+        "theta": Output("rad", "shaft angle"),
+        "omega": Output("rad/s", "shaft speed"),
+    }
+    MECHANICAL = {
+        "Pmr1": Mechanical("theta", "omega", "T_shaft", "the shaft, counted along the drive's turning (into the pump)",
+                           outward=False, kind="rotational"),
+    }
+
+    def _speed(self, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return x["omega"]
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        out = {k: v for k, v in self._pump(x, u, p, x["omega"]).items() if k not in ("torp", "Pin")}
+        return {**out, "theta": x["theta"], "omega": x["omega"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        torque = self._pump(x, u, p, x["omega"])["torp"]
+        return {"theta": x["omega"], "omega": (u["T_shaft"] - torque) / p["Jp"]}

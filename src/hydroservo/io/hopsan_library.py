@@ -161,7 +161,7 @@ C_TYPES = frozenset({
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
-    "MechanicSpring", "MechanicTranslationalSpringWithSlack",
+    "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicFourChamberPiston",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -171,6 +171,7 @@ MULTIPORTS: dict[str, frozenset[str]] = {
     "HydraulicMultiPressureSourceC": frozenset({"MP"}),
     "HydraulicCylinderC": frozenset({"P1", "P2"}),
     "HydraulicSpringLoadedPistonC": frozenset({"P1", "P2"}),
+    "HydraulicFourChamberPiston": frozenset({"P1", "P2", "P3", "P4"}),
     "MechanicMultiPortTranslationalMass": frozenset({"P1", "P2"}),
     "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts": frozenset({"P1", "P2"}),
     "MechanicFixedPositionMultiPort": frozenset({"Pm1"}),
@@ -1013,6 +1014,49 @@ def _valve33_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _valve416(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/HydraulicValve416.hpp: a 4/3 valve whose four edges each have a spool position of
+    their own as input (xvpa, xvta, xvpb, xvtb [m], no spool dynamics), each edge's conductance Ks π Fr Sd
+    limit(X0 + xv, 0, X0 + Xvmax) with Ks = Cq √(2/ρ) and its flow Ks·signedSquareL(Δp, plam) (Hopsan's
+    equation system, solved by Newton iterations each step, stands for these algebraic flows): four TwoWayValves
+    (``{n}_pa``, ``{n}_ta``, ``{n}_pb``, ``{n}_tb``: P to A, A to T, P to B, B to T), each behind a Saturation of
+    its input to at most Xvmax, with the overlap −X0 (X0 is an underlap) and the transition pressure plam
+    (HydraulicValve33's edges, :func:`_valve33_edges`). Each of Hopsan's ports joins two edges: its flow, out of
+    the valve, is a Sum of theirs (``{n}_qp`` ...). π where Hopsan writes 3.14159 (8e-7 apart)."""
+    from hydroservo.components import Saturation, Sum, TwoWayValve
+
+    rho, x_vmax, plam = par("rho", 870.0), par("Xvmax", 0.01), par("plam", 1e4)
+    if plam <= 0.0:
+        par.problems.append(f"{par.where}: plam = {plam:g} Pa; a turbulence onset pressure above 0 is supported")
+        plam = 1e4
+    comps: list[cbase.Component] = []
+    internal: list[tuple[str, str]] = []
+    inputs: dict[str, str] = {}
+    # edge -> (its ports A, B on Hopsan's ports, its fraction, underlap and input)
+    edges = {"pa": ("Pp", "Pa"), "ta": ("Pa", "Pt"), "pb": ("Pp", "Pb"), "tb": ("Pb", "Pt")}
+    for edge in edges:
+        fraction, underlap = par(f"Fr{edge}", 1.0), par(f"X{edge}0", 0.0)
+        laws = _valve33_edges(par, rho, underlap, plam)
+        comps.append(Saturation(f"{n}_x{edge}", unit="m", lower=-1e30, upper=x_vmax))
+        comps.append(TwoWayValve(f"{n}_{edge}", c_v=_edge_coefficient(par, fraction, rho, d="Sd", c_q="Cq"),
+                                 x_AB=-underlap, **{k: laws[k] for k in ("rho", "nu", "lambda_crit", "D_h")}))
+        internal.append((f"{n}_x{edge}.y", f"{n}_{edge}.xv"))
+        inputs[f"xv{edge}"] = f"{n}_x{edge}.u"
+    power: dict[str, str] = {}
+    flow: dict[str, str] = {}
+    for port in ("Pp", "Pt", "Pa", "Pb"):
+        ends = [(f"{n}_{edge}.{'AB'[ab.index(port)]}", 1.0 if ab.index(port) == 1 else -1.0)
+                for edge, ab in edges.items() if port in ab]
+        power[port] = ends[0][0]
+        internal.append((ends[0][0], ends[1][0]))
+        total = f"{n}_q{port[1]}"
+        comps.append(Sum(total, unit="m^3/s", gain1=ends[0][1], gain2=ends[1][1]))
+        for k, (end, _) in enumerate(ends, start=1):
+            internal.append((f"{end.split('.')[0]}.Q", f"{total}.u{k}"))
+        flow[port] = f"{total}.y"
+    return Mapped(comps, power=power, inputs=inputs, internal=internal, flow=flow,
+                  note="four TwoWayValves, one per edge, each behind a Saturation of its spool position")
+
 def _pressure_control_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Valves/HydraulicPressureControlValve33.hpp: a 3/3 valve (P1 supply, P2 tank, P3 the
     controlled line) whose massless spool, damped by Bv, is pushed by the pilot pressure at P4 against the setting
@@ -1093,6 +1137,26 @@ def _cylinder_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         comp.set(k_stop=0.0, c_stop=0.0)  # Hopsan's end stops switched off
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "P3": f"{n}.R"})
 
+
+def _four_chamber_piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/LinearActuators/HydraulicFourChamberPiston.hpp: four transmission-line chambers on one
+    piston, in the limit of a vanishing step a FourChamberCylinder (Hopsan's names and dead volumes; its position
+    from the retracted end, Hopsan's −x5) with its chambers floored at 0 Pa absolute, the force of absolute
+    pressures (``p_amb`` 0 Pa absolute), its stroke limit as stiff stops (none with use_sl false); each chamber
+    starts at its port's start pressure."""
+    from hydroservo.components import FourChamberCylinder
+
+    values: dict[str, Any] = {f"A_{i}": par(f"A_{i}", 0.001) for i in (1, 2, 3, 4)}
+    values.update({f"V_{i}": par(f"V_{i}", 0.0003) for i in (1, 2, 3, 4)})
+    values.update({f"c_leak{i}{j}": par(f"c_leak{i}{j}", 1e-11 if f"{i}{j}" in ("12", "14", "34") else 0.0)
+                   for i, j in ((1, 2), (1, 3), (1, 4), (2, 3), (2, 4), (3, 4))})
+    values.update({f"p{i}_0": _abs(par.start(f"P{i}", "Pressure", 1e5)) for i in (1, 2, 3, 4)})
+    comp = FourChamberCylinder(n, s_l=par("s_l", 1.0), B_p=par("B_p", 1000.0), Beta_e=par("Beta_e", 1e9),
+                               p_floor=_abs(0.0), p_amb=_abs(0.0), **values)
+    use_sl = hc.parameters.get("use_sl")
+    if use_sl is not None and use_sl.text.strip().lower() in ("false", "0"):
+        comp.set(k_stop=0.0, c_stop=0.0)  # Hopsan's end stops switched off
+    return Mapped([comp], power={**{f"P{i}": f"{n}.P{i}" for i in (1, 2, 3, 4)}, "P5": f"{n}.P5"})
 
 def _cylinder_q(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/LinearActuators/HydraulicCylinderQ.hpp: a Q-type piston with its load, between the
@@ -2195,6 +2259,59 @@ def _machine_c(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return m
 
 
+
+def _centrifugal_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] HydroDynamicComponents/HydraulicCentrifugalPump.hpp: q2 = Ap signedSquareL(2 (p1 − p2 + Δp_th)/(kl
+    ρ), 10) + Kcp (p1 − p2) with Euler's Δp_th = ρ U2² − ρ² U2 q2 cot β2/(π d b), U2 = ω d/2, solved by Newton's
+    method at each step, and the torque torp = Bp ω + (p2 − p1 + kl ρ q2²/(2 Ap²)) (q2 − Kcp (p1 − p2))/(ω + 0.001):
+    a CentrifugalPump with ``slip = "hopsan"`` (its ρ², as Hopsan writes it) and ``inlet = "floor"`` (no flow
+    drawn from an inlet at 0 Pa absolute, as Hopsan's gate onPositive(p1)); its speed omegap a parameter or, driven,
+    the input ``omega_in``. Its output q2e, which Hopsan never writes (it stays at its start value), is not mapped;
+    torp, Pin and Pout are."""
+    from hydroservo.components import CentrifugalPump
+
+    driven = "omegap" in par.driven
+    comp = CentrifugalPump(
+        n, speed="input" if driven else "constant", slip="hopsan", inlet="floor", p_floor=_abs(0.0),
+        omegap=0.0 if driven else par("omegap", 157.0), **_centrifugal_parameters(par),
+    )
+    return Mapped(
+        [comp], power={"P1": f"{n}.P1", "P2": f"{n}.P2"},
+        inputs={"omegap": f"{n}.omega_in"} if driven else {},
+        outputs={"torp": f"{n}.torp", "Pin": f"{n}.Pin", "Pout": f"{n}.Pout"},
+    )
+
+
+def _centrifugal_pump_j(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] HydroDynamicComponents/HydraulicCentrifugalPumpJ.hpp: HydraulicCentrifugalPump's law (its
+    U2 = −d wmr1/2 at its port's speed wmr1) with the impeller an inertia, (tormr1 + Bp wmr1 + Jp dwmr1/dt)(|wmr1|
+    + 0.001) = (p2 − p1 + kl ρ q2²/(2 Ap²)) (q2e − Kcp (p1 − p2)): a CentrifugalPumpInertia (ω = −wmr1, its shaft
+    Pmr1 counted into the pump) with ``slip = "hopsan"`` and ``inlet = "floor"``, starting at its port's start
+    speed. Hopsan's port angle stays at its start value (its code never integrates it); here it is the speed's
+    integral. Jp is an inertia [kg m²] (Hopsan's file calls it a friction coefficient in N/m/s). Its output Pin =
+    −tormr1 wmr1, the torque at Pmr1 times ω, is a Product (``{n}_Pin``) of a Sum reading the node's torque
+    (``{n}_torque``, as a torque sensor's) and the pump's speed."""
+    from hydroservo.components import CentrifugalPumpInertia, Product, Sum
+
+    comp = CentrifugalPumpInertia(
+        n, slip="hopsan", inlet="floor", p_floor=_abs(0.0), Jp=par("Jp", 0.1),
+        omega0=-par.start("Pmr1", "AngularVelocity"), theta0=-par.start("Pmr1", "Angle"),
+        **_centrifugal_parameters(par),
+    )
+    return Mapped(
+        [comp, Sum(f"{n}_torque", unit="N*m", gain2=0.0), Product(f"{n}_Pin")],
+        power={"P1": f"{n}.P1", "P2": f"{n}.P2", "Pmr1": f"{n}.Pmr1"},
+        read={"Pmr1": (f"{n}_torque.u1", "Torque")},
+        internal=[(f"{n}_torque.y", f"{n}_Pin.u1"), (f"{n}.omega", f"{n}_Pin.u2")],
+        outputs={"q2e": f"{n}.q2e", "Pin": f"{n}_Pin.y", "Pout": f"{n}.Pout"},
+    )
+
+
+def _centrifugal_parameters(par: _Params) -> dict[str, Any]:
+    """The parameters Hopsan's two centrifugal pumps share, with their defaults."""
+    return {"kl": par("kl", 0.1), "b": par("b", 0.03), "d": par("d", 0.3), "beta2": par("beta2", 1.57),
+            "Ap": par("Ap", 0.001), "rho": par("rho", 870.0), "Kcp": par("Kcp", 1e-11), "Bp": par("Bp", 0.1)}
+
 # -- signal ---------------------------------------------------------------------------------------------------
 
 
@@ -2955,12 +3072,14 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic42DirectionalValve": _valve42("on-off", all_edges=True),
     "Hydraulic33Valve": _valve33,
     "HydraulicValve33": _valve33_special,
+    "HydraulicValve416": _valve416,
     "HydraulicPressureControlValve33": _pressure_control_valve33,
     "Hydraulic32DirectionalValve": _valve32_directional,
     "Hydraulic22Valve": _valve22("one-sided", ("PP", "PA")),
     "Hydraulic22DirectionalValve": _valve22("on-off", ("P1", "P2")),
     "HydraulicCylinderC": _cylinder_c,
     "HydraulicCylinderQ": _cylinder_q,
+    "HydraulicFourChamberPiston": _four_chamber_piston,
     "HydraulicPistonMload": _piston_mload,
     "HydraulicSpringLoadedPistonC": _spring_loaded_piston,
     "HydraulicPressureSourceQ": _pressure_source_q,
@@ -3018,6 +3137,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
+    "HydraulicCentrifugalPump": _centrifugal_pump,
+    "HydraulicCentrifugalPumpJ": _centrifugal_pump_j,
     "SignalStep": _step,
     "SignalRamp": _ramp,
     "SignalSineWave": _sine,

@@ -304,7 +304,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 @pytest.mark.parametrize(
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
-     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears"],
+     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "valve416"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -323,7 +323,10 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     their multiports, SignalNot, SignalXor, SignalCounter (both edges, rising only), SignalSecondOrderFilter,
     SignalHP2Filter, Signal1DPLOLookupTable, Signal2DLookupTable, a numerical input into a slider and a display.
     The gears (MechanicRotationalInertiaWithSingleGear, driven through a shaft by a sine-wave speed against a
-    torque, and a lossless MechanicBallScrew driving a spring by a sine-wave torque) have no model of Hopsan's."""
+    torque, and a lossless MechanicBallScrew driving a spring by a sine-wave torque) have no model of Hopsan's.
+    The 4/3 valve of four independent edges (HydraulicValve416, whose own test file Hopsan's loader no longer reads)
+    fills and drains two volumes through edges of different widths and laps, their spool positions swept past
+    Xvmax and below closing."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -2207,6 +2210,117 @@ def test_hopsans_fixed_pump_turns_at_the_speed_a_signal_sets(tmp_path: Path) -> 
     n = np.array([-10.0, -5.0, 0.0, 10.0])
     np.testing.assert_allclose(r["P.P2.Flow"], 5e-5 * n / (2 * np.pi) - 1e-12 * 1e6, rtol=1e-9, atol=1e-15)
 
+
+
+def test_hopsans_valve416_is_four_edges_each_opened_by_its_own_spool_position(tmp_path: Path) -> None:
+    """HydraulicValve416 between C-type sources at 100 bar (P), 1 bar (T), 50 bar (A) and 20 bar (B), its four
+    spool positions constant: each edge passes Cq √(2/ρ) π Fr Sd limit(X0 + xv, 0, X0 + Xvmax) Δp/(Δp² + plam²)^¼
+    (P-A saturated at Xvmax, A-T opened, P-B shut by its overlap, B-T open by its underlap alone); Hopsan's flow at
+    each port, out of the valve, is the sum of its two edges'."""
+    v = _value
+    valve = {"rho": v("860"), "Cq": v("0.67"), "Sd": v("0.01"), "Frpa": v("1"), "Frta": v("0.8"), "Frpb": v("0.6"),
+             "Frtb": v("0.5"), "Xpa0": v("0"), "Xta0": v("1e-4"), "Xpb0": v("5e-5"), "Xtb0": v("2e-5"),
+             "Xvmax": v("1e-3"), "plam": v("5e4")}
+    positions = {"xvpa": "2e-3", "xvta": "3e-4", "xvpb": "-1e-4", "xvtb": "0"}
+    components = [
+        ("HydraulicValve416", "V", valve),
+        *[("HydraulicPressureSourceC", f"S{port}", {"p#Value": v(p, "Pa")})
+          for port, p in (("p", "1e7"), ("t", "1e5"), ("a", "5e6"), ("b", "2e6"))],
+        *[("SignalConstant", f"C{k}", {"y#Value": v(x)}) for k, x in positions.items()],
+    ]
+    connections = [*[(f"V.P{port}", f"S{port}.P1") for port in "ptab"], *[(f"C{k}.y", f"V.{k}") for k in positions]]
+    path = tmp_path / "valve416.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    assert imp.system["V_pb"].values["x_AB"] == -5e-5 and imp.system["V_xpa"].values["upper"] == 1e-3
+    r = imp.system.simulate(t_eval=[0.0, 1e-3], method="cvodes")
+
+    def edge(fraction: float, opening: float, dp: float) -> float:
+        return 0.67 * np.sqrt(2.0 / 860.0) * np.pi * fraction * 0.01 * max(opening, 0.0) * dp / (dp**2 + 5e4**2) ** 0.25
+
+    q_pa, q_ta = edge(1.0, 1e-3, 1e7 - 5e6), edge(0.8, 4e-4, 5e6 - 1e5)
+    q_pb, q_tb = edge(0.6, -5e-5, 1e7 - 2e6), edge(0.5, 2e-5, 2e6 - 1e5)
+    assert q_pb == 0.0
+    expected = {"Pp": -(q_pa + q_pb), "Pt": q_ta + q_tb, "Pa": q_pa - q_ta, "Pb": q_pb - q_tb}
+    for port, q in expected.items():
+        assert r[f"V.{port}.Flow"][-1] == pytest.approx(q, rel=1e-9), port
+
+def test_hopsans_four_chamber_piston_is_a_four_chamber_cylinder_pushing_its_mass(tmp_path: Path) -> None:
+    """HydraulicFourChamberPiston with its chambers held by Q-type pressure sources at 30, 10, 20 and 5 bar
+    (absolute) drives a damped mass (m 100 kg, B 1000 N s/m) from x = 1 m: F = A_1 p_1 − A_2 p_2 + A_3 p_3 − A_4 p_4
+    of the absolute pressures, so the mass reaches F/B as F/B (1 − e^(−B t/m)), out of the piston (Hopsan's P5
+    position falls). A FourChamberCylinder with Hopsan's names, its position from the retracted end, its chambers
+    floored at 0 Pa absolute; use_sl false removes its stops."""
+    v = _value
+    piston = {"A_1#Value": v("1e-3"), "A_2#Value": v("5e-4"), "A_3#Value": v("2e-4"), "A_4#Value": v("1e-4"),
+              "s_l#Value": v("10"), "V_1#Value": v("0.001"), "V_2#Value": v("0.002"), "V_3#Value": v("0.003"),
+              "V_4#Value": v("0.004"), "B_p#Value": v("0"), "c_leak13#Value": v("2e-12"),
+              "P5#Position": v("-1"), "P1#Pressure": v("3e6", "Pa")}
+    components = [
+        ("HydraulicFourChamberPiston", "FC", piston),
+        ("MechanicTranslationalMass", "M", {"m": v("100"), "B#Value": v("1000"), "k#Value": v("0")}),
+        *[("HydraulicPressureSourceQ", f"S{i}", {"p#Value": v(p, "Pa")})
+          for i, p in ((1, "3e6"), (2, "1e6"), (3, "2e6"), (4, "5e5"))],
+    ]
+    connections = [("FC.P5", "M.P1"), *[(f"FC.P{i}", f"S{i}.P1") for i in (1, 2, 3, 4)]]
+    path = tmp_path / "four.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    fc = imp.system["FC"]
+    assert fc.values["V_4"] == 0.004 and fc.values["c_leak13"] == 2e-12 and fc.values["c_leak12"] == 1e-11
+    assert fc.values["p_floor"] == pytest.approx(-101325.0) and fc.values["k_stop"] == 1e9
+    assert fc.values["p1_0"] == pytest.approx(3e6 - 101325.0) and fc.values["p2_0"] == pytest.approx(1e5 - 101325.0)
+    t = np.array([0.0, 0.05, 0.2, 0.5])
+    r = imp.system.simulate(t_eval=t, method="cvodes", accuracy=1e-8)
+    v_end = (1e-3 * 3e6 - 5e-4 * 1e6 + 2e-4 * 2e6 - 1e-4 * 5e5) / 1000.0
+    np.testing.assert_allclose(r["FC.P5.Velocity"], -v_end * (1.0 - np.exp(-10.0 * t)), rtol=1e-4, atol=1e-6)
+    np.testing.assert_allclose(r["FC.P1.Pressure"], 3e6, rtol=1e-6)
+    piston["use_sl"] = ("false", "")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    assert import_hopsan(path).system["FC"].values["k_stop"] == 0.0
+
+def test_hopsans_centrifugal_pumps_are_centrifugal_pumps_with_hopsans_slip_term(tmp_path: Path) -> None:
+    """HydraulicCentrifugalPump (omegap driven by a signal, 126 rad/s: speed = input) and HydraulicCentrifugalPumpJ (turned by a
+    torque of 150 N m at Pmr1), each between 1 and 3 bar (absolute): CentrifugalPump and CentrifugalPumpInertia
+    with Hopsan's ρ² slip term and inlet floor; the J pump's port turns at -ω (Hopsan counts outward), its Pin is
+    the torque at Pmr1 times ω, and it settles where that torque is the power it gives over ω + 0.001."""
+    v = _value
+    pars = {"kl#Value": v("0.1"), "b#Value": v("0.03"), "d#Value": v("0.3"), "beta2#Value": v("1.57"),
+            "Ap#Value": v("0.001"), "rho#Value": v("860"), "Kcp#Value": v("1e-11"), "Bp#Value": v("0")}
+    components = [
+        ("HydraulicCentrifugalPump", "CP", {**pars, "omegap#Value": v("157")}),
+        ("HydraulicCentrifugalPumpJ", "CJ", {**pars, "Jp#Value": v("0.1")}),
+        ("HydraulicPressureSourceC", "I1", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "O1", {"p#Value": v("3e5", "Pa")}),
+        ("HydraulicPressureSourceC", "I2", {"p#Value": v("1e5", "Pa")}),
+        ("HydraulicPressureSourceC", "O2", {"p#Value": v("3e5", "Pa")}),
+        ("SignalConstant", "W", {"y#Value": v("126")}),
+        ("MechanicTorqueTransformer", "T", {"T#Value": v("150")}),
+    ]
+    connections = [("CP.P1", "I1.P1"), ("CP.P2", "O1.P1"), ("W.y", "CP.omegap"),
+                   ("CJ.P1", "I2.P1"), ("CJ.P2", "O2.P1"), ("T.P1", "CJ.Pmr1")]
+    path = tmp_path / "centrifugal.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    cp, cj = imp.system["CP"], imp.system["CJ"]
+    assert (cp.option("slip"), cp.option("inlet"), cj.option("slip"), cj.option("inlet")) == ("hopsan", "floor") * 2
+    assert cp.option("speed") == "input" and cp.values["rho"] == 860.0 and cj.values["Jp"] == 0.1
+    r = imp.system.simulate(t_eval=[0.0, 4.0], method="cvodes")
+    u2, k = 126.0 * 0.15, 0.1 * 860.0 / (2.0 * 1e-6)
+    c = 860.0**2 * u2 / (np.pi * 0.3 * 0.03 * np.tan(1.57))
+    q = (-c + np.sqrt(c**2 + 4.0 * k * (860.0 * u2**2 - 2e5))) / (2.0 * k)
+    assert r["CP.P2.Flow"][-1] == pytest.approx(q, rel=1e-4)
+    torque = (2e5 + k * q**2) * q / 126.001
+    assert r["CP.torp.Value"][-1] == pytest.approx(torque, rel=1e-4)
+    assert r["CP.Pin.Value"][-1] == pytest.approx(126.0 * torque, rel=1e-4)
+    omega = -r["CJ.Pmr1.AngularVelocity"][-1]
+    assert omega > 100.0
+    u2 = omega * 0.15
+    c = 860.0**2 * u2 / (np.pi * 0.3 * 0.03 * np.tan(1.57))
+    q = (-c + np.sqrt(c**2 + 4.0 * k * (860.0 * u2**2 - 2e5))) / (2.0 * k)
+    assert r["CJ.P2.Flow"][-1] == pytest.approx(q, rel=1e-4)
+    assert (2e5 + k * q**2) * q / (omega + 0.001) == pytest.approx(150.0, rel=1e-4)
+    assert r["CJ.Pin.Value"][-1] == pytest.approx(150.0 * omega, rel=1e-6)
 
 def test_hopsans_directional_check_valve_checks_until_its_spool_passes_half_then_opens_both_ways(tmp_path: Path) -> None:
     """Hydraulic22DirectionalCheckValve between 10 bar and 50 bar (absolute): checked, no flow back from P2; with
