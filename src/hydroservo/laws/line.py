@@ -29,7 +29,15 @@ import numpy as np
 from hydroservo.errors import ParameterError
 from hydroservo.laws.fluid import max_line_length
 
-__all__ = ["line_area", "segment_capacitance", "segment_inertance", "segment_resistance", "segments_needed"]
+__all__ = [
+    "line_area",
+    "segment_capacitance",
+    "segment_inertance",
+    "segment_resistance",
+    "segments_needed",
+    "wave_line_elements",
+    "wall_bypass_inertance",
+]
 
 
 def line_area(d: Any) -> Any:
@@ -198,3 +206,79 @@ def segments_needed(length: float, c: float, f_max: float) -> int:
         if not (math.isfinite(val) and val > 0):
             raise ParameterError(f"{name}: {val!r}; expected a positive finite value")
     return max(1, math.ceil(length / max_line_length(c, f_max) - 1e-12))
+
+
+def wave_line_elements(Z_c: Any, T: Any) -> tuple[Any, Any]:
+    r"""Capacitance and inertance of a whole lossless line of impedance ``Z_c`` and delay ``T``: :math:`C = T/Z_c`, :math:`L = Z_c T`.
+
+    The telegrapher's relations of a line of capacitance :math:`C` and
+    inertance :math:`L` (totals over its length): its characteristic
+    impedance :math:`Z_c = \sqrt{L/C}` and the time a wave takes along it
+    :math:`T = \sqrt{L C}`, solved for :math:`C` and :math:`L`. For a line of
+    bore :math:`d` and length :math:`l`, :math:`Z_c = \rho c/A` and
+    :math:`T = l/c`, and these are :func:`segment_capacitance` and
+    :func:`segment_inertance` of the whole line.
+
+    Parameters
+    ----------
+    Z_c : array_like
+        Characteristic impedance [Pa s/m^3].
+    T : array_like
+        Time a wave takes from one end to the other [s].
+
+    Returns
+    -------
+    tuple of array_like
+        Capacitance [m^3/Pa] and inertance [Pa s^2/m^3].
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Volumes&Lines/HydraulicTLMlossless.hpp (a line given by its impedance and delay);
+    [Merritt1967] (fluid flow fundamentals: lumped line volumes and oil columns).
+
+    Examples
+    --------
+    A 10 m line of 30 mm bore with oil of 870 kg/m^3 at 1 GPa:
+
+    >>> import math
+    >>> c = math.sqrt(1e9 / 870.0); A = math.pi * 0.03**2 / 4
+    >>> C, L = wave_line_elements(870.0 * c / A, 10.0 / c)
+    >>> round(C / float(segment_capacitance(10.0, 0.03, 1e9)), 12), round(L / float(segment_inertance(10.0, 0.03, 870.0)), 12)
+    (1.0, 1.0)
+    """
+    return T / Z_c, Z_c * T
+
+
+def wall_bypass_inertance(L: Any) -> Any:
+    r"""Inertance that bypasses a viscous wall's resistance, :math:`2L` for a line of inertance :math:`L` [Pa s^2/m^3].
+
+    Hopsan's hose (HydraulicHose.hpp) damps each transmitted wave by the filter
+    :math:`(1 + s/W_4)/(1 + s/W_3)`, :math:`W_3 = R_w/(2 Z_c T)`,
+    :math:`W_4 = W_3 e^{R_w/(2 Z_c)}`, where :math:`R_w = 128 \eta_w l/(\pi d^4)`
+    is the wall's equivalent resistance. To first order in :math:`R_w/Z_c` the
+    filter is :math:`e^{-Z_w/(2 Z_c)}`, the attenuation of a line whose
+    series impedance is :math:`Z_w = R_w s\tau/(1 + s\tau)`,
+    :math:`\tau = 1/W_3 = 2 Z_c T/R_w`: the resistance :math:`R_w` in parallel
+    with the inertance :math:`R_w \tau = 2 Z_c T = 2L`. Fast waves see
+    :math:`R_w`, a steady flow none of it.
+
+    Parameters
+    ----------
+    L : array_like
+        Inertance of the line, or of a segment for a segment's bypass [Pa s^2/m^3].
+
+    Returns
+    -------
+    array_like
+        Inertance in parallel with the wall's resistance [Pa s^2/m^3].
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Volumes&Lines/HydraulicHose.hpp (the filters of W_3 and W_4 on the transmitted waves).
+
+    Examples
+    --------
+    >>> float(wall_bypass_inertance(1.5e7))
+    30000000.0
+    """
+    return 2.0 * L
