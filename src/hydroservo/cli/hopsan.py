@@ -25,8 +25,8 @@ def add_parsers(sub: Any) -> None:
     )
     p.add_argument("file", metavar="FILE.hmf")
     p.add_argument("--line-segments", type=int, metavar="N",
-                   help="lumped segments of each transmission line and hose (default: one per Hopsan time step of "
-                   "the line's delay, at most 200)")
+                   help="lumped segments of each transmission line and hose (default: those that carry its waves up "
+                   "to the Nyquist frequency of Hopsan's time step Ts, ceil(5 T/Ts) for a delay T, at most 200)")
     add_output_options(p, "hydroservo-NAME")
     p.add_argument("--json", action="store_true", help="print the mapping as JSON")
     p.set_defaults(func=cmd_import_hopsan)

@@ -1669,16 +1669,23 @@ def _lossless_connector(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+#: Hopsan's Nyquist frequency 1/(2 Ts) is the highest its step resolves: a line's default segments carry waves up to
+#: it by [Efe2014]'s criterion (a segment shorter than a tenth of the wavelength), n >= 10 T/(2 Ts)
+_LINE_SEGMENTS_PER_STEP = 5.0
+
+
 def _line_segments(par: _Params, delay: float) -> int:
-    """The segments of a line of ``delay`` [s]: the import's ``line_segments`` if given, else one per Hopsan step
-    of the delay, ceil(T/Ts) (the ladder's cut-off 2n/T rad/s is then 2/Ts, above the Nyquist frequency π/Ts of
-    Hopsan's step), at least 1 and at most :attr:`hydroservo.components.Line.MAX_SEGMENTS`."""
+    """The segments of a line of ``delay`` T [s]: the import's ``line_segments`` if given, else those that carry
+    the waves up to the Nyquist frequency 1/(2 Ts) of Hopsan's step by [Efe2014] eq. 3.30 per segment, ceil(5 T/Ts)
+    (:data:`_LINE_SEGMENTS_PER_STEP`), at least 1 and at most :attr:`hydroservo.components.Line.MAX_SEGMENTS`."""
     from hydroservo.components import Line
 
     if par.line_segments is not None:
         return par.line_segments
-    steps = math.ceil(delay / par.timestep - 1e-9) if par.timestep > 0 else Line.MAX_SEGMENTS
-    return min(max(steps, 1), Line.MAX_SEGMENTS)
+    if par.timestep <= 0.0:
+        return Line.MAX_SEGMENTS
+    needed = math.ceil(_LINE_SEGMENTS_PER_STEP * delay / par.timestep - 1e-9)
+    return min(max(needed, 1), Line.MAX_SEGMENTS)
 
 
 def _line_starts(par: _Params) -> float | None:
@@ -3145,7 +3152,8 @@ def read_hopsan(path: str | Path, line_segments: int | None = None) -> System:
     """The Hopsan model file ``path`` as a hydroservo :class:`~hydroservo.system.system.System`.
 
     ``line_segments``: the lumped segments of each transmission line and hose (HydraulicTLMlossless,
-    HydraulicHose); by default one per Hopsan time step of the line's delay, at most 200.
+    HydraulicHose); by default those that carry its waves up to the Nyquist frequency of Hopsan's time step,
+    ceil(5 T/Ts) for a delay T, at most 200.
 
     Raises
     ------

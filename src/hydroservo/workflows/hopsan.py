@@ -68,7 +68,7 @@ class ImportHopsan(Workflow):
     OPTIONS: ClassVar[dict[str, str]] = {"file": "FILE.hmf"}
 
     file: str | Path
-    #: the lumped segments of each transmission line and hose (None: one per Hopsan step of its delay)
+    #: the lumped segments of each transmission line and hose (None: ceil(5 T/Ts) for a delay T, at most 200)
     line_segments: int | None = None
 
     def __post_init__(self) -> None:
