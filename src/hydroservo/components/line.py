@@ -6,10 +6,13 @@ import warnings
 from collections.abc import Mapping
 from typing import Any, ClassVar
 
+from hydroservo import backend as bk
 from hydroservo.components.base import Component, Hydraulic, Limit, Option, Output, Param, Port, State, register
 from hydroservo.errors import ParameterError
 from hydroservo.laws.fluid import wave_speed
 from hydroservo.laws.line import (
+    critical_flow,
+    friction_drop,
     segment_capacitance,
     segment_inertance,
     segment_resistance,
@@ -56,7 +59,12 @@ class Line(Component):
     reproduce the line's wave dynamics (quarter-wave resonance
     :math:`c/(4l)` of a line closed at one end) up to ``f_max``. Wall friction is
     the steady laminar one; frequency-dependent friction is not modelled, so
-    resonances are less damped than in a real line.
+    resonances are less damped than in a real line. Option ``friction``:
+    ``"laminar"`` (default) at any flow, or ``"laminar-blasius"``, laminar
+    below a Reynolds number of 2300 and Blasius' turbulent friction above
+    (:func:`hydroservo.laws.line.friction_drop`, [Hopsan2026]
+    Hydraulic/Volumes&Lines/HydraulicHose.hpp's law), each oil column's at its
+    own flow; the jump at the transition is a switch event.
 
     ``ends`` chooses what each end is, so that the line fits the ports it joins
     (a node needs exactly one pressure port, :mod:`hydroservo.system.nodes`):
@@ -98,6 +106,9 @@ class Line(Component):
 
     OPTIONS = {
         "wall": Option("rigid", ("rigid", "viscous"), "a wall without damping, or with the damping of eta_w"),
+        "friction": Option(
+            "laminar", ("laminar", "laminar-blasius"), "laminar friction, or Blasius' turbulent above Re = 2300"
+        ),
     }
 
     PARAMETERS = {
@@ -143,6 +154,20 @@ class Line(Component):
     def viscous_wall(self) -> bool:
         """Whether the wall damps the waves (option ``wall = "viscous"``)."""
         return self.option_values.get("wall") == "viscous"
+
+    @property
+    def turbulent(self) -> bool:
+        """Whether the friction turns turbulent above a Reynolds number of 2300 (option ``friction``)."""
+        return self.option_values.get("friction") == "laminar-blasius"
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        """An oil column's flow crossing the laminar-turbulent transition (option friction = laminar-blasius)."""
+        if not self.turbulent:
+            return {}
+        q_c = critical_flow(p["d"], p["rho"], p["rho"] * p["nu"])
+        return {f"turbulent_{q}": (bk.fabs(x[q]) - q_c, 1e-3) for q in self._names if q.startswith("q")}
 
     def options_changed(self) -> None:
         if hasattr(self, "_segments"):  # the constructor declares the states once it knows the segments
@@ -290,7 +315,10 @@ class Line(Component):
             else:
                 p_up = u["pA"] if k == 0 else x[self._names[k - 1]]
                 p_down = u["pB"] if k == last else x[self._names[k + 1]]
-                drop = p_up - p_down - frac * resistance * x[name]
+                if self.turbulent:
+                    drop = p_up - p_down - frac * friction_drop(x[name], p["l"], p["d"], p["rho"], p["rho"] * p["nu"])
+                else:
+                    drop = p_up - p_down - frac * resistance * x[name]
                 if viscous:  # the wall's resistance, bypassed by its inertance (the class's docstring)
                     w = f"w{name[1:]}"
                     drop = drop - frac * wall * (x[name] - x[w])

@@ -1735,10 +1735,10 @@ def _hose(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     characteristics over T = l/√(β_e/ρ), with the laminar resistance R = 128 η l/(π d⁴) split into a part lumped
     at the ends (R q low-pass filtered over κ T, κ = 1.25) and a part that attenuates each wave (the filter
     (1 + s/W_2)/(1 + s/W_1), W_1 = 1/(κ T), W_2 = W_1 e^{R/(2 Z_c)}): the two add up, to first order in R/Z_c, to
-    R at every frequency, a line with uniform laminar friction. hydroservo: a Line of that friction (ν = η/ρ), both
+    R at every frequency, a line with uniform friction. Above a Reynolds number of 2300 Hopsan's friction is
+    Blasius' (its ``rq``). hydroservo: a Line of that friction (ν = η/ρ, ``friction = "laminar-blasius"``), both
     ends pressure ports (Hopsan's C ends); the wall's equivalent viscosity ``eta_w``, a further filter on each
-    wave, is the Line's ``wall = "viscous"`` (its docstring). Hopsan's friction turns turbulent (Blasius) above a
-    Reynolds number of 2300; the Line's stays laminar. Segments by :func:`_line_segments`."""
+    wave, is the Line's ``wall = "viscous"`` (its docstring). Segments by :func:`_line_segments`."""
     from hydroservo.components import Line
 
     rho, eta, d, length = par("rho", 870.0), par("eta", 0.03), par("d", 0.03), par("l", 1.0)
@@ -1752,7 +1752,7 @@ def _hose(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     delay = length / math.sqrt(beta / rho)
     segments = _line_segments(par, delay)
     wall: dict[str, Any] = {"wall": "viscous", "eta_w": eta_w} if eta_w > 0.0 else {}
-    comp = Line(n, segments=segments, l=length, d=d, rho=rho, nu=eta / rho, beta_e=beta,
+    comp = Line(n, segments=segments, l=length, d=d, rho=rho, nu=eta / rho, beta_e=beta, friction="laminar-blasius",
                 f_max=segments / (10.0 * delay), p_init=_abs(p_init if p_init is not None else 1e5), **wall)
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"},
                   note=f"Line {n} ({segments} segments{', viscous wall' if wall else ''})")

@@ -204,3 +204,22 @@ def test_a_viscous_wall_damps_the_waves_as_its_bypassed_resistance_and_leaves_th
     r = s.simulate(t_eval=[0.0, 3.0], method="cvodes")
     inertance, R = 870.0 * 10.0 / (np.pi * 0.02**2 / 4), 128 * 870.0 * 1e-6 * 10.0 / (np.pi * 0.02**4)
     assert r["line.pA"][-1] - r["line.pB"][-1] == pytest.approx(R * 3e-3 + 3 * inertance * 1e-3, rel=2e-3)
+
+
+@pytest.mark.parametrize(("dp", "turbulent"), [(0.5e5, False), (20e5, True)])
+def test_friction_turns_from_hagen_poiseuille_to_blasius_above_a_reynolds_number_of_2300(dp, turbulent):
+    # steady flow through a line between two pressures: dp = R q below Re 2300, dp = k q^1.75 (Blasius) above
+    d, length, rho, nu = 0.004, 2.0, 870.0, 10e-6
+    s = System("friction", t_end=1.0)
+    s.add(c.ConstantPressure("a", p=f"{10e5 + dp} Pa"))
+    s.add(c.Tank("b", p="10 bar"))
+    s.add(c.Line("line", ends="flow", segments=3, l=length, d=d, nu=nu, rho=rho, friction="laminar-blasius",
+                 p_init="10 bar", f_max=10.0))
+    s.connect("a.P", "line.A")
+    s.connect("line.B", "b.P")
+    q = s.simulate(t_eval=[0.0, 1.0], method="cvodes")["line.QA"][-1]
+    mu = rho * nu
+    k = 32 * rho * 0.079 * (4 * rho / (np.pi * d * mu)) ** -0.25 * length / (np.pi**2 * d**5)
+    expected = (dp / k) ** (1 / 1.75) if turbulent else dp * np.pi * d**4 / (128 * mu * length)
+    assert q == pytest.approx(expected, rel=1e-5)
+    assert (4 * rho * q / (np.pi * d * mu) > 2300) == turbulent

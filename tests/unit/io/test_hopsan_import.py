@@ -1603,6 +1603,7 @@ def test_hopsans_transmission_line_and_hose_are_ladders_of_their_lines(tmp_path:
     assert type(line["TLM"]).__name__ == "LosslessLine" and line["TLM"].segments == 100  # 5 T/Ts: T 2 ms, Ts 0.1 ms
     assert type(hose["H"]).__name__ == "Line" and hose["H"].segments == 10 and hose["H"].viscous_wall  # T = 0.19 ms
     assert hose["H"].values["nu"] == pytest.approx(0.03 / 870.0) and hose["H"].values["eta_w"] == 0.01
+    assert hose["H"].turbulent and not line["TLM"].turbulent  # Blasius' friction above Re 2300, as Hopsan's hose
     t = np.linspace(0.0, 0.004, 401)
     p = line.simulate(t_eval=t)["TLM.P1.Pressure"]
     assert np.mean(p[(t > 0.001) & (t < 0.003)]) == pytest.approx(1e6 + 1e9 * 1e-5, rel=1e-4)
