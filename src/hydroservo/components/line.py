@@ -379,7 +379,7 @@ class LosslessLine(Line):
 
     PARAMETERS = {
         "Z_c": Param(1.0e9, "Pa*s/m^3", "characteristic impedance", min=0.0, min_inclusive=False),
-        "deltat": Param(0.1, "s", "time a wave takes from one end to the other", min=0.0, min_inclusive=False),
+        "deltat": Param(0.01, "s", "time a wave takes from one end to the other", min=0.0, min_inclusive=False),
         "f_max": Param(100.0, "Hz", "highest frequency of interest (sets segments='auto')", min=0.0, min_inclusive=False),
         "p_init": Param(0.0, "Pa", "initial pressure along the line", min=VACUUM),
     }
