@@ -11,7 +11,7 @@ from hydroservo.cli.common import add_output_options, execute
 def cmd_import_hopsan(args: argparse.Namespace) -> int:
     from hydroservo.workflows.hopsan import ImportHopsan
 
-    return execute(ImportHopsan(args.file, cli=True), args)
+    return execute(ImportHopsan(args.file, args.line_segments, cli=True), args)
 
 
 def add_parsers(sub: Any) -> None:
@@ -24,6 +24,9 @@ def add_parsers(sub: Any) -> None:
         "(docs/hopsan.md lists the components mapped).",
     )
     p.add_argument("file", metavar="FILE.hmf")
+    p.add_argument("--line-segments", type=int, metavar="N",
+                   help="lumped segments of each transmission line and hose (default: those that carry its waves up "
+                   "to the Nyquist frequency of Hopsan's time step Ts, ceil(5 T/Ts) for a delay T, at most 200)")
     add_output_options(p, "hydroservo-NAME")
     p.add_argument("--json", action="store_true", help="print the mapping as JSON")
     p.set_defaults(func=cmd_import_hopsan)

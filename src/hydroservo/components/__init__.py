@@ -6,7 +6,7 @@ module                 components
 :mod:`.sources`        ConstantPressure, Tank, PressureTable, PressureSource,
                        FlowSource
 :mod:`.volume`         Volume
-:mod:`.line`           Line, Hose
+:mod:`.line`           Line, Hose, LosslessLine
 :mod:`.accumulator`    Accumulator
 :mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine,
                        CentrifugalPump, CentrifugalPumpInertia
@@ -70,7 +70,7 @@ from hydroservo.components.control import (
     TransferFunction,
 )
 from hydroservo.components.cylinder import Cylinder, FourChamberCylinder
-from hydroservo.components.line import Hose, Line
+from hydroservo.components.line import Hose, Line, LosslessLine
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
@@ -179,6 +179,7 @@ __all__ = [
     "Volume",
     "Line",
     "Hose",
+    "LosslessLine",
     "Accumulator",
     "Pump",
     "VariablePump",

@@ -117,6 +117,9 @@ class _Params:
         self.driven = driven
         #: the model file's folder: the files a component names (a lookup table's CSV) are read from it
         self.folder: Path | None = None
+        #: Hopsan's time step [s] and the import's segments of a line (None: from the line's delay and the step)
+        self.timestep = 0.0
+        self.line_segments: int | None = None
 
     def __call__(self, name: str, default: float) -> float:
         for key in (f"{name}#Value", name):
@@ -161,7 +164,8 @@ C_TYPES = frozenset({
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
-    "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicFourChamberPiston",
+    "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicFourChamberPiston", "HydraulicTLMlossless",
+    "HydraulicHose",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -1737,6 +1741,95 @@ def _lossless_connector(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+#: Hopsan's Nyquist frequency 1/(2 Ts) is the highest its step resolves: a line's default segments carry waves up to
+#: it by [Efe2014]'s criterion (a segment shorter than a tenth of the wavelength), n >= 10 T/(2 Ts)
+_LINE_SEGMENTS_PER_STEP = 5.0
+
+
+def _line_segments(par: _Params, delay: float) -> int:
+    """The segments of a line of ``delay`` T [s]: the import's ``line_segments`` if given, else those that carry
+    the waves up to the Nyquist frequency 1/(2 Ts) of Hopsan's step by [Efe2014] eq. 3.30 per segment, ceil(5 T/Ts)
+    (:data:`_LINE_SEGMENTS_PER_STEP`), at least 1 and at most :attr:`hydroservo.components.Line.MAX_SEGMENTS`."""
+    from hydroservo.components import Line
+
+    if par.line_segments is not None:
+        return par.line_segments
+    if par.timestep <= 0.0:
+        return Line.MAX_SEGMENTS
+    needed = math.ceil(_LINE_SEGMENTS_PER_STEP * delay / par.timestep - 1e-9)
+    return min(max(needed, 1), Line.MAX_SEGMENTS)
+
+
+def _line_starts(par: _Params) -> float | None:
+    """The line's start pressure (absolute, Hopsan's), or None (a problem noted): hydroservo's line starts at rest
+    at one pressure, so unequal start pressures at its ends or a start flow are refused."""
+    p1, p2 = par.start("P1", "Pressure", 1e5), par.start("P2", "Pressure", 1e5)
+    q1, q2 = par.start("P1", "Flow", 0.0), par.start("P2", "Flow", 0.0)
+    if p1 != p2 or q1 != 0.0 or q2 != 0.0:
+        par.problems.append(
+            f"{par.where}: start values P1#Pressure = {p1:g} Pa, P2#Pressure = {p2:g} Pa, P1#Flow = {q1:g} m^3/s, "
+            f"P2#Flow = {q2:g} m^3/s: a line starting at rest at one pressure (equal pressures, no flow) is supported"
+        )
+        return None
+    return p1
+
+
+def _tlm_lossless(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Volumes&Lines/HydraulicTLMlossless.hpp: c_1(t) = p_2(t - T) + Z_c q_2(t - T) and the
+    same from end 1 to end 2, T = ``deltat``: the characteristics of the wave equation of a lossless line of
+    impedance Z_c, solved exactly (Hopsan's one-step TLM delay is part of T). hydroservo's engine holds no delay:
+    a LosslessLine, the lumped ladder of that line's capacitance T/Z_c and inertance Z_c T, both ends pressure
+    ports (Hopsan's C ends) with half a segment's volume; segments by :func:`_line_segments`. Its low-pass
+    coefficient ``alpha`` filters each wave at every step, c = α c + (1 - α) c_0, a filter whose time constant
+    α Ts/(1 - α) is tied to Hopsan's step: alpha ≠ 0 is refused."""
+    from hydroservo.components import LosslessLine
+
+    alpha = par("alpha", 0.0)
+    if alpha != 0.0 or "alpha" in par.driven:
+        par.problems.append(
+            f"{par.where}: alpha = {alpha:g}: Hopsan filters each wave over one of its steps (time constant "
+            "alpha Ts/(1 - alpha), tied to the step); only alpha = 0 is supported"
+        )
+    p_init = _line_starts(par)
+    z_c, delay = par("Z_c", 1e9), par("deltat", 0.1)
+    if z_c <= 0.0 or delay <= 0.0:
+        par.problems.append(f"{par.where}: Z_c = {z_c:g}, deltat = {delay:g} s; values above 0 are supported")
+        return Mapped()
+    segments = _line_segments(par, delay)
+    comp = LosslessLine(n, segments=segments, Z_c=z_c, deltat=delay, f_max=segments / (10.0 * delay),
+                        p_init=_abs(p_init if p_init is not None else 1e5))
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"},
+                  note=f"LosslessLine {n} ({segments} segments)")
+
+
+def _hose(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Volumes&Lines/HydraulicHose.hpp (Krus' line model): the lossless line's
+    characteristics over T = l/√(β_e/ρ), with the laminar resistance R = 128 η l/(π d⁴) split into a part lumped
+    at the ends (R q low-pass filtered over κ T, κ = 1.25) and a part that attenuates each wave (the filter
+    (1 + s/W_2)/(1 + s/W_1), W_1 = 1/(κ T), W_2 = W_1 e^{R/(2 Z_c)}): the two add up, to first order in R/Z_c, to
+    R at every frequency, a line with uniform friction. Above a Reynolds number of 2300 Hopsan's friction is
+    Blasius' (its ``rq``). hydroservo: a Line of that friction (ν = η/ρ, ``friction = "laminar-blasius"``), both
+    ends pressure ports (Hopsan's C ends); the wall's equivalent viscosity ``eta_w``, a further filter on each
+    wave, is the Line's ``wall = "viscous"`` (its docstring). Segments by :func:`_line_segments`."""
+    from hydroservo.components import Line
+
+    rho, eta, d, length = par("rho", 870.0), par("eta", 0.03), par("d", 0.03), par("l", 1.0)
+    beta, eta_w = par("beta_e", 1e9), par("eta_w", 0.03)
+    if min(rho, eta, d, length, beta) <= 0.0 or eta_w < 0.0:
+        par.problems.append(
+            f"{par.where}: rho, eta, d, l and beta_e above 0 and eta_w at least 0 are supported"
+        )
+        return Mapped()
+    p_init = _line_starts(par)
+    delay = length / math.sqrt(beta / rho)
+    segments = _line_segments(par, delay)
+    wall: dict[str, Any] = {"wall": "viscous", "eta_w": eta_w} if eta_w > 0.0 else {}
+    comp = Line(n, segments=segments, l=length, d=d, rho=rho, nu=eta / rho, beta_e=beta, friction="laminar-blasius",
+                f_max=segments / (10.0 * delay), p_init=_abs(p_init if p_init is not None else 1e5), **wall)
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"},
+                  note=f"Line {n} ({segments} segments{', viscous wall' if wall else ''})")
+
+
 # -- mechanic, rotational -------------------------------------------------------------------------------------
 
 
@@ -3092,6 +3185,8 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPlugQ": _plug,
     "HydraulicLosslessConnector": _lossless_connector,
     "HydraulicLosslessTConnector": _lossless_connector,
+    "HydraulicTLMlossless": _tlm_lossless,
+    "HydraulicHose": _hose,
     "MechanicTranslationalMass": _mass,
     "MechanicTranslationalMassWithCoulombFriction": _mass_coulomb,
     "MechanicTranslationalSpring": _spring,
@@ -3261,8 +3356,12 @@ class HopsanImport:
     variables: dict[str, str]  #: alias -> Hopsan's name of the variable (``Servo1$Valve#PA#Pressure``)
 
 
-def read_hopsan(path: str | Path) -> System:
+def read_hopsan(path: str | Path, line_segments: int | None = None) -> System:
     """The Hopsan model file ``path`` as a hydroservo :class:`~hydroservo.system.system.System`.
+
+    ``line_segments``: the lumped segments of each transmission line and hose (HydraulicTLMlossless,
+    HydraulicHose); by default those that carry its waves up to the Nyquist frequency of Hopsan's time step,
+    ceil(5 T/Ts) for a delay T, at most 200.
 
     Raises
     ------
@@ -3270,10 +3369,10 @@ def read_hopsan(path: str | Path) -> System:
         The file cannot be read (:func:`~hydroservo.io.hopsan.read_hmf`), or it holds components or settings that
         are not supported: each is listed with its path in the model.
     """
-    return import_hopsan(path).system
+    return import_hopsan(path, line_segments).system
 
 
-def import_hopsan(path: str | Path) -> HopsanImport:
+def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanImport:
     """The Hopsan model file ``path`` imported: the system and the mapping (see :func:`read_hopsan`)."""
     from hydroservo.components import Constant
     from hydroservo.system.nodes import port_of
@@ -3282,6 +3381,11 @@ def import_hopsan(path: str | Path) -> HopsanImport:
     model = read_hmf(path)
     source = str(path)
     problems: list[str] = []
+    if line_segments is not None:
+        from hydroservo.components import Line
+
+        if isinstance(line_segments, bool) or not isinstance(line_segments, int) or not 1 <= line_segments <= Line.MAX_SEGMENTS:
+            raise ModelFileError(f"line_segments = {line_segments!r}: expected a whole number from 1 to {Line.MAX_SEGMENTS}")
     seen_names: set[str] = set()
     for hc in model.components:
         if hc.full_name in seen_names:
@@ -3335,6 +3439,7 @@ def import_hopsan(path: str | Path) -> HopsanImport:
                              fan_in.get(hc.full_name))
             params.t0 = model.start
             params.folder = Path(source).parent
+            params.timestep, params.line_segments = model.timestep, line_segments
             m = LIBRARY[hc.typename](hc, name, params)
         except Exception as exc:  # a value out of a component's range: named with the Hopsan component
             problems.append(f"{where}: {exc}")

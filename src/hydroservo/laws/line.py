@@ -26,10 +26,25 @@ from typing import Any
 
 import numpy as np
 
+from hydroservo import backend as bk
 from hydroservo.errors import ParameterError
 from hydroservo.laws.fluid import max_line_length
 
-__all__ = ["line_area", "segment_capacitance", "segment_inertance", "segment_resistance", "segments_needed"]
+__all__ = [
+    "line_area",
+    "segment_capacitance",
+    "segment_inertance",
+    "segment_resistance",
+    "segments_needed",
+    "wave_line_elements",
+    "wall_bypass_inertance",
+    "RE_CRIT",
+    "critical_flow",
+    "friction_drop",
+]
+
+#: Reynolds number above which the flow in a line is turbulent (Blasius' friction), below which laminar
+RE_CRIT = 2300.0
 
 
 def line_area(d: Any) -> Any:
@@ -198,3 +213,164 @@ def segments_needed(length: float, c: float, f_max: float) -> int:
         if not (math.isfinite(val) and val > 0):
             raise ParameterError(f"{name}: {val!r}; expected a positive finite value")
     return max(1, math.ceil(length / max_line_length(c, f_max) - 1e-12))
+
+
+def wave_line_elements(Z_c: Any, T: Any) -> tuple[Any, Any]:
+    r"""Capacitance and inertance of a whole lossless line of impedance ``Z_c`` and delay ``T``: :math:`C = T/Z_c`, :math:`L = Z_c T`.
+
+    The telegrapher's relations of a line of capacitance :math:`C` and
+    inertance :math:`L` (totals over its length): its characteristic
+    impedance :math:`Z_c = \sqrt{L/C}` and the time a wave takes along it
+    :math:`T = \sqrt{L C}`, solved for :math:`C` and :math:`L`. For a line of
+    bore :math:`d` and length :math:`l`, :math:`Z_c = \rho c/A` and
+    :math:`T = l/c`, and these are :func:`segment_capacitance` and
+    :func:`segment_inertance` of the whole line.
+
+    Parameters
+    ----------
+    Z_c : array_like
+        Characteristic impedance [Pa s/m^3].
+    T : array_like
+        Time a wave takes from one end to the other [s].
+
+    Returns
+    -------
+    tuple of array_like
+        Capacitance [m^3/Pa] and inertance [Pa s^2/m^3].
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Volumes&Lines/HydraulicTLMlossless.hpp (a line given by its impedance and delay);
+    [Merritt1967] (fluid flow fundamentals: lumped line volumes and oil columns).
+
+    Examples
+    --------
+    A 10 m line of 30 mm bore with oil of 870 kg/m^3 at 1 GPa:
+
+    >>> import math
+    >>> c = math.sqrt(1e9 / 870.0); A = math.pi * 0.03**2 / 4
+    >>> C, L = wave_line_elements(870.0 * c / A, 10.0 / c)
+    >>> round(C / float(segment_capacitance(10.0, 0.03, 1e9)), 12), round(L / float(segment_inertance(10.0, 0.03, 870.0)), 12)
+    (1.0, 1.0)
+    """
+    return T / Z_c, Z_c * T
+
+
+def wall_bypass_inertance(L: Any) -> Any:
+    r"""Inertance that bypasses a viscous wall's resistance, :math:`2L` for a line of inertance :math:`L` [Pa s^2/m^3].
+
+    Hopsan's hose (HydraulicHose.hpp) damps each transmitted wave by the filter
+    :math:`(1 + s/W_4)/(1 + s/W_3)`, :math:`W_3 = R_w/(2 Z_c T)`,
+    :math:`W_4 = W_3 e^{R_w/(2 Z_c)}`, where :math:`R_w = 128 \eta_w l/(\pi d^4)`
+    is the wall's equivalent resistance. To first order in :math:`R_w/Z_c` the
+    filter is :math:`e^{-Z_w/(2 Z_c)}`, the attenuation of a line whose
+    series impedance is :math:`Z_w = R_w s\tau/(1 + s\tau)`,
+    :math:`\tau = 1/W_3 = 2 Z_c T/R_w`: the resistance :math:`R_w` in parallel
+    with the inertance :math:`R_w \tau = 2 Z_c T = 2L`. Fast waves see
+    :math:`R_w`, a steady flow none of it.
+
+    Parameters
+    ----------
+    L : array_like
+        Inertance of the line, or of a segment for a segment's bypass [Pa s^2/m^3].
+
+    Returns
+    -------
+    array_like
+        Inertance in parallel with the wall's resistance [Pa s^2/m^3].
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Volumes&Lines/HydraulicHose.hpp (the filters of W_3 and W_4 on the transmitted waves).
+
+    Examples
+    --------
+    >>> float(wall_bypass_inertance(1.5e7))
+    30000000.0
+    """
+    return 2.0 * L
+
+
+def critical_flow(d: Any, rho: Any, mu: Any) -> Any:
+    r"""Flow at which a line's Reynolds number :math:`4\rho |q|/(\pi d \mu)` reaches :data:`RE_CRIT` [m^3/s].
+
+    Parameters
+    ----------
+    d : array_like
+        Inner diameter [m].
+    rho : array_like
+        Density [kg/m^3].
+    mu : array_like
+        Dynamic viscosity [Pa s].
+
+    Returns
+    -------
+    array_like
+        Flow [m^3/s].
+
+    References
+    ----------
+    [Merritt1967] (fluid flow fundamentals: the Reynolds number of a circular passage).
+
+    Examples
+    --------
+    A 10 mm bore with oil of 870 kg/m^3 and 0.03 Pa s turns turbulent at 0.62 L/s:
+
+    >>> round(float(critical_flow(0.01, 870.0, 0.03)) * 1e3, 2)
+    0.62
+    """
+    return np.pi * d * mu * RE_CRIT / (4.0 * rho)
+
+
+def friction_drop(q: Any, length: Any, d: Any, rho: Any, mu: Any) -> Any:
+    r"""Pressure drop of wall friction along a line: laminar below a Reynolds number of 2300, Blasius' above [Pa].
+
+    .. math::
+        \Delta p = \frac{128 \mu l}{\pi d^4} q \quad (Re < 2300), \qquad
+        \Delta p = \frac{32 \rho F l}{\pi^2 d^5} |q| q,\; F = 0.079\,Re^{-1/4} \quad (Re \ge 2300)
+
+    with :math:`Re = 4\rho|q|/(\pi d\mu)` and :math:`F` the Fanning friction
+    factor of a smooth pipe (Blasius). The drop jumps at the transition (by a
+    factor 1.64: Blasius' friction there is that of :math:`Re \approx 800`
+    laminar), as Hopsan's law does.
+
+    Parameters
+    ----------
+    q : array_like
+        Flow along the line [m^3/s].
+    length : array_like
+        Length [m].
+    d : array_like
+        Inner diameter [m].
+    rho : array_like
+        Density [kg/m^3].
+    mu : array_like
+        Dynamic viscosity [Pa s].
+
+    Returns
+    -------
+    array_like
+        Pressure drop in the direction of ``q`` [Pa].
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Volumes&Lines/HydraulicHose.hpp (its ``rq``: the laminar and turbulent friction of
+    a line); [Merritt1967] (laminar flow in a circular passage, Hagen-Poiseuille).
+
+    Examples
+    --------
+    Below the transition, the Hagen-Poiseuille drop; above, Blasius':
+
+    >>> q_c = float(critical_flow(0.01, 870.0, 0.03))
+    >>> bool(abs(friction_drop(0.5 * q_c, 2.0, 0.01, 870.0, 0.03) - segment_resistance(2.0, 0.01, 0.03) * 0.5 * q_c) < 1e-6)
+    True
+    >>> above, below = (friction_drop(q_c * (1.0 + e), 2.0, 0.01, 870.0, 0.03) for e in (1e-9, -1e-9))
+    >>> round(float(above / below), 2)
+    1.64
+    """
+    q_c = critical_flow(d, rho, mu)
+    laminar = segment_resistance(length, d, mu) * q
+    # Blasius' factor at the flow, but never at one below the transition (the branch not taken stays finite)
+    re = 4.0 * rho * bk.fmax(bk.fabs(q), q_c) / (np.pi * d * mu)
+    turbulent = 32.0 * rho * 0.079 * re**-0.25 * length * bk.fabs(q) * q / (np.pi**2 * d**5)
+    return bk.if_else(bk.fabs(q) < q_c, laminar, turbulent)

@@ -68,11 +68,13 @@ class ImportHopsan(Workflow):
     OPTIONS: ClassVar[dict[str, str]] = {"file": "FILE.hmf"}
 
     file: str | Path
+    #: the lumped segments of each transmission line and hose (None: ceil(5 T/Ts) for a delay T, at most 200)
+    line_segments: int | None = None
 
     def __post_init__(self) -> None:
         from hydroservo.io.hopsan_library import import_hopsan, safe_name
 
-        self.imported = import_hopsan(self.file)  # refused here, before any folder is made
+        self.imported = import_hopsan(self.file, self.line_segments)  # refused here, before any folder is made
         self.file_name = f"{safe_name(Path(self.file).stem)}.toml"
 
     def folder(self) -> str:

@@ -1652,6 +1652,56 @@ def test_hopsans_sensors_plug_and_lossless_connectors_against_their_laws(tmp_pat
     assert float(r["LT.P1.Flow"][-1]) == pytest.approx(-3.0 * q, rel=1e-4)
 
 
+def test_hopsans_transmission_line_and_hose_are_ladders_of_their_lines(tmp_path: Path) -> None:
+    """[Hopsan2026] Hydraulic/Volumes&Lines/HydraulicTLMlossless.hpp: a flow q into a line of impedance Z_c held at
+    its other end raises its pressure by Z_c q until the wave returns (2T); HydraulicHose.hpp: once its waves have
+    died out, a hose passes q with the Hagen-Poiseuille drop 128 eta l q/(pi d^4) and none of its wall's. Both are
+    ladders of the segments that carry their waves up to the Nyquist frequency of Hopsan's step (5 T/Ts), or of the
+    import's line_segments."""
+    v = _value
+    start = {"P1#Pressure": v("1e6", "Pa"), "P2#Pressure": v("1e6", "Pa")}
+    components = [
+        ("HydraulicFlowSourceQ", "Q", {"q#Value": v("1e-5")}),
+        ("HydraulicTLMlossless", "TLM", {"Z_c#Value": v("1e9"), "deltat": v("0.002", "s"), **start}),
+        ("HydraulicLaminarOrifice", "O", {"Kc#Value": v("1e-3")}),
+        ("HydraulicPressureSourceC", "S", {"p#Value": v("1e6", "Pa")}),
+        ("HydraulicFlowSourceQ", "Q2", {"q#Value": v("1e-5")}),
+        ("HydraulicHose", "H", {"d#Value": v("0.003"), "l#Value": v("0.2"), "eta_w": v("0.01"), **start}),
+        ("HydraulicLaminarOrifice", "O2", {"Kc#Value": v("1e-3")}),
+        ("HydraulicPressureSourceC", "S2", {"p#Value": v("1e6", "Pa")}),
+    ]
+    connections = [("Q.P1", "TLM.P1"), ("TLM.P2", "O.P1"), ("O.P2", "S.P1"),
+                   ("Q2.P1", "H.P1"), ("H.P2", "O2.P1"), ("O2.P2", "S2.P1")]
+    path, hose_path = tmp_path / "line.hmf", tmp_path / "hose.hmf"
+    path.write_text(_hmf(components[:4], connections[:3]), encoding="utf-8")
+    hose_path.write_text(_hmf(components[4:], connections[3:]), encoding="utf-8")
+    line, hose = import_hopsan(path).system, import_hopsan(hose_path).system
+    assert type(line["TLM"]).__name__ == "LosslessLine" and line["TLM"].segments == 100  # 5 T/Ts: T 2 ms, Ts 0.1 ms
+    assert type(hose["H"]).__name__ == "Line" and hose["H"].segments == 10 and hose["H"].viscous_wall  # T = 0.19 ms
+    assert hose["H"].values["nu"] == pytest.approx(0.03 / 870.0) and hose["H"].values["eta_w"] == 0.01
+    assert hose["H"].turbulent and not line["TLM"].turbulent  # Blasius' friction above Re 2300, as Hopsan's hose
+    t = np.linspace(0.0, 0.004, 401)
+    p = line.simulate(t_eval=t)["TLM.P1.Pressure"]
+    assert np.mean(p[(t > 0.001) & (t < 0.003)]) == pytest.approx(1e6 + 1e9 * 1e-5, rel=1e-4)
+    r = hose.simulate(t_eval=[0.0, 0.6], method="rodas3")  # its lightly damped waves: an L-stable method
+    drop = 128 * 0.03 * 0.2 * 1e-5 / (np.pi * 0.003**4)
+    assert r["H.P1.Pressure"][-1] - r["H.P2.Pressure"][-1] == pytest.approx(drop, rel=1e-4)
+    assert r["H.P2.Flow"][-1] == pytest.approx(-1e-5, rel=1e-6)  # Hopsan's flow into the line at P2
+    from hydroservo.workflows.hopsan import ImportHopsan
+
+    assert ImportHopsan(path, line_segments=30).imported.system["TLM"].segments == 30  # import-hopsan --line-segments
+    with pytest.raises(ModelFileError, match="line_segments = 0: expected a whole number from 1 to 200"):
+        import_hopsan(path, line_segments=0)
+    # a filter tied to Hopsan's step and a line not at rest at the start are refused, named
+    components[1] = ("HydraulicTLMlossless", "TLM", {"alpha#Value": v("0.5"), **start})
+    components[5] = ("HydraulicHose", "H", {"P1#Pressure": v("2e6", "Pa"), "P2#Pressure": v("1e6", "Pa")})
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError) as refused:
+        import_hopsan(path)
+    assert "TLM (HydraulicTLMlossless): alpha = 0.5" in str(refused.value)
+    assert "H (HydraulicHose): start values P1#Pressure = 2e+06 Pa, P2#Pressure = 1e+06 Pa" in str(refused.value)
+
+
 def test_a_multiport_rotational_inertia_sums_the_torques_of_its_connections(tmp_path: Path) -> None:
     """[Hopsan2026] Mechanic/Rotational/MechanicRotationalInertiaMultiPort.hpp: J θ'' = Σt_1 - Σt_2 - B θ', from
     rest at 0: torques of 3 and 5 N m on P1 (J 2 kg m², B 4 N m s/rad, P2 free) turn P1 at
