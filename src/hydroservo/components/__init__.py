@@ -9,6 +9,8 @@ module                 components
 :mod:`.line`           Line, Hose
 :mod:`.accumulator`    Accumulator
 :mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine
+:mod:`.machine_parts`  SwashPlate, PumpPiston, ValvePlate (an axial piston
+                       machine of its parts)
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
@@ -71,6 +73,7 @@ from hydroservo.components.control import (
 from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
+from hydroservo.components.machine_parts import PumpPiston, SwashPlate, ValvePlate
 from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
 from hydroservo.components.pumps import LoadSensingPump, Machine, Motor, Pump, VariablePump
@@ -175,6 +178,9 @@ __all__ = [
     "LoadSensingPump",
     "Motor",
     "Machine",
+    "SwashPlate",
+    "PumpPiston",
+    "ValvePlate",
     "FourWayValve",
     "ThreeWayValve",
     "ThreeWayPressureValve",

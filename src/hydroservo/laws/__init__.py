@@ -36,6 +36,8 @@ module                  laws
 :mod:`.accumulator`     the polytropic gas spring of an accumulator
 :mod:`.displacement`    pumps and motors: displaced flow, leakage, torque,
                         pressure compensator
+:mod:`.axial_piston`    an axial piston machine's parts: the swash plate's
+                        piston strokes, the valve plate's port openings
 :mod:`.pressure_valve`  spring-loaded valves: opening against pressure,
                         the relief/reducing spool's flow coefficient
 :mod:`.friction`        Stribeck friction
@@ -46,6 +48,7 @@ module                  laws
 from hydroservo.laws import (
     accumulator,
     armature,
+    axial_piston,
     chamber,
     displacement,
     flapper_nozzle,
@@ -67,6 +70,7 @@ from hydroservo.laws import (
 __all__ = [
     "accumulator",
     "armature",
+    "axial_piston",
     "chamber",
     "displacement",
     "flapper_nozzle",
