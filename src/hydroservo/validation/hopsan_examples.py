@@ -515,6 +515,16 @@ MODELS: dict[str, Spec] = {
         max_steps=10**9,
         accuracy=1e-6,
     ),
+    "hydraulic-valve-plate-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicValvePlate.hmf",
+        "a valve plate turning at 1 rad/s with two bores held at 10 and 20 MPa by pressure sources, each kidney port "
+        "on a volume drained to tank by a laminar orifice",
+    ),
+    "hydraulic-cylinder-block-test": Spec(
+        "Component Test/HydraulicComponent Test/HydraulicCylinderBlockTest.hmf",
+        "a cylinder block on a swash plate tilted by 0.1 rad spun up by a torque source against its friction, its "
+        "two pistons' feet on force sources of 0 N",
+    ),
 }
 
 #: The acceptance criterion of issue 26: 0.5 % of range.
