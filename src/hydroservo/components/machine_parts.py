@@ -70,7 +70,7 @@ def _swash_plate_declarations(n: int) -> dict[str, Any]:
 class SwashPlate(Component):
     r"""A cylinder block turning on its shaft, its ``pistons`` N pistons' feet stroked by a swash plate.
 
-    .. math:: J\,\dot\omega = T - B\,\omega + \sum_{k=1}^{N} F_k\,\frac{\partial x_k}{\partial\theta},
+    .. math:: J\,\dot\omega = T - B_{rot}\,\omega + \sum_{k=1}^{N} F_k\,\frac{\partial x_k}{\partial\theta},
               \qquad x_k = x_0 + r\tan\gamma\,\sin a_k,\quad a_k = -\theta - \theta_{offset} - 2\pi\frac{k-1}{N}
 
     (:func:`~hydroservo.laws.axial_piston.swash_plate_piston`, the torque of each piston's force through its arm
@@ -91,7 +91,7 @@ class SwashPlate(Component):
 
     PARAMETERS = {
         "J": Param(0.1, "kg*m^2", "moment of inertia of the block", min=0.0, min_inclusive=False),
-        "B": Param(10.0, "N*m*s/rad", "viscous friction", min=0.0),
+        "B_rot": Param(10.0, "N*m*s/rad", "rotational viscous friction coefficient", min=0.0),
         "r": Param(0.05, "m", "pitch radius of the pistons on the swash plate", min=0.0, min_inclusive=False),
         "angle": Param(0.0, "rad", "swash plate angle", min=-1.5, max=1.5),
         "theta_offset": Param(0.0, "rad", "phase of the first piston (the plate's offset)"),
@@ -146,7 +146,7 @@ class SwashPlate(Component):
         for k in range(1, self._pistons + 1):
             _, _, arm = swash_plate_piston(theta, omega, p["r"], p["angle"], self._phase(k, p))
             load = load + u[f"F{k}"] * arm
-        return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], friction=p["B"] * omega)}
+        return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], friction=p["B_rot"] * omega)}
 
 
 @register

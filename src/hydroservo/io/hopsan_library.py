@@ -2176,7 +2176,7 @@ def _cylinder_block(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
     pistons = _subport_count(par, "P1")
     comp = SwashPlate(
-        n, pistons=pistons, J=par("J", 0.1), B=par("B", 10.0), r=par("r", 0.05), angle=par("angle", 0.0),
+        n, pistons=pistons, J=par("J", 0.1), B_rot=par("B", 10.0), r=par("r", 0.05), angle=par("angle", 0.0),
         theta_offset=par("theta_offset", 0.0), x0=0.0,
         theta0=par.start("P2", "Angle"), omega0=par.start("P2", "AngularVelocity"),
     )

@@ -64,7 +64,7 @@ def test_a_swash_plate_block_turns_under_its_torque_and_strokes_its_pistons() ->
     the k-th of three pistons at r tan γ sin(-θ - offset - 2π(k-1)/3). A force of 100 N on piston 2's foot turns
     the block at rest as J ω' = 100 ∂x_2/∂θ."""
     s = System("block")
-    s.add(c.SwashPlate("b", pistons=3, J=0.5, B=4.0, r=0.05, angle=0.3, theta_offset=0.4))
+    s.add(c.SwashPlate("b", pistons=3, J=0.5, B_rot=4.0, r=0.05, angle=0.3, theta_offset=0.4))
     s.add(c.TorqueSource("t"))
     s.add(c.Constant("T", unit="N*m", value=-2.0))  # the source's outward torque presses on the port: -T turns it
     s.connect("T.y", "t.u")
@@ -80,7 +80,7 @@ def test_a_swash_plate_block_turns_under_its_torque_and_strokes_its_pistons() ->
         np.testing.assert_allclose(res[f"b.x{k}"], 0.05 * math.tan(0.3) * np.sin(a), atol=1e-8)
         np.testing.assert_allclose(res[f"b.v{k}"], -0.05 * math.tan(0.3) * np.cos(a) * omega, atol=1e-7)
     s = System("pushed")
-    s.add(c.SwashPlate("b", pistons=3, J=0.5, B=0.0, r=0.05, angle=0.3, theta_offset=0.4))
+    s.add(c.SwashPlate("b", pistons=3, J=0.5, B_rot=0.0, r=0.05, angle=0.3, theta_offset=0.4))
     s.add(c.ForceSource("f"))
     s.add(c.Constant("F", unit="N", value=-100.0))
     s.connect("F.y", "f.u")
