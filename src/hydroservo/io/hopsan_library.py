@@ -2157,7 +2157,7 @@ def _subport_count(par: _Params, port: str) -> int:
     """How many connections a Hopsan multiport of :data:`SUBPORTS` has (each its own hydroservo port); none is
     refused (a probe of the builder, with no connections, is given one)."""
     count = sum(1 for p in par.fan_in if p.startswith(f"{port}#"))
-    if count == 0 and par.fan_in:
+    if count == 0 and par.where:  # a probe (:func:`_takes_as_input`) has no place in a model
         par.problems.append(f"{par.where}: nothing is connected to its multiport {port}")
     return max(count, 1)
 
