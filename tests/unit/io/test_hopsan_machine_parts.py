@@ -5,6 +5,7 @@ piston in the order Hopsan connects them, checked against the closed forms of th
 from __future__ import annotations
 
 import math
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -12,6 +13,7 @@ import pytest
 
 from hydroservo.errors import ModelFileError
 from hydroservo.io.hopsan_library import import_hopsan
+from hydroservo.io.model_file import model_to_toml, system_from_dict
 
 P_ATM = 101325.0
 
@@ -115,6 +117,11 @@ def test_hopsans_pistons_stroke_with_the_block_and_meet_the_plate_in_the_order_o
     for bore, name in ((1, "Pc"), (2, "Pb"), (3, "Pa")):
         np.testing.assert_allclose(r[f"{name}.P1.Flow"], r[f"VP.Q{bore}"], rtol=1e-12, atol=1e-15)
     assert np.max(np.abs(r["VP.Q1"])) > 1e-5  # the bores do pass oil
+    # the model file keeps the number of pistons and the connections of each
+    again = system_from_dict(tomllib.loads(model_to_toml(imp.system)), "round trip")
+    assert again["Block"].pistons == 3 and again["VP"].pistons == 3
+    r2 = again.simulate(t_eval=np.linspace(0.0, 0.05, 11), method="cvodes")
+    np.testing.assert_allclose(r2["Pa.P1.Pressure"], r["Pa.P1.Pressure"], rtol=1e-9)
 
 
 def test_hopsans_machine_parts_refuse_what_they_cannot_follow(tmp_path: Path) -> None:
