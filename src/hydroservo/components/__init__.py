@@ -10,6 +10,8 @@ module                 components
 :mod:`.accumulator`    Accumulator
 :mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine,
                        CentrifugalPump, CentrifugalPumpInertia
+:mod:`.machine_parts`  SwashPlate, PumpPiston, ValvePlate (an axial piston
+                       machine of its parts)
 :mod:`.cylinder`       Cylinder, FourChamberCylinder
 :mod:`.mass`           Mass, MassPair
 :mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
@@ -72,6 +74,7 @@ from hydroservo.components.control import (
 from hydroservo.components.cylinder import Cylinder, FourChamberCylinder
 from hydroservo.components.line import Hose, Line, LosslessLine
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
+from hydroservo.components.machine_parts import PumpPiston, SwashPlate, ValvePlate
 from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
 from hydroservo.components.pumps import (
@@ -188,6 +191,9 @@ __all__ = [
     "Machine",
     "CentrifugalPump",
     "CentrifugalPumpInertia",
+    "SwashPlate",
+    "PumpPiston",
+    "ValvePlate",
     "FourWayValve",
     "ThreeWayValve",
     "ThreeWayPressureValve",

@@ -165,7 +165,7 @@ C_TYPES = frozenset({
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
     "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicFourChamberPiston", "HydraulicTLMlossless",
-    "HydraulicHose",
+    "HydraulicHose", "HydraulicPumpPiston",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -180,6 +180,13 @@ MULTIPORTS: dict[str, frozenset[str]] = {
     "MechanicTranslationalMassWithCoulombFrictionAndMultiPorts": frozenset({"P1", "P2"}),
     "MechanicFixedPositionMultiPort": frozenset({"Pm1"}),
     "MechanicRotationalInertiaMultiPort": frozenset({"P1", "P2"}),
+}
+
+#: Hopsan's multiports whose connections are each a port of their own in hydroservo's component (a valve plate's
+#: bores), in the order Hopsan connects them, which is its order of their subports: the k-th is ``PORT#k``
+SUBPORTS: dict[str, frozenset[str]] = {
+    "HydraulicValvePlate": frozenset({"P1"}),
+    "MechanicCylinderBlockWithSwashPlate": frozenset({"P1"}),
 }
 
 #: Hopsan's mechanical multiports whose connections each keep their node's start position (an offset from the
@@ -2405,6 +2412,86 @@ def _centrifugal_parameters(par: _Params) -> dict[str, Any]:
     return {"kl": par("kl", 0.1), "b": par("b", 0.03), "d": par("d", 0.3), "beta2": par("beta2", 1.57),
             "Ap": par("Ap", 0.001), "rho": par("rho", 870.0), "Kcp": par("Kcp", 1e-11), "Bp": par("Bp", 0.1)}
 
+def _subport_count(par: _Params, port: str) -> int:
+    """How many connections a Hopsan multiport of :data:`SUBPORTS` has (each its own hydroservo port); none is
+    refused (a probe of the builder, with no connections, is given one)."""
+    count = sum(1 for p in par.fan_in if p.startswith(f"{port}#"))
+    if count == 0 and par.where:  # a probe (:func:`_takes_as_input`) has no place in a model
+        par.problems.append(f"{par.where}: nothing is connected to its multiport {port}")
+    return max(count, 1)
+
+
+def _cylinder_block(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/MachineParts/MechanicCylinderBlockWithSwashPlate.hpp: a block of inertia J turning
+    at its shaft P2, each connection to its multiport P1 a piston's foot at x_0 + r tan(angle) sin a_k,
+    a_k = -θ - theta_offset - 2π k/N (k from 0 in the order of the connections): a SwashPlate of that many
+    pistons, its C{k+1} the k-th connection. Its filters start at P2's start angle and speed, as Hopsan's; the
+    pistons' mean position x_0 is Hopsan's startX, the first connection's position after its initialisation has
+    written 0 to every connection's (getSafeMultiPortNodeDataPtr with a value): 0, whatever the start values. J alone turns it (Hopsan adds the pistons'
+    m_p (r_p²/2 + r²) after its filters have taken J); the swash plate angle ``angle`` is a parameter (a signal
+    that varies is refused); its output movement is Hopsan's, its output torque (the shaft's torque, which
+    Hopsan logs at P2 too) is not mapped: a connection to it is refused."""
+    from hydroservo.components import SwashPlate
+
+    pistons = _subport_count(par, "P1")
+    comp = SwashPlate(
+        n, pistons=pistons, J=par("J", 0.1), B_rot=par("B", 10.0), r=par("r", 0.05), angle=par("angle", 0.0),
+        theta_offset=par("theta_offset", 0.0), x0=0.0,
+        theta0=par.start("P2", "Angle"), omega0=par.start("P2", "AngularVelocity"),
+    )
+    return Mapped(
+        [comp],
+        power={"P2": f"{n}.P2", **{f"P1#{k}": f"{n}.C{k}" for k in range(1, pistons + 1)}},
+        outputs={"movement": f"{n}.movement"},
+    )
+
+
+def _pump_piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/MachineParts/HydraulicPumpPiston.hpp: a C-type piston of one chamber, V = V_1 +
+    A_1 (s_l/2 - x_3) with x_3 counted into the bore, its leakage c_leak p to 0 Pa absolute and its force
+    A_1 p + F_0 + B_p v_3 on absolute pressures: a PumpPiston with ``p_case``, ``p_amb`` and ``p_floor`` at
+    0 Pa absolute (its internal wave variables are floored at 0 Pa absolute: a chamber there loses no more
+    pressure), starting at P1's start pressure."""
+    from hydroservo.components import PumpPiston
+
+    comp = PumpPiston(
+        n, A_1=par("A_1", 0.001), s_l=par("s_l", 1.0), V_1=par("V_1", 0.0003), B_p=par("B_p", 1000.0),
+        beta_e=par("Beta_e", 1e9), c_leak=par("c_leak", 1e-11), F_0=par("F_0", 1000.0), p_case="0 Pa_abs",
+        p_amb="0 Pa_abs", p_floor="0 Pa_abs", p0=_abs(max(par.start("P1", "Pressure", 1e5), 0.0)),
+    )
+    return Mapped([comp], power={"P1": f"{n}.P1", "P3": f"{n}.P3"})
+
+
+def _valve_plate(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/MachineParts/HydraulicValvePlate.hpp: the bores joined to its multiport P1 (the
+    k-th connection the k-th bore, its ports starting at 2π k/N and π further) pass its kidney ports PA and PB
+    as the block's angle, the integral of ``movement`` from 0, turns: a ValvePlate of that many bores, its
+    C{k+1} the k-th connection, Hopsan's C_q 0.67 and its angles in degrees; turbulent to about 50 Pa (its
+    orifices are turbulent to the null). ``movement`` constant (Hopsan's default 160 rad/s) is a Constant
+    ``{n}_movement``; its outputs DEBUG1 to DEBUG3 are the angle, the opening of the first bore to PB and that of
+    the third to PA."""
+    from hydroservo.components import Constant, ValvePlate
+
+    pistons = _subport_count(par, "P1")
+    comp = ValvePlate(
+        n, pistons=pistons, rho=par("rho", 870.0), R_f=par("R_f", 0.03), Cd=0.67,
+        **{key: f"{par(key, default)!r} deg" for key, default in (
+            ("phi_P", 160.0), ("phi_1", 6.0), ("phi_2", 6.0), ("Delta_alpha", 5.0), ("alpha_f", 30.0),
+            ("theta_1", 6.0), ("theta_2", 90.0))},
+    )
+    m = Mapped(
+        [comp],
+        power={"PA": f"{n}.A", "PB": f"{n}.B", **{f"P1#{k}": f"{n}.C{k}" for k in range(1, pistons + 1)}},
+        outputs={"DEBUG1": f"{n}.theta", "DEBUG2": f"{n}.A_B1", **({"DEBUG3": f"{n}.A_A3"} if pistons >= 3 else {})},
+    )
+    if "movement" in par.driven:
+        m.inputs["movement"] = f"{n}.movement"
+    else:
+        m.components.append(Constant(f"{n}_movement", value=par("movement", 160.0)))
+        m.internal.append((f"{n}_movement.y", f"{n}.movement"))
+    return m
+
+
 # -- signal ---------------------------------------------------------------------------------------------------
 
 
@@ -3231,6 +3318,9 @@ LIBRARY: dict[str, Builder] = {
     "MechanicM2load1D": _m2_load,
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
+    "MechanicCylinderBlockWithSwashPlate": _cylinder_block,
+    "HydraulicPumpPiston": _pump_piston,
+    "HydraulicValvePlate": _valve_plate,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),
     "HydraulicCentrifugalPump": _centrifugal_pump,
     "HydraulicCentrifugalPumpJ": _centrifugal_pump_j,
@@ -3378,7 +3468,7 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
     from hydroservo.system.nodes import port_of
     from hydroservo.system.system import System
 
-    model = read_hmf(path)
+    model = _split_subports(read_hmf(path))
     source = str(path)
     problems: list[str] = []
     if line_segments is not None:
@@ -3547,7 +3637,7 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
                 node["Flow"] = Var(1.0, mapped[c].flow[p])
         for c, p in node_ends:
             for var, value in node.items():
-                if (var == "Flow" and (c, p) in multiports) or f"{_alias(c)}.{p}.{var}" in aliases:
+                if (var == "Flow" and (c, p) in multiports) or "#" in p or f"{_alias(c)}.{p}.{var}" in aliases:
                     continue  # a multiport's flow is one per connection: Hopsan logs none of them by the port
                 aliases[f"{_alias(c)}.{p}.{var}"] = value
                 hopsan_names[f"{_alias(c)}.{p}.{var}"] = hopsan(c, p, var)
@@ -3598,6 +3688,26 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
     _refuse_loops_of_unit_delays(system, source, [hc.full_name for hc in model.components if hc.typename == "SignalUnitDelay"])
     _start_from_inputs(system, {k: v for m in mapped.values() for k, v in m.start_from_input.items()})
     return HopsanImport(system, model, mapping, names, hopsan_names)
+
+
+def _split_subports(model: HopsanModel) -> HopsanModel:
+    """The model with each connection to a multiport of :data:`SUBPORTS` named by its own subport, ``P1#1``,
+    ``P1#2``, ... in the order of the file's connections, which is the order in which Hopsan's loader connects
+    them and so of the multiport's subports (a valve plate's k-th bore is its k-th connection)."""
+    import dataclasses
+
+    types = {hc.full_name: hc.typename for hc in model.components}
+    counts: dict[tuple[str, str], int] = {}
+
+    def named(end: str) -> str:
+        comp, port = _end(end)
+        if port not in SUBPORTS.get(types.get(comp, ""), ()):
+            return end
+        k = counts[(comp, port)] = counts.get((comp, port), 0) + 1
+        return f"{comp}.{port}#{k}"
+
+    connections = [tuple(named(end) for end in connection) for connection in model.connections]
+    return dataclasses.replace(model, connections=connections)
 
 
 def _refuse_loops_of_unit_delays(system: System, source: str, delays: list[str]) -> None:

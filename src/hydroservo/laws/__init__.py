@@ -38,6 +38,8 @@ module                  laws
                         pressure compensator
 :mod:`.centrifugal`     centrifugal pumps: Euler's impeller pressure, the flow
                         through the losses, the shaft's torque
+:mod:`.axial_piston`    an axial piston machine's parts: the swash plate's
+                        piston strokes, the valve plate's port openings
 :mod:`.pressure_valve`  spring-loaded valves: opening against pressure,
                         the relief/reducing spool's flow coefficient
 :mod:`.friction`        Stribeck friction
@@ -49,6 +51,7 @@ from hydroservo.laws import (
     accumulator,
     armature,
     centrifugal,
+    axial_piston,
     chamber,
     displacement,
     flapper_nozzle,
@@ -71,6 +74,7 @@ __all__ = [
     "accumulator",
     "armature",
     "centrifugal",
+    "axial_piston",
     "chamber",
     "displacement",
     "flapper_nozzle",

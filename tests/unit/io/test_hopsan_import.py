@@ -155,10 +155,10 @@ def test_imported_model_file_round_trips(servo_file: Path, tmp_path: Path) -> No
 
 
 def test_unsupported_components_are_listed_with_their_path(tmp_path: Path) -> None:
-    components = [*COMPONENTS, ("HydraulicValvePlate", "Plate", {}), ("SignalTimeDelay", "Wave", {})]
+    components = [*COMPONENTS, ("HydraulicNoSuchType", "Plate", {}), ("SignalTimeDelay", "Wave", {})]
     path = tmp_path / "m.hmf"
     path.write_text(_hmf(components, CONNECTIONS), encoding="utf-8")
-    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Plate \(HydraulicValvePlate\); Wave \(SignalTimeDelay: a pure time delay, y\(t\) = u\(t - deltat\), is no ordinary differential equation"):
+    with pytest.raises(ModelFileError, match=r"2 component\(s\).*Plate \(HydraulicNoSuchType\); Wave \(SignalTimeDelay: a pure time delay, y\(t\) = u\(t - deltat\), is no ordinary differential equation"):
         read_hopsan(path)
 
 
