@@ -50,8 +50,8 @@ module                  laws
 from hydroservo.laws import (
     accumulator,
     armature,
-    centrifugal,
     axial_piston,
+    centrifugal,
     chamber,
     displacement,
     flapper_nozzle,
