@@ -19,6 +19,7 @@ from hydroservo.components.base import (
     Hydraulic,
     Limit,
     Mechanical,
+    Option,
     Output,
     Param,
     Port,
@@ -265,11 +266,17 @@ class ValvePlate(Component):
     Hopsan's HydraulicValvePlate ([Hopsan2026] Hydraulic/MachineParts/HydraulicValvePlate.hpp) is this law: its
     Q-type orifices of coefficient :math:`0.67 A \sqrt{2/\rho}` turbulent to the null (``p_tr`` rounds the null
     off, as hydroservo's orifices do), its angle the trapezoidal integral of ``movement`` from 0, the bores in
-    the order of its multiport's connections. Its outputs DEBUG1, DEBUG2 and DEBUG3 are ``theta``, ``A_B1`` and
+    the order of its multiport's connections, and its measure of the angle, which is not a rotation (option
+    ``angle = "hopsan"``; :func:`~hydroservo.laws.axial_piston.valve_plate_opening`). Its outputs DEBUG1, DEBUG2 and DEBUG3 are ``theta``, ``A_B1`` and
     ``A_A3``. Hopsan declares the plate's ``alpha_f`` "length of each port" and ``phi_P`` "length of grooves":
     the law (:func:`~hydroservo.laws.axial_piston.valve_plate_opening`) tells how each enters.
     """
 
+    OPTIONS = {
+        "angle": Option("periodic", ("periodic", "hopsan"),
+                        "the same plate every turn, or the angle as Hopsan's plate measures it (not a rotation: "
+                        "some bores stay shut in the first turn)"),
+    }
     PARAMETERS = {
         "phi_P": Param(160.0 * math.pi / 180.0, "rad", "length of the kidney (groove)", min=0.0, min_inclusive=False),
         "phi_1": Param(6.0 * math.pi / 180.0, "rad", "length of the first notch (pre-compression)", min=0.0,
@@ -312,10 +319,11 @@ class ValvePlate(Component):
         geometry = (p["phi_P"], p["Delta_alpha"], p["alpha_f"], p["phi_1"], p["phi_2"], p["theta_1"], p["theta_2"],
                     p["R_f"])
         out = {}
+        periodic = self.option("angle") == "periodic"
         for k in range(1, self._pistons + 1):
             start = 2.0 * math.pi * (k - 1) / self._pistons
-            out[f"A_A{k}"] = valve_plate_opening(theta, start, *geometry)
-            out[f"A_B{k}"] = valve_plate_opening(theta, start + math.pi, *geometry)
+            out[f"A_A{k}"] = valve_plate_opening(theta, start, *geometry, periodic=periodic)
+            out[f"A_B{k}"] = valve_plate_opening(theta, start + math.pi, *geometry, periodic=periodic)
         return out
 
     def output_equations(

@@ -2466,7 +2466,8 @@ def _valve_plate(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/MachineParts/HydraulicValvePlate.hpp: the bores joined to its multiport P1 (the
     k-th connection the k-th bore, its ports starting at 2π k/N and π further) pass its kidney ports PA and PB
     as the block's angle, the integral of ``movement`` from 0, turns: a ValvePlate of that many bores, its
-    C{k+1} the k-th connection, Hopsan's C_q 0.67 and its angles in degrees; turbulent to about 50 Pa (its
+    C{k+1} the k-th connection, with Hopsan's measure of the angle (``angle = "hopsan"``: not periodic, some
+    bores shut in the first turn), Hopsan's C_q 0.67 and its angles in degrees; turbulent to about 50 Pa (its
     orifices are turbulent to the null). ``movement`` constant (Hopsan's default 160 rad/s) is a Constant
     ``{n}_movement``; its outputs DEBUG1 to DEBUG3 are the angle, the opening of the first bore to PB and that of
     the third to PA."""
@@ -2474,7 +2475,7 @@ def _valve_plate(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 
     pistons = _subport_count(par, "P1")
     comp = ValvePlate(
-        n, pistons=pistons, rho=par("rho", 870.0), R_f=par("R_f", 0.03), Cd=0.67,
+        n, pistons=pistons, angle="hopsan", rho=par("rho", 870.0), R_f=par("R_f", 0.03), Cd=0.67,
         **{key: f"{par(key, default)!r} deg" for key, default in (
             ("phi_P", 160.0), ("phi_1", 6.0), ("phi_2", 6.0), ("Delta_alpha", 5.0), ("alpha_f", 30.0),
             ("theta_1", 6.0), ("theta_2", 90.0))},

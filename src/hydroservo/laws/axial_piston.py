@@ -97,6 +97,7 @@ def valve_plate_opening(
     theta_1: Any,
     theta_2: Any,
     R_f: Any,
+    periodic: bool = True,
 ) -> Any:
     r"""The area through which a cylinder bore reaches a kidney port of the valve plate [m^2].
 
@@ -127,9 +128,12 @@ def valve_plate_opening(
     and 0 elsewhere. This is Hopsan's law as its valve plate evaluates it, term for term: where its ranges overlap
     (the round ends longer than the bore's port, :math:`g_1 + 2r > R`) the first one counts, the notch after the
     kidney is scaled by :math:`g_1` and :math:`\theta_1` as written there, and the area is not continuous
-    everywhere. A negative :math:`\theta` is measured as Hopsan does, :math:`2\pi -
-    \operatorname{fmod}(|\theta| - \theta_s - \alpha_{min}, 2\pi)`, and before the bore first reaches the notch
-    (:math:`\theta - \theta_s - \alpha_{min} < 0`) the port is closed.
+    everywhere. The position along the groove is :math:`x = R_f\,((\theta - \theta_s - \alpha_{min}) \bmod 2\pi)`,
+    :math:`\alpha_{min} = \pi/2 - \phi_P/2 - \phi_1 - \Delta\alpha`: the plate is the same every turn. With
+    ``periodic`` false the angle is measured as Hopsan's plate measures it, which is not a rotation: before the
+    bore first reaches the notch (:math:`\theta - \theta_s - \alpha_{min} < 0`) the port is closed, and a
+    negative :math:`\theta` counts as :math:`2\pi - \operatorname{fmod}(|\theta| - \theta_s - \alpha_{min},
+    2\pi)`; a block starting at 0 leaves some bores shut to both kidneys for most of its first turn.
 
     Parameters
     ----------
@@ -150,6 +154,8 @@ def valve_plate_opening(
         The notches' angles: their slope and their V's opening [rad].
     R_f : array_like
         Radius of the groove's centre line [m].
+    periodic : bool
+        The same plate every turn (default), or Hopsan's measure of the angle (not periodic: above).
 
     Returns
     -------
@@ -175,8 +181,11 @@ def valve_plate_opening(
     two_pi = 2.0 * math.pi
     min_angle = math.pi / 2 - phi_P / 2.0 - phi_1 - Delta_alpha
     ahead = theta - start - min_angle
-    backwards = two_pi - _fmod(bk.fabs(theta) - start - min_angle, two_pi)
-    turned = bk.if_else(theta < 0, backwards, bk.if_else(ahead < 0, -1.0, _fmod(ahead, two_pi)))
+    if periodic:
+        turned = ahead - two_pi * bk.floor(ahead / two_pi)
+    else:
+        backwards = two_pi - _fmod(bk.fabs(theta) - start - min_angle, two_pi)
+        turned = bk.if_else(theta < 0, backwards, bk.if_else(ahead < 0, -1.0, _fmod(ahead, two_pi)))
     x = turned * R_f
     phi, r, R, g1, g2 = phi_P * R_f, Delta_alpha * R_f, alpha_f * R_f, phi_1 * R_f, phi_2 * R_f
     t1, k1 = bk.tan(theta_1), bk.tan(theta_2 / 2.0)

@@ -27,8 +27,8 @@ def _start(theta_from_notch: float, start: float = 0.0) -> float:
 def test_valve_plate_opening_is_the_notch_then_the_full_port_then_closed() -> None:
     """In the first notch (x = R_f θ' from its start, shorter than g_1) the area is x² tan²θ_1 tan(θ_2/2)
     (tan θ_1 < 1, the smaller of Hopsan's two); past notch and rounded end, in the kidney, the bore's full port
-    2k_2 + 2r(R - 2r) = 2rR - (4 - π)r²; beyond the second notch, and before the bore first reaches the first
-    (Hopsan's fmod of a negative angle), none. The port B of the same bore is the same half a turn later."""
+    2k_2 + 2r(R - 2r) = 2rR - (4 - π)r²; beyond the second notch none; the same every turn (Hopsan's measure of
+    the angle instead: shut before the bore first reaches the notch, a negative angle mirrored). The port B of the same bore is the same half a turn later."""
     phi_p, d_alpha, alpha_f, phi_1, phi_2, theta_1, theta_2, r_f = PLATE
     x = 0.5 * phi_1 * r_f
     notch = valve_plate_opening(_start(0.5 * phi_1), 0.0, *PLATE)
@@ -41,11 +41,23 @@ def test_valve_plate_opening_is_the_notch_then_the_full_port_then_closed() -> No
     end = phi_1 + phi_p + alpha_f + phi_2
     assert valve_plate_opening(_start(end + 0.01), 0.0, *PLATE) == 0.0
     assert valve_plate_opening(_start(0.5 * phi_1, start=1.0), 1.0, *PLATE) == pytest.approx(notch)
-    assert valve_plate_opening(_start(-0.01, start=1.0), 1.0, *PLATE) == 0.0  # not reached yet
-    # the same a turn later, and Hopsan's measure of a negative angle: 2π - fmod(|θ| - start - α_min, 2π)
-    assert valve_plate_opening(_start(0.5 * phi_1) + 2 * math.pi, 0.0, *PLATE) == pytest.approx(notch)
+    # the same plate every turn, forwards and backwards
+    for turned in (0.5 * phi_1, phi_1 + alpha_f + 0.01, end + 0.01, -0.5):
+        area = valve_plate_opening(_start(turned, start=1.0), 1.0, *PLATE)
+        for turns in (-2, -1, 1):
+            again = valve_plate_opening(_start(turned, start=1.0) + 2 * math.pi * turns, 1.0, *PLATE)
+            assert again == pytest.approx(area, rel=1e-9, abs=1e-18)
+    # Hopsan's measure (periodic false): shut before the bore first reaches the notch, a negative angle as
+    # 2π - fmod(|θ| - start - α_min, 2π)
+    hopsan = {"periodic": False}
+    assert valve_plate_opening(_start(-0.01, start=1.0), 1.0, *PLATE, **hopsan) == 0.0  # not reached yet
+    # port B of bore 1 at a small positive angle: in its second notch a turn on, which Hopsan's plate has not reached
+    late = _start(end - 0.1 - 2 * math.pi, start=math.pi)
+    assert late >= 0.0 and valve_plate_opening(late, math.pi, *PLATE) > 0.0
+    assert valve_plate_opening(late, math.pi, *PLATE, **hopsan) == 0.0
+    assert valve_plate_opening(_start(0.5 * phi_1) + 2 * math.pi, 0.0, *PLATE, **hopsan) == pytest.approx(notch)
     mirrored = -(2 * math.pi - _start(0.5 * phi_1)) - 2 * (math.pi / 2 - phi_p / 2 - phi_1 - d_alpha)
-    assert valve_plate_opening(mirrored, 0.0, *PLATE) == pytest.approx(notch)
+    assert valve_plate_opening(mirrored, 0.0, *PLATE, **hopsan) == pytest.approx(notch)
 
 
 def test_swash_plate_piston_strokes_by_r_tan_gamma_and_its_arm_is_its_velocity_per_speed() -> None:
