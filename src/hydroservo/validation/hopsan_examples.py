@@ -459,11 +459,6 @@ MODELS: dict[str, Spec] = {
         "its impeller's inertia) turned by a theta source through a torsional shaft",
         known=(("Angle", _CENTRIFUGAL_PUMP_ANGLE),),
     ),
-    "turbo-pump-test": Spec(
-        "Component Test/HydraulicComponent Test/TurboPumpTest.hmf",
-        "HydraulicCentrifugalPumpTest saved by Hopsan 0.6 under another name: the same two centrifugal pumps",
-        known=(("Angle", _CENTRIFUGAL_PUMP_ANGLE),),
-    ),
     "hydraulic-four-chamber-piston-test": Spec(
         "Component Test/HydraulicComponent Test/HydraulicFourChamberPistonTest.hmf",
         "a four-chamber (digital) piston driving a mass, each chamber held by a Q-type pressure source: two pulsed "
