@@ -93,7 +93,7 @@ class SimulationReport(Report):
         result = self.result
         solver = {k: v for k, v in result.stats.items() if k != "wall_time_s"}
         solver["integration_wall_time_s"] = result.stats["wall_time_s"]
-        own = [str(w) for w in result.warnings]
+        own = _crossings(result)
         return {
             "model": self.system.name,
             "t_end_s": self.t_end,
@@ -135,11 +135,32 @@ class SimulationReport(Report):
         ], self.warnings)
 
 
+#: More crossings of one kind in one component than this are told as one line (a ladder of 200 segments)
+GROUPED = 3
+
+
+def _crossings(result: Result) -> list[str]:
+    """The physical bounds the run crossed, one line each, or one line per component and kind where a component
+    crossed more than :data:`GROUPED` (its worst named, with how many more)."""
+    groups: dict[tuple[str, str, bool], list[Any]] = {}
+    for w in result.warnings:
+        groups.setdefault((w.signal.split(".")[0], w.unit, w.value < w.bound), []).append(w)
+    found = []
+    for (owner, _, low), crossed in groups.items():
+        if len(crossed) <= GROUPED:
+            found += [str(w) for w in crossed]
+            continue
+        worst = min(crossed, key=lambda w: w.value) if low else max(crossed, key=lambda w: w.value)
+        found.append(f"{worst} (and {len(crossed) - 1} more signals of {owner} "
+                     f"{'below' if low else 'beyond'} their bounds; all in the JSON report)")
+    return found
+
+
 def _warnings(result: Result) -> list[str]:
     """The physical bounds the run crossed, and signals (such as aliases) that are not finite."""
     import numpy as np
 
-    found = [str(w) for w in result.warnings]
+    found = _crossings(result)
     for name, values in result.data.items():
         bad = ~np.isfinite(values)
         if bad.any():

@@ -72,3 +72,23 @@ def test_a_simulation_takes_its_step_budget_from_the_caller() -> None:
 
     with pytest.raises(SolverError, match=r"step budget of 100 steps was used up"):
         Simulate("flight-simulator", max_steps=100, write="none").run()
+
+
+def test_a_simulations_crossings_of_one_kind_in_one_component_are_told_in_one_line() -> None:
+    """A ladder of many segments whose pressures all ring below vacuum is one warning naming its worst and how many
+    more; a component with a few crossings keeps one line each; the JSON keeps every crossing."""
+    from types import SimpleNamespace
+
+    from hydroservo.system.plausibility import Implausible
+    from hydroservo.workflows.simulate import GROUPED, _crossings
+
+    def below(signal: str, value: float) -> Implausible:
+        return Implausible(signal, 0.1, value, -2e5, "Pa", f"{signal} = {value:g} Pa: below vacuum")
+
+    ladder = [below(f"line.p{k}", -3e5 - 1e3 * k) for k in range(GROUPED + 5)]
+    few = [below(f"cyl.p{side}", -4e5) for side in "AB"]
+    above = Implausible("line.p0", 0.2, 5e6, 3e6, "Pa", "line.p0 = 5e+06 Pa: above the source")
+    lines = _crossings(SimpleNamespace(warnings=[*ladder, *few, above]))  # type: ignore[arg-type]
+    assert lines[0].startswith(f"line.p{GROUPED + 4} = ") and f"and {GROUPED + 4} more signals of line below" in lines[0]
+    assert lines[1:] == ["cyl.pA = -400000 Pa: below vacuum", "cyl.pB = -400000 Pa: below vacuum",
+                         "line.p0 = 5e+06 Pa: above the source"]
