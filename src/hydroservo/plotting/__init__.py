@@ -49,7 +49,8 @@ def finish(fig: Any, file: Any, plt: Any, show: bool | None = False) -> Any:
     ``show=None`` (what :meth:`Result.plot <hydroservo.system.result.Result.plot>` passes) shows a figure that
     goes to no file where it can be seen: a notebook shows it by itself, a window backend (a script run with a
     display) opens it with ``plt.show()``; with neither (Agg, no display), a warning says to give ``file``."""
-    fig.tight_layout()
+    title = getattr(fig, "_suptitle", None)  # kept clear of the axes below it, whatever the figure's height
+    fig.tight_layout(rect=(0.0, 0.0, 1.0, 1.0 - 0.3 / fig.get_figheight() if title is not None else 1.0))
     if file is not None:
         fig.savefig(file, dpi=110)
         plt.close(fig)
@@ -91,6 +92,29 @@ def panel_units(own: dict[str, str], panel: list[str], units: dict[str, str]) ->
     for name in panel:
         mine = units.get(name) or own.get(name, "")
         out.append(first if mine != first and own.get(name, "") and same_dimension(first, mine) else mine)
+    return out
+
+
+def by_dimension(panels: Any, units: dict[str, str]) -> list[list[str]]:
+    """Plot panels with one dimension each: a panel whose signals have several (a Hopsan scope of pressures and
+    flows) becomes one panel per dimension, in the order they first appear; a panel repeated is drawn once.
+
+    >>> by_dimension([["p1", "q1", "p2"], ["x"], ["p1", "q1", "p2"]], {"p1": "Pa", "p2": "bar", "q1": "m^3/s", "x": "m"})
+    [['p1', 'p2'], ['q1'], ['x']]
+    """
+    from hydroservo.units import same_dimension
+
+    out: list[list[str]] = []
+    for panel in panels:
+        groups: list[list[str]] = []
+        for name in panel:
+            unit = units.get(name, "")
+            home = next((g for g in groups if same_dimension(units.get(g[0], ""), unit)), None)
+            if home is None:
+                groups.append([name])
+            else:
+                home.append(name)
+        out += [g for g in groups if g not in out]
     return out
 
 

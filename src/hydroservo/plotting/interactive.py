@@ -101,11 +101,11 @@ def result_figure(
 
     Hovering shows every signal of the panel at that time, each with its unit.
     """
-    from hydroservo.plotting import panel_units
+    from hydroservo.plotting import by_dimension, panel_units
     from hydroservo.units import si_unit
 
     units = units or {}
-    chosen = [list(p) for p in (panels or result.panels or [[n] for n in result.names[:6]])]
+    chosen = by_dimension([list(p) for p in (panels or result.panels or [[n] for n in result.names[:6]])], result.units)
     data: list[dict[str, Any]] = []
     layout = _layout(title or result.model, len(chosen))
     layout["grid"] = {"rows": len(chosen), "columns": 1, "pattern": "coupled", "roworder": "top to bottom",
