@@ -31,6 +31,7 @@ _ARGUMENTS = {
     "input_unit": "the unit of the signal the block takes (its gain is then in unit/input_unit)",
     "segments": "number of lumped segments, or 'auto': the fewest that carry waves up to f_max",
     "ends": "what each end is: 'pressure', 'flow', 'pressure-flow' or 'flow-pressure' (which ports it joins)",
+    "pistons": "number of pistons (each its own port, numbered from 1)",
 }
 
 
@@ -114,7 +115,7 @@ def _latex_to_text() -> Any:
     macros = [MacroTextSpec("frac", simplify_repl=frac), MacroTextSpec("dfrac", simplify_repl=frac),
               MacroTextSpec("qquad", "    "), MacroTextSpec("quad", "  "), MacroTextSpec("left", ""),
               MacroTextSpec("right", ""), MacroTextSpec("mathrm", "%s"), MacroTextSpec("text", "%s")]
-    macros += [MacroTextSpec(f, f"{f} ") for f in ("sin", "cos", "tan", "tanh", "exp", "ln", "log", "max", "min", "sign")]
+    macros += [MacroTextSpec(f, f"{f} ") for f in ("sin", "cos", "tan", "cot", "tanh", "exp", "ln", "log", "max", "min", "sign")]
     db.add_context_category("hydroservo", macros=macros, prepend=True)
     return LatexNodes2Text(math_mode="text", latex_context=db, strict_latex_spaces="based-on-source")
 
