@@ -162,6 +162,7 @@ C_TYPES = frozenset({
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
     "MechanicSpring", "MechanicTranslationalSpringWithSlack",
+    "HydraulicCSource", "MechanicTranslationalCSource",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -1596,6 +1597,53 @@ def _velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"Pm1": f"{n}.P"}, inputs={"v": f"{n}.u"})
 
 
+def _mechanic_c_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalCSource.hpp: a C component that writes its inputs as its
+    node's wave variable and impedance, c = in_c, Z_x = in_z, so that the Q component joined to it feels
+    f = c + Z_x v (v its velocity towards the source): a force c behind a damper of coefficient Z_x to ground, a
+    ForceSource with ``B`` = in_z (F = u - B v, v outward of the source). With in_z = 0 (its default) it is
+    MechanicForceTransformer's law. An impedance driven by a signal that varies is refused (B is a parameter)."""
+    from hydroservo.components import ForceSource
+
+    if "in_z" in par.driven:
+        par.problems.append(f"{par.where}: in_z driven by a signal that varies: only a constant impedance (a damper "
+                            "to ground of that coefficient) is supported")
+        return Mapped()
+    z = par("in_z", 0.0)
+    if z < 0.0:
+        par.problems.append(f"{par.where}: in_z = {z:g} N s/m; only an impedance of at least 0 is supported")
+        return Mapped()
+    return Mapped([ForceSource(n, B=z)], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u"})
+
+
+def _mechanic_q_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalQSource.hpp: a Q component that writes its inputs as its
+    node's force, velocity, position and equivalent mass, whatever the C component joined to it does. Hopsan's C
+    components read the velocity (a spring's waves c_1 = c_2 + 2 Z_c v_2) and the position (a cylinder's stops),
+    never the force: the source is a VelocitySource of ``in_v`` at the position ``in_x`` (option ``position =
+    "input"``, as MechanicVelocityTransformer's with its x connected). ``in_f`` is no more than the force Hopsan
+    logs at the node (the C component's own where the signal is consistent with it): a signal driving it is
+    refused, a constant only logged by Hopsan. ``in_em`` sets how stiff Hopsan's C components make their stops
+    for its step (m_e/T_s², a hard stop as the step vanishes): not used. ``in_x`` not driven while ``in_v`` is
+    driven, or not 0, is refused: Hopsan would write a fixed position for a moving node (its springs follow the
+    velocity, its cylinders' stops the position); connect in_x to the velocity's integral."""
+    from hydroservo.components import VelocitySource
+
+    if "in_f" in par.driven:
+        par.problems.append(f"{par.where}: in_f driven by a signal: Hopsan logs it as the node's force, which no C "
+                            "component reads; hydroservo's node force is the C component's, so in_f is not supported "
+                            "as a signal")
+    if "in_x" in par.driven:
+        return Mapped([VelocitySource(n, position="input")], power={"P1": f"{n}.P"},
+                      inputs={"in_v": f"{n}.u", "in_x": f"{n}.x_in"})
+    if "in_v" in par.driven or par("in_v", 0.0) != 0.0:
+        par.problems.append(f"{par.where}: in_v moves the node while in_x holds it at {par('in_x', 0.0):g} m (Hopsan "
+                            "writes both: its springs follow the velocity, its cylinders' stops the position); "
+                            "connect in_x to the velocity's integral")
+        return Mapped()
+    return Mapped([VelocitySource(n, x0=par("in_x", 0.0))], power={"P1": f"{n}.P"}, inputs={"in_v": f"{n}.u"})
+
+
 def _sensor(variable: str, unit: str) -> Builder:
     """Hopsan's sensors of a node's ``variable``: a Sum reading it (fed when the node is known), its output Hopsan's
     ``out``."""
@@ -1668,6 +1716,70 @@ def _lossless_connector(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         internal=[(f"{n}.A", f"{n}_3.A"), (f"{n}.Q", f"{n}_Q1.u1"), (f"{n}_3.Q", f"{n}_Q1.u2")],
         flow={"P1": f"{n}_Q1.y"},
     )
+
+
+def _c_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicCSource.hpp: a C component that writes its inputs as its
+    node's wave variable and impedance, c = in_c, Z_c = in_z, so that the Q component joined to it sees
+    p = c + Z_c q (q the flow into the source): a pressure source c behind a resistance Z_c in series with that Q
+    component. With Z_c = 0 (its default) that is an ideal pressure source, a Tank at ``in_c`` (absolute) or a
+    PressureSource following the signal driving it. A resistance in series with a flow port is an algebraic
+    relation between the node's pressure and the flows into it, which hydroservo's node (its pressure from one
+    port, the flows into it summed) does not hold: ``in_z`` ≠ 0 is refused (model the impedance as an orifice
+    into a volume)."""
+    from hydroservo.components import PressureSource, Tank
+
+    if par("in_z", 0.0) != 0.0:
+        par.problems.append(
+            f"{par.where}: in_z = {par('in_z', 0.0):g}: an impedance in series with the Q component joined to the "
+            "source (p = in_c + in_z q) is an algebraic relation hydroservo's nodes do not hold; only in_z = 0, an "
+            "ideal pressure source, is supported (model the impedance as an orifice into a volume)")
+        return Mapped()
+    if "in_c" in par.driven:
+        return Mapped([PressureSource(n, p0="0 Pa_abs")], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u"})
+    return Mapped([Tank(n, p=_abs(par("in_c", 0.0)))], power={"P1": f"{n}.P"})
+
+
+def _q_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicQSource.hpp: a Q component that writes its inputs as its
+    node's pressure and flow, p = in_p, q = in_q, whatever the wave variable of the C component joined to it.
+    Hopsan's C components read only the flow (a volume's waves c_1 = c_2 + 2 Z_c q_2; a tank reads nothing), so
+    the source is a flow source of ``in_q`` into the C component (a FlowSource), and ``in_p`` is no more than
+    the pressure Hopsan logs at the node: the C component's own pressure where the signal is consistent with it
+    (p = c + Z_c q, as an external model coupled through the node computes it), any other number where not.
+    hydroservo's node pressure is the C component's: a signal driving ``in_p`` is refused (a constant is what
+    Hopsan logs there, not used)."""
+    from hydroservo.components import FlowSource
+
+    if "in_p" in par.driven:
+        par.problems.append(
+            f"{par.where}: in_p driven by a signal: Hopsan logs it as the node's pressure, which no C component "
+            "reads (the volume joined to it takes the flow in_q); hydroservo's node pressure is the C component's, "
+            "so in_p is not supported as a signal")
+    return Mapped([FlowSource(n, q=0.0)], power={"P1": f"{n}.P"}, inputs={"in_q": f"{n}.u"},
+                  note=f"FlowSource {n} (in_q; in_p = {par('in_p', 0.0):g} Pa only logged by Hopsan)")
+
+
+def _node_sensor(variables: tuple[tuple[str, str, str], ...]) -> Builder:
+    """[Hopsan2026] Hydraulic/Sensors/HydraulicNodeSensor.hpp (outputs p, q) and Mechanic/Linear/
+    MechanicNodeSensor.hpp (out_f, out_v, out_x): each a Sum reading its node's variable, as the single sensors'
+    (``{n}_<output>``; pressures absolute, as Hopsan's). Their other outputs, the node's wave variable, impedance
+    and equivalent mass (c, Zc; out_c, out_z, out_em), are quantities of Hopsan's discretisation (a volume's
+    Z_c = β T_s/V vanishes with the step, the equivalent mass sets how stiff Hopsan makes its stops for its
+    step) and are not mapped: a scope showing them is dropped, a block reading them refused."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Sum
+
+        comps: list[cbase.Component] = [Sum(f"{n}_{out}", unit=unit, gain2=0.0) for out, _, unit in variables]
+        (first, var, _), rest = variables[0], variables[1:]
+        return Mapped(
+            comps, read={"P1": (f"{n}_{first}.u1", var)},
+            read_also={"P1": [(f"{n}_{out}.u1", v) for out, v, _ in rest]},
+            outputs={out: f"{n}_{out}.y" for out, _, _ in variables},
+        )
+
+    return build
 
 
 # -- mechanic, rotational -------------------------------------------------------------------------------------
@@ -3085,6 +3197,12 @@ LIBRARY: dict[str, Builder] = {
     "SignalCounter": _counter,
     "Signal1DPLOLookupTable": _plo_lookup_table,
     "Signal2DLookupTable": _lookup_table_2d,
+    "HydraulicCSource": _c_source,
+    "HydraulicQSource": _q_source,
+    "MechanicTranslationalCSource": _mechanic_c_source,
+    "MechanicTranslationalQSource": _mechanic_q_source,
+    "HydraulicNodeSensor": _node_sensor((("p", "Pressure", "Pa"), ("q", "Flow", "m^3/s"))),
+    "MechanicNodeSensor": _node_sensor((("out_f", "Force", "N"), ("out_v", "Velocity", "m/s"), ("out_x", "Position", "m"))),
 }
 
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)

@@ -215,3 +215,19 @@ def test_a_mass_with_coulomb_friction_sticks_below_its_static_force_and_slides_a
     r = s.simulate(t_eval=t, accuracy=1e-8)
     assert np.max(np.abs(r["stuck.x"])) < 1e-4 and np.max(np.abs(r["stuck.v"])) < 2e-5
     np.testing.assert_allclose(r["sliding.v"], 3.5 * (1.0 - np.exp(-t)), atol=2e-3)
+
+
+def test_a_force_source_behind_a_damper_drives_a_mass_to_its_terminal_velocity() -> None:
+    """ForceSource with B (Hopsan's MechanicTranslationalCSource, in_z = B): F = u - B v, so a mass m it pushes
+    with u from rest moves at (u/B)(1 - exp(-B t/m)); with B = 0 the force is u whatever the motion."""
+    u, b, m = 20.0, 5.0, 2.0
+    s = System("damped push")
+    s.add(c.ForceSource("f", B=b))
+    s.add(c.Constant("U", unit="N", value=u))
+    s.add(c.Mass("m", m=m, B=0.0, incline=0.0))
+    s.connect("U.y", "f.u")
+    s.connect("f.P", "m.P1")  # pushes end 1 in: the mass moves along +x
+    t = np.array([0.0, 0.3, 1.0, 3.0])
+    r = s.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["m.v"], u / b * (1.0 - np.exp(-b * t / m)), atol=1e-6)
+    np.testing.assert_allclose(r["f.F"], u * np.exp(-b * t / m), atol=1e-5)  # the damper takes B v of it

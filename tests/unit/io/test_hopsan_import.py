@@ -343,6 +343,79 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     assert compared >= 8
 
 
+#: Hopsan's logged variables of sources_sensors that are the Q sources' inputs in_p and in_f (0), not the node's
+#: physics: no C component reads them (hopsan_library._q_source, _mechanic_q_source)
+_LOGGED_INPUTS = ("QSource#P1#Pressure", "Volume#P2#Pressure", "MotionQ#P1#Force", "Spring#P2#Force")
+
+
+def test_tlm_sources_and_node_sensors_match_hopsan() -> None:
+    """HydraulicCSource (its wave variable a 10 bar level plus a sine, in_z = 0) feeding a volume through an
+    orifice, emptied and filled by a HydraulicQSource's sine-wave flow; a MechanicTranslationalCSource (a sine
+    force behind in_z = 50 N s/m) pushing a mass on a spring whose far end a MechanicTranslationalQSource moves (a
+    sine velocity and its integral); node sensors on both. Every variable Hopsan logs agrees with its run
+    (hopsan_circuits/sources_sensors.csv) within 0.5 % of its range, but the pressure and force of the Q sources'
+    nodes: Hopsan logs their inputs in_p and in_f there (0 here), which no C component reads (its volume fills
+    with in_q, its spring follows in_v), where hydroservo gives the volume's pressure and the spring's force."""
+    imp = import_hopsan(CIRCUITS / "sources_sensors.hmf")
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["CSource"] == "PressureSource CSource" and kinds["ForceC"] == "ForceSource ForceC"
+    assert imp.system["ForceC"].values["B"] == 50.0 and kinds["MotionQ"] == "VelocitySource MotionQ"
+    columns = (CIRCUITS / "sources_sensors.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    ref = np.loadtxt(CIRCUITS / "sources_sensors.csv", delimiter=",", skiprows=1)
+    result = imp.system.simulate(t_eval=ref[:, 0])
+    by_hopsan = {hopsan: alias for alias, hopsan in imp.variables.items()}
+    compared = 0
+    for i, column in enumerate(columns[1:], start=1):
+        if column in _LOGGED_INPUTS:
+            assert np.all(ref[:, i] == 0.0), column  # Hopsan's in_p, in_f
+            assert np.ptp(result[by_hopsan[column]]) > 1.0, column  # the volume's pressure, the spring's force
+            continue
+        if column not in by_hopsan:
+            continue
+        y, y_ref = result[by_hopsan[column]], ref[:, i]
+        if column.endswith(("#Force", "#Flow", "#Value")):
+            y, y_ref = y[1:], y_ref[1:]
+        scale = max(float(np.ptp(y_ref)), 0.01 * float(np.max(np.abs(y_ref))), 1e-12)
+        assert np.max(np.abs(y - y_ref)) <= 0.005 * scale, column
+        compared += 1
+    assert compared >= 30
+
+
+@pytest.mark.parametrize(
+    ("kind", "params", "drive", "message"),
+    [
+        ("HydraulicCSource", {"in_z#Value": ("1e9", "")}, None, r"in_z = 1e\+09: an impedance in series"),
+        ("HydraulicQSource", {}, "in_p", r"in_p driven by a signal: Hopsan logs it as the node's pressure"),
+        ("MechanicTranslationalCSource", {}, "in_z", r"in_z driven by a signal that varies"),
+        ("MechanicTranslationalQSource", {}, "in_f", r"in_f driven by a signal: Hopsan logs it as the node's force"),
+        ("MechanicTranslationalQSource", {}, "in_v", r"in_v moves the node while in_x holds it at 0 m"),
+        ("MechanicTranslationalQSource", {"in_v#Value": ("0.1", "")}, None, r"in_v moves the node"),
+    ],
+)
+def test_tlm_sources_refuse_what_they_cannot_honour(
+    tmp_path: Path, kind: str, params: dict, drive: str | None, message: str
+) -> None:
+    """A hydraulic C source behind an impedance (a resistance in series with a flow port, algebraic), a Q
+    source's logged-only pressure or force driven by a signal, a mechanic C source's impedance driven by a signal
+    that varies, and a mechanic Q source moving its node at a fixed position are refused, each with why; the
+    same sources without those settings import."""
+    neighbour = {  # the component joined to the source: a Q one to a C source, a C one to a Q source
+        "HydraulicCSource": ("HydraulicFlowSourceQ", "P1"), "HydraulicQSource": ("HydraulicTankC", "P1"),
+        "MechanicTranslationalCSource": ("MechanicFixedPosition", "Pm1"),
+        "MechanicTranslationalQSource": ("MechanicForceTransformer", "P1"),
+    }[kind]
+    components = [(kind, "S", params), (neighbour[0], "N", {}), ("SignalSineWave", "W", {})]
+    connections = [("S.P1", f"N.{neighbour[1]}")]
+    if drive is not None:
+        connections.append(("W.out", f"S.{drive}"))
+    path = tmp_path / "source.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=message):
+        read_hopsan(path)
+    path.write_text(_hmf([(kind, "S", {}), (neighbour[0], "N", {})], connections[:1]), encoding="utf-8")
+    assert read_hopsan(path).t_end == 3.0
+
+
 def _value(text: str, unit: str = "") -> tuple[str, str]:
     return (text, unit)
 
