@@ -21,7 +21,7 @@ module                 components
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
-                       Staircase, Ramp, Sine, Square, Table, Table2D
+                       Staircase, Ramp, Sine, Square, Table, Table2D, Table3D
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
                        Lag, TransferFunction, Integrator, Saturation, DeadZone,
                        RateLimiter, Hysteresis, Latch, Counter, Selector, PID,
@@ -95,6 +95,7 @@ from hydroservo.components.signals import (
     Step,
     Table,
     Table2D,
+    Table3D,
 )
 from hydroservo.components.sources import ConstantPressure, FlowSource, PressureSource, PressureTable, Tank
 from hydroservo.components.spools import (
@@ -207,6 +208,7 @@ __all__ = [
     "Square",
     "Table",
     "Table2D",
+    "Table3D",
     "Sum",
     "Gain",
     "Lag",

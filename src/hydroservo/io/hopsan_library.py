@@ -2755,6 +2755,41 @@ def _lookup_table_2d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                   note=f"Table2D {n}, {r.size} x {c.size} of {text and 'its text' or repr(filename)}")
 
 
+def _lookup_table_3d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal3DLookupTable (Signal/Non-Linearities/Signal3DLookupTable.hpp): a Table3D of its inputs ``row``,
+    ``col`` and ``plane``, trilinear and held at its edges as Hopsan's LookupTable3D, its table read at import from
+    the CSV file ``filename`` (or the text ``text``) as Hopsan reads it
+    (:func:`hydroservo.io.tables.parse_lookup_table_3d`), the file only inside the model file's folder, as
+    Signal2DLookupTable's; ``numlineskip`` ≠ 0 refused (Hopsan never hands it to its parser), ``reload`` moot."""
+    from hydroservo.components import Table3D
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_lookup_table_3d, read_lookup_table_3d
+
+    inputs, outputs = {"row": f"{n}.row", "col": f"{n}.col", "plane": f"{n}.plane"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        zero = [[[0.0, 0.0], [0.0, 0.0]], [[0.0, 0.0], [0.0, 0.0]]]
+        return Mapped([Table3D(n, rows=[0.0, 1.0], cols=[0.0, 1.0], planes=[0.0, 1.0], values=zero)],
+                      inputs=inputs, outputs=outputs)
+    if par("numlineskip", 0.0) != 0.0:
+        par.problems.append(f"{par.where}: numlineskip = {par('numlineskip', 0.0):g}: Hopsan's 3D lookup table never "
+                            "skips lines (it does not pass numlineskip to its parser); remove the lines or use comment")
+        return Mapped()
+    comment = par.text("comment", "")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            r, c, q, v = parse_lookup_table_3d(par.text("text"), comment, what=f"{par.where}: text")
+        else:
+            file = _table_file(par, par.folder, filename)
+            r, c, q, v = read_lookup_table_3d(file, comment, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table3D(n, rows=r, cols=c, planes=q, values=v)
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table3D {n}, {r.size} x {c.size} x {q.size} of {text and 'its text' or repr(filename)}")
+
+
 def _unit_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """SignalUnitDelay (Signal/Non-Linearities/SignalUnitDelay.hpp): its output is its input one step late,
     which vanishes as the step does: in the limit it passes its input on (a Gain of 1). In Hopsan it breaks
@@ -3202,6 +3237,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicTranslationalCSource": _mechanic_c_source,
     "MechanicTranslationalQSource": _mechanic_q_source,
     "HydraulicNodeSensor": _node_sensor((("p", "Pressure", "Pa"), ("q", "Flow", "m^3/s"))),
+    "Signal3DLookupTable": _lookup_table_3d,
     "MechanicNodeSensor": _node_sensor((("out_f", "Force", "N"), ("out_v", "Velocity", "m/s"), ("out_x", "Position", "m"))),
 }
 

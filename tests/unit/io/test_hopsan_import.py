@@ -381,6 +381,25 @@ def test_tlm_sources_and_node_sensors_match_hopsan() -> None:
     assert compared >= 30
 
 
+def test_3d_lookup_table_matches_hopsan_and_refuses_a_malformed_table(tmp_path: Path) -> None:
+    """Signal3DLookupTable, its table of 3 rows, 2 columns and 4 planes of unequal breakpoints and values that
+    no multilinear function gives (hopsan_circuits/table_3d_data.csv), read by three sines that leave its
+    breakpoints: the output agrees with Hopsan's run (hopsan_circuits/table_3d.csv) within 1e-6 of its range (the
+    values paired with the breakpoints as Hopsan pairs them); a table whose last line announces more lines than it
+    has is refused with the file named."""
+    imp = import_hopsan(CIRCUITS / "table_3d.hmf")
+    ref = np.loadtxt(CIRCUITS / "table_3d.csv", delimiter=",", skiprows=1)
+    column = (CIRCUITS / "table_3d.csv").read_text(encoding="utf-8").splitlines()[0].split(",").index("LUT3#out#Value")
+    result = imp.system.simulate(t_eval=ref[:, 0])
+    assert np.max(np.abs(result["LUT3.out.Value"] - ref[:, column])) <= 1e-6 * np.ptp(ref[:, column])
+    text = (CIRCUITS / "table_3d_data.csv").read_text(encoding="utf-8").replace("3,2,4,0", "3,2,5,0")
+    (tmp_path / "table_3d_data.csv").write_text(text, encoding="utf-8")
+    (tmp_path / "table_3d.hmf").write_text((CIRCUITS / "table_3d.hmf").read_text(encoding="utf-8"), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"LUT3 \(Signal3DLookupTable\): filename.*24 lines of data where the last "
+                       r"line announces 3 x 2 x 5 = 30"):
+        read_hopsan(tmp_path / "table_3d.hmf")
+
+
 @pytest.mark.parametrize(
     ("kind", "params", "drive", "message"),
     [
