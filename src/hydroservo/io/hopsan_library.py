@@ -3241,6 +3241,25 @@ LIBRARY: dict[str, Builder] = {
     "MechanicNodeSensor": _node_sensor((("out_f", "Force", "N"), ("out_v", "Velocity", "m/s"), ("out_x", "Position", "m"))),
 }
 
+#: the mission-logic families of Hopsan's signal library, refused (:data:`REFUSED`)
+_FFB_REASON = (
+    "a function-flow block (Signal/SignalFFB/) is a state machine stepped once per Hopsan step: it detects an "
+    "edge of its inputs as their change from the previous step and answers with 'exiting' pulses one step long "
+    "(exiting = oldState onPositive(exit - oldExit - 0.5)), which vanish as the step does, so it has no limit "
+    "as the step vanishes"
+)
+_ACTIVITY_REASON = (
+    "an activity-diagram block (Signal/ActivityDiagram/) passes tokens over Hopsan's Petri-net nodes "
+    "(NodePetriNet), one transition per Hopsan step from its previous step's state: a discrete state machine with "
+    "no limit as the step vanishes, on a kind of node hydroservo has not"
+)
+_NAVIGATION_REASON = (
+    "a flight-mission block (Signal/Navigation/: an aircraft's attitude and thrust-vector control, its earth "
+    "coordinates and mission clock, waypoints, a state monitor) made for Hopsan's aeronautic models "
+    "(Special/AeroComponents), outside hydroservo's physics; its waypoint and monitor logic switches once per "
+    "Hopsan step"
+)
+
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)
 REFUSED: dict[str, str] = {
     "SignalTimeDelay": "a pure time delay, y(t) = u(t - deltat), is no ordinary differential equation: hydroservo's "
@@ -3277,6 +3296,21 @@ REFUSED: dict[str, str] = {
     "one kept): no power balance at Pmr2 (a spring there has negative stiffness). hydroservo's ports are "
     "power-conjugate, so it cannot reproduce that law, and the physical clutch (T1 limited to tmax by slip, "
     "which is sound) would run opposite to Hopsan's result; myfric and wc are in none of its equations",
+    "SignalSampleAndHold": "its output jumps to its input's value at each sampling instant k/f_s and holds it "
+    "(Signal/Non-Linearities/SignalSampleAndHold.hpp; in the limit y(t) = u(floor(t f_s)/f_s)): a state that "
+    "jumps, which hydroservo's engine does not do (its events end a step at a switch, they reset no state), and a "
+    "fast relaxation onto the input would not be Hopsan's law",
+    **{name: _FFB_REASON for name in (
+        "SignalFFB", "SignalFFBand", "SignalFFBandIn", "SignalFFBloop", "SignalFFBloopIn", "SignalFFBor",
+        "SignalFFBorIn",
+    )},
+    **{f"ActivityDiagram{name}": _ACTIVITY_REASON for name in (
+        "Action", "ActionN", "Connector", "Decision", "Edge", "Final", "FinalNode", "Fork", "ForkN",
+        "InitiateState", "Join", "Join0", "JoinN", "Merge", "Merge0", "MergeN",
+    )},
+    **{f"Signal{name}": _NAVIGATION_REASON for name in (
+        "AttitudeControl", "AttitudeTVCcontrol", "EarthCoordinates", "StateMonitor", "TimeAccelerator", "Waypoint",
+    )},
 }
 
 
