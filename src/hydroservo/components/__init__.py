@@ -11,7 +11,7 @@ module                 components
 :mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine
 :mod:`.cylinder`       Cylinder
 :mod:`.mass`           Mass, MassPair
-:mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
+:mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, RigidLink, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
                        AngularVelocitySource, Vehicle, Crank
 :mod:`.valves`         FourWayValve, ThreeWayValve, ThreeWayPressureValve, TwoWayValve, PseudoSectionValve,
@@ -72,7 +72,15 @@ from hydroservo.components.cylinder import Cylinder
 from hydroservo.components.line import Hose, Line
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.mass import Mass, MassPair
-from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
+from hydroservo.components.mechanics import (
+    Damper,
+    FixedPosition,
+    ForceSource,
+    RigidLink,
+    Spring,
+    VelocitySource,
+    Wall,
+)
 from hydroservo.components.pumps import LoadSensingPump, Machine, Motor, Pump, VariablePump
 from hydroservo.components.rotational import (
     AngularVelocitySource,
@@ -145,6 +153,7 @@ __all__ = [
     "Damper",
     "FixedPosition",
     "Wall",
+    "RigidLink",
     "ForceSource",
     "VelocitySource",
     "RotationalInertia",

@@ -1644,6 +1644,18 @@ def _mechanic_q_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([VelocitySource(n, x0=par("in_x", 0.0))], power={"P1": f"{n}.P"}, inputs={"in_v": f"{n}.u"})
 
 
+def _lossless_link(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalLosslessConnector.hpp: a Q component between two C
+    components, v_2 = (c_1 - c_2)/(Z_1 + Z_2), v_1 = -v_2, x_1 = L - x_2 (L the sum of its ports' start positions),
+    whose forces f_i = c_i + Z_i v_i are equal at every step: a massless rigid link, a RigidLink of that length
+    (its position solved so that its two forces balance, its velocity that position's rate within 1 µs, as the
+    Wall's free end), starting at P2's start position."""
+    from hydroservo.components import RigidLink
+
+    x1, x2 = par.start("P1", "Position"), par.start("P2", "Position")
+    return Mapped([RigidLink(n, length=x1 + x2, x0=x2)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
 def _sensor(variable: str, unit: str) -> Builder:
     """Hopsan's sensors of a node's ``variable``: a Sum reading it (fed when the node is known), its output Hopsan's
     ``out``."""
@@ -3238,6 +3250,7 @@ LIBRARY: dict[str, Builder] = {
     "MechanicTranslationalQSource": _mechanic_q_source,
     "HydraulicNodeSensor": _node_sensor((("p", "Pressure", "Pa"), ("q", "Flow", "m^3/s"))),
     "Signal3DLookupTable": _lookup_table_3d,
+    "MechanicTranslationalLosslessConnector": _lossless_link,
     "MechanicNodeSensor": _node_sensor((("out_f", "Force", "N"), ("out_v", "Velocity", "m/s"), ("out_x", "Position", "m"))),
 }
 

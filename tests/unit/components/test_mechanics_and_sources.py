@@ -231,3 +231,30 @@ def test_a_force_source_behind_a_damper_drives_a_mass_to_its_terminal_velocity()
     r = s.simulate(t_eval=t, accuracy=1e-8)
     np.testing.assert_allclose(r["m.v"], u / b * (1.0 - np.exp(-b * t / m)), atol=1e-6)
     np.testing.assert_allclose(r["f.F"], u * np.exp(-b * t / m), atol=1e-5)  # the damper takes B v of it
+
+
+def test_a_rigid_link_between_two_springs_sits_where_their_forces_balance() -> None:
+    """RigidLink (Hopsan's MechanicTranslationalLosslessConnector): massless, so the springs k1 and k2 on either
+    side carry one force; pulled at V by a velocity source through k1, with k2 to a fixed point, its end 2 moves
+    at k1 V/(k1 + k2) (its end 1 back at the same rate, from its length) and both springs carry the tension
+    k1 k2 V t/(k1 + k2)."""
+    k1, k2, vel = 3000.0, 1000.0, 0.2
+    s = System("series springs")
+    s.add(c.VelocitySource("pull"))
+    s.add(c.Constant("V", unit="m/s", value=-vel))  # the source's port moving inward: spring a's end outward
+    s.add(c.Spring("a", k_spring=k1))
+    s.add(c.RigidLink("link", length=0.3, x0=0.0))
+    s.add(c.Spring("b", k_spring=k2, e0=-0.3))  # relaxed at the start: the link's end 1 at 0.3 m outward
+    s.add(c.FixedPosition("g"))
+    s.connect("V.y", "pull.u")
+    s.connect("pull.P", "a.P1")
+    s.connect("a.P2", "link.P2")
+    s.connect("link.P1", "b.P1")
+    s.connect("b.P2", "g.P")
+    t = np.array([0.0, 0.5, 1.0])
+    r = s.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["link.x"], k1 / (k1 + k2) * vel * t, atol=1e-9)
+    np.testing.assert_allclose(r["link.v"][1:], k1 / (k1 + k2) * vel, rtol=1e-6)
+    np.testing.assert_allclose(r["link.x_P1"], 0.3 - k1 / (k1 + k2) * vel * t, atol=1e-9)
+    np.testing.assert_allclose(r["a.F"], r["b.F"], atol=1e-6)  # one force through both
+    np.testing.assert_allclose(r["a.F"], k1 * k2 / (k1 + k2) * vel * t, rtol=1e-6, atol=1e-9)

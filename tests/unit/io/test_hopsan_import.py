@@ -381,6 +381,45 @@ def test_tlm_sources_and_node_sensors_match_hopsan() -> None:
     assert compared >= 30
 
 
+#: the node of lossless_link where Hopsan's link meets its force source: Hopsan's logged velocity there carries
+#: an undamped oscillation of its step
+_LINK_NODE_VELOCITY = ("Force#P1#Velocity", "Link#P1#Velocity", "Link#P2#Velocity", "Stiff#P1#Velocity")
+
+
+def test_mechanic_lossless_connector_matches_hopsan() -> None:
+    """MechanicTranslationalLosslessConnector as a RigidLink, twice: between a sine force (a C source of no
+    impedance) and a stiff spring on a damped mass, and between the spring on the mass's other side and a
+    spring to a wall. Every variable Hopsan logs agrees with its run (hopsan_circuits/lossless_link.csv) within
+    0.5 % of its range but the velocity of the first link's node: Hopsan's carries an undamped oscillation of
+    its step's period, of amplitude F'(0)/k (0.063 m/s: started at t = 0, where its link, at rest, must move at
+    F'/k at once), which its samples alias (a constant -0.063 m/s at 1e-6 s, +0.063, 0, -0.063, 0 in turn at
+    0.02/10001 s); hydroservo gives the link's velocity, the mass's plus the stiff spring's rate F'/k, which is
+    the mean of Hopsan's."""
+    imp = import_hopsan(CIRCUITS / "lossless_link.hmf")
+    assert imp.system["Link"].values["length"] == 0.0 and type(imp.system["Link2"]).__name__ == "RigidLink"
+    columns = (CIRCUITS / "lossless_link.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    ref = np.loadtxt(CIRCUITS / "lossless_link.csv", delimiter=",", skiprows=1)
+    t = ref[:, 0]
+    result = imp.system.simulate(t_eval=t)
+    by_hopsan = {hopsan: alias for alias, hopsan in imp.variables.items()}
+    rate = -ref[:, columns.index("Mass#P1#Velocity")] + 2 * np.pi * 100.0 * np.cos(2 * np.pi * t) / 1e4
+    compared = 0
+    for i, column in enumerate(columns[1:], start=1):
+        if column not in by_hopsan:
+            continue
+        y, y_ref = result[by_hopsan[column]], ref[:, i]
+        if column in _LINK_NODE_VELOCITY:
+            sign = 1.0 if column.startswith(("Link#P2", "Stiff#P1")) else -1.0  # end 2's node, or end 1's
+            np.testing.assert_allclose(y_ref[1:] - sign * rate[1:], -sign * 0.0628, atol=5e-4)  # Hopsan's offset
+            y_ref = sign * rate
+        if column.endswith(("#Force", "#Value")) or column in _LINK_NODE_VELOCITY:  # the link starts at rest
+            y, y_ref = y[1:], y_ref[1:]
+        scale = max(float(np.ptp(y_ref)), 0.01 * float(np.max(np.abs(y_ref))), 1e-12)
+        assert np.max(np.abs(y - y_ref)) <= 0.005 * scale, column
+        compared += 1
+    assert compared >= 40
+
+
 def test_3d_lookup_table_matches_hopsan_and_refuses_a_malformed_table(tmp_path: Path) -> None:
     """Signal3DLookupTable, its table of 3 rows, 2 columns and 4 planes of unequal breakpoints and values that
     no multilinear function gives (hopsan_circuits/table_3d_data.csv), read by three sines that leave its
