@@ -263,14 +263,14 @@ class ForceSource(Component):
     """A force from a signal: its port ``P`` pushes outward on what it is joined to with the input ``u``
     (Hopsan's MechanicForceTransformer, [Hopsan2026], whose signal is the force it presses on its node).
 
-    With ``B`` > 0 the source stands behind a damper to ground: F = u - B v, ``v`` the port's outward velocity
-    (Hopsan's MechanicTranslationalCSource, [Hopsan2026] Mechanic/Linear/MechanicTranslationalCSource.hpp, a
-    wave variable ``in_c`` and an impedance ``in_z``: its node's force c + Z_x v_Q, v_Q the velocity of the
+    With the input ``B`` the source stands behind a damper to ground: F = u - B v, ``v`` the port's outward
+    velocity (Hopsan's MechanicTranslationalCSource, [Hopsan2026] Mechanic/Linear/MechanicTranslationalCSource.hpp,
+    a wave variable ``in_c`` and an impedance ``in_z``: its node's force c + Z_x v_Q, v_Q the velocity of the
     component joined to it, towards the source)."""
 
-    PARAMETERS = {"B": Param(0.0, "N*s/m", "damping behind the source, to ground (F = u - B v)", min=0.0)}
     INPUTS = {
         "u": Port("N", "force pushing outward on what port P is joined to", default=0.0),
+        "B": Port("N*s/m", "damping behind the source, to ground (F = u - B v)", default=0.0),
         "x": Port("m", "outward displacement of port P", default=0.0),
         "v": Port("m/s", "outward velocity of port P", default=0.0),
     }
@@ -280,7 +280,7 @@ class ForceSource(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"F": u["u"] - p["B"] * u["v"]}
+        return {"F": u["u"] - u["B"] * u["v"]}
 
 
 @register

@@ -116,14 +116,13 @@ class TorqueSource(ForceSource):
         "x": Port("rad", "outward angle of port P", default=0.0),
         "v": Port("rad/s", "outward angular velocity of port P", default=0.0),
     }
-    PARAMETERS = {}  # no damping behind it (ForceSource's B)
     MECHANICAL = {"P": Mechanical("x", "v", "F", "where the torque acts (outward)", kind="rotational")}
     OUTPUTS = {"F": Output("N*m", "torque on what port P is joined to, outward")}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"F": u["u"]}
+        return {"F": u["u"]}  # no damping behind it (ForceSource's input B)
 
 
 @register

@@ -1601,19 +1601,15 @@ def _mechanic_c_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Mechanic/Linear/MechanicTranslationalCSource.hpp: a C component that writes its inputs as its
     node's wave variable and impedance, c = in_c, Z_x = in_z, so that the Q component joined to it feels
     f = c + Z_x v (v its velocity towards the source): a force c behind a damper of coefficient Z_x to ground, a
-    ForceSource with ``B`` = in_z (F = u - B v, v outward of the source). With in_z = 0 (its default) it is
-    MechanicForceTransformer's law. An impedance driven by a signal that varies is refused (B is a parameter)."""
+    ForceSource with its input ``B`` = in_z (F = u - B v, v outward of the source). With in_z = 0 (its default)
+    it is MechanicForceTransformer's law."""
     from hydroservo.components import ForceSource
 
-    if "in_z" in par.driven:
-        par.problems.append(f"{par.where}: in_z driven by a signal that varies: only a constant impedance (a damper "
-                            "to ground of that coefficient) is supported")
+    if par("in_z", 0.0) < 0.0 and "in_z" not in par.driven:
+        par.problems.append(f"{par.where}: in_z = {par('in_z', 0.0):g} N s/m; only an impedance of at least 0 is "
+                            "supported")
         return Mapped()
-    z = par("in_z", 0.0)
-    if z < 0.0:
-        par.problems.append(f"{par.where}: in_z = {z:g} N s/m; only an impedance of at least 0 is supported")
-        return Mapped()
-    return Mapped([ForceSource(n, B=z)], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u"})
+    return Mapped([ForceSource(n)], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u", "in_z": f"{n}.B"})
 
 
 def _mechanic_q_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -1733,20 +1729,15 @@ def _lossless_connector(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
 def _c_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicCSource.hpp: a C component that writes its inputs as its
     node's wave variable and impedance, c = in_c, Z_c = in_z, so that the Q component joined to it sees
-    p = c + Z_c q (q the flow into the source): a pressure source c behind a resistance Z_c in series with that Q
-    component. With Z_c = 0 (its default) that is an ideal pressure source, a Tank at ``in_c`` (absolute) or a
-    PressureSource following the signal driving it. A resistance in series with a flow port is an algebraic
-    relation between the node's pressure and the flows into it, which hydroservo's node (its pressure from one
-    port, the flows into it summed) does not hold: ``in_z`` ≠ 0 is refused (model the impedance as an orifice
-    into a volume)."""
+    p = c + Z_c q (q the flow into the source): a pressure source c behind a linear resistance Z_c, a
+    PressureSource with ``impedance = "input"`` (p = u - Z Q, Q the flow it delivers; its pressure solved with
+    the node's flows), ``in_c`` (absolute) into ``u``, ``in_z`` into ``Z``. With Z_c = 0 (its default, and not
+    driven) an ideal pressure source: a Tank at ``in_c``, or a PressureSource following the signal driving it."""
     from hydroservo.components import PressureSource, Tank
 
-    if par("in_z", 0.0) != 0.0:
-        par.problems.append(
-            f"{par.where}: in_z = {par('in_z', 0.0):g}: an impedance in series with the Q component joined to the "
-            "source (p = in_c + in_z q) is an algebraic relation hydroservo's nodes do not hold; only in_z = 0, an "
-            "ideal pressure source, is supported (model the impedance as an orifice into a volume)")
-        return Mapped()
+    if "in_z" in par.driven or par("in_z", 0.0) != 0.0:
+        comp = PressureSource(n, p0="0 Pa_abs", impedance="input")
+        return Mapped([comp], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u", "in_z": f"{n}.Z"})
     if "in_c" in par.driven:
         return Mapped([PressureSource(n, p0="0 Pa_abs")], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u"})
     return Mapped([Tank(n, p=_abs(par("in_c", 0.0)))], power={"P1": f"{n}.P"})

@@ -218,14 +218,17 @@ def test_a_mass_with_coulomb_friction_sticks_below_its_static_force_and_slides_a
 
 
 def test_a_force_source_behind_a_damper_drives_a_mass_to_its_terminal_velocity() -> None:
-    """ForceSource with B (Hopsan's MechanicTranslationalCSource, in_z = B): F = u - B v, so a mass m it pushes
-    with u from rest moves at (u/B)(1 - exp(-B t/m)); with B = 0 the force is u whatever the motion."""
+    """ForceSource with its input B (Hopsan's MechanicTranslationalCSource, in_z = B): F = u - B v, so a mass m
+    it pushes with u from rest moves at (u/B)(1 - exp(-B t/m)); with B unconnected (0) the force is u whatever
+    the motion."""
     u, b, m = 20.0, 5.0, 2.0
     s = System("damped push")
-    s.add(c.ForceSource("f", B=b))
+    s.add(c.ForceSource("f"))
     s.add(c.Constant("U", unit="N", value=u))
+    s.add(c.Constant("Bc", unit="N*s/m", value=b))
     s.add(c.Mass("m", m=m, B=0.0, incline=0.0))
     s.connect("U.y", "f.u")
+    s.connect("Bc.y", "f.B")
     s.connect("f.P", "m.P1")  # pushes end 1 in: the mass moves along +x
     t = np.array([0.0, 0.3, 1.0, 3.0])
     r = s.simulate(t_eval=t, accuracy=1e-8)
@@ -258,3 +261,23 @@ def test_a_rigid_link_between_two_springs_sits_where_their_forces_balance() -> N
     np.testing.assert_allclose(r["link.x_P1"], 0.3 - k1 / (k1 + k2) * vel * t, atol=1e-9)
     np.testing.assert_allclose(r["a.F"], r["b.F"], atol=1e-6)  # one force through both
     np.testing.assert_allclose(r["a.F"], k1 * k2 / (k1 + k2) * vel * t, rtol=1e-6, atol=1e-9)
+
+
+def test_a_pressure_source_behind_a_resistance_loses_z_q() -> None:
+    """PressureSource with option impedance = "input" (Hopsan's HydraulicCSource, its wave variable and impedance
+    inputs): p = u - Z Q. Into a laminar orifice G to a tank, Q = G p, so p = u/(1 + Z G), whatever Z does: here
+    Z steps from 1e9 to 3e9 Pa s/m³ at 0.5 s (p from u/2 to u/4)."""
+    s = System("behind a resistance")
+    s.add(c.PressureSource("src", impedance="input"))
+    s.add(c.Constant("U", unit="Pa", value=1e6))
+    s.add(c.Step("Zc", unit="Pa*s/m^3", offset=1e9, amplitude=2e9, t_step=0.5))
+    s.add(c.LaminarOrifice("o", G_lam=1e-9))
+    s.add(c.Tank("t"))
+    s.connect("U.y", "src.u")
+    s.connect("Zc.y", "src.Z")
+    s.connect("src.P", "o.A")
+    s.connect("o.B", "t.P")
+    r = s.simulate(t_eval=[0.0, 0.25, 0.75, 1.0])
+    np.testing.assert_allclose(r["src.p"], [5e5, 5e5, 2.5e5, 2.5e5], rtol=1e-9)
+    np.testing.assert_allclose(r["o.Q"], 1e-9 * r["src.p"], rtol=1e-9)
+    assert "Z" not in c.PressureSource("ideal").INPUTS  # an ideal source by default

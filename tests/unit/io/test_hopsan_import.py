@@ -350,7 +350,8 @@ _LOGGED_INPUTS = ("QSource#P1#Pressure", "Volume#P2#Pressure", "MotionQ#P1#Force
 
 def test_tlm_sources_and_node_sensors_match_hopsan() -> None:
     """HydraulicCSource (its wave variable a 10 bar level plus a sine, in_z = 0) feeding a volume through an
-    orifice, emptied and filled by a HydraulicQSource's sine-wave flow; a MechanicTranslationalCSource (a sine
+    orifice, emptied and filled by a HydraulicQSource's sine-wave flow; another (20 bar behind a sine-wave
+    impedance in_z about 3e10 Pa s/m³) feeding a volume through an orifice and a leak; a MechanicTranslationalCSource (a sine
     force behind in_z = 50 N s/m) pushing a mass on a spring whose far end a MechanicTranslationalQSource moves (a
     sine velocity and its integral); node sensors on both. Every variable Hopsan logs agrees with its run
     (hopsan_circuits/sources_sensors.csv) within 0.5 % of its range, but the pressure and force of the Q sources'
@@ -359,7 +360,9 @@ def test_tlm_sources_and_node_sensors_match_hopsan() -> None:
     imp = import_hopsan(CIRCUITS / "sources_sensors.hmf")
     kinds = {hopsan: became for hopsan, _, became in imp.mapping}
     assert kinds["CSource"] == "PressureSource CSource" and kinds["ForceC"] == "ForceSource ForceC"
-    assert imp.system["ForceC"].values["B"] == 50.0 and kinds["MotionQ"] == "VelocitySource MotionQ"
+    assert imp.system["CSourceZ"].option("impedance") == "input"
+    assert kinds["MotionQ"] == "VelocitySource MotionQ"
+    assert imp.system.connections["ForceC.B"] == "ForceC_B.y" and imp.system["ForceC_B"].values["value"] == 50.0
     columns = (CIRCUITS / "sources_sensors.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     ref = np.loadtxt(CIRCUITS / "sources_sensors.csv", delimiter=",", skiprows=1)
     result = imp.system.simulate(t_eval=ref[:, 0])
@@ -442,9 +445,8 @@ def test_3d_lookup_table_matches_hopsan_and_refuses_a_malformed_table(tmp_path: 
 @pytest.mark.parametrize(
     ("kind", "params", "drive", "message"),
     [
-        ("HydraulicCSource", {"in_z#Value": ("1e9", "")}, None, r"in_z = 1e\+09: an impedance in series"),
         ("HydraulicQSource", {}, "in_p", r"in_p driven by a signal: Hopsan logs it as the node's pressure"),
-        ("MechanicTranslationalCSource", {}, "in_z", r"in_z driven by a signal that varies"),
+        ("MechanicTranslationalCSource", {"in_z#Value": ("-1", "")}, None, r"in_z = -1 N s/m; only an impedance"),
         ("MechanicTranslationalQSource", {}, "in_f", r"in_f driven by a signal: Hopsan logs it as the node's force"),
         ("MechanicTranslationalQSource", {}, "in_v", r"in_v moves the node while in_x holds it at 0 m"),
         ("MechanicTranslationalQSource", {"in_v#Value": ("0.1", "")}, None, r"in_v moves the node"),
@@ -453,10 +455,9 @@ def test_3d_lookup_table_matches_hopsan_and_refuses_a_malformed_table(tmp_path: 
 def test_tlm_sources_refuse_what_they_cannot_honour(
     tmp_path: Path, kind: str, params: dict, drive: str | None, message: str
 ) -> None:
-    """A hydraulic C source behind an impedance (a resistance in series with a flow port, algebraic), a Q
-    source's logged-only pressure or force driven by a signal, a mechanic C source's impedance driven by a signal
-    that varies, and a mechanic Q source moving its node at a fixed position are refused, each with why; the
-    same sources without those settings import."""
+    """A Q source's logged-only pressure or force driven by a signal, a mechanic C source's negative impedance,
+    and a mechanic Q source moving its node at a fixed position are refused, each with why; the same sources
+    without those settings import."""
     neighbour = {  # the component joined to the source: a Q one to a C source, a C one to a Q source
         "HydraulicCSource": ("HydraulicFlowSourceQ", "P1"), "HydraulicQSource": ("HydraulicTankC", "P1"),
         "MechanicTranslationalCSource": ("MechanicFixedPosition", "Pm1"),
