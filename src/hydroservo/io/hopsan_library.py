@@ -93,6 +93,8 @@ class Mapped:
     flow: dict[str, str] = field(default_factory=dict)
     #: further variables a read port reads (a power sensor's pressure and flow), as ``read``'s entries
     read_also: dict[str, list[tuple[str, str]]] = field(default_factory=dict)
+    #: Hopsan ports left unmapped on purpose -> why (named when a block reads one; a scope showing one is dropped)
+    unmapped: dict[str, str] = field(default_factory=dict)
 
 
 class _Params:
@@ -1763,7 +1765,7 @@ def _q_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                   note=f"FlowSource {n} (in_q; in_p = {par('in_p', 0.0):g} Pa only logged by Hopsan)")
 
 
-def _node_sensor(variables: tuple[tuple[str, str, str], ...]) -> Builder:
+def _node_sensor(variables: tuple[tuple[str, str, str], ...], discretised: tuple[str, ...]) -> Builder:
     """[Hopsan2026] Hydraulic/Sensors/HydraulicNodeSensor.hpp (outputs p, q) and Mechanic/Linear/
     MechanicNodeSensor.hpp (out_f, out_v, out_x): each a Sum reading its node's variable, as the single sensors'
     (``{n}_<output>``; pressures absolute, as Hopsan's). Their other outputs, the node's wave variable, impedance
@@ -1776,10 +1778,13 @@ def _node_sensor(variables: tuple[tuple[str, str, str], ...]) -> Builder:
 
         comps: list[cbase.Component] = [Sum(f"{n}_{out}", unit=unit, gain2=0.0) for out, _, unit in variables]
         (first, var, _), rest = variables[0], variables[1:]
+        why = ("a quantity of Hopsan's discretisation (a node's wave variable, impedance or equivalent mass: a "
+               "volume's impedance beta Ts/V vanishes with the step), which hydroservo's model has not")
         return Mapped(
             comps, read={"P1": (f"{n}_{first}.u1", var)},
             read_also={"P1": [(f"{n}_{out}.u1", v) for out, v, _ in rest]},
             outputs={out: f"{n}_{out}.y" for out, _, _ in variables},
+            unmapped={port: why for port in discretised},
         )
 
     return build
@@ -3239,10 +3244,12 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicQSource": _q_source,
     "MechanicTranslationalCSource": _mechanic_c_source,
     "MechanicTranslationalQSource": _mechanic_q_source,
-    "HydraulicNodeSensor": _node_sensor((("p", "Pressure", "Pa"), ("q", "Flow", "m^3/s"))),
+    "HydraulicNodeSensor": _node_sensor((("p", "Pressure", "Pa"), ("q", "Flow", "m^3/s")), ("c", "Zc")),
     "Signal3DLookupTable": _lookup_table_3d,
     "MechanicTranslationalLosslessConnector": _lossless_link,
-    "MechanicNodeSensor": _node_sensor((("out_f", "Force", "N"), ("out_v", "Velocity", "m/s"), ("out_x", "Position", "m"))),
+    "MechanicNodeSensor": _node_sensor(
+        (("out_f", "Force", "N"), ("out_v", "Velocity", "m/s"), ("out_x", "Position", "m")), ("out_c", "out_z", "out_em")
+    ),
 }
 
 #: the mission-logic families of Hopsan's signal library, refused (:data:`REFUSED`)
@@ -3450,6 +3457,7 @@ def import_hopsan(path: str | Path) -> HopsanImport:
             problems.append(
                 f"{source}: connection {' – '.join(connection)}: {by_name[c].typename} {c!r} has no port {p!r} that "
                 f"hydroservo maps (its ports: {', '.join(known) or 'none'})"
+                + (f": {m_in.unmapped[p]}" if p in m_in.unmapped else "")
             )
         if unknown:
             continue

@@ -384,6 +384,21 @@ def test_tlm_sources_and_node_sensors_match_hopsan() -> None:
     assert compared >= 30
 
 
+def test_a_node_sensors_wave_variable_read_by_a_block_is_refused_with_why(tmp_path: Path) -> None:
+    """HydraulicNodeSensor's c and Zc (and MechanicNodeSensor's out_c, out_z, out_em) belong to Hopsan's
+    discretisation: shown in a scope they are dropped, read by a block the model is refused, saying why."""
+    components = [("HydraulicTankC", "T", {}), ("HydraulicFlowSourceQ", "Q", {}), ("HydraulicNodeSensor", "S", {}),
+                  ("SignalGain", "G", {}), ("SignalSink", "Scope", {})]
+    connections = [("Q.P1", "T.P1"), ("S.P1", "T.P1"), ("S.Zc", "Scope.in"), ("S.p", "G.in")]
+    path = tmp_path / "sensor.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    assert "S.p.Value" in import_hopsan(path).variables  # Zc on a scope: dropped
+    path.write_text(_hmf(components, [*connections[:3], ("S.c", "G.in")]), encoding="utf-8")  # c into the gain
+    with pytest.raises(ModelFileError, match=r"has no port 'c' that hydroservo maps .*: a quantity of Hopsan's "
+                       r"discretisation"):
+        read_hopsan(path)
+
+
 #: the node of lossless_link where Hopsan's link meets its force source: Hopsan's logged velocity there carries
 #: an undamped oscillation of its step
 _LINK_NODE_VELOCITY = ("Force#P1#Velocity", "Link#P1#Velocity", "Link#P2#Velocity", "Stiff#P1#Velocity")
