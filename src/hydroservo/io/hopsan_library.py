@@ -3266,9 +3266,8 @@ _ACTIVITY_REASON = (
 )
 _NAVIGATION_REASON = (
     "a flight-mission block (Signal/Navigation/: an aircraft's attitude and thrust-vector control, its earth "
-    "coordinates and mission clock, waypoints, a state monitor) made for Hopsan's aeronautic models "
-    "(Special/AeroComponents), outside hydroservo's physics; its waypoint and monitor logic switches once per "
-    "Hopsan step"
+    "coordinates and a mission clock with time compression, waypoints, a monitor of the mission's states) made "
+    "to drive Hopsan's aeronautic models (Special/AeroComponents), which are outside hydroservo's physics"
 )
 
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)
