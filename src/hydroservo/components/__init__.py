@@ -14,7 +14,7 @@ module                 components
                        machine of its parts)
 :mod:`.cylinder`       Cylinder, FourChamberCylinder
 :mod:`.mass`           Mass, MassPair
-:mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, ForceSource, VelocitySource
+:mod:`.mechanics`      Spring, Damper, FixedPosition, Wall, RigidLink, ForceSource, VelocitySource
 :mod:`.rotational`     RotationalInertia, TorsionalSpring, TorqueSource,
                        AngularVelocitySource, Vehicle, Crank
 :mod:`.valves`         FourWayValve, ThreeWayValve, ThreeWayPressureValve, TwoWayValve, PseudoSectionValve,
@@ -24,7 +24,7 @@ module                 components
 :mod:`.spools`         SpoolFirstOrder, SpoolSecondOrder, SpoolRateLimited,
                        TorqueMotor, FlapperNozzleSpool
 :mod:`.signals`        Constant, Step, SoftStep, DecayingStep, Pulse, PulseWave,
-                       Staircase, Ramp, Sine, Square, Table, Table2D
+                       Staircase, Ramp, Sine, Square, Table, Table2D, Table3D
 :mod:`.control`        Sum, Product, Quotient, Absolute, Power, Function, Gain,
                        Lag, TransferFunction, Integrator, Saturation, DeadZone,
                        RateLimiter, Hysteresis, Latch, Counter, Selector, PID,
@@ -76,7 +76,15 @@ from hydroservo.components.line import Hose, Line, LosslessLine
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
 from hydroservo.components.machine_parts import PumpPiston, SwashPlate, ValvePlate
 from hydroservo.components.mass import Mass, MassPair
-from hydroservo.components.mechanics import Damper, FixedPosition, ForceSource, Spring, VelocitySource, Wall
+from hydroservo.components.mechanics import (
+    Damper,
+    FixedPosition,
+    ForceSource,
+    RigidLink,
+    Spring,
+    VelocitySource,
+    Wall,
+)
 from hydroservo.components.pumps import (
     CentrifugalPump,
     CentrifugalPumpInertia,
@@ -107,6 +115,7 @@ from hydroservo.components.signals import (
     Step,
     Table,
     Table2D,
+    Table3D,
 )
 from hydroservo.components.sources import ConstantPressure, FlowSource, PressureSource, PressureTable, Tank
 from hydroservo.components.spools import (
@@ -157,6 +166,7 @@ __all__ = [
     "Damper",
     "FixedPosition",
     "Wall",
+    "RigidLink",
     "ForceSource",
     "VelocitySource",
     "RotationalInertia",
@@ -226,6 +236,7 @@ __all__ = [
     "Square",
     "Table",
     "Table2D",
+    "Table3D",
     "Sum",
     "Gain",
     "Lag",

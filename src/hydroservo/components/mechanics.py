@@ -198,12 +198,79 @@ class Wall(Component):
 
 
 @register
+class RigidLink(Component):
+    r"""A massless rigid link: its ends carry one force (Hopsan's MechanicTranslationalLosslessConnector,
+    [Hopsan2026] Mechanic/Linear/MechanicTranslationalLosslessConnector.hpp).
+
+    End 2 is at ``x``, end 1 at ``length - x`` (each outward), and the forces pulling its ends outward are equal at
+    every instant, :math:`F_2 = F_1` (no mass, no friction: what one side presses on it the other takes). Hopsan's
+    connector is this law: a Q component whose velocity v_2 = (c_1 - c_2)/(Z_1 + Z_2) makes its two forces
+    c_i + Z_i v_i equal at each step, its ends x_1 = L - x_2.
+
+    As the Wall's free end, the link's position is an algebraic unknown (solved with the forces of its nodes each
+    time the model is evaluated: :mod:`hydroservo.system.implicit`), and its velocity the rate of the state
+    ``x_f`` that follows it with the time constant ``tau`` (a microsecond): :math:`v = (x - x_f)/\tau`. Each end
+    needs something that presses on it with a force depending on where the link is (a spring, a cylinder); two
+    force sources alone leave its position undetermined, and the model unsolvable.
+    """
+
+    PARAMETERS = {
+        "length": Param(0.0, "m", "end 1's position plus end 2's (each outward)"),
+        "x0": Param(0.0, "m", "initial position of end 2"),
+        "tau": Param(1e-6, "s", "time constant of the link's velocity (the rate of its position)", min=0.0,
+                     min_inclusive=False),
+    }
+    STATES = {"x_f": State("m", "the link's position, followed with the time constant tau", initial="x0", nominal=0.1)}
+    ALGEBRAIC = {"x": Algebraic("m", "position of end 2, outward", nominal=0.1)}
+    INPUTS = {
+        "F": Port("N", "force on end 2, outward (+x)", default=0.0),
+        "F_P1": Port("N", "force on end 1, outward (-x)", default=0.0),
+    }
+    MECHANICAL = {
+        "P1": Mechanical("x_P1", "v_P1", "F_P1", "end 1 (outward is -x)"),
+        "P2": Mechanical("x", "v", "F", "end 2 (outward is +x)"),
+    }
+    OUTPUTS = {
+        "x": Output("m", "position of end 2, outward"),
+        "v": Output("m/s", "velocity of end 2, outward"),
+        "x_P1": Output("m", "position of end 1, outward (length - x)"),
+        "v_P1": Output("m/s", "velocity of end 1, outward (-v)"),
+    }
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        # the outputs read no input: the forces of the nodes enter through the residual (no loop through them)
+        v = (x["x"] - x["x_f"]) / p["tau"]
+        return {"x": x["x"], "v": v, "x_P1": p["length"] - x["x"], "v_P1": -v}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"x_f": y["v"]}
+
+    def residual_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"x": u["F"] - u["F_P1"]}
+
+    def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        return {"x": x["x_f"]}
+
+
+@register
 class ForceSource(Component):
     """A force from a signal: its port ``P`` pushes outward on what it is joined to with the input ``u``
-    (Hopsan's MechanicForceTransformer, [Hopsan2026], whose signal is the force it presses on its node)."""
+    (Hopsan's MechanicForceTransformer, [Hopsan2026], whose signal is the force it presses on its node).
+
+    With the input ``B`` the source stands behind a damper to ground: F = u - B v, ``v`` the port's outward
+    velocity (Hopsan's MechanicTranslationalCSource, [Hopsan2026] Mechanic/Linear/MechanicTranslationalCSource.hpp,
+    a wave variable ``in_c`` and an impedance ``in_z``: its node's force c + Z_x v_Q, v_Q the velocity of the
+    component joined to it, towards the source)."""
 
     INPUTS = {
         "u": Port("N", "force pushing outward on what port P is joined to", default=0.0),
+        "B": Port("N*s/m", "damping behind the source, to ground (F = u - B v)", default=0.0),
         "x": Port("m", "outward displacement of port P", default=0.0),
         "v": Port("m/s", "outward velocity of port P", default=0.0),
     }
@@ -213,7 +280,7 @@ class ForceSource(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        return {"F": u["u"]}
+        return {"F": u["u"] - u["B"] * u["v"]}
 
 
 @register

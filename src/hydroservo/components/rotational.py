@@ -119,6 +119,11 @@ class TorqueSource(ForceSource):
     MECHANICAL = {"P": Mechanical("x", "v", "F", "where the torque acts (outward)", kind="rotational")}
     OUTPUTS = {"F": Output("N*m", "torque on what port P is joined to, outward")}
 
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"F": u["u"]}  # no damping behind it (ForceSource's input B)
+
 
 @register
 class AngularVelocitySource(VelocitySource):

@@ -409,3 +409,64 @@ class Table2D(Component):
         for j in range(self.cols.size):
             y = y + bk.interp(u["col"], self.cols, unit[j]) * bk.interp(u["row"], self.rows, self.table_values[:, j])
         return {"y": p["scale"] * y}
+
+
+@register
+class Table3D(Component):
+    r"""A lookup table of three inputs, trilinear between its breakpoints and held at its edges outside them:
+    Hopsan's Signal3DLookupTable ([Hopsan2026] Signal/Non-Linearities/Signal3DLookupTable.hpp, its
+    LookupTable3D's interpolation), Table2D's law with a third index.
+
+    ``rows``, ``cols`` and ``planes`` (the breakpoints of inputs ``row``, ``col`` and ``plane``) are strictly
+    increasing; ``values`` is the array of ``len(rows)`` by ``len(cols)`` by ``len(planes)`` values,
+    :math:`V_{ijk}` at (rows_i, cols_j, planes_k). Each input is first held within its breakpoints; then
+    :math:`y = \sum_{jk} h_j(c)\, h_k(q)\, f_{jk}(r)`, :math:`f_{jk}` the line (j, k) interpolated in r and
+    :math:`h` the piecewise-linear hats of the breakpoints (multilinear interpolation, whatever the order of the
+    axes).
+    """
+
+    PARAMETERS = {"scale": Param(1.0, "", "factor applied to the values")}
+    INPUTS = {
+        "row": Port("", "the first index (along rows)"),
+        "col": Port("", "the second index (along cols)"),
+        "plane": Port("", "the third index (along planes)"),
+    }
+    OUTPUTS = SIGNAL_OUTPUT
+
+    def __init__(
+        self, name: str, rows: Any = None, cols: Any = None, planes: Any = None, values: Any = None, **params: Any
+    ) -> None:
+        super().__init__(name, **params)
+        if rows is None or cols is None or planes is None or values is None:
+            raise ParameterError(f"{name}: a Table3D needs rows, cols, planes and values")
+        axes = [np.asarray(a, dtype=float).ravel() for a in (rows, cols, planes)]
+        v = np.asarray(values, dtype=float)
+        shape = tuple(a.size for a in axes)
+        if min(shape) < 2 or v.shape != shape:
+            raise ParameterError(
+                f"{name}: expected at least two rows, cols and planes and values of {shape[0]} by {shape[1]} by "
+                f"{shape[2]}; got values of shape {v.shape}"
+            )
+        for what, index in zip(("rows", "cols", "planes"), axes, strict=True):
+            if np.any(np.diff(index) <= 0) or not np.all(np.isfinite(index)):
+                raise ParameterError(f"{name}.{what}: expected strictly increasing breakpoints")
+        if not np.all(np.isfinite(v)):
+            raise ParameterError(f"{name}.values: expected finite numbers")
+        self.rows, self.cols, self.planes = axes
+        self.table_values = v
+
+    def config(self) -> dict[str, Any]:
+        return {"rows": self.rows.tolist(), "cols": self.cols.tolist(), "planes": self.planes.tolist(),
+                "values": self.table_values.tolist()}
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        hat_c, hat_q = np.eye(self.cols.size), np.eye(self.planes.size)
+        y = 0.0
+        for k in range(self.planes.size):
+            weight_k = bk.interp(u["plane"], self.planes, hat_q[k])
+            for j in range(self.cols.size):
+                line = bk.interp(u["row"], self.rows, self.table_values[:, j, k])
+                y = y + weight_k * bk.interp(u["col"], self.cols, hat_c[j]) * line
+        return {"y": p["scale"] * y}

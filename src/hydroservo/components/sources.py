@@ -8,7 +8,18 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
-from hydroservo.components.base import Component, Hydraulic, Limit, Output, Param, Port, register
+from hydroservo.components.base import (
+    Algebraic,
+    Component,
+    Hydraulic,
+    Limit,
+    Option,
+    Output,
+    Param,
+    Port,
+    State,
+    register,
+)
 from hydroservo.errors import ParameterError
 from hydroservo.units import VACUUM, to_si
 
@@ -122,11 +133,21 @@ class FlowSource(Component):
         return {"Q": p["q"] + u["u"]}
 
 
+#: the time constant [s] with which a PressureSource behind a resistance follows its pressure (its solver's guess)
+_GUESS_TAU = 1e-6
+
+
 @register
 class PressureSource(Component):
     """A pressure set by a signal: its port ``P`` holds ``p0 + u`` whatever flow it takes (Hopsan's
     HydraulicPressureSourceC with its pressure driven, [Hopsan2026]; a signal of absolute pressure takes
-    ``p0 = "0 Pa_abs"``)."""
+    ``p0 = "0 Pa_abs"``).
+
+    Option ``impedance``: ``"none"`` (the default), an ideal source; ``"input"``, the source behind a linear
+    resistance given by the input ``Z``: p = p0 + u - Z Q, Q the flow it delivers (Hopsan's HydraulicCSource,
+    [Hopsan2026] Hydraulic/Sources&Sinks/HydraulicCSource.hpp, whose wave variable and impedance are its
+    inputs). The flow depends on the pressure it meets, so the pressure is then an algebraic unknown, solved
+    with the flows of the node each time the model is evaluated (:mod:`hydroservo.system.implicit`)."""
 
     PARAMETERS = {"p0": Param(0.0, "Pa", "pressure added to the signal (gauge)", min=VACUUM)}
     INPUTS = {
@@ -136,8 +157,43 @@ class PressureSource(Component):
     OUTPUTS = {"p": Output("Pa", "pressure")}
     LIMITS = {"p": Limit("source")}
     HYDRAULIC = {"P": Hydraulic("p", "Q", "pressure port", into=False)}
+    OPTIONS = {"impedance": Option("none", ("none", "input"), "an ideal source, or one behind the resistance Z")}
+
+    def options_changed(self) -> None:
+        """Behind a resistance, an input ``Z`` and the pressure an algebraic unknown."""
+        behind = self.option("impedance") == "input"
+        inputs = dict(type(self).INPUTS)
+        if behind:
+            inputs["Z"] = Port("Pa*s/m^3", "resistance the source stands behind (option impedance = input)",
+                               default=0.0)
+        self.INPUTS = inputs  # type: ignore[misc]
+        self.ALGEBRAIC = (  # type: ignore[misc]
+            {"p": Algebraic("Pa", "pressure at port P (option impedance = input)", nominal=1e7)} if behind else {}
+        )
+        self.STATES = (  # type: ignore[misc]
+            {"p_f": State("Pa", "the pressure followed within 1 µs: the first guess of its solution", nominal=1e7)}
+            if behind else {}
+        )
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
+        if self.option("impedance") == "input":  # reads no input: the node's flow enters through the residual
+            return {"p": x["p"]}
         return {"p": p["p0"] + u["u"]}
+
+    def residual_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        if self.option("impedance") == "input":
+            return {"p": x["p"] - (p["p0"] + u["u"] - u["Z"] * u["Q"])}
+        return {}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"p_f": (x["p"] - x["p_f"]) / _GUESS_TAU} if self.option("impedance") == "input" else {}
+
+    def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        # where the pressure was a microsecond ago: Newton's steps start next to the solution
+        return {"p": x["p_f"]} if self.option("impedance") == "input" else {}

@@ -93,6 +93,8 @@ class Mapped:
     flow: dict[str, str] = field(default_factory=dict)
     #: further variables a read port reads (a power sensor's pressure and flow), as ``read``'s entries
     read_also: dict[str, list[tuple[str, str]]] = field(default_factory=dict)
+    #: Hopsan ports left unmapped on purpose -> why (named when a block reads one; a scope showing one is dropped)
+    unmapped: dict[str, str] = field(default_factory=dict)
 
 
 class _Params:
@@ -165,7 +167,7 @@ C_TYPES = frozenset({
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
     "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicFourChamberPiston", "HydraulicTLMlossless",
-    "HydraulicHose", "HydraulicPumpPiston",
+    "HydraulicHose", "HydraulicPumpPiston", "HydraulicCSource", "MechanicTranslationalCSource",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -1674,6 +1676,61 @@ def _velocity_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"Pm1": f"{n}.P"}, inputs={"v": f"{n}.u"})
 
 
+def _mechanic_c_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalCSource.hpp: a C component that writes its inputs as its
+    node's wave variable and impedance, c = in_c, Z_x = in_z, so that the Q component joined to it feels
+    f = c + Z_x v (v its velocity towards the source): a force c behind a damper of coefficient Z_x to ground, a
+    ForceSource with its input ``B`` = in_z (F = u - B v, v outward of the source). With in_z = 0 (its default)
+    it is MechanicForceTransformer's law."""
+    from hydroservo.components import ForceSource
+
+    if par("in_z", 0.0) < 0.0 and "in_z" not in par.driven:
+        par.problems.append(f"{par.where}: in_z = {par('in_z', 0.0):g} N s/m; only an impedance of at least 0 is "
+                            "supported")
+        return Mapped()
+    return Mapped([ForceSource(n)], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u", "in_z": f"{n}.B"})
+
+
+def _mechanic_q_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalQSource.hpp: a Q component that writes its inputs as its
+    node's force, velocity, position and equivalent mass, whatever the C component joined to it does. Hopsan's C
+    components read the velocity (a spring's waves c_1 = c_2 + 2 Z_c v_2) and the position (a cylinder's stops),
+    never the force: the source is a VelocitySource of ``in_v`` at the position ``in_x`` (option ``position =
+    "input"``, as MechanicVelocityTransformer's with its x connected). ``in_f`` is no more than the force Hopsan
+    logs at the node (the C component's own where the signal is consistent with it): a signal driving it is
+    refused, a constant only logged by Hopsan. ``in_em`` sets how stiff Hopsan's C components make their stops
+    for its step (m_e/T_s², a hard stop as the step vanishes): not used. ``in_x`` not driven while ``in_v`` is
+    driven, or not 0, is refused: Hopsan would write a fixed position for a moving node (its springs follow the
+    velocity, its cylinders' stops the position); connect in_x to the velocity's integral."""
+    from hydroservo.components import VelocitySource
+
+    if "in_f" in par.driven:
+        par.problems.append(f"{par.where}: in_f driven by a signal: Hopsan logs it as the node's force, which no C "
+                            "component reads; hydroservo's node force is the C component's, so in_f is not supported "
+                            "as a signal")
+    if "in_x" in par.driven:
+        return Mapped([VelocitySource(n, position="input")], power={"P1": f"{n}.P"},
+                      inputs={"in_v": f"{n}.u", "in_x": f"{n}.x_in"})
+    if "in_v" in par.driven or par("in_v", 0.0) != 0.0:
+        par.problems.append(f"{par.where}: in_v moves the node while in_x holds it at {par('in_x', 0.0):g} m (Hopsan "
+                            "writes both: its springs follow the velocity, its cylinders' stops the position); "
+                            "connect in_x to the velocity's integral")
+        return Mapped()
+    return Mapped([VelocitySource(n, x0=par("in_x", 0.0))], power={"P1": f"{n}.P"}, inputs={"in_v": f"{n}.u"})
+
+
+def _lossless_link(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Mechanic/Linear/MechanicTranslationalLosslessConnector.hpp: a Q component between two C
+    components, v_2 = (c_1 - c_2)/(Z_1 + Z_2), v_1 = -v_2, x_1 = L - x_2 (L the sum of its ports' start positions),
+    whose forces f_i = c_i + Z_i v_i are equal at every step: a massless rigid link, a RigidLink of that length
+    (its position solved so that its two forces balance, its velocity that position's rate within 1 µs, as the
+    Wall's free end), starting at P2's start position."""
+    from hydroservo.components import RigidLink
+
+    x1, x2 = par.start("P1", "Position"), par.start("P2", "Position")
+    return Mapped([RigidLink(n, length=x1 + x2, x0=x2)], power={"P1": f"{n}.P1", "P2": f"{n}.P2"})
+
+
 def _sensor(variable: str, unit: str) -> Builder:
     """Hopsan's sensors of a node's ``variable``: a Sum reading it (fed when the node is known), its output Hopsan's
     ``out``."""
@@ -1835,6 +1892,67 @@ def _hose(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                 f_max=segments / (10.0 * delay), p_init=_abs(p_init if p_init is not None else 1e5), **wall)
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"},
                   note=f"Line {n} ({segments} segments{', viscous wall' if wall else ''})")
+
+def _c_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicCSource.hpp: a C component that writes its inputs as its
+    node's wave variable and impedance, c = in_c, Z_c = in_z, so that the Q component joined to it sees
+    p = c + Z_c q (q the flow into the source): a pressure source c behind a linear resistance Z_c, a
+    PressureSource with ``impedance = "input"`` (p = u - Z Q, Q the flow it delivers; its pressure solved with
+    the node's flows), ``in_c`` (absolute) into ``u``, ``in_z`` into ``Z``. With Z_c = 0 (its default, and not
+    driven) an ideal pressure source: a Tank at ``in_c``, or a PressureSource following the signal driving it."""
+    from hydroservo.components import PressureSource, Tank
+
+    if "in_z" in par.driven or par("in_z", 0.0) != 0.0:
+        comp = PressureSource(n, p0="0 Pa_abs", impedance="input")
+        return Mapped([comp], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u", "in_z": f"{n}.Z"})
+    if "in_c" in par.driven:
+        return Mapped([PressureSource(n, p0="0 Pa_abs")], power={"P1": f"{n}.P"}, inputs={"in_c": f"{n}.u"})
+    return Mapped([Tank(n, p=_abs(par("in_c", 0.0)))], power={"P1": f"{n}.P"})
+
+
+def _q_source(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Sources&Sinks/HydraulicQSource.hpp: a Q component that writes its inputs as its
+    node's pressure and flow, p = in_p, q = in_q, whatever the wave variable of the C component joined to it.
+    Hopsan's C components read only the flow (a volume's waves c_1 = c_2 + 2 Z_c q_2; a tank reads nothing), so
+    the source is a flow source of ``in_q`` into the C component (a FlowSource), and ``in_p`` is no more than
+    the pressure Hopsan logs at the node: the C component's own pressure where the signal is consistent with it
+    (p = c + Z_c q, as an external model coupled through the node computes it), any other number where not.
+    hydroservo's node pressure is the C component's: a signal driving ``in_p`` is refused (a constant is what
+    Hopsan logs there, not used)."""
+    from hydroservo.components import FlowSource
+
+    if "in_p" in par.driven:
+        par.problems.append(
+            f"{par.where}: in_p driven by a signal: Hopsan logs it as the node's pressure, which no C component "
+            "reads (the volume joined to it takes the flow in_q); hydroservo's node pressure is the C component's, "
+            "so in_p is not supported as a signal")
+    return Mapped([FlowSource(n, q=0.0)], power={"P1": f"{n}.P"}, inputs={"in_q": f"{n}.u"},
+                  note=f"FlowSource {n} (in_q; in_p = {par('in_p', 0.0):g} Pa only logged by Hopsan)")
+
+
+def _node_sensor(variables: tuple[tuple[str, str, str], ...], discretised: tuple[str, ...]) -> Builder:
+    """[Hopsan2026] Hydraulic/Sensors/HydraulicNodeSensor.hpp (outputs p, q) and Mechanic/Linear/
+    MechanicNodeSensor.hpp (out_f, out_v, out_x): each a Sum reading its node's variable, as the single sensors'
+    (``{n}_<output>``; pressures absolute, as Hopsan's). Their other outputs, the node's wave variable, impedance
+    and equivalent mass (c, Zc; out_c, out_z, out_em), are quantities of Hopsan's discretisation (a volume's
+    Z_c = β T_s/V vanishes with the step, the equivalent mass sets how stiff Hopsan makes its stops for its
+    step) and are not mapped: a scope showing them is dropped, a block reading them refused."""
+
+    def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+        from hydroservo.components import Sum
+
+        comps: list[cbase.Component] = [Sum(f"{n}_{out}", unit=unit, gain2=0.0) for out, _, unit in variables]
+        (first, var, _), rest = variables[0], variables[1:]
+        why = ("a quantity of Hopsan's discretisation (a node's wave variable, impedance or equivalent mass: a "
+               "volume's impedance beta Ts/V vanishes with the step), which hydroservo's model has not")
+        return Mapped(
+            comps, read={"P1": (f"{n}_{first}.u1", var)},
+            read_also={"P1": [(f"{n}_{out}.u1", v) for out, v, _ in rest]},
+            outputs={out: f"{n}_{out}.y" for out, _, _ in variables},
+            unmapped={port: why for port in discretised},
+        )
+
+    return build
 
 
 # -- mechanic, rotational -------------------------------------------------------------------------------------
@@ -2944,6 +3062,41 @@ def _lookup_table_2d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
                   note=f"Table2D {n}, {r.size} x {c.size} of {text and 'its text' or repr(filename)}")
 
 
+def _lookup_table_3d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """Signal3DLookupTable (Signal/Non-Linearities/Signal3DLookupTable.hpp): a Table3D of its inputs ``row``,
+    ``col`` and ``plane``, trilinear and held at its edges as Hopsan's LookupTable3D, its table read at import from
+    the CSV file ``filename`` (or the text ``text``) as Hopsan reads it
+    (:func:`hydroservo.io.tables.parse_lookup_table_3d`), the file only inside the model file's folder, as
+    Signal2DLookupTable's; ``numlineskip`` ≠ 0 refused (Hopsan never hands it to its parser), ``reload`` moot."""
+    from hydroservo.components import Table3D
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.tables import parse_lookup_table_3d, read_lookup_table_3d
+
+    inputs, outputs = {"row": f"{n}.row", "col": f"{n}.col", "plane": f"{n}.plane"}, {"out": f"{n}.y"}
+    if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
+        zero = [[[0.0, 0.0], [0.0, 0.0]], [[0.0, 0.0], [0.0, 0.0]]]
+        return Mapped([Table3D(n, rows=[0.0, 1.0], cols=[0.0, 1.0], planes=[0.0, 1.0], values=zero)],
+                      inputs=inputs, outputs=outputs)
+    if par("numlineskip", 0.0) != 0.0:
+        par.problems.append(f"{par.where}: numlineskip = {par('numlineskip', 0.0):g}: Hopsan's 3D lookup table never "
+                            "skips lines (it does not pass numlineskip to its parser); remove the lines or use comment")
+        return Mapped()
+    comment = par.text("comment", "")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            r, c, q, v = parse_lookup_table_3d(par.text("text"), comment, what=f"{par.where}: text")
+        else:
+            file = _table_file(par, par.folder, filename)
+            r, c, q, v = read_lookup_table_3d(file, comment, what=f"{par.where}: filename")
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return Mapped()
+    comp = Table3D(n, rows=r, cols=c, planes=q, values=v)
+    return Mapped([comp], inputs=inputs, outputs=outputs,
+                  note=f"Table3D {n}, {r.size} x {c.size} x {q.size} of {text and 'its text' or repr(filename)}")
+
+
 def _unit_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """SignalUnitDelay (Signal/Non-Linearities/SignalUnitDelay.hpp): its output is its input one step late,
     which vanishes as the step does: in the limit it passes its input on (a Gain of 1). In Hopsan it breaks
@@ -3395,7 +3548,35 @@ LIBRARY: dict[str, Builder] = {
     "SignalCounter": _counter,
     "Signal1DPLOLookupTable": _plo_lookup_table,
     "Signal2DLookupTable": _lookup_table_2d,
+    "HydraulicCSource": _c_source,
+    "HydraulicQSource": _q_source,
+    "MechanicTranslationalCSource": _mechanic_c_source,
+    "MechanicTranslationalQSource": _mechanic_q_source,
+    "HydraulicNodeSensor": _node_sensor((("p", "Pressure", "Pa"), ("q", "Flow", "m^3/s")), ("c", "Zc")),
+    "Signal3DLookupTable": _lookup_table_3d,
+    "MechanicTranslationalLosslessConnector": _lossless_link,
+    "MechanicNodeSensor": _node_sensor(
+        (("out_f", "Force", "N"), ("out_v", "Velocity", "m/s"), ("out_x", "Position", "m")), ("out_c", "out_z", "out_em")
+    ),
 }
+
+#: the mission-logic families of Hopsan's signal library, refused (:data:`REFUSED`)
+_FFB_REASON = (
+    "a function-flow block (Signal/SignalFFB/) is a state machine stepped once per Hopsan step: it detects an "
+    "edge of its inputs as their change from the previous step and answers with 'exiting' pulses one step long "
+    "(exiting = oldState onPositive(exit - oldExit - 0.5)), which vanish as the step does, so it has no limit "
+    "as the step vanishes"
+)
+_ACTIVITY_REASON = (
+    "an activity-diagram block (Signal/ActivityDiagram/) passes tokens over Hopsan's Petri-net nodes "
+    "(NodePetriNet), one transition per Hopsan step from its previous step's state: a discrete state machine with "
+    "no limit as the step vanishes, on a kind of node hydroservo has not"
+)
+_NAVIGATION_REASON = (
+    "a flight-mission block (Signal/Navigation/: an aircraft's attitude and thrust-vector control, its earth "
+    "coordinates and a mission clock with time compression, waypoints, a monitor of the mission's states) made "
+    "to drive Hopsan's aeronautic models (Special/AeroComponents), which are outside hydroservo's physics"
+)
 
 #: Hopsan types refused on purpose, with why (named with the components of that type in the refusal)
 REFUSED: dict[str, str] = {
@@ -3433,6 +3614,21 @@ REFUSED: dict[str, str] = {
     "one kept): no power balance at Pmr2 (a spring there has negative stiffness). hydroservo's ports are "
     "power-conjugate, so it cannot reproduce that law, and the physical clutch (T1 limited to tmax by slip, "
     "which is sound) would run opposite to Hopsan's result; myfric and wc are in none of its equations",
+    "SignalSampleAndHold": "its output jumps to its input's value at each sampling instant k/f_s and holds it "
+    "(Signal/Non-Linearities/SignalSampleAndHold.hpp; in the limit y(t) = u(floor(t f_s)/f_s)): a state that "
+    "jumps, which hydroservo's engine does not do (its events end a step at a switch, they reset no state), and a "
+    "fast relaxation onto the input would not be Hopsan's law",
+    **{name: _FFB_REASON for name in (
+        "SignalFFB", "SignalFFBand", "SignalFFBandIn", "SignalFFBloop", "SignalFFBloopIn", "SignalFFBor",
+        "SignalFFBorIn",
+    )},
+    **{f"ActivityDiagram{name}": _ACTIVITY_REASON for name in (
+        "Action", "ActionN", "Connector", "Decision", "Edge", "Final", "FinalNode", "Fork", "ForkN",
+        "InitiateState", "Join", "Join0", "JoinN", "Merge", "Merge0", "MergeN",
+    )},
+    **{f"Signal{name}": _NAVIGATION_REASON for name in (
+        "AttitudeControl", "AttitudeTVCcontrol", "EarthCoordinates", "StateMonitor", "TimeAccelerator", "Waypoint",
+    )},
 }
 
 
@@ -3578,6 +3774,7 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
             problems.append(
                 f"{source}: connection {' – '.join(connection)}: {by_name[c].typename} {c!r} has no port {p!r} that "
                 f"hydroservo maps (its ports: {', '.join(known) or 'none'})"
+                + (f": {m_in.unmapped[p]}" if p in m_in.unmapped else "")
             )
         if unknown:
             continue

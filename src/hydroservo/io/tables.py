@@ -12,7 +12,7 @@ from hydroservo.io.files import csv_rows, read_text
 
 __all__ = [
     "read_time_table", "read_lookup_table", "parse_lookup_table", "read_plo_table", "parse_plo_table",
-    "read_lookup_table_2d", "parse_lookup_table_2d", "MAX_TABLE_BYTES",
+    "read_lookup_table_2d", "parse_lookup_table_2d", "read_lookup_table_3d", "parse_lookup_table_3d", "MAX_TABLE_BYTES",
 ]
 
 #: The largest lookup-table file read [bytes].
@@ -288,3 +288,68 @@ def parse_lookup_table_2d(text: str, comment: str = "", what: str = "table") -> 
                 "listed, which pairs them otherwise than the file does)"
             )
     return r, c, v
+
+
+def read_lookup_table_3d(
+    path: str | Path, comment: str = "", what: str = "table"
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Row, column and plane breakpoints and values from the CSV file ``path``, read as Hopsan reads a
+    three-dimensional lookup table (:func:`parse_lookup_table_3d`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    path = Path(path)
+    return parse_lookup_table_3d(_table_text(path, what), comment, f"{what}: {str(path)!r}")
+
+
+def parse_lookup_table_3d(
+    text: str, comment: str = "", what: str = "table"
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Row, column and plane breakpoints and the values (rows by columns by planes) of a three-dimensional lookup
+    table in CSV text, read as Hopsan's Signal3DLookupTable reads it ([Hopsan2026]
+    Signal/Non-Linearities/Signal3DLookupTable.hpp): four comma-separated fields per line (after the initial lines
+    starting with ``comment``), line (i nC + j) nP + k holding row i's breakpoint (read from j = k = 0), column
+    j's (read from i = 0, k = 0), plane k's (read from i = j = 0) and the value at (i, j, k); a last line gives
+    the numbers of rows, columns and planes (and a fourth field). The breakpoints must be listed strictly
+    increasing, at least two of each, as for the two-dimensional table (:func:`parse_lookup_table_2d`).
+
+    Raises
+    ------
+    ParameterError
+        Naming ``what`` and the line: a line of fewer than four fields or a field that is no finite number, a last
+        line that is no whole numbers, a count of lines other than nR nC nP + 1, breakpoints not strictly
+        increasing.
+
+    Examples
+    --------
+    >>> text = "0,0,0,1\\n0,0,1,2\\n0,1,0,3\\n0,1,1,4\\n1,0,0,5\\n1,0,1,6\\n1,1,0,7\\n1,1,1,8\\n2,2,2,0\\n"
+    >>> rows, cols, planes, v = parse_lookup_table_3d(text)
+    >>> v[1, 0, 1], v[0, 1, 0]
+    (np.float64(6.0), np.float64(3.0))
+    """
+    rows = _numeric_rows(text, (0, 1, 2, 3), ",", 0, comment, what)
+    if not rows:
+        raise ParameterError(f"{what}: no data")
+    number, last = rows[-1]
+    counts = last[:3]
+    if any(n != int(n) or n < 2 for n in counts):
+        raise ParameterError(
+            f"{what}, line {number}: {counts[0]:g} rows, {counts[1]:g} columns and {counts[2]:g} planes: expected "
+            "whole numbers, 2 or more (the last line gives the table's numbers of rows, columns and planes)"
+        )
+    nr, nc, nq = (int(n) for n in counts)
+    data = [row for _, row in rows[:-1]]
+    if len(data) != nr * nc * nq:
+        raise ParameterError(
+            f"{what}: {len(data)} lines of data where the last line announces {nr} x {nc} x {nq} = {nr * nc * nq}"
+        )
+    r = np.array([data[i * nc * nq][0] for i in range(nr)])
+    c = np.array([data[j * nq][1] for j in range(nc)])
+    q = np.array([data[k][2] for k in range(nq)])
+    v = np.array([row[3] for row in data]).reshape(nr, nc, nq)
+    for name, index in (("row", r), ("column", c), ("plane", q)):
+        down = np.flatnonzero(np.diff(index) <= 0)
+        if down.size:
+            raise ParameterError(
+                f"{what}: the {name} breakpoints {index[down[0]]:g}, {index[down[0] + 1]:g}: expected them strictly "
+                "increasing as listed (Hopsan sorts a 3D table's breakpoints but leaves its values in the order "
+                "listed, which pairs them otherwise than the file does)"
+            )
+    return r, c, q, v

@@ -215,3 +215,69 @@ def test_a_mass_with_coulomb_friction_sticks_below_its_static_force_and_slides_a
     r = s.simulate(t_eval=t, accuracy=1e-8)
     assert np.max(np.abs(r["stuck.x"])) < 1e-4 and np.max(np.abs(r["stuck.v"])) < 2e-5
     np.testing.assert_allclose(r["sliding.v"], 3.5 * (1.0 - np.exp(-t)), atol=2e-3)
+
+
+def test_a_force_source_behind_a_damper_drives_a_mass_to_its_terminal_velocity() -> None:
+    """ForceSource with its input B (Hopsan's MechanicTranslationalCSource, in_z = B): F = u - B v, so a mass m
+    it pushes with u from rest moves at (u/B)(1 - exp(-B t/m)); with B unconnected (0) the force is u whatever
+    the motion."""
+    u, b, m = 20.0, 5.0, 2.0
+    s = System("damped push")
+    s.add(c.ForceSource("f"))
+    s.add(c.Constant("U", unit="N", value=u))
+    s.add(c.Constant("Bc", unit="N*s/m", value=b))
+    s.add(c.Mass("m", m=m, B=0.0, incline=0.0))
+    s.connect("U.y", "f.u")
+    s.connect("Bc.y", "f.B")
+    s.connect("f.P", "m.P1")  # pushes end 1 in: the mass moves along +x
+    t = np.array([0.0, 0.3, 1.0, 3.0])
+    r = s.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["m.v"], u / b * (1.0 - np.exp(-b * t / m)), atol=1e-6)
+    np.testing.assert_allclose(r["f.F"], u * np.exp(-b * t / m), atol=1e-5)  # the damper takes B v of it
+
+
+def test_a_rigid_link_between_two_springs_sits_where_their_forces_balance() -> None:
+    """RigidLink (Hopsan's MechanicTranslationalLosslessConnector): massless, so the springs k1 and k2 on either
+    side carry one force; pulled at V by a velocity source through k1, with k2 to a fixed point, its end 2 moves
+    at k1 V/(k1 + k2) (its end 1 back at the same rate, from its length) and both springs carry the tension
+    k1 k2 V t/(k1 + k2)."""
+    k1, k2, vel = 3000.0, 1000.0, 0.2
+    s = System("series springs")
+    s.add(c.VelocitySource("pull"))
+    s.add(c.Constant("V", unit="m/s", value=-vel))  # the source's port moving inward: spring a's end outward
+    s.add(c.Spring("a", k_spring=k1))
+    s.add(c.RigidLink("link", length=0.3, x0=0.0))
+    s.add(c.Spring("b", k_spring=k2, e0=-0.3))  # relaxed at the start: the link's end 1 at 0.3 m outward
+    s.add(c.FixedPosition("g"))
+    s.connect("V.y", "pull.u")
+    s.connect("pull.P", "a.P1")
+    s.connect("a.P2", "link.P2")
+    s.connect("link.P1", "b.P1")
+    s.connect("b.P2", "g.P")
+    t = np.array([0.0, 0.5, 1.0])
+    r = s.simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["link.x"], k1 / (k1 + k2) * vel * t, atol=1e-9)
+    np.testing.assert_allclose(r["link.v"][1:], k1 / (k1 + k2) * vel, rtol=1e-6)
+    np.testing.assert_allclose(r["link.x_P1"], 0.3 - k1 / (k1 + k2) * vel * t, atol=1e-9)
+    np.testing.assert_allclose(r["a.F"], r["b.F"], atol=1e-6)  # one force through both
+    np.testing.assert_allclose(r["a.F"], k1 * k2 / (k1 + k2) * vel * t, rtol=1e-6, atol=1e-9)
+
+
+def test_a_pressure_source_behind_a_resistance_loses_z_q() -> None:
+    """PressureSource with option impedance = "input" (Hopsan's HydraulicCSource, its wave variable and impedance
+    inputs): p = u - Z Q. Into a laminar orifice G to a tank, Q = G p, so p = u/(1 + Z G), whatever Z does: here
+    Z steps from 1e9 to 3e9 Pa s/m³ at 0.5 s (p from u/2 to u/4)."""
+    s = System("behind a resistance")
+    s.add(c.PressureSource("src", impedance="input"))
+    s.add(c.Constant("U", unit="Pa", value=1e6))
+    s.add(c.Step("Zc", unit="Pa*s/m^3", offset=1e9, amplitude=2e9, t_step=0.5))
+    s.add(c.LaminarOrifice("o", G_lam=1e-9))
+    s.add(c.Tank("t"))
+    s.connect("U.y", "src.u")
+    s.connect("Zc.y", "src.Z")
+    s.connect("src.P", "o.A")
+    s.connect("o.B", "t.P")
+    r = s.simulate(t_eval=[0.0, 0.25, 0.75, 1.0])
+    np.testing.assert_allclose(r["src.p"], [5e5, 5e5, 2.5e5, 2.5e5], rtol=1e-9)
+    np.testing.assert_allclose(r["o.Q"], 1e-9 * r["src.p"], rtol=1e-9)
+    assert "Z" not in c.PressureSource("ideal").INPUTS  # an ideal source by default

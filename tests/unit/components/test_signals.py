@@ -123,3 +123,33 @@ def test_table2d_is_bilinear_between_its_breakpoints_and_held_outside() -> None:
         c.Table2D("T", rows=[0.0, 0.0, 1.0], cols=[0.0, 1.0], values=np.zeros((3, 2)))
     with pytest.raises(ParameterError, match="values of 2 by 2"):
         c.Table2D("T", rows=[0.0, 1.0], cols=[0.0, 1.0], values=np.zeros((3, 2)))
+
+
+def test_table3d_reproduces_a_multilinear_function_and_holds_its_inputs_outside() -> None:
+    """Table3D (Hopsan's Signal3DLookupTable): trilinear interpolation reproduces a multilinear function
+    f = 1 + 2r - 3c + 0.5q + rcq exactly between its breakpoints (unequally spaced: rows 0, 1, 3; cols -1, 2;
+    planes 0, 0.5, 2), and each input is held at its first or last breakpoint outside them."""
+    rows, cols, planes = np.array([0.0, 1.0, 3.0]), np.array([-1.0, 2.0]), np.array([0.0, 0.5, 2.0])
+
+    def f(r: np.ndarray, q_c: np.ndarray, q: np.ndarray) -> np.ndarray:
+        return 1.0 + 2.0 * r - 3.0 * q_c + 0.5 * q + r * q_c * q
+
+    V = f(*np.meshgrid(rows, cols, planes, indexing="ij"))
+    s = hs.System("t3", t_end=6.0)
+    s.add(c.Ramp("r", offset=-1.0, slope=1.0))
+    s.add(c.Ramp("q", offset=-2.0, slope=1.0))
+    s.add(c.Ramp("p", offset=-0.5, slope=0.5))
+    s.add(c.Table3D("T", rows=rows, cols=cols, planes=planes, values=V))
+    s.connect("r.y", "T.row")
+    s.connect("q.y", "T.col")
+    s.connect("p.y", "T.plane")
+    t = np.linspace(0.0, 6.0, 25)
+    r = s.simulate(t_eval=t)
+    expected = f(np.clip(t - 1.0, 0.0, 3.0), np.clip(t - 2.0, -1.0, 2.0), np.clip(0.5 * t - 0.5, 0.0, 2.0))
+    np.testing.assert_allclose(r["T.y"], expected, atol=1e-12)
+    from hydroservo.errors import ParameterError
+
+    with pytest.raises(ParameterError, match="T.planes: expected strictly increasing breakpoints"):
+        c.Table3D("T", rows=rows, cols=cols, planes=[0.0, 0.0, 1.0], values=V)
+    with pytest.raises(ParameterError, match="values of 3 by 2 by 2"):
+        c.Table3D("T", rows=rows, cols=cols, planes=[0.0, 1.0], values=V)

@@ -346,6 +346,153 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     assert compared >= 8
 
 
+#: Hopsan's logged variables of sources_sensors that are the Q sources' inputs in_p and in_f (0), not the node's
+#: physics: no C component reads them (hopsan_library._q_source, _mechanic_q_source)
+_LOGGED_INPUTS = ("QSource#P1#Pressure", "Volume#P2#Pressure", "MotionQ#P1#Force", "Spring#P2#Force")
+
+
+def test_tlm_sources_and_node_sensors_match_hopsan() -> None:
+    """HydraulicCSource (its wave variable a 10 bar level plus a sine, in_z = 0) feeding a volume through an
+    orifice, emptied and filled by a HydraulicQSource's sine-wave flow; another (20 bar behind a sine-wave
+    impedance in_z about 3e10 Pa s/m³) feeding a volume through an orifice and a leak; a MechanicTranslationalCSource (a sine
+    force behind in_z = 50 N s/m) pushing a mass on a spring whose far end a MechanicTranslationalQSource moves (a
+    sine velocity and its integral); node sensors on both. Every variable Hopsan logs agrees with its run
+    (hopsan_circuits/sources_sensors.csv) within 0.5 % of its range, but the pressure and force of the Q sources'
+    nodes: Hopsan logs their inputs in_p and in_f there (0 here), which no C component reads (its volume fills
+    with in_q, its spring follows in_v), where hydroservo gives the volume's pressure and the spring's force."""
+    imp = import_hopsan(CIRCUITS / "sources_sensors.hmf")
+    kinds = {hopsan: became for hopsan, _, became in imp.mapping}
+    assert kinds["CSource"] == "PressureSource CSource" and kinds["ForceC"] == "ForceSource ForceC"
+    assert imp.system["CSourceZ"].option("impedance") == "input"
+    assert kinds["MotionQ"] == "VelocitySource MotionQ"
+    assert imp.system.connections["ForceC.B"] == "ForceC_B.y" and imp.system["ForceC_B"].values["value"] == 50.0
+    columns = (CIRCUITS / "sources_sensors.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    ref = np.loadtxt(CIRCUITS / "sources_sensors.csv", delimiter=",", skiprows=1)
+    result = imp.system.simulate(t_eval=ref[:, 0])
+    by_hopsan = {hopsan: alias for alias, hopsan in imp.variables.items()}
+    compared = 0
+    for i, column in enumerate(columns[1:], start=1):
+        if column in _LOGGED_INPUTS:
+            assert np.all(ref[:, i] == 0.0), column  # Hopsan's in_p, in_f
+            assert np.ptp(result[by_hopsan[column]]) > 1.0, column  # the volume's pressure, the spring's force
+            continue
+        if column not in by_hopsan:
+            continue
+        y, y_ref = result[by_hopsan[column]], ref[:, i]
+        if column.endswith(("#Force", "#Flow", "#Value")):
+            y, y_ref = y[1:], y_ref[1:]
+        scale = max(float(np.ptp(y_ref)), 0.01 * float(np.max(np.abs(y_ref))), 1e-12)
+        assert np.max(np.abs(y - y_ref)) <= 0.005 * scale, column
+        compared += 1
+    assert compared >= 30
+
+
+def test_a_node_sensors_wave_variable_read_by_a_block_is_refused_with_why(tmp_path: Path) -> None:
+    """HydraulicNodeSensor's c and Zc (and MechanicNodeSensor's out_c, out_z, out_em) belong to Hopsan's
+    discretisation: shown in a scope they are dropped, read by a block the model is refused, saying why."""
+    components = [("HydraulicTankC", "T", {}), ("HydraulicFlowSourceQ", "Q", {}), ("HydraulicNodeSensor", "S", {}),
+                  ("SignalGain", "G", {}), ("SignalSink", "Scope", {})]
+    connections = [("Q.P1", "T.P1"), ("S.P1", "T.P1"), ("S.Zc", "Scope.in"), ("S.p", "G.in")]
+    path = tmp_path / "sensor.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    assert "S.p.Value" in import_hopsan(path).variables  # Zc on a scope: dropped
+    path.write_text(_hmf(components, [*connections[:3], ("S.c", "G.in")]), encoding="utf-8")  # c into the gain
+    with pytest.raises(ModelFileError, match=r"has no port 'c' that hydroservo maps .*: a quantity of Hopsan's "
+                       r"discretisation"):
+        read_hopsan(path)
+
+
+#: the node of lossless_link where Hopsan's link meets its force source: Hopsan's logged velocity there carries
+#: an undamped oscillation of its step
+_LINK_NODE_VELOCITY = ("Force#P1#Velocity", "Link#P1#Velocity", "Link#P2#Velocity", "Stiff#P1#Velocity")
+
+
+def test_mechanic_lossless_connector_matches_hopsan() -> None:
+    """MechanicTranslationalLosslessConnector as a RigidLink, twice: between a sine force (a C source of no
+    impedance) and a stiff spring on a damped mass, and between the spring on the mass's other side and a
+    spring to a wall. Every variable Hopsan logs agrees with its run (hopsan_circuits/lossless_link.csv) within
+    0.5 % of its range but the velocity of the first link's node: Hopsan's carries an undamped oscillation of
+    its step's period, of amplitude F'(0)/k (0.063 m/s: started at t = 0, where its link, at rest, must move at
+    F'/k at once), which its samples alias (a constant -0.063 m/s at 1e-6 s, +0.063, 0, -0.063, 0 in turn at
+    0.02/10001 s); hydroservo gives the link's velocity, the mass's plus the stiff spring's rate F'/k, which is
+    the mean of Hopsan's."""
+    imp = import_hopsan(CIRCUITS / "lossless_link.hmf")
+    assert imp.system["Link"].values["length"] == 0.0 and type(imp.system["Link2"]).__name__ == "RigidLink"
+    columns = (CIRCUITS / "lossless_link.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    ref = np.loadtxt(CIRCUITS / "lossless_link.csv", delimiter=",", skiprows=1)
+    t = ref[:, 0]
+    result = imp.system.simulate(t_eval=t)
+    by_hopsan = {hopsan: alias for alias, hopsan in imp.variables.items()}
+    rate = -ref[:, columns.index("Mass#P1#Velocity")] + 2 * np.pi * 100.0 * np.cos(2 * np.pi * t) / 1e4
+    compared = 0
+    for i, column in enumerate(columns[1:], start=1):
+        if column not in by_hopsan:
+            continue
+        y, y_ref = result[by_hopsan[column]], ref[:, i]
+        if column in _LINK_NODE_VELOCITY:
+            sign = 1.0 if column.startswith(("Link#P2", "Stiff#P1")) else -1.0  # end 2's node, or end 1's
+            np.testing.assert_allclose(y_ref[1:] - sign * rate[1:], -sign * 0.0628, atol=5e-4)  # Hopsan's offset
+            y_ref = sign * rate
+        if column.endswith(("#Force", "#Value")) or column in _LINK_NODE_VELOCITY:  # the link starts at rest
+            y, y_ref = y[1:], y_ref[1:]
+        scale = max(float(np.ptp(y_ref)), 0.01 * float(np.max(np.abs(y_ref))), 1e-12)
+        assert np.max(np.abs(y - y_ref)) <= 0.005 * scale, column
+        compared += 1
+    assert compared >= 40
+
+
+def test_3d_lookup_table_matches_hopsan_and_refuses_a_malformed_table(tmp_path: Path) -> None:
+    """Signal3DLookupTable, its table of 3 rows, 2 columns and 4 planes of unequal breakpoints and values that
+    no multilinear function gives (hopsan_circuits/table_3d_data.csv), read by three sines that leave its
+    breakpoints: the output agrees with Hopsan's run (hopsan_circuits/table_3d.csv) within 1e-6 of its range (the
+    values paired with the breakpoints as Hopsan pairs them); a table whose last line announces more lines than it
+    has is refused with the file named."""
+    imp = import_hopsan(CIRCUITS / "table_3d.hmf")
+    ref = np.loadtxt(CIRCUITS / "table_3d.csv", delimiter=",", skiprows=1)
+    column = (CIRCUITS / "table_3d.csv").read_text(encoding="utf-8").splitlines()[0].split(",").index("LUT3#out#Value")
+    result = imp.system.simulate(t_eval=ref[:, 0])
+    assert np.max(np.abs(result["LUT3.out.Value"] - ref[:, column])) <= 1e-6 * np.ptp(ref[:, column])
+    text = (CIRCUITS / "table_3d_data.csv").read_text(encoding="utf-8").replace("3,2,4,0", "3,2,5,0")
+    (tmp_path / "table_3d_data.csv").write_text(text, encoding="utf-8")
+    (tmp_path / "table_3d.hmf").write_text((CIRCUITS / "table_3d.hmf").read_text(encoding="utf-8"), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"LUT3 \(Signal3DLookupTable\): filename.*24 lines of data where the last "
+                       r"line announces 3 x 2 x 5 = 30"):
+        read_hopsan(tmp_path / "table_3d.hmf")
+
+
+@pytest.mark.parametrize(
+    ("kind", "params", "drive", "message"),
+    [
+        ("HydraulicQSource", {}, "in_p", r"in_p driven by a signal: Hopsan logs it as the node's pressure"),
+        ("MechanicTranslationalCSource", {"in_z#Value": ("-1", "")}, None, r"in_z = -1 N s/m; only an impedance"),
+        ("MechanicTranslationalQSource", {}, "in_f", r"in_f driven by a signal: Hopsan logs it as the node's force"),
+        ("MechanicTranslationalQSource", {}, "in_v", r"in_v moves the node while in_x holds it at 0 m"),
+        ("MechanicTranslationalQSource", {"in_v#Value": ("0.1", "")}, None, r"in_v moves the node"),
+    ],
+)
+def test_tlm_sources_refuse_what_they_cannot_honour(
+    tmp_path: Path, kind: str, params: dict, drive: str | None, message: str
+) -> None:
+    """A Q source's logged-only pressure or force driven by a signal, a mechanic C source's negative impedance,
+    and a mechanic Q source moving its node at a fixed position are refused, each with why; the same sources
+    without those settings import."""
+    neighbour = {  # the component joined to the source: a Q one to a C source, a C one to a Q source
+        "HydraulicCSource": ("HydraulicFlowSourceQ", "P1"), "HydraulicQSource": ("HydraulicTankC", "P1"),
+        "MechanicTranslationalCSource": ("MechanicFixedPosition", "Pm1"),
+        "MechanicTranslationalQSource": ("MechanicForceTransformer", "P1"),
+    }[kind]
+    components = [(kind, "S", params), (neighbour[0], "N", {}), ("SignalSineWave", "W", {})]
+    connections = [("S.P1", f"N.{neighbour[1]}")]
+    if drive is not None:
+        connections.append(("W.out", f"S.{drive}"))
+    path = tmp_path / "source.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=message):
+        read_hopsan(path)
+    path.write_text(_hmf([(kind, "S", {}), (neighbour[0], "N", {})], connections[:1]), encoding="utf-8")
+    assert read_hopsan(path).t_end == 3.0
+
+
 def _value(text: str, unit: str = "") -> tuple[str, str]:
     return (text, unit)
 
