@@ -47,10 +47,12 @@ class Sum(Component):
 
 @register
 class Product(Component):
-    """``y = u1 u2`` of dimensionless signals (an input left unconnected is 1)."""
+    """``y = u1 u2`` of dimensionless signals (an input left unconnected is 1).
+
+    ``unit`` names the product's unit where the factors carry theirs (a torque times a speed: ``unit="W"``)."""
 
     INPUTS = {"u1": Port("", "factor 1", default=1.0), "u2": Port("", "factor 2", default=1.0)}
-    OUTPUTS = {"y": Output("", "product")}
+    OUTPUTS = {"y": Output(SIGNAL, "product")}
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]

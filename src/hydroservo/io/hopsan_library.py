@@ -2517,7 +2517,7 @@ def _centrifugal_pump_j(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         **_centrifugal_parameters(par),
     )
     return Mapped(
-        [comp, Sum(f"{n}_torque", unit="N*m", gain2=0.0), Product(f"{n}_Pin")],
+        [comp, Sum(f"{n}_torque", unit="N*m", gain2=0.0), Product(f"{n}_Pin", unit="W")],
         power={"P1": f"{n}.P1", "P2": f"{n}.P2", "Pmr1": f"{n}.Pmr1"},
         read={"Pmr1": (f"{n}_torque.u1", "Torque")},
         internal=[(f"{n}_torque.y", f"{n}_Pin.u1"), (f"{n}.omega", f"{n}_Pin.u2")],
