@@ -61,7 +61,7 @@ def plot_result(
         for n, unit, label in zip(panel, drawn, named):
             ax.plot(result.t, result.get(n, unit), label=label)
         shown = [si_unit(u) for u in drawn]
-        ax.set_ylabel(_axis_label(panel, result.descriptions, " / ".join(dict.fromkeys(shown))), fontsize="small")
+        ax.set_ylabel(_axis_label(panel, result.descriptions, " / ".join(dict.fromkeys(shown)), drawn[0]), fontsize="small")
         if beside:
             ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="x-small", framealpha=0.8)
         else:
@@ -88,16 +88,18 @@ def _curve_label(name: str, descriptions: dict[str, str]) -> str:
     return name if not described or letters in re.sub(r"\W|_", "", described) else f"{name}: {described}"
 
 
-def _axis_label(panel: list[str], descriptions: dict[str, str], unit: str) -> str:
+def _axis_label(panel: list[str], descriptions: dict[str, str], unit: str, drawn: str | None = None) -> str:
     """``"p1, p2 [Pa]"``; for a panel whose names would not fit beside the axis, what its signals have in common
-    (``"pressure [Pa]"``: their description, else their quantity) or how many they are: the legend names them."""
+    (``"pressure [Pa]"``: their description, else the quantity of ``drawn``, the unit they are drawn in) or how
+    many they are: the legend names them."""
     import textwrap
 
     names = ", ".join(panel)
-    if len(names) > _LABEL_CHARS:
+    if len(f"{names} [{unit}]") > _LABEL_CHARS:
         described = {descriptions.get(n, "") for n in panel}
         common = described.pop() if len(panel) > 1 and len(described) == 1 and "" not in described else None
-        names = common or _quantity(unit) or (f"{len(panel)} signals" if len(panel) > 1 else "signal")
+        quantity = _quantity(unit if drawn is None else drawn)
+        names = common or quantity or (f"{len(panel)} signals" if len(panel) > 1 else "signal")
     return textwrap.fill(f"{names} [{unit}]", _LABEL_CHARS)
 
 
@@ -112,10 +114,7 @@ def _quantity(unit: str) -> str | None:
 
     if not unit or unit == "-":
         return None
-    for name in _QUANTITY_NAMES:
-        try:
-            if same_dimension(QUANTITIES[name], unit):
-                return name
-        except Exception:  # a unit pint does not know: no quantity
-            return None
-    return None
+    try:
+        return next((name for name in _QUANTITY_NAMES if same_dimension(QUANTITIES[name], unit)), None)
+    except Exception:  # a unit pint does not know: no quantity
+        return None

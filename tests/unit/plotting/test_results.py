@@ -17,6 +17,10 @@ def test_an_axis_is_labelled_by_its_names_or_by_what_they_measure() -> None:
     assert _axis_label(["cyl.pA", "cyl.pB"], {}, "MPa") == "cyl.pA, cyl.pB [MPa]"
     assert _axis_label(["Pressure_Transducer.out.Value"], {}, "Pa_abs") == "pressure [Pa_abs]"
     assert _axis_label(["Cylinder_block.P2.AngularVelocity"], {}, "rad/s") == "speed [rad/s]"
+    # the quantity of the unit the signals are drawn in, shown as it is printed
+    assert _axis_label(["Torque_Transducer.out.Value", "Torque_Transducer_1.out.Value"], {}, "m·N", "N*m") == (
+        "torque [m·N]")
+    assert _axis_label(["Centrifugal_Pump_J.Pin.Value"], {}, "W", "W") == "power [W]"
     assert _axis_label(["Calculation.lp1.out.Value", "Calculation.lp2.out.Value"], {}, "-") == "2 signals [-]"
     assert _axis_label(["Calculation_of_efficiencies.lp1.out.Value"], {}, "-") == "signal [-]"
 
