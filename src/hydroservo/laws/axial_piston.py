@@ -155,7 +155,7 @@ def valve_plate_opening(
     R_f : array_like
         Radius of the groove's centre line [m].
     periodic : bool
-        The same plate every turn (default), or Hopsan's measure of the angle (not periodic: above).
+        The same plate every turn (default), or Hopsan's measure of the angle (not periodic: above) [-].
 
     Returns
     -------

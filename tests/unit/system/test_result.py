@@ -112,13 +112,13 @@ def test_a_result_file_keeps_temperatures_in_degc(tmp_path) -> None:
 
 
 def test_a_panel_of_many_long_names_is_labelled_by_what_they_are() -> None:
-    """The names of a panel label its axis while they fit (the legend names them too); past 40 characters the
-    axis says what they have in common, or how many they are, and a single long name is broken over lines."""
+    """The names of a panel label its axis while they fit beside it (the legend names them too); past that the
+    axis says what they have in common: their description, else their quantity, else how many they are."""
     from hydroservo.plotting.results import _axis_label
 
     assert _axis_label(["p1", "p2"], {}, "Pa") == "p1, p2 [Pa]"
     many = [f"Hydraulic_Volume_{k}.p" for k in range(6)]
-    assert _axis_label(many, dict.fromkeys(many, "pressure"), "Pa") == "pressure [Pa]"
-    assert _axis_label(many, {many[0]: "pressure"}, "Pa") == "6 signals [Pa]"
-    long = "c_4_3_Servo_Valve_with_Load_Sensing_Port_1_spool.xv"
-    assert all(len(line) <= 40 for line in _axis_label([long], {}, "m").splitlines())
+    assert _axis_label(many, dict.fromkeys(many, "pressure in a volume"), "Pa") == "pressure in a volume [Pa]"
+    assert _axis_label(many, {many[0]: "pressure"}, "Pa") == "pressure [Pa]"
+    assert _axis_label(many, {}, "-") == "6 signals [-]"
+    assert _axis_label(["c_4_3_Servo_Valve_with_Load_Sensing_Port_1_spool.xv"], {}, "m") == "position [m]"
