@@ -67,8 +67,34 @@ def _swash_plate_declarations(n: int) -> dict[str, Any]:
     }
 
 
+class _PerPiston(Component):
+    """A machine part with a port per piston: its declarations made for their count, ``pistons``, in the
+    constructor (a structural choice, as a line's segments are)."""
+
+    @staticmethod
+    def _declarations(n: int) -> dict[str, Any]:
+        raise NotImplementedError
+
+    def __init__(self, name: str, pistons: int = 9, **values: Any) -> None:
+        self._pistons = _count(name, pistons)
+        for key, value in self._declarations(self._pistons).items():
+            setattr(self, key, value)
+        super().__init__(name, **values)
+
+    @property
+    def pistons(self) -> int:
+        """Number of pistons (set in the constructor)."""
+        return self._pistons
+
+    def structure_key(self) -> tuple[Any, ...]:
+        return (self._pistons,)
+
+    def config(self) -> dict[str, Any]:
+        return {"pistons": self._pistons}
+
+
 @register
-class SwashPlate(Component):
+class SwashPlate(_PerPiston):
     r"""A cylinder block turning on its shaft, its ``pistons`` N pistons' feet stroked by a swash plate.
 
     .. math:: J\,\dot\omega = T - B_{rot}\,\omega + \sum_{k=1}^{N} F_k\,\frac{\partial x_k}{\partial\theta},
@@ -108,22 +134,7 @@ class SwashPlate(Component):
     MECHANICAL = _swash_plate_declarations(9)["MECHANICAL"]
     OUTPUTS = _swash_plate_declarations(9)["OUTPUTS"]
 
-    def __init__(self, name: str, pistons: int = 9, **values: Any) -> None:
-        self._pistons = _count(name, pistons)
-        for key, value in _swash_plate_declarations(self._pistons).items():
-            setattr(self, key, value)
-        super().__init__(name, **values)
-
-    @property
-    def pistons(self) -> int:
-        """Number of pistons (set in the constructor)."""
-        return self._pistons
-
-    def structure_key(self) -> tuple[Any, ...]:
-        return (self._pistons,)
-
-    def config(self) -> dict[str, Any]:
-        return {"pistons": self._pistons}
+    _declarations = staticmethod(_swash_plate_declarations)
 
     def _phase(self, k: int, p: Mapping[str, Any]) -> Any:
         return p["theta_offset"] + 2.0 * math.pi * (k - 1) / self._pistons
@@ -251,7 +262,7 @@ def _valve_plate_declarations(n: int) -> dict[str, Any]:
 
 
 @register
-class ValvePlate(Component):
+class ValvePlate(_PerPiston):
     r"""The valve plate of an axial piston machine: its two kidney ports, and the ``pistons`` N bores passing them.
 
     The block's angle relative to the plate, :math:`\theta` (state ``theta``), is the integral of its angular
@@ -298,22 +309,7 @@ class ValvePlate(Component):
     HYDRAULIC = _valve_plate_declarations(9)["HYDRAULIC"]
     OUTPUTS = _valve_plate_declarations(9)["OUTPUTS"]
 
-    def __init__(self, name: str, pistons: int = 9, **values: Any) -> None:
-        self._pistons = _count(name, pistons)
-        for key, value in _valve_plate_declarations(self._pistons).items():
-            setattr(self, key, value)
-        super().__init__(name, **values)
-
-    @property
-    def pistons(self) -> int:
-        """Number of bores (set in the constructor)."""
-        return self._pistons
-
-    def structure_key(self) -> tuple[Any, ...]:
-        return (self._pistons,)
-
-    def config(self) -> dict[str, Any]:
-        return {"pistons": self._pistons}
+    _declarations = staticmethod(_valve_plate_declarations)
 
     def _openings(self, theta: Any, p: Mapping[str, Any]) -> dict[str, Any]:
         geometry = (p["phi_P"], p["Delta_alpha"], p["alpha_f"], p["phi_1"], p["phi_2"], p["theta_1"], p["theta_2"],
