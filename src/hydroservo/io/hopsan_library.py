@@ -3028,6 +3028,33 @@ def _plo_lookup_table(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _table_of_lines(par: _Params, parse: Any, read: Any, kind: str) -> tuple[Any, ...] | None:
+    """The table of a 2D or 3D lookup table, read as Hopsan reads it from its text ``text`` or, if none, the CSV
+    file ``filename`` (inside the model file's folder); None, a problem noted, if it cannot be. Hopsan never hands
+    ``numlineskip`` to these tables' parser (it reads every line): a value other than 0 is refused."""
+    from hydroservo.errors import HydroservoError
+
+    if par("numlineskip", 0.0) != 0.0:
+        par.problems.append(f"{par.where}: numlineskip = {par('numlineskip', 0.0):g}: Hopsan's {kind} lookup table "
+                            "never skips lines (it does not pass numlineskip to its parser); remove the lines or use "
+                            "comment")
+        return None
+    comment = par.text("comment", "")
+    text, filename = par.text("text").strip(), par.text("filename").strip()
+    try:
+        if text:
+            return tuple(parse(par.text("text"), comment, what=f"{par.where}: text"))
+        assert par.folder is not None  # its builder returned a probe's table without one
+        return tuple(read(_table_file(par, par.folder, filename), comment, what=f"{par.where}: filename"))
+    except HydroservoError as exc:
+        par.problems.append(str(exc))
+        return None
+
+
+def _table_origin(par: _Params) -> str:
+    return "its text" if par.text("text").strip() else repr(par.text("filename").strip())
+
+
 def _lookup_table_2d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """Signal2DLookupTable (Signal/Non-Linearities/Signal2DLookupTable.hpp): a Table2D of its inputs ``row`` and
     ``col``, bilinear and held at its edges as Hopsan's LookupTable2D, its table read at import from the CSV file
@@ -3035,31 +3062,18 @@ def _lookup_table_2d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     the file only inside the model file's folder, as Signal1DLookupTable's. Hopsan never hands ``numlineskip`` to
     its parser (it reads every line): a value other than 0 is refused; ``reload`` is moot."""
     from hydroservo.components import Table2D
-    from hydroservo.errors import HydroservoError
     from hydroservo.io.tables import parse_lookup_table_2d, read_lookup_table_2d
 
     inputs, outputs = {"row": f"{n}.row", "col": f"{n}.col"}, {"out": f"{n}.y"}
     if par.folder is None:  # probed for its ports (_takes_as_input), outside an import: no file is read
         return Mapped([Table2D(n, rows=[0.0, 1.0], cols=[0.0, 1.0], values=[[0.0, 0.0], [0.0, 0.0]])], inputs=inputs,
                       outputs=outputs)
-    if par("numlineskip", 0.0) != 0.0:
-        par.problems.append(f"{par.where}: numlineskip = {par('numlineskip', 0.0):g}: Hopsan's 2D lookup table never "
-                            "skips lines (it does not pass numlineskip to its parser); remove the lines or use comment")
+    table = _table_of_lines(par, parse_lookup_table_2d, read_lookup_table_2d, "2D")
+    if table is None:
         return Mapped()
-    comment = par.text("comment", "")
-    text, filename = par.text("text").strip(), par.text("filename").strip()
-    try:
-        if text:
-            r, c, v = parse_lookup_table_2d(par.text("text"), comment, what=f"{par.where}: text")
-        else:
-            file = _table_file(par, par.folder, filename)
-            r, c, v = read_lookup_table_2d(file, comment, what=f"{par.where}: filename")
-    except HydroservoError as exc:
-        par.problems.append(str(exc))
-        return Mapped()
-    comp = Table2D(n, rows=r, cols=c, values=v)
-    return Mapped([comp], inputs=inputs, outputs=outputs,
-                  note=f"Table2D {n}, {r.size} x {c.size} of {text and 'its text' or repr(filename)}")
+    r, c, v = table
+    return Mapped([Table2D(n, rows=r, cols=c, values=v)], inputs=inputs, outputs=outputs,
+                  note=f"Table2D {n}, {r.size} x {c.size} of {_table_origin(par)}")
 
 
 def _lookup_table_3d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -3069,7 +3083,6 @@ def _lookup_table_3d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     (:func:`hydroservo.io.tables.parse_lookup_table_3d`), the file only inside the model file's folder, as
     Signal2DLookupTable's; ``numlineskip`` ≠ 0 refused (Hopsan never hands it to its parser), ``reload`` moot."""
     from hydroservo.components import Table3D
-    from hydroservo.errors import HydroservoError
     from hydroservo.io.tables import parse_lookup_table_3d, read_lookup_table_3d
 
     inputs, outputs = {"row": f"{n}.row", "col": f"{n}.col", "plane": f"{n}.plane"}, {"out": f"{n}.y"}
@@ -3077,24 +3090,12 @@ def _lookup_table_3d(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         zero = [[[0.0, 0.0], [0.0, 0.0]], [[0.0, 0.0], [0.0, 0.0]]]
         return Mapped([Table3D(n, rows=[0.0, 1.0], cols=[0.0, 1.0], planes=[0.0, 1.0], values=zero)],
                       inputs=inputs, outputs=outputs)
-    if par("numlineskip", 0.0) != 0.0:
-        par.problems.append(f"{par.where}: numlineskip = {par('numlineskip', 0.0):g}: Hopsan's 3D lookup table never "
-                            "skips lines (it does not pass numlineskip to its parser); remove the lines or use comment")
+    table = _table_of_lines(par, parse_lookup_table_3d, read_lookup_table_3d, "3D")
+    if table is None:
         return Mapped()
-    comment = par.text("comment", "")
-    text, filename = par.text("text").strip(), par.text("filename").strip()
-    try:
-        if text:
-            r, c, q, v = parse_lookup_table_3d(par.text("text"), comment, what=f"{par.where}: text")
-        else:
-            file = _table_file(par, par.folder, filename)
-            r, c, q, v = read_lookup_table_3d(file, comment, what=f"{par.where}: filename")
-    except HydroservoError as exc:
-        par.problems.append(str(exc))
-        return Mapped()
-    comp = Table3D(n, rows=r, cols=c, planes=q, values=v)
-    return Mapped([comp], inputs=inputs, outputs=outputs,
-                  note=f"Table3D {n}, {r.size} x {c.size} x {q.size} of {text and 'its text' or repr(filename)}")
+    r, c, q, v = table
+    return Mapped([Table3D(n, rows=r, cols=c, planes=q, values=v)], inputs=inputs, outputs=outputs,
+                  note=f"Table3D {n}, {r.size} x {c.size} x {q.size} of {_table_origin(par)}")
 
 
 def _unit_delay(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
