@@ -100,6 +100,7 @@ from hydroservo.components.sources import ConstantPressure, FlowSource, Pressure
 from hydroservo.components.spools import (
     FlapperNozzleSpool,
     SpoolFirstOrder,
+    SpoolOrificeDamped,
     SpoolRateLimited,
     SpoolSecondOrder,
     TorqueMotor,
@@ -195,6 +196,7 @@ __all__ = [
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",
+    "SpoolOrificeDamped",
     "TorqueMotor",
     "FlapperNozzleSpool",
     "Step",

@@ -1353,6 +1353,165 @@ def _directional_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mappe
     )
 
 
+# -- Hopsan's orifices with geometric parameters, its poppet and 3/3 shuttle valves ---------------------------
+
+
+def _geometric_orifice_inputs(par: _Params, names: tuple[str, ...]) -> bool:
+    """Whether the parameters ``names`` of a geometric orifice are all above 0 (a problem noted for each that is
+    not: Hopsan's law divides by them)."""
+    bad = [f"{name} = {par(name, 1.0):g}" for name in names if not par(name, 1.0) > 0.0]
+    if bad:
+        par.problems.append(f"{par.where}: {', '.join(bad)}; only values above 0 are supported")
+    return not bad
+
+
+def _orifice_g(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicOrificeG.hpp (ports P1, P2) and
+    Hydraulic/Special/HydraulicOrificeCheckValveG.hpp (ports Pp, Pc): Hopsan's equation, solved by Newton
+    iterations each step, is the algebraic flow q = 2 Δp/√((C_dt² L² μ² + 2 δ⁴ d_h⁴ ρ|Δp|)/(A_o² C_dt² δ⁴ d_h⁴))
+    with L = d_h + 32 δ² l_o (3 - s_f), i.e. Δp/√(R_lam² + R_turb²): the laminar resistance L μ/(2 A_o δ² d_h²)
+    and the turbulent √(ρ|Δp|/2)/(C_dt A_o) added in quadrature. An Orifice with ``law = "blend"`` (n_blend = 2),
+    k_lam = 2 δ² d_h²/(L μ), its bore of area A_o, C_d = C_dt. The check valve's law is the same with s_f = 0
+    and the area A_b for flow from Pp to Pc, A_o back (``d_back``); its dhb enters no equation of Hopsan's. The
+    outputs Ro, DRL and Cd (Reynolds number, discharge coefficient) are not aliased."""
+    from hydroservo.components import Orifice
+
+    check = hc.typename == "HydraulicOrificeCheckValveG"
+    d_h, ell = par("dh", 0.3 if check else 0.0025), par("lo", 0.001)
+    delta, mu = par("del", 0.02 if check else 0.157), par("visc", 0.12)
+    a_o, c_d = par("Ao", 0.0003 if check else 1e-7), par("Cdt", 0.67 if check else 0.611)
+    a_b = par("Ab", 0.0001)
+    shape = 0.0 if check else par("sf", 0.0)
+    names = ("Ao", "Ab", "dh", "del", "visc", "Cdt") if check else ("Ao", "dh", "del", "visc", "Cdt")
+    big_l = d_h + 32.0 * delta**2 * ell * (3.0 - shape)
+    ok = _geometric_orifice_inputs(par, names)
+    if c_d > 1.0:
+        par.problems.append(f"{par.where}: Cdt = {c_d:g}; a discharge coefficient in (0, 1] is supported")
+        ok = False
+    if big_l <= 0.0:
+        par.problems.append(f"{par.where}: dh + 32 del^2 lo (3 - sf) = {big_l:g} m is not above 0")
+        ok = False
+    if not ok:
+        return Mapped()
+    bore = math.sqrt(4.0 * (a_b if check else a_o) / math.pi)
+    comp = Orifice(
+        n,
+        law="blend",
+        d=bore,
+        d_back=math.sqrt(4.0 * a_o / math.pi) if check else 0.0,
+        Cd=c_d,
+        rho=par("rho", 870.0),
+        k_lam=2.0 * delta**2 * d_h**2 / (big_l * mu),
+        n_blend=2.0,
+    )
+    ports = ("Pp", "Pc") if check else ("P1", "P2")
+    return Mapped([comp], power={ports[0]: f"{n}.A", ports[1]: f"{n}.B"})
+
+
+def _slit_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicSlitOrifice.hpp: Hopsan's equation, solved by Newton iterations
+    each step, is the algebraic flow q = 8 Δp/((1024 A_o⁸ δ⁸ Δp² ρ² + C_d⁴ μ⁴ S_o⁴ M²)/(A_o¹² C_d⁴ δ⁸))^(1/4)
+    with M = A_o² + 64 δ⁴ l_o² (3 - s_f)² S_o² (its sum of three terms in μ⁴ is S_o⁴ M²), i.e.
+    Δp/(R_lam⁴ + R_turb⁴)^(1/4): the laminar resistance μ S_o √M/(8 A_o³ δ²) and the turbulent √(ρ|Δp|/2)/(C_d A_o)
+    added as a 4-norm. An Orifice with ``law = "blend"``, n_blend = 4, k_lam = 8 A_o² δ²/(μ S_o √M), its bore of
+    area A_o. The height b enters only Hopsan's output DRL; the outputs Ro, DRL and Cde are not aliased."""
+    from hydroservo.components import Orifice
+
+    a_o, s_o, ell = par("Ao", 1e-7), par("So", 0.002), par("lo", 0.001)
+    delta, mu, c_d = par("del", 0.157), par("visc", 0.12), par("Cd", 0.611)
+    if not _geometric_orifice_inputs(par, ("Ao", "So", "del", "visc", "Cd")):
+        return Mapped()
+    if c_d > 1.0:
+        par.problems.append(f"{par.where}: Cd = {c_d:g}; a discharge coefficient in (0, 1] is supported")
+        return Mapped()
+    big_m = a_o**2 + 64.0 * delta**4 * ell**2 * (3.0 - par("sf", 0.0)) ** 2 * s_o**2
+    comp = Orifice(
+        n,
+        law="blend",
+        d=math.sqrt(4.0 * a_o / math.pi),
+        Cd=c_d,
+        rho=par("rho", 870.0),
+        k_lam=8.0 * a_o**2 * delta**2 / (mu * s_o * math.sqrt(big_m)),
+        n_blend=4.0,
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _poppet_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/Hydraulic22PoppetValve.hpp: a massless poppet x in [0, x_vmax] (its limited
+    integrator, starting at xv_out) whose seat opens PS to PN as C_q π d_1 f x √(2/ρ) √Δp, pushed open by p_N on
+    A_N = π d_1²/4 and p_S on A_S = π d_2²/4 - A_N, held by its spring F_0 + k x; its spring chamber (A_C = π d_2²/4)
+    at p_c = (A_N p_N + A_S p_S - F_0 - k x)/A_C drains to PC through the damping orifice d_d,
+    q_C = C_q π d_d²/4 √(2/ρ) √(p_c - p_C), and A_C ẋ = q_C. A SpoolOrificeDamped ``{n}_poppet`` (its ports 1 and 2
+    on PN and PS, C on PC; the orifice's law regularised below 100 Pa) and a TwoWayValve ``{n}`` (PS its A, PN its
+    B, x_AB = 0, turbulent to some 40 Pa as Hopsan's other valves). A_N + A_S = A_C, so the atmosphere cancels in
+    the poppet's balance. Output xv_out the poppet's position. x_vmax or d_d not above 0 refused."""
+    from hydroservo.components import SpoolOrificeDamped, TwoWayValve
+
+    rho, c_q = par("rho", 870.0), par("C_q", 0.67)
+    d_1, d_2, x_vmax, d_d = par("d_1", 10e-3), par("d_2", 10e-3), par("x_vmax", 0.01), par("d_d", 0.1e-3)
+    if not (x_vmax > 0.0 and d_d > 0.0 and d_2 > 0.0 and rho > 0.0):
+        par.problems.append(f"{par.where}: x_vmax = {x_vmax:g} m, d_d = {d_d:g} m, d_2 = {d_2:g} m, rho = {rho:g} "
+                            "kg/m^3; only values above 0 are supported")
+        return Mapped()
+    a_n, a_c = math.pi * d_1**2 / 4.0, math.pi * d_2**2 / 4.0
+    poppet = SpoolOrificeDamped(
+        f"{n}_poppet", A_1=a_n, A_2=a_c - a_n, A_c=a_c, F_0=par("F_0", 100.0), k_s=par("k", 1e4),
+        K_d=c_q * math.pi * d_d**2 / 4.0 * math.sqrt(2.0 / rho), x_min=0.0, x_max=x_vmax,
+        x0=min(max(par("xv_out", 0.0), 0.0), x_vmax),
+    )
+    valve = TwoWayValve(n, c_v=_edge_coefficient(par, par("f", 1.0), rho, d="d_1"), x_AB=0.0, rho=rho, D_h="1 mm",
+                        lambda_crit=10.0)
+    return Mapped(
+        [poppet, valve],
+        power={"PS": f"{n}.A", "PN": f"{n}.B", "PC": f"{n}_poppet.C"},
+        outputs={"xv_out": f"{n}_poppet.xv"},
+        internal=[(f"{n}.B", f"{n}_poppet.P1"), (f"{n}.A", f"{n}_poppet.P2"), (f"{n}_poppet.xv", f"{n}.xv")],
+        note="a SpoolOrificeDamped (the poppet) and a TwoWayValve (its seat)",
+    )
+
+
+def _shuttle_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/Hydraulic33ShuttleValve.hpp: a massless spool x_v in [-x_vmax, x_vmax]
+    (starting at xv_out) between two end chambers, fed from PP through the damping orifice d_1 and drained to PT
+    through d_2 (K_i = C_q π d_i²/4 √(2/ρ)): the chambers at p = (K_1² p_P + K_2² p_T)/(K_1² + K_2²), where the
+    two flows are equal, and A ẋ_v = K_1 √(p_P - p), A = π d²/4: the two orifices in series, K_1 K_2/√(K_1² + K_2²)
+    √(p_P - p_T). Its edges P-A open as -x_v - x_pa and A-T as x_v - x_at, C_q f π d √(2/ρ) wide. A
+    SpoolOrificeDamped ``{n}_spool`` (A_1 = A_c = A, port 1 on PP, C on PT, ``damping_flow = "none"``: Hopsan counts
+    the chambers' oil at no port), a Gain of -1 and a ThreeWayValve ``{n}`` on -x_v (its P-A opening as
+    -x_v - x_pa, A-T as x_v - x_at; turbulent to some 40 Pa). Hopsan reads the previous step's pressures for the
+    spool, the same as the step vanishes. Output xv_out the spool's position. x_vmax, d_1, d_2 or d not above 0
+    refused."""
+    from hydroservo.components import Gain, SpoolOrificeDamped, ThreeWayValve
+
+    rho, c_q, d = par("rho", 870.0), par("C_q", 0.67), par("d", 0.01)
+    x_vmax, d_1, d_2 = par("x_vmax", 0.01), par("d_1", 1e-3), par("d_2", 1e-3)
+    if not (x_vmax > 0.0 and d_1 > 0.0 and d_2 > 0.0 and d > 0.0 and rho > 0.0):
+        par.problems.append(f"{par.where}: x_vmax = {x_vmax:g} m, d_1 = {d_1:g} m, d_2 = {d_2:g} m, d = {d:g} m, "
+                            f"rho = {rho:g} kg/m^3; only values above 0 are supported")
+        return Mapped()
+    k_1, k_2 = (c_q * math.pi * di**2 / 4.0 * math.sqrt(2.0 / rho) for di in (d_1, d_2))
+    area = math.pi * d**2 / 4.0
+    spool = SpoolOrificeDamped(
+        f"{n}_spool", damping_flow="none", A_1=area, A_2=0.0, A_c=area, F_0=0.0, k_s=0.0,
+        K_d=k_1 * k_2 / math.sqrt(k_1**2 + k_2**2), x_min=-x_vmax, x_max=x_vmax,
+        x0=min(max(par("xv_out", 0.0), -x_vmax), x_vmax),
+    )
+    flip = Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0)
+    valve = ThreeWayValve(
+        n, c_PA=_edge_coefficient(par, par("f_pa", 1.0), rho), c_AT=_edge_coefficient(par, par("f_at", 1.0), rho),
+        x_PA=par("x_pa", -1e-6), x_AT=par("x_at", -1e-6), rho=rho, D_h="1 mm", lambda_crit=10.0,
+    )
+    return Mapped(
+        [spool, flip, valve],
+        power={"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.A"},
+        outputs={"xv_out": f"{n}_spool.xv"},
+        internal=[(f"{n}.P", f"{n}_spool.P1"), (f"{n}.T", f"{n}_spool.C"), (f"{n}_spool.xv", f"{n}_flip.u"),
+                  (f"{n}_flip.y", f"{n}.xv")],
+        note="a SpoolOrificeDamped (damping_flow = none), a Gain of -1 and a ThreeWayValve",
+    )
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -2918,6 +3077,11 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicCheckValvePreLoaded": _check_valve,
     "HydraulicCheckValveWithOrifice": _check_valve_with_orifice,
     "Hydraulic22DirectionalCheckValve": _directional_check_valve,
+    "HydraulicOrificeG": _orifice_g,
+    "HydraulicOrificeCheckValveG": _orifice_g,
+    "HydraulicSlitOrifice": _slit_orifice,
+    "Hydraulic22PoppetValve": _poppet_valve,
+    "Hydraulic33ShuttleValve": _shuttle_valve33,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

@@ -304,7 +304,8 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 @pytest.mark.parametrize(
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
-     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears"],
+     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "orifices_g",
+     "special_valves"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -323,7 +324,12 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     their multiports, SignalNot, SignalXor, SignalCounter (both edges, rising only), SignalSecondOrderFilter,
     SignalHP2Filter, Signal1DPLOLookupTable, Signal2DLookupTable, a numerical input into a slider and a display.
     The gears (MechanicRotationalInertiaWithSingleGear, driven through a shaft by a sine-wave speed against a
-    torque, and a lossless MechanicBallScrew driving a spring by a sine-wave torque) have no model of Hopsan's."""
+    torque, and a lossless MechanicBallScrew driving a spring by a sine-wave torque) have no model of Hopsan's.
+    The geometric orifices (HydraulicOrificeG, HydraulicOrificeCheckValveG, HydraulicSlitOrifice) pass a sine-wave
+    pressure into drained volumes, laminar and turbulent, both ways (no Hopsan model uses them). The poppet valve
+    (Hydraulic22PoppetValve) opens, rests at its stop, closes and rests on its seat as its supply rises and falls;
+    the 3/3 shuttle valve (Hydraulic33ShuttleValve) shuttles between its stops under a sine-wave pressure at PP
+    against a constant one at PT (no Hopsan model uses either)."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -342,6 +348,82 @@ def test_small_circuits_match_hopsan(name: str) -> None:
         compared += 1
     assert compared >= 8
 
+
+
+def test_geometric_orifices_map_to_the_blended_orifice_law(tmp_path: Path) -> None:
+    """HydraulicOrificeG, HydraulicOrificeCheckValveG and HydraulicSlitOrifice: an Orifice with law = "blend", its
+    laminar coefficient from Hopsan's geometry (k_lam = 2 del^2 dh^2 / (L visc), L = dh + 32 del^2 lo (3 - sf);
+    the slit's 8 Ao^2 del^2 / (visc So sqrt(M))), the check valve's bores Ab forwards and Ao back; parameters that
+    Hopsan's law divides by, when 0, and a discharge coefficient above 1 are refused with the component named."""
+    v = _value
+    components = [
+        ("HydraulicOrificeG", "OG", {"Ao": v("2e-6"), "dh": v("0.001"), "lo": v("0.002"), "visc": v("0.04"),
+                                     "del": v("0.2"), "sf": v("1"), "Cdt": v("0.7"), "rho": v("880")}),
+        ("HydraulicOrificeCheckValveG", "CV", {"Ao": v("1e-6"), "Ab": v("4e-7"), "dh": v("0.001"), "lo": v("0.002"),
+                                               "visc": v("0.04"), "del": v("0.2")}),
+        ("HydraulicSlitOrifice", "SL", {"Ao": v("1e-6"), "So": v("0.004"), "lo": v("0.002"), "visc": v("0.04"),
+                                        "del": v("0.2"), "sf": v("0")}),
+    ]
+    path = tmp_path / "orifices.hmf"
+    path.write_text(_hmf(components, []), encoding="utf-8")
+    system = read_hopsan(path)
+    og, cv, sl = system["OG"], system["CV"], system["SL"]
+    assert og.option("law") == "blend" and og.values["n_blend"] == 2.0 and sl.values["n_blend"] == 4.0
+    assert np.pi * og.values["d"] ** 2 / 4 == pytest.approx(2e-6) and og.values["Cd"] == 0.7
+    assert og.values["rho"] == 880.0 and og.values["d_back"] == 0.0
+    big_l = 0.001 + 32 * 0.04 * 0.002 * 2
+    assert og.values["k_lam"] == pytest.approx(2 * 0.04 * 1e-6 / (big_l * 0.04))
+    assert np.pi * cv.values["d"] ** 2 / 4 == pytest.approx(4e-7) and np.pi * cv.values["d_back"] ** 2 / 4 == pytest.approx(1e-6)
+    assert cv.values["k_lam"] == pytest.approx(2 * 0.04 * 1e-6 / ((0.001 + 32 * 0.04 * 0.002 * 3) * 0.04))
+    assert cv.values["Cd"] == 0.67 and sl.values["Cd"] == 0.611
+    big_m = 1e-12 + 64 * 0.2**4 * 0.002**2 * 9 * 0.004**2
+    assert sl.values["k_lam"] == pytest.approx(8 * 1e-12 * 0.04 / (0.04 * 0.004 * np.sqrt(big_m)))
+    components[0][2]["visc"] = v("0")
+    components[2][2]["Cd"] = v("1.5")
+    path.write_text(_hmf(components, []), encoding="utf-8")
+    refused = r"OG \(HydraulicOrificeG\): visc = 0; only values above 0.*SL \(HydraulicSlitOrifice\): Cd = 1.5; a discharge"
+    with pytest.raises(ModelFileError, match=refused):
+        read_hopsan(path)
+
+
+def test_poppet_and_shuttle33_valves_map_to_an_orifice_damped_spool(tmp_path: Path) -> None:
+    """Hydraulic22PoppetValve: a SpoolOrificeDamped (areas pi d_1^2/4 at PN and the annulus at PS, chamber
+    pi d_2^2/4 drained to PC through d_d) and a TwoWayValve PS-PN of C_q pi d_1 f sqrt(2/rho); Hydraulic33ShuttleValve:
+    a SpoolOrificeDamped whose damping orifices d_1 and d_2 are in series (damping_flow = none), flipped into a
+    ThreeWayValve. The start position xv_out is limited to the stroke; a stroke of 0 is refused."""
+    v = _value
+    components = [
+        ("Hydraulic22PoppetValve", "PV", {"d_1": v("0.008"), "d_2": v("0.01"), "k": v("3e4"), "F_0": v("50"),
+                                          "f": v("0.5"), "x_vmax": v("0.004"), "d_d": v("0.0002"), "xv_out": v("0.02")}),
+        ("Hydraulic33ShuttleValve", "SV", {"d": v("0.012"), "f_pa": v("0.2"), "f_at": v("0.3"), "x_pa": v("1e-4"),
+                                           "x_at": v("-2e-4"), "d_1": v("0.001"), "d_2": v("0.002"), "xv_out": v("-0.003"),
+                                           "rho": v("880")}),
+    ]
+    ports = ["PV.PS", "PV.PN", "PV.PC", "SV.PP", "SV.PT", "SV.PA"]
+    components += [("HydraulicTankC", f"T{i}", {}) for i in range(len(ports))]
+    connections = [(port, f"T{i}.P1") for i, port in enumerate(ports)]
+    path = tmp_path / "valves.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = read_hopsan(path)
+    poppet, seat = system["PV_poppet"].values, system["PV"].values
+    assert poppet["A_1"] == pytest.approx(np.pi * 0.008**2 / 4) and poppet["A_c"] == pytest.approx(np.pi * 0.01**2 / 4)
+    assert poppet["A_1"] + poppet["A_2"] == pytest.approx(poppet["A_c"]) and poppet["F_0"] == 50.0 and poppet["k_s"] == 3e4
+    assert poppet["K_d"] == pytest.approx(0.67 * np.pi * 0.0002**2 / 4 * np.sqrt(2 / 870))
+    assert (poppet["x_min"], poppet["x_max"], poppet["x0"]) == (0.0, 0.004, 0.004)
+    assert seat["c_v"] == pytest.approx(0.67 * np.pi * 0.008 * 0.5 * np.sqrt(2 / 870)) and seat["x_AB"] == 0.0
+    spool, edges = system["SV_spool"], system["SV"].values
+    k_1, k_2 = (0.67 * np.pi * d**2 / 4 * np.sqrt(2 / 880) for d in (0.001, 0.002))
+    assert spool.option("damping_flow") == "none" and spool.values["x0"] == -0.003
+    assert spool.values["K_d"] == pytest.approx(k_1 * k_2 / np.hypot(k_1, k_2))
+    assert spool.values["A_1"] == spool.values["A_c"] == pytest.approx(np.pi * 0.012**2 / 4)
+    assert (spool.values["x_min"], spool.values["x_max"]) == (-0.01, 0.01) and system["SV_flip"].values["K"] == -1.0
+    assert edges["c_PA"] == pytest.approx(0.67 * 0.2 * np.pi * 0.012 * np.sqrt(2 / 880))
+    assert edges["c_AT"] == pytest.approx(0.67 * 0.3 * np.pi * 0.012 * np.sqrt(2 / 880))
+    assert (edges["x_PA"], edges["x_AT"]) == (1e-4, -2e-4)
+    components[0][2]["x_vmax"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"PV \(Hydraulic22PoppetValve\): x_vmax = 0 m"):
+        read_hopsan(path)
 
 def _value(text: str, unit: str = "") -> tuple[str, str]:
     return (text, unit)
