@@ -1512,6 +1512,45 @@ def _shuttle_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _valve43_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicValve43.hpp: HydraulicValve33's law with port B: a 4/3 valve whose
+    spool position xv [m] is its input (no spool dynamics), its edges' conductances Ks π Fr Sd times P-A's
+    limit(Xap0 + xv, 0, Xap0 + Xvmax), A-T's limit(Xap0 - xv, 0, Xat0 + Xvmax), P-B's limit(Xap0 - xv, 0,
+    Xbp0 + Xvmax) and B-T's limit(Xap0 + xv, 0, Xbt0 + Xvmax), Ks = Cq √(2/ρ), and the flows
+    Ks·signedSquareL(Δp, plam) (its equation system, solved by Newton iterations each step, stands for these
+    algebraic flows): a FourWayValve with the overlaps -Xap0 (an underlap), the transition pressure plam, xv
+    limited to ±Xvmax (a Saturation: the upper limits of the openings). Every edge opens from Xap0: Xat0, Xbp0 or
+    Xbt0 different from Xap0 (only their upper limits) is refused, as are unequal fractions Frap ... Frbt (one
+    c_v). The flow-force outputs ffpa, ffta, ffpb, fftb, ff are not aliased."""
+    from hydroservo.components import FourWayValve, Saturation
+
+    rho = par("rho", 870.0)
+    x0, x_vmax, plam = par("Xap0", 0.0), par("Xvmax", 0.01), par("plam", 1e4)
+    others = [f"{name} = {par(name, 0.0):g} m" for name in ("Xat0", "Xbp0", "Xbt0") if par(name, 0.0) != x0]
+    if others:
+        par.problems.append(
+            f"{par.where}: {', '.join(others)} differ from Xap0 = {x0:g} m: Hopsan's edges all open from Xap0, with "
+            "their limits at X..0 + Xvmax, which a FourWayValve of one lap per edge does not have"
+        )
+    if plam <= 0.0 or x_vmax <= 0.0:
+        par.problems.append(f"{par.where}: plam = {plam:g} Pa, Xvmax = {x_vmax:g} m; only values above 0 are supported")
+        plam, x_vmax = 1e4, 0.01
+    edges = _valve33_edges(par, rho, x0, plam)
+    c_v = _edge_coefficient(par, _equal_fractions(par, ("Frap", "Frat", "Frbp", "Frbt")), rho, d="Sd", c_q="Cq")
+    valve = FourWayValve(
+        n, c_v=c_v, xv_max=x_vmax, x_PA=-x0, x_AT=-x0, x_PB=-x0, x_BT=-x0,
+        **{k: edges[k] for k in ("rho", "nu", "lambda_crit", "D_h")},
+    )
+    limit = Saturation(f"{n}_xv", unit="m", lower=-x_vmax, upper=x_vmax)
+    return Mapped(
+        [limit, valve],
+        power={"Pp": f"{n}.P", "Pt": f"{n}.T", "Pa": f"{n}.A", "Pb": f"{n}.B"},
+        inputs={"xv": f"{n}_xv.u"},
+        internal=[(f"{n}_xv.y", f"{n}.xv")],
+        note="a Saturation (xv limited to ±Xvmax) and a FourWayValve",
+    )
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -3082,6 +3121,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicSlitOrifice": _slit_orifice,
     "Hydraulic22PoppetValve": _poppet_valve,
     "Hydraulic33ShuttleValve": _shuttle_valve33,
+    "HydraulicValve43": _valve43_special,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

@@ -305,7 +305,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
      "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "orifices_g",
-     "special_valves"],
+     "special_valves", "valve43"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -329,7 +329,9 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     pressure into drained volumes, laminar and turbulent, both ways (no Hopsan model uses them). The poppet valve
     (Hydraulic22PoppetValve) opens, rests at its stop, closes and rests on its seat as its supply rises and falls;
     the 3/3 shuttle valve (Hydraulic33ShuttleValve) shuttles between its stops under a sine-wave pressure at PP
-    against a constant one at PT (no Hopsan model uses either)."""
+    against a constant one at PT (no Hopsan model uses either). HydraulicValve43 (Special), driven past its stroke
+    by a sine wave, with underlaps and a laminar onset of 1 bar, feeds two drained volumes (Hopsan's two models
+    that use it, of core 0, its loader no longer reads)."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -423,6 +425,32 @@ def test_poppet_and_shuttle33_valves_map_to_an_orifice_damped_spool(tmp_path: Pa
     components[0][2]["x_vmax"] = v("0")
     path.write_text(_hmf(components, connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"PV \(Hydraulic22PoppetValve\): x_vmax = 0 m"):
+        read_hopsan(path)
+
+
+def test_special_valve43_maps_to_a_four_way_valve_on_its_limited_input(tmp_path: Path) -> None:
+    """HydraulicValve43 (Special): a Saturation of xv to ±Xvmax and a FourWayValve of c_v = Cq Fr pi Sd sqrt(2/rho),
+    every edge underlapped by Xap0, its transition pressure plam (D_h chosen so); Xat0 unlike Xap0 is refused."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    v = _value
+    params = {"rho": v("860"), "Sd": v("0.012"), "Frap": v("0.5"), "Frat": v("0.5"), "Frbp": v("0.5"), "Frbt": v("0.5"),
+              "Xap0": v("3e-4"), "Xat0": v("3e-4"), "Xbp0": v("3e-4"), "Xbt0": v("3e-4"), "Xvmax": v("0.004"),
+              "plam": v("2e5")}
+    ports = ["V.Pp", "V.Pt", "V.Pa", "V.Pb"]
+    components = [("HydraulicValve43", "V", params), *(("HydraulicTankC", f"T{i}", {}) for i in range(4))]
+    connections = [(port, f"T{i}.P1") for i, port in enumerate(ports)]
+    path = tmp_path / "valve43.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = read_hopsan(path)
+    valve = system["V"].values
+    assert valve["c_v"] == pytest.approx(0.67 * 0.5 * np.pi * 0.012 * np.sqrt(2 / 860))
+    assert [valve[k] for k in ("x_PA", "x_AT", "x_PB", "x_BT")] == [-3e-4] * 4
+    assert transition_pressure(valve["D_h"], valve["rho"], valve["nu"], valve["lambda_crit"]) == pytest.approx(2e5)
+    assert (system["V_xv"].values["lower"], system["V_xv"].values["upper"]) == (-0.004, 0.004)
+    params["Xat0"] = v("1e-4")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicValve43\): Xat0 = 0.0001 m differ from Xap0 = 0.0003 m"):
         read_hopsan(path)
 
 def _value(text: str, unit: str = "") -> tuple[str, str]:
