@@ -1512,21 +1512,22 @@ def _shuttle_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
-def _valve43_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
-    """[Hopsan2026] Hydraulic/Special/HydraulicValve43.hpp: HydraulicValve33's law with port B: a 4/3 valve whose
-    spool position xv [m] is its input (no spool dynamics), its edges' conductances Ks π Fr Sd times P-A's
-    limit(Xap0 + xv, 0, Xap0 + Xvmax), A-T's limit(Xap0 - xv, 0, Xat0 + Xvmax), P-B's limit(Xap0 - xv, 0,
-    Xbp0 + Xvmax) and B-T's limit(Xap0 + xv, 0, Xbt0 + Xvmax), Ks = Cq √(2/ρ), and the flows
-    Ks·signedSquareL(Δp, plam) (its equation system, solved by Newton iterations each step, stands for these
-    algebraic flows): a FourWayValve with the overlaps -Xap0 (an underlap), the transition pressure plam, xv
-    limited to ±Xvmax (a Saturation: the upper limits of the openings). Every edge opens from Xap0: Xat0, Xbp0 or
-    Xbt0 different from Xap0 (only their upper limits) is refused, as are unequal fractions Frap ... Frbt (one
-    c_v). The flow-force outputs ffpa, ffta, ffpb, fftb, ff are not aliased."""
+def _special_four_way(n: str, par: _Params, overlap: bool, sd: float = 0.01, lap: float = 0.0) -> Mapped:
+    """The four edges of Hopsan's Special 4/3 valves (HydraulicValve43, HydraulicValve43LS, HydraulicValve63OC)
+    as a FourWayValve behind a Saturation of the spool position xv [m] to ±Xvmax: edge conductances
+    Ks π Fr Sd times P-A's limit(±Xap0 + xv, 0, ±Xap0 + Xvmax), A-T's limit(±Xap0 - xv, 0, ±Xat0 + Xvmax), P-B's
+    limit(±Xap0 - xv, 0, ±Xbp0 + Xvmax) and B-T's limit(±Xap0 + xv, 0, ±Xbt0 + Xvmax) (+ for HydraulicValve43,
+    whose Xap0 is an underlap: laps -Xap0; - with ``overlap``: laps +Xap0), Ks = Cq √(2/ρ), the flows
+    Ks·signedSquareL(Δp, plam) = Ks Δp/(Δp² + plam²)^(1/4) (their equation systems, solved by Newton iterations
+    each step, stand for these algebraic flows): the transition pressure plam exactly (D_h chosen so), the
+    saturated xv the openings' upper limits. Every edge opens from Xap0 (Xat0, Xbp0, Xbt0 only bound them): one of
+    them different from Xap0 is refused, as are unequal fractions Frap ... Frbt (one c_v). ``sd`` and ``lap``: the
+    component file's defaults of Sd and of the laps."""
     from hydroservo.components import FourWayValve, Saturation
 
     rho = par("rho", 870.0)
-    x0, x_vmax, plam = par("Xap0", 0.0), par("Xvmax", 0.01), par("plam", 1e4)
-    others = [f"{name} = {par(name, 0.0):g} m" for name in ("Xat0", "Xbp0", "Xbt0") if par(name, 0.0) != x0]
+    x0, x_vmax, plam = par("Xap0", lap), par("Xvmax", 0.01), par("plam", 1e4)
+    others = [f"{name} = {par(name, lap):g} m" for name in ("Xat0", "Xbp0", "Xbt0") if par(name, lap) != x0]
     if others:
         par.problems.append(
             f"{par.where}: {', '.join(others)} differ from Xap0 = {x0:g} m: Hopsan's edges all open from Xap0, with "
@@ -1536,9 +1537,11 @@ def _valve43_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         par.problems.append(f"{par.where}: plam = {plam:g} Pa, Xvmax = {x_vmax:g} m; only values above 0 are supported")
         plam, x_vmax = 1e4, 0.01
     edges = _valve33_edges(par, rho, x0, plam)
-    c_v = _edge_coefficient(par, _equal_fractions(par, ("Frap", "Frat", "Frbp", "Frbt")), rho, d="Sd", c_q="Cq")
+    fraction = _equal_fractions(par, ("Frap", "Frat", "Frbp", "Frbt"))
+    c_v = par("Cq", 0.67) * fraction * math.pi * par("Sd", sd) * math.sqrt(2.0 / rho)
+    x_lap = x0 if overlap else -x0
     valve = FourWayValve(
-        n, c_v=c_v, xv_max=x_vmax, x_PA=-x0, x_AT=-x0, x_PB=-x0, x_BT=-x0,
+        n, c_v=c_v, xv_max=x_vmax, x_PA=x_lap, x_AT=x_lap, x_PB=x_lap, x_BT=x_lap,
         **{k: edges[k] for k in ("rho", "nu", "lambda_crit", "D_h")},
     )
     limit = Saturation(f"{n}_xv", unit="m", lower=-x_vmax, upper=x_vmax)
@@ -1549,6 +1552,43 @@ def _valve43_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         internal=[(f"{n}_xv.y", f"{n}.xv")],
         note="a Saturation (xv limited to ±Xvmax) and a FourWayValve",
     )
+
+
+def _valve43_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicValve43.hpp: HydraulicValve33's law with port B, a 4/3 valve whose
+    spool position xv [m] is its input (no spool dynamics): its edges open from the underlap Xap0
+    (:func:`_special_four_way`: a Saturation and a FourWayValve of laps -Xap0). The flow-force outputs ffpa, ffta,
+    ffpb, fftb, ff are not aliased."""
+    return _special_four_way(n, par, overlap=False)
+
+
+def _valve63_open_centre(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicValve63OC.hpp: a 6/3 open-centre valve whose spool position xv [m]
+    is its input: four edges opening past the overlap Xap0 (:func:`_special_four_way`, laps +Xap0) and an
+    open-centre edge from Pocp to Poct of conductance Ks π Froc Sd limit(Xoc0 - |xv|, 0, Xoc0), turbulent with the
+    onset plam as the others: an Absolute of xv (the input's, unsaturated, as Hopsan's; a Gain of 1 ``{n}_in``
+    takes the input to both) and a Gain of -1 into a TwoWayValve ``{n}_centre`` of overlap -Xoc0, whose opening
+    Xoc0 - |xv| is never above Xoc0 (its own clamp at 0 is Hopsan's lower limit). Xoc0 < 0 is refused."""
+    from hydroservo.components import Absolute, Gain, TwoWayValve
+
+    m = _special_four_way(n, par, overlap=True, sd=0.015)
+    rho, x_oc, plam = par("rho", 870.0), par("Xoc0", 0.0), max(par("plam", 1e4), 1.0)
+    if x_oc < 0.0:
+        par.problems.append(f"{par.where}: Xoc0 = {x_oc:g} m; an open-centre underlap of 0 or more is supported")
+    edges = _valve33_edges(par, rho, 0.0, plam)
+    centre = TwoWayValve(
+        f"{n}_centre", c_v=par("Cq", 0.67) * par("Froc", 1.0) * math.pi * par("Sd", 0.015) * math.sqrt(2.0 / rho),
+        x_AB=-x_oc,
+        **{k: edges[k] for k in ("rho", "nu", "lambda_crit", "D_h")},
+    )
+    entry = Gain(f"{n}_in", unit="m", input_unit="m", K=1.0)
+    m.components += [entry, Absolute(f"{n}_abs", unit="m"), Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0), centre]
+    m.inputs = {"xv": f"{n}_in.u"}
+    m.power.update({"Pocp": f"{n}_centre.A", "Poct": f"{n}_centre.B"})
+    m.internal += [(f"{n}_in.y", f"{n}_xv.u"), (f"{n}_in.y", f"{n}_abs.u"), (f"{n}_abs.y", f"{n}_flip.u"),
+                   (f"{n}_flip.y", f"{n}_centre.xv")]
+    m.note += "; the centre edge Pocp-Poct: an Absolute and a Gain (its opening from xv) and a TwoWayValve"
+    return m
 
 
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -3122,6 +3162,7 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic22PoppetValve": _poppet_valve,
     "Hydraulic33ShuttleValve": _shuttle_valve33,
     "HydraulicValve43": _valve43_special,
+    "HydraulicValve63OC": _valve63_open_centre,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

@@ -305,7 +305,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
      "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "orifices_g",
-     "special_valves", "valve43"],
+     "special_valves", "valve43", "valve63oc"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -331,7 +331,8 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     the 3/3 shuttle valve (Hydraulic33ShuttleValve) shuttles between its stops under a sine-wave pressure at PP
     against a constant one at PT (no Hopsan model uses either). HydraulicValve43 (Special), driven past its stroke
     by a sine wave, with underlaps and a laminar onset of 1 bar, feeds two drained volumes (Hopsan's two models
-    that use it, of core 0, its loader no longer reads)."""
+    that use it, of core 0, its loader no longer reads); HydraulicValve63OC the same with overlaps and its open
+    centre closing at 3 mm (no model of Hopsan's uses it)."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -428,9 +429,11 @@ def test_poppet_and_shuttle33_valves_map_to_an_orifice_damped_spool(tmp_path: Pa
         read_hopsan(path)
 
 
-def test_special_valve43_maps_to_a_four_way_valve_on_its_limited_input(tmp_path: Path) -> None:
+def test_special_valve43_and_63oc_map_to_a_four_way_valve_on_their_limited_input(tmp_path: Path) -> None:
     """HydraulicValve43 (Special): a Saturation of xv to ±Xvmax and a FourWayValve of c_v = Cq Fr pi Sd sqrt(2/rho),
-    every edge underlapped by Xap0, its transition pressure plam (D_h chosen so); Xat0 unlike Xap0 is refused."""
+    every edge underlapped by Xap0, its transition pressure plam (D_h chosen so); HydraulicValve63OC's edges
+    overlapped by Xap0 and its open centre a TwoWayValve of Cq Froc pi Sd sqrt(2/rho) open below |xv| = Xoc0;
+    Xat0 unlike Xap0 is refused."""
     from hydroservo.laws.orifice import transition_pressure
 
     v = _value
@@ -448,6 +451,16 @@ def test_special_valve43_maps_to_a_four_way_valve_on_its_limited_input(tmp_path:
     assert [valve[k] for k in ("x_PA", "x_AT", "x_PB", "x_BT")] == [-3e-4] * 4
     assert transition_pressure(valve["D_h"], valve["rho"], valve["nu"], valve["lambda_crit"]) == pytest.approx(2e5)
     assert (system["V_xv"].values["lower"], system["V_xv"].values["upper"]) == (-0.004, 0.004)
+    oc = {**params, "Froc": v("0.25"), "Xoc0": v("0.002")}
+    oc_ports = ["W.Pp", "W.Pt", "W.Pa", "W.Pb", "W.Pocp", "W.Poct"]
+    oc_components = [("HydraulicValve63OC", "W", oc), *(("HydraulicTankC", f"U{i}", {}) for i in range(6))]
+    oc_connections = [(port, f"U{i}.P1") for i, port in enumerate(oc_ports)]
+    path.write_text(_hmf(oc_components, oc_connections), encoding="utf-8")
+    system = read_hopsan(path)
+    assert [system["W"].values[k] for k in ("x_PA", "x_AT", "x_PB", "x_BT")] == [3e-4] * 4  # overlaps here
+    centre = system["W_centre"].values
+    assert centre["c_v"] == pytest.approx(0.67 * 0.25 * np.pi * 0.012 * np.sqrt(2 / 860)) and centre["x_AB"] == -0.002
+    assert transition_pressure(centre["D_h"], centre["rho"], centre["nu"], centre["lambda_crit"]) == pytest.approx(2e5)
     params["Xat0"] = v("1e-4")
     path.write_text(_hmf(components, connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"V \(HydraulicValve43\): Xat0 = 0.0001 m differ from Xap0 = 0.0003 m"):
