@@ -1591,6 +1591,61 @@ def _valve63_open_centre(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return m
 
 
+def _valve43_ls(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicValve43LS.hpp: a 4/3 valve whose spool position xv [m] is its input,
+    its edges opening past the overlap Xap0 (:func:`_special_four_way`, laps +Xap0), with a load-sensing port Pls
+    joined to A, B and T by three more edges of conductance Ks wls times LS-A's limit(xv - Xlsa0, 0,
+    Xvlsmax - Xlsa0), LS-B's limit(-xv - Xlsb0, 0, Xvlsmax - Xlsb0) and LS-T's limit(Xls0 - |xv|, 0, Xls0),
+    turbulent with the onset plam. Hopsan takes their flow at Pls only: A, B and T see none of it (their flows are
+    the four main edges'). Here the LS edges run between Pls and three PressureSources ``{n}_mirror_a``, ``_b``,
+    ``_t`` that hold the pressures of A, B and T (each read by a Sum ``{n}_p<port>``, absolute, as a sensor reads
+    its node), so that their oil comes from and goes to no node, as Hopsan's: a ThreeWayValve ``{n}_ls`` (its P on
+    A's mirror, A on Pls, T on B's mirror; xv limited to ±Xvlsmax by a Saturation ``{n}_xls``) and a TwoWayValve
+    ``{n}_lst`` (Pls to T's mirror, on -|xv|, overlap -Xls0); Pls's flow is their sum, a Sum ``{n}_Qls``. A Gain
+    of 1 ``{n}_in`` takes the input to the three. Xvlsmax, wls or Xls0 below 0 are refused."""
+    from hydroservo.components import Absolute, Gain, PressureSource, Saturation, Sum, ThreeWayValve, TwoWayValve
+
+    m = _special_four_way(n, par, overlap=True, lap=0.0003)
+    rho, plam = par("rho", 870.0), max(par("plam", 1e4), 1.0)
+    x_lsmax, w_ls, x_ls0 = par("Xvlsmax", 0.001), par("wls", 0.01), par("Xls0", 0.0003)
+    if x_lsmax <= 0.0 or w_ls < 0.0 or x_ls0 < 0.0:
+        par.problems.append(f"{par.where}: Xvlsmax = {x_lsmax:g} m, wls = {w_ls:g} m, Xls0 = {x_ls0:g} m; only "
+                            "Xvlsmax above 0 and wls, Xls0 of 0 or more are supported")
+        x_lsmax = 0.001
+    fluid = {k: v for k, v in _valve33_edges(par, rho, 0.0, plam).items() if k in ("rho", "nu", "lambda_crit", "D_h")}
+    c_ls = par("Cq", 0.67) * w_ls * math.sqrt(2.0 / rho)
+    blocks: list[cbase.Component] = [Gain(f"{n}_in", unit="m", input_unit="m", K=1.0)]
+    internal = [(f"{n}_in.y", f"{n}_xv.u")]
+    read: dict[str, tuple[str, str]] = {}
+    for port in ("a", "b", "t"):
+        blocks += [Sum(f"{n}_p{port}", unit="Pa", gain2=0.0), PressureSource(f"{n}_mirror_{port}", p0="0 Pa_abs")]
+        internal.append((f"{n}_p{port}.y", f"{n}_mirror_{port}.u"))
+        read[f"P{port}"] = (f"{n}_p{port}.u1", "Pressure")
+    blocks += [
+        Saturation(f"{n}_xls", unit="m", lower=-x_lsmax, upper=x_lsmax),
+        ThreeWayValve(f"{n}_ls", c_PA=c_ls, c_AT=c_ls, x_PA=par("Xlsa0", 0.0003), x_AT=par("Xlsb0", 0.0003), **fluid),
+        Absolute(f"{n}_abs", unit="m"),
+        Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0),
+        TwoWayValve(f"{n}_lst", c_v=c_ls, x_AB=-x_ls0, **fluid),
+        Sum(f"{n}_Qls", unit="m^3/s", gain1=1.0, gain2=-1.0),
+    ]
+    internal += [
+        (f"{n}_in.y", f"{n}_xls.u"), (f"{n}_xls.y", f"{n}_ls.xv"), (f"{n}_mirror_a.P", f"{n}_ls.P"),
+        (f"{n}_mirror_b.P", f"{n}_ls.T"), (f"{n}_in.y", f"{n}_abs.u"), (f"{n}_abs.y", f"{n}_flip.u"),
+        (f"{n}_flip.y", f"{n}_lst.xv"), (f"{n}_ls.A", f"{n}_lst.A"), (f"{n}_mirror_t.P", f"{n}_lst.B"),
+        (f"{n}_ls.QA", f"{n}_Qls.u1"), (f"{n}_lst.Q", f"{n}_Qls.u2"),
+    ]
+    m.components += blocks
+    m.inputs = {"xv": f"{n}_in.u"}
+    m.power["Pls"] = f"{n}_ls.A"
+    m.read = read
+    m.flow["Pls"] = f"{n}_Qls.y"  # Hopsan's flow out of the valve at Pls: the LS edges' to A and B less LS-T's
+    m.internal += internal
+    m.note += ("; the load-sensing edges: a ThreeWayValve (LS-A, LS-B) and a TwoWayValve (LS-T) between Pls and "
+               "PressureSources holding A's, B's and T's pressures (read by Sums)")
+    return m
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -3163,6 +3218,7 @@ LIBRARY: dict[str, Builder] = {
     "Hydraulic33ShuttleValve": _shuttle_valve33,
     "HydraulicValve43": _valve43_special,
     "HydraulicValve63OC": _valve63_open_centre,
+    "HydraulicValve43LS": _valve43_ls,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

@@ -305,7 +305,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
      "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "orifices_g",
-     "special_valves", "valve43", "valve63oc"],
+     "special_valves", "valve43", "valve63oc", "valve43ls"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -332,7 +332,8 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     against a constant one at PT (no Hopsan model uses either). HydraulicValve43 (Special), driven past its stroke
     by a sine wave, with underlaps and a laminar onset of 1 bar, feeds two drained volumes (Hopsan's two models
     that use it, of core 0, its loader no longer reads); HydraulicValve63OC the same with overlaps and its open
-    centre closing at 3 mm (no model of Hopsan's uses it)."""
+    centre closing at 3 mm, and HydraulicValve43LS with its load-sensing port on a drained volume, whose flow
+    Hopsan takes from none of A, B, T (no model of Hopsan's uses either)."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -429,11 +430,12 @@ def test_poppet_and_shuttle33_valves_map_to_an_orifice_damped_spool(tmp_path: Pa
         read_hopsan(path)
 
 
-def test_special_valve43_and_63oc_map_to_a_four_way_valve_on_their_limited_input(tmp_path: Path) -> None:
+def test_special_valve43_63oc_and_43ls_map_to_a_four_way_valve_on_their_limited_input(tmp_path: Path) -> None:
     """HydraulicValve43 (Special): a Saturation of xv to ±Xvmax and a FourWayValve of c_v = Cq Fr pi Sd sqrt(2/rho),
     every edge underlapped by Xap0, its transition pressure plam (D_h chosen so); HydraulicValve63OC's edges
     overlapped by Xap0 and its open centre a TwoWayValve of Cq Froc pi Sd sqrt(2/rho) open below |xv| = Xoc0;
-    Xat0 unlike Xap0 is refused."""
+    HydraulicValve43LS's load-sensing edges a ThreeWayValve (LS-A, LS-B, Ks wls wide) and a TwoWayValve (LS-T)
+    between Pls and PressureSources holding A's, B's and T's pressures; Xat0 unlike Xap0 is refused."""
     from hydroservo.laws.orifice import transition_pressure
 
     v = _value
@@ -461,6 +463,16 @@ def test_special_valve43_and_63oc_map_to_a_four_way_valve_on_their_limited_input
     centre = system["W_centre"].values
     assert centre["c_v"] == pytest.approx(0.67 * 0.25 * np.pi * 0.012 * np.sqrt(2 / 860)) and centre["x_AB"] == -0.002
     assert transition_pressure(centre["D_h"], centre["rho"], centre["nu"], centre["lambda_crit"]) == pytest.approx(2e5)
+    ls = {**params, "wls": v("0.003"), "Xlsa0": v("1e-4"), "Xlsb0": v("2e-4"), "Xls0": v("5e-4"), "Xvlsmax": v("0.002")}
+    ls_ports = ["L.Pp", "L.Pt", "L.Pa", "L.Pb", "L.Pls"]
+    ls_components = [("HydraulicValve43LS", "L", ls), *(("HydraulicTankC", f"U{i}", {}) for i in range(5))]
+    path.write_text(_hmf(ls_components, [(port, f"U{i}.P1") for i, port in enumerate(ls_ports)]), encoding="utf-8")
+    system = read_hopsan(path)
+    edges, lst = system["L_ls"].values, system["L_lst"].values
+    assert edges["c_PA"] == edges["c_AT"] == lst["c_v"] == pytest.approx(0.67 * 0.003 * np.sqrt(2 / 860))
+    assert (edges["x_PA"], edges["x_AT"], lst["x_AB"]) == (1e-4, 2e-4, -5e-4)
+    assert (system["L_xls"].values["lower"], system["L_xls"].values["upper"]) == (-0.002, 0.002)
+    assert system["L_mirror_a"].values["p0"] == pytest.approx(-101325.0)
     params["Xat0"] = v("1e-4")
     path.write_text(_hmf(components, connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"V \(HydraulicValve43\): Xat0 = 0.0001 m differ from Xap0 = 0.0003 m"):
