@@ -366,7 +366,7 @@ def _compensating(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
-def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool = False) -> Builder:
+def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool = False, mass: bool = False) -> Builder:
     """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
     a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
     p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
@@ -390,8 +390,15 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool
     HydraulicPressureCompensatingValveG.hpp (reducing: Δp_over = pref + p3 - p2, a PressureReducingValve with
     ``pilot = "port"``, P3 its X); pref is then a difference of pressures. Their flow forces take |p1 - p2|, the
     relief and reducing G valves' the drop with its sign, as hydroservo's does: the two differ only for a flow
-    from P2 to P1."""
-    if counterbalance:
+    from P2 to P1.
+
+    ``mass``: [Hopsan2026] Hydraulic/Special/HydraulicPressureRelief2ValveG.hpp, the relief valve's spool with mass
+    Mv, A_v/(Mv s² + Bv s + k_e) clamped to [0, Xvmax] with its memory (inelastic stops), its whole circumference
+    open (w = π Dv sin φ, no frac): ``spool = "mass"``, tau_m = Mv/Bv; its own defaults (Xvmax 0.03 m); outputs
+    xv = s Xvmax and dxv = ds Xvmax (0 at a stop, as Hopsan's dxLimit)."""
+    if mass:
+        defaults = {"Dv": 0.01, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.03, "pref": 1e7}
+    elif counterbalance:
         defaults = {"Dv": 0.03, "phi": 0.03, "ks": 100.0, "Bv": 100.0, "Xvmax": 0.03, "pref": 1e6}
     elif reducing and ported:  # the compensating valve's own defaults
         defaults = {"Dv": 0.03, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.01, "pref": 1e6}
@@ -401,12 +408,13 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         from hydroservo.components import CounterbalanceValve, PressureReducingValve, ReliefValve
 
-        rho, dv, frac, phi = par("rho", 870.0), par("Dv", defaults["Dv"]), par("frac", 0.1), par("phi", defaults["phi"])
+        rho, dv, phi = par("rho", 870.0), par("Dv", defaults["Dv"]), par("phi", defaults["phi"])
+        frac = 1.0 if mass else par("frac", 0.1)
         ks, bv = par("ks", defaults["ks"]), par("Bv", defaults["Bv"])
         x_vmax, cq = par("Xvmax", defaults["Xvmax"]), par("Cq", 0.67)
         before = len(par.problems)
         for name, value in (("rho", rho), ("Dv", dv), ("frac", frac), ("ks", ks), ("Bv", bv), ("Xvmax", x_vmax),
-                            ("Cq", cq), ("p0", par("p0", 1e5))):
+                            ("Cq", cq), ("p0", par("p0", 1e5)), *((("Mv", par("Mv", 0.03)),) if mass else ())):
             if value <= 0.0:
                 par.problems.append(f"{par.where}: {name} = {value:g}; only a value above 0 is supported")
         if not 0.0 < phi < math.pi / 2:
@@ -431,6 +439,8 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool
             "p_nom": p_nom,
             "p_tr": par("p0", 1e5),
         }
+        if mass:
+            spool.update(spool="mass", tau_m=par("Mv", 0.03) / bv)
         comp: cbase.Component
         power = {"P1": f"{n}.A", "P2": f"{n}.B"}
         if counterbalance:
@@ -450,10 +460,13 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool
             comp = PressureReducingValve(n, p_set=_abs(par("pref", defaults["pref"])), **spool)
         else:
             comp = ReliefValve(n, p_crack=par("pref", defaults["pref"]), pilot="drop", **spool)
+        values = {"xv": Var(x_vmax, f"{n}.s")}
+        if mass:  # Hopsan's outputs: its spool's position and velocity
+            values["dxv"] = Var(x_vmax, f"{n}.ds")
         return Mapped(
             [comp],
             power=power,
-            values={"xv": Var(x_vmax, f"{n}.s")},
+            values=values,
             initial={f"{n}.K": c * min(max(par("xv", 0.0), 0.0), x_vmax)},
         )
 
@@ -3219,6 +3232,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicValve43": _valve43_special,
     "HydraulicValve63OC": _valve63_open_centre,
     "HydraulicValve43LS": _valve43_ls,
+    "HydraulicPressureRelief2ValveG": _pressure_valve_g(reducing=False, mass=True),
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

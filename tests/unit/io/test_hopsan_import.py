@@ -305,7 +305,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
      "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "orifices_g",
-     "special_valves", "valve43", "valve63oc", "valve43ls"],
+     "special_valves", "valve43", "valve63oc", "valve43ls", "relief2_valve_g"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -333,7 +333,8 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     by a sine wave, with underlaps and a laminar onset of 1 bar, feeds two drained volumes (Hopsan's two models
     that use it, of core 0, its loader no longer reads); HydraulicValve63OC the same with overlaps and its open
     centre closing at 3 mm, and HydraulicValve43LS with its load-sensing port on a drained volume, whose flow
-    Hopsan takes from none of A, B, T (no model of Hopsan's uses either)."""
+    Hopsan takes from none of A, B, T (no model of Hopsan's uses either). HydraulicPressureRelief2ValveG's spool
+    with mass, underdamped, relieves a volume fed a sine-wave flow, striking both its stops."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -476,6 +477,32 @@ def test_special_valve43_63oc_and_43ls_map_to_a_four_way_valve_on_their_limited_
     params["Xat0"] = v("1e-4")
     path.write_text(_hmf(components, connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"V \(HydraulicValve43\): Xat0 = 0.0001 m differ from Xap0 = 0.0003 m"):
+        read_hopsan(path)
+
+
+def test_relief2_valve_g_maps_to_a_relief_valve_whose_spool_has_mass(tmp_path: Path) -> None:
+    """HydraulicPressureRelief2ValveG: HydraulicPressureReliefValveG's characteristics with the whole circumference
+    open (w = pi Dv sin phi) and spool = "mass", tau_m = Mv/Bv; its outputs xv and dxv the opening and its rate
+    times Xvmax (its own default 0.03 m); a spool mass of 0 is refused."""
+    v = _value
+    params = {"pref": v("8e6"), "Dv": v("0.012"), "Bv": v("50"), "Mv": v("0.02"), "Cq": v("0.7"), "phi": v("1.0"),
+              "ks": v("2e4"), "p0": v("2e5"), "rho": v("860")}
+    components = [("HydraulicPressureRelief2ValveG", "R", params), ("HydraulicTankC", "T1", {}),
+                  ("HydraulicTankC", "T2", {})]
+    connections = [("R.P1", "T1.P1"), ("R.P2", "T2.P1")]
+    path = tmp_path / "relief2.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    valve = imp.system["R"]
+    c = 0.7 * np.pi * 0.012 * np.sin(1.0) * np.sqrt(2 / 860)  # K per metre of opening
+    assert valve.option("spool") == "mass" and valve.option("pilot") == "drop"
+    assert valve.values["tau_m"] == pytest.approx(0.02 / 50) and valve.values["tau"] == pytest.approx(50 / 2e4)
+    assert valve.values["q_nom"] == pytest.approx(c * 0.03 * np.sqrt(valve.values["p_nom"]))
+    assert valve.values["p_crack"] == 8e6 and valve.values["p_tr"] == 2e5
+    assert imp.variables["R.dxv.Value"] == "R#dxv#Value" and imp.variables["R.xv.Value"] == "R#xv#Value"
+    params["Mv"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"R \(HydraulicPressureRelief2ValveG\): Mv = 0"):
         read_hopsan(path)
 
 def _value(text: str, unit: str = "") -> tuple[str, str]:
