@@ -1659,6 +1659,27 @@ def _valve43_ls(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return m
 
 
+def _motor_jload(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicMotorJload.hpp: a Q-type motor of displacement Dm per revolution
+    with its inertia Jm: its equation system (the bilinear transform of Jm θ'' = Dm/2π (p_1 - p_2) - Bm θ' - T_m1,
+    solved with its ports' and shaft's TLM equations) stands for that law, and the flow out of P2
+    Dm/2π θ' + Cim (p_1 - p_2). A Motor (D = Dm per revolution, C_im = Cim, B_m = Bm, J = Jm; no external leakage)
+    whose shaft is Pm1, starting at its node's start angle and speed as Hopsan's integrators. Unlike Hopsan's
+    Pumps&Motors motors it does not clamp its flow (its ports' pressures are only floored at 0 Pa absolute, the
+    volumes' cavity law): option inlet = "free". Jm not above 0 refused."""
+    from hydroservo.components import Motor
+
+    j_m = par("Jm", 0.1)
+    if j_m <= 0.0:
+        par.problems.append(f"{par.where}: Jm = {j_m:g}; only an inertia above 0 is supported")
+        return Mapped()
+    comp = Motor(
+        n, D=f"{par('Dm', 5e-5)!r} m^3/rev", C_im=par("Cim", 0.0), B_m=par("Bm", 0.0), J=j_m,
+        theta0=par.start("Pm1", "Angle", 0.0), omega0=par.start("Pm1", "AngularVelocity", 0.0),
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "Pm1": f"{n}.shaft"})
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -3233,6 +3254,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicValve63OC": _valve63_open_centre,
     "HydraulicValve43LS": _valve43_ls,
     "HydraulicPressureRelief2ValveG": _pressure_valve_g(reducing=False, mass=True),
+    "HydraulicMotorJload": _motor_jload,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

@@ -305,7 +305,8 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
      "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "orifices_g",
-     "special_valves", "valve43", "valve63oc", "valve43ls", "relief2_valve_g"],
+     "special_valves", "valve43", "valve63oc", "valve43ls", "relief2_valve_g",
+     "motor_jload"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -334,7 +335,8 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     that use it, of core 0, its loader no longer reads); HydraulicValve63OC the same with overlaps and its open
     centre closing at 3 mm, and HydraulicValve43LS with its load-sensing port on a drained volume, whose flow
     Hopsan takes from none of A, B, T (no model of Hopsan's uses either). HydraulicPressureRelief2ValveG's spool
-    with mass, underdamped, relieves a volume fed a sine-wave flow, striking both its stops."""
+    with mass, underdamped, relieves a volume fed a sine-wave flow, striking both its stops. HydraulicMotorJload
+    turns both ways under a sine-wave pressure against a sine-wave torque."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -503,6 +505,25 @@ def test_relief2_valve_g_maps_to_a_relief_valve_whose_spool_has_mass(tmp_path: P
     params["Mv"] = v("0")
     path.write_text(_hmf(components, connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"R \(HydraulicPressureRelief2ValveG\): Mv = 0"):
+        read_hopsan(path)
+
+
+def test_motor_jload_maps_to_a_motor_with_its_inertia(tmp_path: Path) -> None:
+    """HydraulicMotorJload: a Motor of D = Dm per revolution, C_im = Cim, B_m = Bm, J = Jm, its flow not clamped
+    (inlet = "free"), its shaft Pm1; Jm of 0 is refused."""
+    v = _value
+    params = {"Dm": v("3e-5"), "Cim": v("2e-11"), "Bm": v("0.3"), "Jm": v("0.02")}
+    components = [("HydraulicMotorJload", "M", params), ("HydraulicTankC", "T1", {}), ("HydraulicTankC", "T2", {}),
+                  ("MechanicTorqueTransformer", "L", {})]
+    connections = [("M.P1", "T1.P1"), ("M.P2", "T2.P1"), ("M.Pm1", "L.P1")]
+    path = tmp_path / "motor.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    motor = read_hopsan(path)["M"]
+    assert motor.values["D"] == pytest.approx(3e-5 / (2 * np.pi)) and motor.values["C_im"] == 2e-11
+    assert (motor.values["B_m"], motor.values["J"]) == (0.3, 0.02) and motor.option("inlet") == "free"
+    params["Jm"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"M \(HydraulicMotorJload\): Jm = 0"):
         read_hopsan(path)
 
 def _value(text: str, unit: str = "") -> tuple[str, str]:
