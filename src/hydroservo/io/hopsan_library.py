@@ -161,7 +161,7 @@ C_TYPES = frozenset({
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
-    "MechanicSpring", "MechanicTranslationalSpringWithSlack",
+    "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicPiston",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -1678,6 +1678,33 @@ def _motor_jload(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         theta0=par.start("Pm1", "Angle", 0.0), omega0=par.start("Pm1", "AngularVelocity", 0.0),
     )
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "Pm1": f"{n}.shaft"})
+
+
+def _piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPiston.hpp: a C-type piston without mass, friction, leakage or end
+    stops: its chambers transmission-line volumes V1 = V01 + A1 limit(-x, 0, SL) and V2 = V02 + A2 limit(SL + x,
+    0, SL) (x the position of Pm1, Zc = betae Ts/((1 - alpha) V), their waves filtered by alpha as a
+    HydraulicVolume's: the volume V in the limit of a vanishing step), the force wave A1 c_1 - A2 c_2 at Pm1 (its
+    impedance A1² Zc1 + A2² Zc2). HydraulicCylinderC's law without B_p, leakage and stops: a Cylinder with V_A0 =
+    V01, V_B0 = V02 + A2 SL, beta_e = betae, no stops, the chambers' cavity law at 0 Pa absolute, absolute
+    pressures on the piston (p_amb 0 Pa_abs), starting at its ports' start pressures; alpha (a numerical filter)
+    has no continuous counterpart. Outside [0, SL] Hopsan's chamber volumes stop changing, the Cylinder's do not:
+    the cylinder's travel check flags a piston driven there. A1, A2, V01, V02, SL or betae not above 0 refused."""
+    from hydroservo.components import Cylinder
+
+    a1, a2, sl = par("A1", 0.001), par("A2", 0.001), par("SL", 0.5)
+    v1, v2, beta = par("V01", 0.001), par("V02", 0.001), par("betae", 1.7e7)
+    bad = [f"{k} = {val:g}" for k, val in (("A1", a1), ("A2", a2), ("SL", sl), ("V01", v1), ("V02", v2),
+                                          ("betae", beta)) if not val > 0.0]
+    if bad:
+        par.problems.append(f"{par.where}: {', '.join(bad)}; only values above 0 are supported")
+        return Mapped()
+    comp = Cylinder(
+        n, A_A=a1, A_B=a2, V_A0=v1, V_B0=v2 + a2 * sl, beta_e=beta, B_p=0.0, C_Li=0.0, x_min=0.0, x_max=sl,
+        k_stop=0.0, c_stop=0.0, pressure_floor="cavity-ports", p_floor="0 Pa_abs", p_amb="0 Pa_abs",
+        pA0=_abs(par.start("P1", "Pressure", 1e5)), pB0=_abs(par.start("P2", "Pressure", 1e5)),
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "Pm1": f"{n}.R"})
 
 
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -3255,6 +3282,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicValve43LS": _valve43_ls,
     "HydraulicPressureRelief2ValveG": _pressure_valve_g(reducing=False, mass=True),
     "HydraulicMotorJload": _motor_jload,
+    "HydraulicPiston": _piston,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

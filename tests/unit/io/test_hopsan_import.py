@@ -306,7 +306,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
      "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "orifices_g",
      "special_valves", "valve43", "valve63oc", "valve43ls", "relief2_valve_g",
-     "motor_jload"],
+     "motor_jload", "piston"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -336,7 +336,8 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     centre closing at 3 mm, and HydraulicValve43LS with its load-sensing port on a drained volume, whose flow
     Hopsan takes from none of A, B, T (no model of Hopsan's uses either). HydraulicPressureRelief2ValveG's spool
     with mass, underdamped, relieves a volume fed a sine-wave flow, striking both its stops. HydraulicMotorJload
-    turns both ways under a sine-wave pressure against a sine-wave torque."""
+    turns both ways under a sine-wave pressure against a sine-wave torque. HydraulicPiston pushes a mass against a
+    spring, its rod-side chamber cavitating (its piston pulled by the chamber's pressure below 0 Pa absolute)."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -524,6 +525,28 @@ def test_motor_jload_maps_to_a_motor_with_its_inertia(tmp_path: Path) -> None:
     params["Jm"] = v("0")
     path.write_text(_hmf(components, connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"M \(HydraulicMotorJload\): Jm = 0"):
+        read_hopsan(path)
+
+
+def test_hopsan_piston_maps_to_a_cylinder_without_friction_leakage_or_stops(tmp_path: Path) -> None:
+    """HydraulicPiston: a Cylinder of A1, A2, V01, V02 + A2 SL (chamber 2 measured from the other end), betae, no
+    friction, leakage or stops, its cavity floored at the ports only (pressure_floor = "cavity-ports"), its rod
+    Pm1; a stroke of 0 is refused."""
+    v = _value
+    params = {"A1": v("2e-3"), "A2": v("1e-3"), "V01": v("3e-4"), "V02": v("4e-4"), "SL": v("0.4"), "betae": v("8e8")}
+    components = [("HydraulicPiston", "P", params), ("HydraulicLaminarOrifice", "O1", {}),
+                  ("HydraulicLaminarOrifice", "O2", {}), ("MechanicTranslationalMass", "M", {})]
+    connections = [("P.P1", "O1.P1"), ("P.P2", "O2.P1"), ("P.Pm1", "M.P1")]
+    path = tmp_path / "piston.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    cyl = read_hopsan(path)["P"]
+    assert (cyl.values["A_A"], cyl.values["A_B"], cyl.values["V_A0"]) == (2e-3, 1e-3, 3e-4)
+    assert cyl.values["V_B0"] == pytest.approx(4e-4 + 1e-3 * 0.4) and cyl.values["beta_e"] == 8e8
+    assert (cyl.values["B_p"], cyl.values["C_Li"], cyl.values["k_stop"], cyl.values["c_stop"]) == (0, 0, 0, 0)
+    assert cyl.option("pressure_floor") == "cavity-ports"
+    params["SL"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"P \(HydraulicPiston\): SL = 0"):
         read_hopsan(path)
 
 def _value(text: str, unit: str = "") -> tuple[str, str]:
