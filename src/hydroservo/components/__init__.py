@@ -96,7 +96,14 @@ from hydroservo.components.signals import (
     Table,
     Table2D,
 )
-from hydroservo.components.sources import ConstantPressure, FlowSource, PressureSource, PressureTable, Tank
+from hydroservo.components.sources import (
+    ConstantPressure,
+    FlowSource,
+    HeadTank,
+    PressureSource,
+    PressureTable,
+    Tank,
+)
 from hydroservo.components.spools import (
     FlapperNozzleSpool,
     SpoolFirstOrder,
@@ -166,6 +173,7 @@ __all__ = [
     "Function",
     "ConstantPressure",
     "Tank",
+    "HeadTank",
     "PressureTable",
     "Volume",
     "Line",

@@ -161,7 +161,7 @@ C_TYPES = frozenset({
     "HydraulicVolume", "HydraulicVolumeMultiPort", "HydraulicCylinderC", "MechanicTranslationalSpring",
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
-    "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicPiston",
+    "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicPiston", "HydraulicFuelTankG",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -1705,6 +1705,27 @@ def _piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         pA0=_abs(par.start("P1", "Pressure", 1e5)), pB0=_abs(par.start("P2", "Pressure", 1e5)),
     )
     return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "Pm1": f"{n}.R"})
+
+
+def _fuel_tank(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/FuelComponents/HydraulicFuelTankG.hpp: a C component of wave variable
+    (p0 + gx hx ρ)·[massfuel > 0] and no impedance, hx = hf massfuel/massfuelmax, massfuel = massfuel0 - consfuel,
+    consfuel the trapezoidal integral of -ρ q_T (the flow out) limited to [0, massfuel0 + 1e-4] (its memory with
+    it): a HeadTank (p0 absolute, rho = rhofuel, g = gx, h_full = hf, m_full = massfuelmax, m0 = massfuel0, the
+    mass within [-1e-4 kg, massfuel0] as Hopsan's limit, vacuum when empty). Outputs massfuel and consfuel the
+    tank's mass and m_used. massfuelmax or rhofuel not above 0, or massfuel0 below 0, refused."""
+    from hydroservo.components import HeadTank
+
+    rho, m_full, m0 = par("rhofuel", 700.0), par("massfuelmax", 1000.0), par("massfuel0", 1000.0)
+    if not (rho > 0.0 and m_full > 0.0 and m0 >= 0.0):
+        par.problems.append(f"{par.where}: rhofuel = {rho:g} kg/m^3, massfuelmax = {m_full:g} kg, massfuel0 = {m0:g} "
+                            "kg; only rhofuel, massfuelmax above 0 and massfuel0 of 0 or more are supported")
+        return Mapped()
+    comp = HeadTank(
+        n, p0=_abs(par("p0", 1e5)), rho=rho, g=par("gx", 9.82), h_full=par("hf", 5.0), m_full=m_full, m0=m0,
+        m_min=-1e-4, m_max=max(m0, 1e-4), p_vac=_abs(0.0),
+    )
+    return Mapped([comp], power={"PT": f"{n}.P"}, outputs={"massfuel": f"{n}.mass", "consfuel": f"{n}.m_used"})
 
 
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
@@ -3283,6 +3304,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicPressureRelief2ValveG": _pressure_valve_g(reducing=False, mass=True),
     "HydraulicMotorJload": _motor_jload,
     "HydraulicPiston": _piston,
+    "HydraulicFuelTankG": _fuel_tank,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

@@ -306,7 +306,7 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
      "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "orifices_g",
      "special_valves", "valve43", "valve63oc", "valve43ls", "relief2_valve_g",
-     "motor_jload", "piston"],
+     "motor_jload", "piston", "fuel_tank"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -337,7 +337,9 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     Hopsan takes from none of A, B, T (no model of Hopsan's uses either). HydraulicPressureRelief2ValveG's spool
     with mass, underdamped, relieves a volume fed a sine-wave flow, striking both its stops. HydraulicMotorJload
     turns both ways under a sine-wave pressure against a sine-wave torque. HydraulicPiston pushes a mass against a
-    spring, its rod-side chamber cavitating (its piston pulled by the chamber's pressure below 0 Pa absolute)."""
+    spring, its rod-side chamber cavitating (its piston pulled by the chamber's pressure below 0 Pa absolute).
+    HydraulicFuelTankG is drawn empty and refilled by a sine-wave flow, its mass held at its start value when
+    filled beyond it."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -547,6 +549,28 @@ def test_hopsan_piston_maps_to_a_cylinder_without_friction_leakage_or_stops(tmp_
     params["SL"] = v("0")
     path.write_text(_hmf(components, connections), encoding="utf-8")
     with pytest.raises(ModelFileError, match=r"P \(HydraulicPiston\): SL = 0"):
+        read_hopsan(path)
+
+
+def test_fuel_tank_maps_to_a_head_tank(tmp_path: Path) -> None:
+    """HydraulicFuelTankG: a HeadTank of p0 (absolute), rhofuel, gx, hf, massfuelmax, its mass from massfuel0
+    within [-1e-4 kg, massfuel0], vacuum when empty; its outputs massfuel and consfuel; massfuelmax of 0 refused."""
+    v = _value
+    params = {"gx": v("9.81"), "rhofuel": v("750"), "p0": v("2e5"), "hf": v("3"), "massfuel0": v("40"),
+              "massfuelmax": v("80")}
+    components = [("HydraulicFuelTankG", "F", params), ("HydraulicLaminarOrifice", "O", {}), ("HydraulicTankC", "T", {})]
+    connections = [("F.PT", "O.P1"), ("O.P2", "T.P1")]
+    path = tmp_path / "fuel.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    tank = imp.system["F"].values
+    assert tank["p0"] == pytest.approx(2e5 - 101325.0) and tank["p_vac"] == pytest.approx(-101325.0)
+    assert (tank["rho"], tank["g"], tank["h_full"], tank["m_full"], tank["m0"]) == (750, 9.81, 3, 80, 40)
+    assert (tank["m_min"], tank["m_max"]) == (-1e-4, 40)
+    assert imp.variables["F.massfuel.Value"] == "F#massfuel#Value"
+    params["massfuelmax"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"F \(HydraulicFuelTankG\): rhofuel = 750 kg/m\^3, massfuelmax = 0"):
         read_hopsan(path)
 
 def _value(text: str, unit: str = "") -> tuple[str, str]:
