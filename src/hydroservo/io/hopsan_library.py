@@ -1728,6 +1728,51 @@ def _fuel_tank(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     return Mapped([comp], power={"PT": f"{n}.P"}, outputs={"massfuel": f"{n}.mass", "consfuel": f"{n}.m_used"})
 
 
+def _pressure_controlled_pump_g(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPressureControlledPumpG.hpp: a Q-type pump (P1 suction, P2 outlet,
+    P3 its reference, read without flow) whose regulator filters the error u = pdif - (p_2 - p_3) into the rate of
+    its displacement flow, dqp = s (1 + s/ω_p1e)/((L_pe s + R_pe)(τ_v s + 1)) u (bilinear, solved with its ports'
+    TLM equations; L_pe, R_pe = Lp, Rp times f = speednom √(pnom/p_2)/speed, ω_p1e = wp1 speed/speednom), dqp
+    within ±(1 - epsmin) Dp speed/2π √(p_2/pnom)/Tp, Tm and qp, its trapezoidal integral, within [epsmin, 1] Dp
+    speed/2π, each clamped with its memory; the flow at P2 qp - Kcp (p_2 - p_1). A LoadSensingPump with
+    ``regulator = "g"`` (D = Dp per revolution, omega = speed, C_leak = Kcp, p_dif = pdif, l_p = Lp, R_p = Rp,
+    omega_p1 = wp1, tau_v = tauv, t_p = Tp, t_m = Tm, eps_min = epsmin, p_nom = pnom, omega_nom = speednom; no flow
+    clamp: its ports are only floored at 0 Pa absolute, the volumes' cavity law), starting at rest at the start
+    value of qp (dqp's taken as 0). Its bilinear transform divides each step's terms by that step's f: the filter
+    acts on u/f (class notes of LoadSensingPump). Outputs qp and eps = qp/(Dp speed/2π); dqp is not aliased; qmin
+    and rho enter none of Hopsan's equations. A speed driven by a signal is refused (the regulator takes a constant
+    speed); values Hopsan divides by not above 0 and epsmin outside [0, 1] are refused."""
+    from hydroservo.components import LoadSensingPump
+
+    values = {k: par(k, d) for k, d in (("speed", 157.0), ("Dp", 3e-4), ("pnom", 7e6), ("speednom", 157.0),
+                                         ("tauv", 0.05), ("Tp", 0.001), ("Tm", 0.001), ("Lp", 1.83e10),
+                                         ("wp1", 13.3))}
+    bad = [f"{k} = {v:g}" for k, v in values.items() if not v > 0.0]
+    eps_min = par("epsmin", 0.0)
+    if not 0.0 <= eps_min <= 1.0:
+        bad.append(f"epsmin = {eps_min:g}")
+    if bad:
+        par.problems.append(f"{par.where}: {', '.join(bad)}; only values above 0 and epsmin in [0, 1] are supported")
+        return Mapped()
+    speed = values["speed"]
+    comp = LoadSensingPump(
+        n, regulator="g", D=f"{values['Dp']!r} m^3/rev", omega=speed, C_leak=par("Kcp", 1e-12), p_dif=par("pdif", 2e7),
+        l_p=values["Lp"], R_p=par("Rp", 1.68e10), omega_p1=values["wp1"], tau_v=values["tauv"], t_p=values["Tp"],
+        t_m=values["Tm"], eps_min=eps_min, p_nom=values["pnom"], omega_nom=values["speednom"],
+    )
+    q_max = comp.values["D"] * speed
+    q0 = min(max(par("qp", 0.0), eps_min * q_max), q_max)
+    p2 = max(par.start("P2", "Pressure", 1e5), 0.0)
+    u0 = par("pdif", 2e7) - p2 + max(par.start("P3", "Pressure", 1e5), 0.0)
+    big_u0 = math.sqrt(max(p2, 1.0) / values["pnom"]) * max(speed, 0.1) / values["speednom"] * u0
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.S", "P2": f"{n}.P", "P3": f"{n}.X"},
+        values={"qp": Var(1.0, f"{n}.eps", scale=f"{n}.D*{n}.omega", unit="m^3/s"), "eps": Var(1.0, f"{n}.eps")},
+        initial={f"{n}.q": q0, f"{n}.wu": big_u0, f"{n}.wh": big_u0},
+    )
+
+
 def _variable_pump(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     from hydroservo.components import Pump
 
@@ -3305,6 +3350,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicMotorJload": _motor_jload,
     "HydraulicPiston": _piston,
     "HydraulicFuelTankG": _fuel_tank,
+    "HydraulicPressureControlledPumpG": _pressure_controlled_pump_g,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

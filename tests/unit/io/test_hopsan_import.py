@@ -573,6 +573,33 @@ def test_fuel_tank_maps_to_a_head_tank(tmp_path: Path) -> None:
     with pytest.raises(ModelFileError, match=r"F \(HydraulicFuelTankG\): rhofuel = 750 kg/m\^3, massfuelmax = 0"):
         read_hopsan(path)
 
+
+def test_pressure_controlled_pump_g_maps_to_the_g_regulator_and_follows_hopsans_run() -> None:
+    """HydraulicPressureControlledPumpG: a LoadSensingPump with regulator = "g" (its parameters by Hopsan's names),
+    on hopsan_circuits/pressure_controlled_pump_g.hmf (the circuit of pressure_controlled_pump with the G pump:
+    it destrokes from its start flow to its minimum as its outlet fills, then the orifice closes and a flow is
+    drawn). Every trace within 0.5 % of its range but the pump's: its displacement flow qp (and eps) lags Hopsan's
+    by about 1.5 ms while the outlet pressure ramps at the start, 1.1 % of its range (the regulator takes the
+    rates of its error and lead through lags of tau_v/100, G_LAG), its port flows 0.53 %; known, not tuned."""
+    imp = import_hopsan(CIRCUITS / "pressure_controlled_pump_g.hmf")
+    pump = imp.system["Pump"]
+    assert pump.option("regulator") == "g" and pump.option("inlet") == "free"
+    assert pump.values["D"] == pytest.approx(1e-4 / (2 * np.pi)) and pump.values["omega"] == 157.0
+    assert (pump.values["l_p"], pump.values["R_p"], pump.values["omega_p1"]) == (1.83e10, 1.68e10, 13.3)
+    assert (pump.values["tau_v"], pump.values["t_p"], pump.values["t_m"], pump.values["eps_min"]) == (0.05, 0.02, 0.03, 0.05)
+    columns = (CIRCUITS / "pressure_controlled_pump_g.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    ref = np.loadtxt(CIRCUITS / "pressure_controlled_pump_g.csv", delimiter=",", skiprows=1)
+    result = imp.system.simulate(t_eval=ref[:, 0])
+    by_hopsan = {hopsan: alias for alias, hopsan in imp.variables.items()}
+    worst = {}
+    for i, column in enumerate(columns[1:], start=1):
+        y, y_ref = np.asarray(result[by_hopsan[column]])[1:], ref[1:, i]
+        scale = max(float(np.ptp(y_ref)), 0.01 * float(np.max(np.abs(y_ref))), 1e-12)
+        worst[column] = float(np.max(np.abs(y - y_ref))) / scale
+    known = {c: d for c, d in worst.items() if c.startswith(("Pump#", "TS#")) and not c.endswith("#Pressure")}
+    assert max(known.values()) <= 0.012 and max(known.values()) > 0.005  # the known lag, not more
+    assert all(d <= 0.005 for c, d in worst.items() if c not in known), worst
+
 def _value(text: str, unit: str = "") -> tuple[str, str]:
     return (text, unit)
 
