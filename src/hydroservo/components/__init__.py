@@ -117,10 +117,18 @@ from hydroservo.components.signals import (
     Table2D,
     Table3D,
 )
-from hydroservo.components.sources import ConstantPressure, FlowSource, PressureSource, PressureTable, Tank
+from hydroservo.components.sources import (
+    ConstantPressure,
+    FlowSource,
+    HeadTank,
+    PressureSource,
+    PressureTable,
+    Tank,
+)
 from hydroservo.components.spools import (
     FlapperNozzleSpool,
     SpoolFirstOrder,
+    SpoolOrificeDamped,
     SpoolRateLimited,
     SpoolSecondOrder,
     TorqueMotor,
@@ -188,6 +196,7 @@ __all__ = [
     "Function",
     "ConstantPressure",
     "Tank",
+    "HeadTank",
     "PressureTable",
     "Volume",
     "Line",
@@ -224,6 +233,7 @@ __all__ = [
     "SpoolFirstOrder",
     "SpoolSecondOrder",
     "SpoolRateLimited",
+    "SpoolOrificeDamped",
     "TorqueMotor",
     "FlapperNozzleSpool",
     "Step",

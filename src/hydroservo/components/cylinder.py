@@ -32,6 +32,10 @@ from hydroservo.units import VACUUM
 __all__ = ["Cylinder", "FourChamberCylinder"]
 
 
+#: The pressure floors with a cavity to refill (pressure states below the ports' pressures).
+_CAVITY = ("cavity", "cavity-ports")
+
+
 @register
 class Cylinder(Component):
     r"""Double-acting cylinder, differential (``A_B < A_A``) or symmetric (``A_B = A_A``).
@@ -78,6 +82,11 @@ class Cylinder(Component):
       cavitating chamber draws leakage from the other as if its pressure
       were below the floor. Set ``p_floor`` to the pressure at which the oil
       releases gas or vapour, near vacuum (``"0 Pa_abs"``);
+    * ``cavity-ports``: ``cavity`` with the floor at the ports only: the ports see
+      :math:`\max(p_{state}, p_{floor})`, the piston the pressure states themselves, so that a cavitating
+      chamber pulls on it (Hopsan's HydraulicPiston, [Hopsan2026] Hydraulic/Special/HydraulicPiston.hpp, whose
+      force wave :math:`A_1 c_1 - A_2 c_2` is of its chambers' unfloored waves, where HydraulicCylinderC floors
+      them);
     * ``none``: the continuity equation alone (a chamber may go below vacuum,
       which the plausibility check flags).
 
@@ -151,8 +160,8 @@ class Cylinder(Component):
         "bulk_modulus": Option("constant", ("constant", "lee", "eggerth"), "effective bulk modulus law"),
         "pressure_floor": Option(
             "check-valve",
-            ("check-valve", "cavity", "none"),
-            "replenishing check valves, a cavity to refill (Hopsan), or none",
+            ("check-valve", "cavity", "cavity-ports", "none"),
+            "replenishing check valves, a cavity to refill (Hopsan), the same floored at the ports only, or none",
         ),
         "chambers": Option(
             "volumes",
@@ -216,7 +225,7 @@ class Cylinder(Component):
             self.LIMITS = {"x": cls.LIMITS["x"]}  # type: ignore[misc]
             return
         self.INPUTS, self.LIMITS = dict(cls.INPUTS), dict(cls.LIMITS)  # type: ignore[misc]
-        if self.option("pressure_floor") != "cavity":
+        if self.option("pressure_floor") not in _CAVITY:
             self.STATES, self.OUTPUTS = dict(cls.STATES), dict(cls.OUTPUTS)  # type: ignore[misc]
             return
         self.STATES = {  # type: ignore[misc]
@@ -238,7 +247,7 @@ class Cylinder(Component):
         """The chamber pressures the ports and the piston see."""
         if self.option("chambers") == "ports":
             return u["pA"], u["pB"]
-        if self.option("pressure_floor") == "cavity":
+        if self.option("pressure_floor") in _CAVITY:
             return cavity_pressure(x["pA_state"], p["p_floor"]), cavity_pressure(x["pB_state"], p["p_floor"])
         return x["pA"], x["pB"]
 
@@ -271,13 +280,14 @@ class Cylinder(Component):
     ) -> dict[str, Any]:
         pA, pB = self._pressures(x, p, u)
         ports = self.option("chambers") == "ports"
-        cavity = not ports and self.option("pressure_floor") == "cavity"  # Hopsan's leakage: between the states
+        cavity = not ports and self.option("pressure_floor") in _CAVITY  # Hopsan's leakage: between the states
         drop = x["pA_state"] - x["pB_state"] if cavity else pA - pB
         out = {"QLi": p["C_Li"] * drop}
+        fA, fB = (x["pA_state"], x["pB_state"]) if self.option("pressure_floor") == "cavity-ports" else (pA, pB)
         pos = u["x"]
         stop = end_stop_force(pos, u["v"], p["x_min"], p["x_max"], p["k_stop"], p["c_stop"])
         out["F"] = (
-            pA * p["A_A"] - pB * p["A_B"] - p["p_amb"] * (p["A_A"] - p["A_B"]) - p["F_s"] - p["B_p"] * u["v"] + stop
+            fA * p["A_A"] - fB * p["A_B"] - p["p_amb"] * (p["A_A"] - p["A_B"]) - p["F_s"] - p["B_p"] * u["v"] + stop
         )
         if ports:  # the chambers' continuity is the volumes' outside: the flows the piston displaces
             out["QA"] = p["A_A"] * u["v"] + out["QLi"] + p["C_LeA"] * pA
@@ -287,7 +297,7 @@ class Cylinder(Component):
         VA, VB = cylinder_volumes(p["V_A0"], p["V_B0"], p["A_A"], p["A_B"], pos, p["k_V"])
         out["m_oil"] = p["rho"] * (VA + VB)
         out["VA"], out["VB"] = VA, VB
-        if self.option("pressure_floor") == "cavity":
+        if self.option("pressure_floor") in _CAVITY:
             for side, V in (("A", VA), ("B", VB)):
                 out[f"V_cav{side}"] = cavity_volume(x[f"p{side}_state"], p["p_floor"], V, self._bulk(out[f"p{side}"], p))
         return out
@@ -300,7 +310,7 @@ class Cylinder(Component):
         if self.option("chambers") == "ports":
             return found
         floor = self.option("pressure_floor")
-        if floor == "cavity":
+        if floor in _CAVITY:
             found.update({f"floor_{s}": (x[f"p{s}_state"] - p["p_floor"], 1e5) for s in ("A", "B")})
         elif floor == "check-valve":
             found.update({f"floor_{s}": (x[f"p{s}"] - p["p_floor"], 1e5) for s in ("A", "B")})
@@ -318,7 +328,7 @@ class Cylinder(Component):
         dpA = pressure_rate(self._bulk(pA, p), VA, u["QA"] - p["A_A"] * vel - QLi - p["C_LeA"] * pA)
         dpB = pressure_rate(self._bulk(pB, p), VB, u["QB"] + p["A_B"] * vel + QLi - p["C_LeB"] * pB)
         floor = self.option("pressure_floor")
-        if floor == "cavity":
+        if floor in _CAVITY:
             return {"pA_state": dpA, "pB_state": dpB}
         if floor == "check-valve":
             dpA = check_valve_floor(pA, dpA, p["p_floor"])

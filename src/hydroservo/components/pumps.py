@@ -36,8 +36,14 @@ from hydroservo.laws.displacement import (
     regulator_rates,
 )
 from hydroservo.laws.orifice import smooth_abs
-from hydroservo.laws.pressure_valve import STOP_RELAXATION
+from hydroservo.laws.pressure_valve import STOP_RELAXATION, limited_rate
 from hydroservo.units import VACUUM
+
+#: The lags by which LoadSensingPump's ``regulator = "g"`` takes the rates of its error and of the lead, as a
+#: fraction of ``tau_v``: 1e-2 delays its regulator by about 1.5 ms against Hopsan's
+#: (tests/unit/io/hopsan_circuits/pressure_controlled_pump_g.hmf: 1.1 % of the displacement flow's range); 1e-3
+#: stalls the solver once the displacement reaches its minimum.
+G_LAG = 1e-2
 
 __all__ = ["Pump", "VariablePump", "LoadSensingPump", "Motor", "Machine", "CentrifugalPump", "CentrifugalPumpInertia"]
 
@@ -194,8 +200,28 @@ class LoadSensingPump(Pump):
     p_S)`. Port X only reads its pressure (no flow). The states start at 0 (no displacement, at rest); at rest
     with a displacement flow :math:`Q_0` and an error :math:`u_0` they are :math:`y = L Q_0`, :math:`v = 0`,
     :math:`w = u_0` (a :math:`w` off :math:`u` at the start is a step of the error: the lead kicks).
+
+    Option ``regulator``: ``standard`` (default), the law above; ``g``, Hopsan's HydraulicPressureControlledPumpG
+    ([Hopsan2026] Hydraulic/Special/HydraulicPressureControlledPumpG.hpp), whose regulator filters the error into
+    the *rate* of the displacement flow, :math:`\dot Q_r = s\,(1 + s/\omega_{p1e})/((\ell s + R)(\tau_v s + 1))\,u`
+    with :math:`\ell = l_p f`, :math:`R = R_p f`, :math:`f = \sqrt{p_{nom}/p_P}\,\omega_{nom}/\max(\omega, 0.1)`,
+    :math:`\omega_{p1e} = \omega_{p1}\max(\omega, 0.1)/\omega_{nom}`: only changes of the error move it. Its
+    bilinear transform divides each step's terms by that step's :math:`f`, so that in the limit of a vanishing
+    step the filter acts on :math:`U = u/f`:
+    :math:`l_p\tau_v\ddot e + (l_p + R_p\tau_v)\dot e + R_p e = \dot h` with :math:`e = \dot Q_r` and
+    :math:`h = U + \dot U/\omega_{p1e}` (the lead); :math:`e` is held within
+    :math:`\pm(1 - \varepsilon_{min}) D\omega\sqrt{p_P/p_{nom}}/t_{p|m}`
+    (:func:`hydroservo.laws.displacement.regulator_rates` on :math:`y = (l_p + R_p\tau_v) e`, no bound on its
+    rate) and :math:`Q_r` (state ``q``) within :math:`[\varepsilon_{min}, 1] D\omega`, each with its memory as
+    Hopsan clamps them; :math:`\dot U` and :math:`\dot h` from lags ``wu`` and ``wh`` of them by ``tau_v``/100.
+    It starts at rest at its displacement flow ``q`` (an initial state) with :math:`e = 0`.
     """
 
+    OPTIONS = {
+        **Pump.OPTIONS,
+        "regulator": Option("standard", ("standard", "g"),
+                            "Hopsan's HydraulicPressureControlledPump's regulator, or HydraulicPressureControlledPumpG's"),
+    }
     PARAMETERS = {
         **Pump.PARAMETERS,
         "p_dif": Param(1e6, "Pa", "pressure difference held from X to P", min=0.0),
@@ -225,6 +251,38 @@ class LoadSensingPump(Pump):
     }
     HYDRAULIC = {**_PUMP_HYDRAULIC, "X": Hydraulic("pX", "QX", "reference port: its pressure only", into=True)}
 
+    def options_changed(self) -> None:
+        """Option ``regulator = "g"``: its states, the displacement flow ``q`` and the lags ``wu``, ``wh`` beside the
+        filter's."""
+        super().options_changed()
+        cls = type(self)
+        self.STATES = dict(cls.STATES)  # type: ignore[misc]
+        if self.option("regulator") == "g":
+            self.STATES = {  # type: ignore[misc]
+                "y": State("Pa", "regulator filter output: (l_p + R_p tau_v) times the displacement flow's rate",
+                           nominal=1e5),
+                "v": State("Pa/s", "rate of y", nominal=1e7),
+                "w": State("Pa/s", "the filter's input lagged by tau_v/100 (unused: its lead is in h)", nominal=1e6),
+                "q": State("m^3/s", "displacement flow", nominal=1e-3),
+                "wu": State("Pa", "U, the pressure error over f, lagged by tau_v/100 (for its rate)", nominal=1e6),
+                "wh": State("Pa", "U with its lead, h, lagged by tau_v/100 (for its rate)", nominal=1e6),
+            }
+
+    def _regulator_g(self, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        """Option regulator = g: the filter of the displacement flow's rate (class notes)."""
+        q_max = p["D"] * p["omega"]
+        speed = bk.fmax(p["omega"], 0.1)
+        inv_f = bk.sqrt(smooth_abs(u["pP"] - VACUUM, 1.0) / p["p_nom"]) * speed / p["omega_nom"]
+        a1 = p["l_p"] + p["R_p"] * p["tau_v"]
+        slew = (1.0 - p["eps_min"]) * q_max * inv_f * p["omega_nom"] / speed
+        big_u = inv_f * (p["p_dif"] - u["pP"] + bk.fmax(u["pX"], VACUUM))
+        tau_d = G_LAG * p["tau_v"]
+        h = big_u + (big_u - x["wu"]) / tau_d / (p["omega_p1"] * speed / p["omega_nom"])
+        return {
+            "q_max": q_max, "a1": a1, "g1": p["l_p"] * p["tau_v"] / a1, "g2": p["R_p"] / a1, "U": big_u, "h": h,
+            "r": (h - x["wh"]) / tau_d, "e_max": slew / p["t_p"], "e_min": -slew / p["t_m"],
+        }
+
     def _regulator(self, u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
         q_max = p["D"] * p["omega"]
         ell = p["l_p"] * bk.sqrt(p["p_nom"] / bk.fmax(u["pP"] - VACUUM, 1.0)) * p["omega_nom"] / (p["omega"] + 0.001)
@@ -239,6 +297,9 @@ class LoadSensingPump(Pump):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
+        if self.option("regulator") == "g":
+            eps = bk.clip(x["q"] / (p["D"] * p["omega"]), p["eps_min"], 1.0)
+            return {**self._delivery(u, p, eps), "eps": eps, "QX": 0.0}
         r = self._regulator(u, p)
         eps = bk.clip(x["y"] / (r["L"] * r["q_max"]), p["eps_min"], 1.0)
         return {**self._delivery(u, p, eps), "eps": eps, "QX": 0.0}
@@ -246,6 +307,19 @@ class LoadSensingPump(Pump):
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
+        if self.option("regulator") == "g":
+            g = self._regulator_g(x, u, p)
+            big = 1e30  # the filter's rate is not bounded, its output (the flow's rate) is; its lead is in h
+            tau_d = G_LAG * p["tau_v"]
+            ydot, vdot, wdot = regulator_rates(
+                x["y"], x["v"], x["w"], g["r"], g["g1"], g["g2"], big, g["a1"] * g["e_min"], g["a1"] * g["e_max"],
+                -big, big, 0.01 * p["tau_v"], STOP_RELAXATION * p["tau_v"],
+            )
+            q_min = p["eps_min"] * g["q_max"]
+            e = bk.fmin(bk.fmax(x["y"] / g["a1"], g["e_min"]), g["e_max"])
+            qdot = limited_rate(x["q"] - q_min, e, g["q_max"] - q_min, STOP_RELAXATION * p["tau_v"])
+            return {"y": ydot, "v": vdot, "w": wdot, "q": qdot, "wu": (g["U"] - x["wu"]) / tau_d,
+                    "wh": (g["h"] - x["wh"]) / tau_d}
         r = self._regulator(u, p)
         ydot, vdot, wdot = regulator_rates(
             x["y"], x["v"], x["w"], r["u"], r["g1"], r["g2"], p["omega_p1"], p["eps_min"] * r["q_max"] * r["L"],

@@ -21,9 +21,10 @@ from hydroservo.components.base import (
     register,
 )
 from hydroservo.errors import ParameterError
+from hydroservo.laws.pressure_valve import limited_rate
 from hydroservo.units import VACUUM, to_si
 
-__all__ = ["ConstantPressure", "Tank", "PressureTable", "PressureSource", "FlowSource"]
+__all__ = ["ConstantPressure", "Tank", "HeadTank", "PressureTable", "PressureSource", "FlowSource"]
 
 
 @register
@@ -54,6 +55,71 @@ class Tank(ConstantPressure):
     OUTPUTS = {"p": Output("Pa", "tank pressure")}
     HYDRAULIC = {"P": Hydraulic("p", "Q", "return port")}
 
+
+
+@register
+class HeadTank(Component):
+    r"""A tank whose outlet pressure is the pressure above its liquid plus the liquid's head, which falls as it empties.
+
+    .. math:: p = p_0 + \rho\,g\,h_{full}\,\frac{m}{m_{full}} \;\; (m > 0), \qquad
+              p = p_{vac} \;\; (m \le 0), \qquad \dot m = \rho\,Q
+
+    the hydrostatic pressure at the bottom of a tank of constant section, its liquid's mass ``m`` (a state, from
+    ``m0``) changed by the flow ``Q`` into it through port P, held within [``m_min``, ``m_max``] without wind-up
+    (:func:`hydroservo.laws.pressure_valve.limited_rate`, relaxed over ``t_stop``); an empty tank (``m`` at or
+    below 0) gives vacuum at its outlet. Hopsan's HydraulicFuelTankG ([Hopsan2026]
+    Hydraulic/Special/FuelComponents/HydraulicFuelTankG.hpp): its consumed mass, the trapezoidal integral of
+    -ρ q_T limited to [0, m0 + 1e-4 kg], is ``m0 - m`` (output ``m_used``), its wave variable
+    (p0 + g h ρ)·[m > 0] with no impedance this pressure. Pressures gauge; vacuum is ``p_vac``.
+    """
+
+    PARAMETERS = {
+        "p0": Param(0.0, "Pa", "pressure above the liquid (gauge)", min=VACUUM),
+        "rho": Param(870.0, "kg/m^3", "density of the liquid", min=0.0, min_inclusive=False, fluid="density"),
+        "g": Param(9.81, "m/s^2", "acceleration of gravity", min=0.0),
+        "h_full": Param(1.0, "m", "height of the liquid in the full tank", min=0.0),
+        "m_full": Param(1000.0, "kg", "mass of the liquid in the full tank", min=0.0, min_inclusive=False),
+        "m0": Param(1000.0, "kg", "initial mass of the liquid"),
+        "m_min": Param(-1e-4, "kg", "lowest mass, a little below empty (Hopsan's: 1e-4 kg below)", max=0.0,
+                       max_inclusive=False),
+        "m_max": Param(1000.0, "kg", "highest mass", min=0.0, min_inclusive=False),
+        "p_vac": Param(VACUUM, "Pa", "outlet pressure of the empty tank (gauge)", min=VACUUM),
+        "t_stop": Param(1e-6, "s", "time over which the mass's approach to a bound is relaxed", min=0.0,
+                        min_inclusive=False),
+    }
+    STATES = {"m": State("kg", "mass of the liquid", initial="m0", nominal=1.0)}
+    INPUTS = {"Q": Port("m^3/s", "flow into the tank through port P", default=0.0)}
+    OUTPUTS = {
+        "p": Output("Pa", "outlet pressure"),
+        "mass": Output("kg", "mass of the liquid (the state m)"),
+        "m_used": Output("kg", "mass drawn since the start, m0 - m"),
+    }
+    HYDRAULIC = {"P": Hydraulic("p", "Q", "outlet port", into=True)}
+
+    def check(self) -> None:
+        v = self.values
+        if not v["m_min"] <= v["m0"] <= v["m_max"]:
+            raise ParameterError(
+                f"{self.name}.m0 = {v['m0']:g} kg: expected within m_min = {v['m_min']:g} and m_max = {v['m_max']:g} kg"
+            )
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        head = p["p0"] + p["rho"] * p["g"] * p["h_full"] * x["m"] / p["m_full"]
+        return {"p": bk.if_else(x["m"] > 0.0, head, p["p_vac"]), "mass": x["m"], "m_used": p["m0"] - x["m"]}
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        rate = p["rho"] * u["Q"]
+        return {"m": limited_rate(x["m"] - p["m_min"], rate, p["m_max"] - p["m_min"], p["t_stop"])}
+
+    def switch_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, tuple[Any, float]]:
+        """The tank running empty, where its outlet pressure drops to vacuum."""
+        return {"empty": (x["m"], 1.0)}
 
 @register
 class PressureTable(Component):

@@ -167,7 +167,8 @@ C_TYPES = frozenset({
     "MechanicForceTransformer", "MechanicTorqueTransformer", "MechanicTorsionalSpring", "MechanicRotShaft",
     "MechanicRotShaftG", "MechanicGearShaft", "HydraulicMachineC", "HydraulicSpringLoadedPistonC", "MechanicMotor",
     "MechanicSpring", "MechanicTranslationalSpringWithSlack", "HydraulicFourChamberPiston", "HydraulicTLMlossless",
-    "HydraulicHose", "HydraulicPumpPiston", "HydraulicCSource", "MechanicTranslationalCSource",
+    "HydraulicHose", "HydraulicPumpPiston", "HydraulicCSource", "MechanicTranslationalCSource", "HydraulicPiston",
+    "HydraulicFuelTankG",
 })
 
 #: Hopsan's multiports, by type: each connection to one is a node of its own (Hopsan gives each its own flow)
@@ -380,7 +381,7 @@ def _compensating(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
-def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool = False) -> Builder:
+def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool = False, mass: bool = False) -> Builder:
     """[Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp and HydraulicPressureReducingValveG.hpp:
     a massless spool of diameter Dv, damped by Bv, pushed by the pilot on its area A_v = π Dv²/4 (relief:
     p_1 - p_2 - pref; reducing: pref - p_2) against its spring ks and the steady flow force 2 Cq w cos φ (p_1 - p_2)
@@ -404,8 +405,15 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool
     HydraulicPressureCompensatingValveG.hpp (reducing: Δp_over = pref + p3 - p2, a PressureReducingValve with
     ``pilot = "port"``, P3 its X); pref is then a difference of pressures. Their flow forces take |p1 - p2|, the
     relief and reducing G valves' the drop with its sign, as hydroservo's does: the two differ only for a flow
-    from P2 to P1."""
-    if counterbalance:
+    from P2 to P1.
+
+    ``mass``: [Hopsan2026] Hydraulic/Special/HydraulicPressureRelief2ValveG.hpp, the relief valve's spool with mass
+    Mv, A_v/(Mv s² + Bv s + k_e) clamped to [0, Xvmax] with its memory (inelastic stops), its whole circumference
+    open (w = π Dv sin φ, no frac): ``spool = "mass"``, tau_m = Mv/Bv; its own defaults (Xvmax 0.03 m); outputs
+    xv = s Xvmax and dxv = ds Xvmax (0 at a stop, as Hopsan's dxLimit)."""
+    if mass:
+        defaults = {"Dv": 0.01, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.03, "pref": 1e7}
+    elif counterbalance:
         defaults = {"Dv": 0.03, "phi": 0.03, "ks": 100.0, "Bv": 100.0, "Xvmax": 0.03, "pref": 1e6}
     elif reducing and ported:  # the compensating valve's own defaults
         defaults = {"Dv": 0.03, "phi": 1.17, "ks": 1e4, "Bv": 1000.0, "Xvmax": 0.01, "pref": 1e6}
@@ -415,12 +423,13 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         from hydroservo.components import CounterbalanceValve, PressureReducingValve, ReliefValve
 
-        rho, dv, frac, phi = par("rho", 870.0), par("Dv", defaults["Dv"]), par("frac", 0.1), par("phi", defaults["phi"])
+        rho, dv, phi = par("rho", 870.0), par("Dv", defaults["Dv"]), par("phi", defaults["phi"])
+        frac = 1.0 if mass else par("frac", 0.1)
         ks, bv = par("ks", defaults["ks"]), par("Bv", defaults["Bv"])
         x_vmax, cq = par("Xvmax", defaults["Xvmax"]), par("Cq", 0.67)
         before = len(par.problems)
         for name, value in (("rho", rho), ("Dv", dv), ("frac", frac), ("ks", ks), ("Bv", bv), ("Xvmax", x_vmax),
-                            ("Cq", cq), ("p0", par("p0", 1e5))):
+                            ("Cq", cq), ("p0", par("p0", 1e5)), *((("Mv", par("Mv", 0.03)),) if mass else ())):
             if value <= 0.0:
                 par.problems.append(f"{par.where}: {name} = {value:g}; only a value above 0 is supported")
         if not 0.0 < phi < math.pi / 2:
@@ -445,6 +454,8 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool
             "p_nom": p_nom,
             "p_tr": par("p0", 1e5),
         }
+        if mass:
+            spool.update(spool="mass", tau_m=par("Mv", 0.03) / bv)
         comp: cbase.Component
         power = {"P1": f"{n}.A", "P2": f"{n}.B"}
         if counterbalance:
@@ -464,10 +475,13 @@ def _pressure_valve_g(reducing: bool, counterbalance: bool = False, ported: bool
             comp = PressureReducingValve(n, p_set=_abs(par("pref", defaults["pref"])), **spool)
         else:
             comp = ReliefValve(n, p_crack=par("pref", defaults["pref"]), pilot="drop", **spool)
+        values = {"xv": Var(x_vmax, f"{n}.s")}
+        if mass:  # Hopsan's outputs: its spool's position and velocity
+            values["dxv"] = Var(x_vmax, f"{n}.ds")
         return Mapped(
             [comp],
             power=power,
-            values={"xv": Var(x_vmax, f"{n}.s")},
+            values=values,
             initial={f"{n}.K": c * min(max(par("xv", 0.0), 0.0), x_vmax)},
         )
 
@@ -1427,6 +1441,413 @@ def _directional_check_valve(hc: HopsanComponent, n: str, par: _Params) -> Mappe
         initial=spool.initial,
         internal=[*spool.internal, (f"{n}_spool.xv", f"{n}_pilot.u"), (f"{n}_pilot.y", f"{n}.open")],
         note="a Selector (open while in > 0.5), a SpoolSecondOrder, a Gain and a CheckValve (pilot = open)",
+    )
+
+
+# -- Hopsan's orifices with geometric parameters, its poppet and 3/3 shuttle valves ---------------------------
+
+
+def _geometric_orifice_inputs(par: _Params, names: tuple[str, ...]) -> bool:
+    """Whether the parameters ``names`` of a geometric orifice are all above 0 (a problem noted for each that is
+    not: Hopsan's law divides by them)."""
+    bad = [f"{name} = {par(name, 1.0):g}" for name in names if not par(name, 1.0) > 0.0]
+    if bad:
+        par.problems.append(f"{par.where}: {', '.join(bad)}; only values above 0 are supported")
+    return not bad
+
+
+def _orifice_g(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Restrictors/HydraulicOrificeG.hpp (ports P1, P2) and
+    Hydraulic/Special/HydraulicOrificeCheckValveG.hpp (ports Pp, Pc): Hopsan's equation, solved by Newton
+    iterations each step, is the algebraic flow q = 2 Δp/√((C_dt² L² μ² + 2 δ⁴ d_h⁴ ρ|Δp|)/(A_o² C_dt² δ⁴ d_h⁴))
+    with L = d_h + 32 δ² l_o (3 - s_f), i.e. Δp/√(R_lam² + R_turb²): the laminar resistance L μ/(2 A_o δ² d_h²)
+    and the turbulent √(ρ|Δp|/2)/(C_dt A_o) added in quadrature. An Orifice with ``law = "blend"`` (n_blend = 2),
+    k_lam = 2 δ² d_h²/(L μ), its bore of area A_o, C_d = C_dt. The check valve's law is the same with s_f = 0
+    and the area A_b for flow from Pp to Pc, A_o back (``d_back``); its dhb enters no equation of Hopsan's. The
+    outputs Ro, DRL and Cd (Reynolds number, discharge coefficient) are not aliased."""
+    from hydroservo.components import Orifice
+
+    check = hc.typename == "HydraulicOrificeCheckValveG"
+    d_h, ell = par("dh", 0.3 if check else 0.0025), par("lo", 0.001)
+    delta, mu = par("del", 0.02 if check else 0.157), par("visc", 0.12)
+    a_o, c_d = par("Ao", 0.0003 if check else 1e-7), par("Cdt", 0.67 if check else 0.611)
+    a_b = par("Ab", 0.0001)
+    shape = 0.0 if check else par("sf", 0.0)
+    names = ("Ao", "Ab", "dh", "del", "visc", "Cdt") if check else ("Ao", "dh", "del", "visc", "Cdt")
+    big_l = d_h + 32.0 * delta**2 * ell * (3.0 - shape)
+    ok = _geometric_orifice_inputs(par, names)
+    if c_d > 1.0:
+        par.problems.append(f"{par.where}: Cdt = {c_d:g}; a discharge coefficient in (0, 1] is supported")
+        ok = False
+    if big_l <= 0.0:
+        par.problems.append(f"{par.where}: dh + 32 del^2 lo (3 - sf) = {big_l:g} m is not above 0")
+        ok = False
+    if not ok:
+        return Mapped()
+    bore = math.sqrt(4.0 * (a_b if check else a_o) / math.pi)
+    comp = Orifice(
+        n,
+        law="blend",
+        d=bore,
+        d_back=math.sqrt(4.0 * a_o / math.pi) if check else 0.0,
+        Cd=c_d,
+        rho=par("rho", 870.0),
+        k_lam=2.0 * delta**2 * d_h**2 / (big_l * mu),
+        n_blend=2.0,
+    )
+    ports = ("Pp", "Pc") if check else ("P1", "P2")
+    return Mapped([comp], power={ports[0]: f"{n}.A", ports[1]: f"{n}.B"})
+
+
+def _slit_orifice(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicSlitOrifice.hpp: Hopsan's equation, solved by Newton iterations
+    each step, is the algebraic flow q = 8 Δp/((1024 A_o⁸ δ⁸ Δp² ρ² + C_d⁴ μ⁴ S_o⁴ M²)/(A_o¹² C_d⁴ δ⁸))^(1/4)
+    with M = A_o² + 64 δ⁴ l_o² (3 - s_f)² S_o² (its sum of three terms in μ⁴ is S_o⁴ M²), i.e.
+    Δp/(R_lam⁴ + R_turb⁴)^(1/4): the laminar resistance μ S_o √M/(8 A_o³ δ²) and the turbulent √(ρ|Δp|/2)/(C_d A_o)
+    added as a 4-norm. An Orifice with ``law = "blend"``, n_blend = 4, k_lam = 8 A_o² δ²/(μ S_o √M), its bore of
+    area A_o. The height b enters only Hopsan's output DRL; the outputs Ro, DRL and Cde are not aliased."""
+    from hydroservo.components import Orifice
+
+    a_o, s_o, ell = par("Ao", 1e-7), par("So", 0.002), par("lo", 0.001)
+    delta, mu, c_d = par("del", 0.157), par("visc", 0.12), par("Cd", 0.611)
+    if not _geometric_orifice_inputs(par, ("Ao", "So", "del", "visc", "Cd")):
+        return Mapped()
+    if c_d > 1.0:
+        par.problems.append(f"{par.where}: Cd = {c_d:g}; a discharge coefficient in (0, 1] is supported")
+        return Mapped()
+    big_m = a_o**2 + 64.0 * delta**4 * ell**2 * (3.0 - par("sf", 0.0)) ** 2 * s_o**2
+    comp = Orifice(
+        n,
+        law="blend",
+        d=math.sqrt(4.0 * a_o / math.pi),
+        Cd=c_d,
+        rho=par("rho", 870.0),
+        k_lam=8.0 * a_o**2 * delta**2 / (mu * s_o * math.sqrt(big_m)),
+        n_blend=4.0,
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B"})
+
+
+def _poppet_valve(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/Hydraulic22PoppetValve.hpp: a massless poppet x in [0, x_vmax] (its limited
+    integrator, starting at xv_out) whose seat opens PS to PN as C_q π d_1 f x √(2/ρ) √Δp, pushed open by p_N on
+    A_N = π d_1²/4 and p_S on A_S = π d_2²/4 - A_N, held by its spring F_0 + k x; its spring chamber (A_C = π d_2²/4)
+    at p_c = (A_N p_N + A_S p_S - F_0 - k x)/A_C drains to PC through the damping orifice d_d,
+    q_C = C_q π d_d²/4 √(2/ρ) √(p_c - p_C), and A_C ẋ = q_C. A SpoolOrificeDamped ``{n}_poppet`` (its ports 1 and 2
+    on PN and PS, C on PC; the orifice's law regularised below 100 Pa) and a TwoWayValve ``{n}`` (PS its A, PN its
+    B, x_AB = 0, turbulent to some 40 Pa as Hopsan's other valves). A_N + A_S = A_C, so the atmosphere cancels in
+    the poppet's balance. Output xv_out the poppet's position. x_vmax or d_d not above 0 refused."""
+    from hydroservo.components import SpoolOrificeDamped, TwoWayValve
+
+    rho, c_q = par("rho", 870.0), par("C_q", 0.67)
+    d_1, d_2, x_vmax, d_d = par("d_1", 10e-3), par("d_2", 10e-3), par("x_vmax", 0.01), par("d_d", 0.1e-3)
+    if not (x_vmax > 0.0 and d_d > 0.0 and d_2 > 0.0 and rho > 0.0):
+        par.problems.append(f"{par.where}: x_vmax = {x_vmax:g} m, d_d = {d_d:g} m, d_2 = {d_2:g} m, rho = {rho:g} "
+                            "kg/m^3; only values above 0 are supported")
+        return Mapped()
+    a_n, a_c = math.pi * d_1**2 / 4.0, math.pi * d_2**2 / 4.0
+    poppet = SpoolOrificeDamped(
+        f"{n}_poppet", A_1=a_n, A_2=a_c - a_n, A_c=a_c, F_0=par("F_0", 100.0), k_s=par("k", 1e4),
+        K_d=c_q * math.pi * d_d**2 / 4.0 * math.sqrt(2.0 / rho), x_min=0.0, x_max=x_vmax,
+        x0=min(max(par("xv_out", 0.0), 0.0), x_vmax),
+    )
+    valve = TwoWayValve(n, c_v=_edge_coefficient(par, par("f", 1.0), rho, d="d_1"), x_AB=0.0, rho=rho, D_h="1 mm",
+                        lambda_crit=10.0)
+    return Mapped(
+        [poppet, valve],
+        power={"PS": f"{n}.A", "PN": f"{n}.B", "PC": f"{n}_poppet.C"},
+        outputs={"xv_out": f"{n}_poppet.xv"},
+        internal=[(f"{n}.B", f"{n}_poppet.P1"), (f"{n}.A", f"{n}_poppet.P2"), (f"{n}_poppet.xv", f"{n}.xv")],
+        note="a SpoolOrificeDamped (the poppet) and a TwoWayValve (its seat)",
+    )
+
+
+def _shuttle_valve33(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Valves/Hydraulic33ShuttleValve.hpp: a massless spool x_v in [-x_vmax, x_vmax]
+    (starting at xv_out) between two end chambers, fed from PP through the damping orifice d_1 and drained to PT
+    through d_2 (K_i = C_q π d_i²/4 √(2/ρ)): the chambers at p = (K_1² p_P + K_2² p_T)/(K_1² + K_2²), where the
+    two flows are equal, and A ẋ_v = K_1 √(p_P - p), A = π d²/4: the two orifices in series, K_1 K_2/√(K_1² + K_2²)
+    √(p_P - p_T). Its edges P-A open as -x_v - x_pa and A-T as x_v - x_at, C_q f π d √(2/ρ) wide. A
+    SpoolOrificeDamped ``{n}_spool`` (A_1 = A_c = A, port 1 on PP, C on PT, ``damping_flow = "none"``: Hopsan counts
+    the chambers' oil at no port), a Gain of -1 and a ThreeWayValve ``{n}`` on -x_v (its P-A opening as
+    -x_v - x_pa, A-T as x_v - x_at; turbulent to some 40 Pa). Hopsan reads the previous step's pressures for the
+    spool, the same as the step vanishes. Output xv_out the spool's position. x_vmax, d_1, d_2 or d not above 0
+    refused."""
+    from hydroservo.components import Gain, SpoolOrificeDamped, ThreeWayValve
+
+    rho, c_q, d = par("rho", 870.0), par("C_q", 0.67), par("d", 0.01)
+    x_vmax, d_1, d_2 = par("x_vmax", 0.01), par("d_1", 1e-3), par("d_2", 1e-3)
+    if not (x_vmax > 0.0 and d_1 > 0.0 and d_2 > 0.0 and d > 0.0 and rho > 0.0):
+        par.problems.append(f"{par.where}: x_vmax = {x_vmax:g} m, d_1 = {d_1:g} m, d_2 = {d_2:g} m, d = {d:g} m, "
+                            f"rho = {rho:g} kg/m^3; only values above 0 are supported")
+        return Mapped()
+    k_1, k_2 = (c_q * math.pi * di**2 / 4.0 * math.sqrt(2.0 / rho) for di in (d_1, d_2))
+    area = math.pi * d**2 / 4.0
+    spool = SpoolOrificeDamped(
+        f"{n}_spool", damping_flow="none", A_1=area, A_2=0.0, A_c=area, F_0=0.0, k_s=0.0,
+        K_d=k_1 * k_2 / math.sqrt(k_1**2 + k_2**2), x_min=-x_vmax, x_max=x_vmax,
+        x0=min(max(par("xv_out", 0.0), -x_vmax), x_vmax),
+    )
+    flip = Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0)
+    valve = ThreeWayValve(
+        n, c_PA=_edge_coefficient(par, par("f_pa", 1.0), rho), c_AT=_edge_coefficient(par, par("f_at", 1.0), rho),
+        x_PA=par("x_pa", -1e-6), x_AT=par("x_at", -1e-6), rho=rho, D_h="1 mm", lambda_crit=10.0,
+    )
+    return Mapped(
+        [spool, flip, valve],
+        power={"PP": f"{n}.P", "PT": f"{n}.T", "PA": f"{n}.A"},
+        outputs={"xv_out": f"{n}_spool.xv"},
+        internal=[(f"{n}.P", f"{n}_spool.P1"), (f"{n}.T", f"{n}_spool.C"), (f"{n}_spool.xv", f"{n}_flip.u"),
+                  (f"{n}_flip.y", f"{n}.xv")],
+        note="a SpoolOrificeDamped (damping_flow = none), a Gain of -1 and a ThreeWayValve",
+    )
+
+
+def _special_four_way(n: str, par: _Params, overlap: bool, sd: float = 0.01, lap: float = 0.0) -> Mapped:
+    """The four edges of Hopsan's Special 4/3 valves (HydraulicValve43, HydraulicValve43LS, HydraulicValve63OC)
+    as a FourWayValve behind a Saturation of the spool position xv [m] to ±Xvmax: edge conductances
+    Ks π Fr Sd times P-A's limit(±Xap0 + xv, 0, ±Xap0 + Xvmax), A-T's limit(±Xap0 - xv, 0, ±Xat0 + Xvmax), P-B's
+    limit(±Xap0 - xv, 0, ±Xbp0 + Xvmax) and B-T's limit(±Xap0 + xv, 0, ±Xbt0 + Xvmax) (+ for HydraulicValve43,
+    whose Xap0 is an underlap: laps -Xap0; - with ``overlap``: laps +Xap0), Ks = Cq √(2/ρ), the flows
+    Ks·signedSquareL(Δp, plam) = Ks Δp/(Δp² + plam²)^(1/4) (their equation systems, solved by Newton iterations
+    each step, stand for these algebraic flows): the transition pressure plam exactly (D_h chosen so), the
+    saturated xv the openings' upper limits. Every edge opens from Xap0 (Xat0, Xbp0, Xbt0 only bound them): one of
+    them different from Xap0 is refused, as are unequal fractions Frap ... Frbt (one c_v). ``sd`` and ``lap``: the
+    component file's defaults of Sd and of the laps."""
+    from hydroservo.components import FourWayValve, Saturation
+
+    rho = par("rho", 870.0)
+    x0, x_vmax, plam = par("Xap0", lap), par("Xvmax", 0.01), par("plam", 1e4)
+    others = [f"{name} = {par(name, lap):g} m" for name in ("Xat0", "Xbp0", "Xbt0") if par(name, lap) != x0]
+    if others:
+        par.problems.append(
+            f"{par.where}: {', '.join(others)} differ from Xap0 = {x0:g} m: Hopsan's edges all open from Xap0, with "
+            "their limits at X..0 + Xvmax, which a FourWayValve of one lap per edge does not have"
+        )
+    if plam <= 0.0 or x_vmax <= 0.0:
+        par.problems.append(f"{par.where}: plam = {plam:g} Pa, Xvmax = {x_vmax:g} m; only values above 0 are supported")
+        plam, x_vmax = 1e4, 0.01
+    edges = _valve33_edges(par, rho, x0, plam)
+    fraction = _equal_fractions(par, ("Frap", "Frat", "Frbp", "Frbt"))
+    c_v = par("Cq", 0.67) * fraction * math.pi * par("Sd", sd) * math.sqrt(2.0 / rho)
+    x_lap = x0 if overlap else -x0
+    valve = FourWayValve(
+        n, c_v=c_v, xv_max=x_vmax, x_PA=x_lap, x_AT=x_lap, x_PB=x_lap, x_BT=x_lap,
+        **{k: edges[k] for k in ("rho", "nu", "lambda_crit", "D_h")},
+    )
+    limit = Saturation(f"{n}_xv", unit="m", lower=-x_vmax, upper=x_vmax)
+    return Mapped(
+        [limit, valve],
+        power={"Pp": f"{n}.P", "Pt": f"{n}.T", "Pa": f"{n}.A", "Pb": f"{n}.B"},
+        inputs={"xv": f"{n}_xv.u"},
+        internal=[(f"{n}_xv.y", f"{n}.xv")],
+        note="a Saturation (xv limited to ±Xvmax) and a FourWayValve",
+    )
+
+
+def _valve43_special(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicValve43.hpp: HydraulicValve33's law with port B, a 4/3 valve whose
+    spool position xv [m] is its input (no spool dynamics): its edges open from the underlap Xap0
+    (:func:`_special_four_way`: a Saturation and a FourWayValve of laps -Xap0). The flow-force outputs ffpa, ffta,
+    ffpb, fftb, ff are not aliased."""
+    return _special_four_way(n, par, overlap=False)
+
+
+def _valve63_open_centre(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicValve63OC.hpp: a 6/3 open-centre valve whose spool position xv [m]
+    is its input: four edges opening past the overlap Xap0 (:func:`_special_four_way`, laps +Xap0) and an
+    open-centre edge from Pocp to Poct of conductance Ks π Froc Sd limit(Xoc0 - |xv|, 0, Xoc0), turbulent with the
+    onset plam as the others: an Absolute of xv (the input's, unsaturated, as Hopsan's; a Gain of 1 ``{n}_in``
+    takes the input to both) and a Gain of -1 into a TwoWayValve ``{n}_centre`` of overlap -Xoc0, whose opening
+    Xoc0 - |xv| is never above Xoc0 (its own clamp at 0 is Hopsan's lower limit). Xoc0 < 0 is refused."""
+    from hydroservo.components import Absolute, Gain, TwoWayValve
+
+    m = _special_four_way(n, par, overlap=True, sd=0.015)
+    rho, x_oc, plam = par("rho", 870.0), par("Xoc0", 0.0), max(par("plam", 1e4), 1.0)
+    if x_oc < 0.0:
+        par.problems.append(f"{par.where}: Xoc0 = {x_oc:g} m; an open-centre underlap of 0 or more is supported")
+    edges = _valve33_edges(par, rho, 0.0, plam)
+    centre = TwoWayValve(
+        f"{n}_centre", c_v=par("Cq", 0.67) * par("Froc", 1.0) * math.pi * par("Sd", 0.015) * math.sqrt(2.0 / rho),
+        x_AB=-x_oc,
+        **{k: edges[k] for k in ("rho", "nu", "lambda_crit", "D_h")},
+    )
+    entry = Gain(f"{n}_in", unit="m", input_unit="m", K=1.0)
+    m.components += [entry, Absolute(f"{n}_abs", unit="m"), Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0), centre]
+    m.inputs = {"xv": f"{n}_in.u"}
+    m.power.update({"Pocp": f"{n}_centre.A", "Poct": f"{n}_centre.B"})
+    m.internal += [(f"{n}_in.y", f"{n}_xv.u"), (f"{n}_in.y", f"{n}_abs.u"), (f"{n}_abs.y", f"{n}_flip.u"),
+                   (f"{n}_flip.y", f"{n}_centre.xv")]
+    m.note += "; the centre edge Pocp-Poct: an Absolute and a Gain (its opening from xv) and a TwoWayValve"
+    return m
+
+
+def _valve43_ls(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicValve43LS.hpp: a 4/3 valve whose spool position xv [m] is its input,
+    its edges opening past the overlap Xap0 (:func:`_special_four_way`, laps +Xap0), with a load-sensing port Pls
+    joined to A, B and T by three more edges of conductance Ks wls times LS-A's limit(xv - Xlsa0, 0,
+    Xvlsmax - Xlsa0), LS-B's limit(-xv - Xlsb0, 0, Xvlsmax - Xlsb0) and LS-T's limit(Xls0 - |xv|, 0, Xls0),
+    turbulent with the onset plam. Hopsan takes their flow at Pls only: A, B and T see none of it (their flows are
+    the four main edges'). Here the LS edges run between Pls and three PressureSources ``{n}_mirror_a``, ``_b``,
+    ``_t`` that hold the pressures of A, B and T (each read by a Sum ``{n}_p<port>``, absolute, as a sensor reads
+    its node), so that their oil comes from and goes to no node, as Hopsan's: a ThreeWayValve ``{n}_ls`` (its P on
+    A's mirror, A on Pls, T on B's mirror; xv limited to ±Xvlsmax by a Saturation ``{n}_xls``) and a TwoWayValve
+    ``{n}_lst`` (Pls to T's mirror, on -|xv|, overlap -Xls0); Pls's flow is their sum, a Sum ``{n}_Qls``. A Gain
+    of 1 ``{n}_in`` takes the input to the three. Xvlsmax, wls or Xls0 below 0 are refused."""
+    from hydroservo.components import Absolute, Gain, PressureSource, Saturation, Sum, ThreeWayValve, TwoWayValve
+
+    m = _special_four_way(n, par, overlap=True, lap=0.0003)
+    rho, plam = par("rho", 870.0), max(par("plam", 1e4), 1.0)
+    x_lsmax, w_ls, x_ls0 = par("Xvlsmax", 0.001), par("wls", 0.01), par("Xls0", 0.0003)
+    if x_lsmax <= 0.0 or w_ls < 0.0 or x_ls0 < 0.0:
+        par.problems.append(f"{par.where}: Xvlsmax = {x_lsmax:g} m, wls = {w_ls:g} m, Xls0 = {x_ls0:g} m; only "
+                            "Xvlsmax above 0 and wls, Xls0 of 0 or more are supported")
+        x_lsmax = 0.001
+    fluid = {k: v for k, v in _valve33_edges(par, rho, 0.0, plam).items() if k in ("rho", "nu", "lambda_crit", "D_h")}
+    c_ls = par("Cq", 0.67) * w_ls * math.sqrt(2.0 / rho)
+    blocks: list[cbase.Component] = [Gain(f"{n}_in", unit="m", input_unit="m", K=1.0)]
+    internal = [(f"{n}_in.y", f"{n}_xv.u")]
+    read: dict[str, tuple[str, str]] = {}
+    for port in ("a", "b", "t"):
+        blocks += [Sum(f"{n}_p{port}", unit="Pa", gain2=0.0), PressureSource(f"{n}_mirror_{port}", p0="0 Pa_abs")]
+        internal.append((f"{n}_p{port}.y", f"{n}_mirror_{port}.u"))
+        read[f"P{port}"] = (f"{n}_p{port}.u1", "Pressure")
+    blocks += [
+        Saturation(f"{n}_xls", unit="m", lower=-x_lsmax, upper=x_lsmax),
+        ThreeWayValve(f"{n}_ls", c_PA=c_ls, c_AT=c_ls, x_PA=par("Xlsa0", 0.0003), x_AT=par("Xlsb0", 0.0003), **fluid),
+        Absolute(f"{n}_abs", unit="m"),
+        Gain(f"{n}_flip", unit="m", input_unit="m", K=-1.0),
+        TwoWayValve(f"{n}_lst", c_v=c_ls, x_AB=-x_ls0, **fluid),
+        Sum(f"{n}_Qls", unit="m^3/s", gain1=1.0, gain2=-1.0),
+    ]
+    internal += [
+        (f"{n}_in.y", f"{n}_xls.u"), (f"{n}_xls.y", f"{n}_ls.xv"), (f"{n}_mirror_a.P", f"{n}_ls.P"),
+        (f"{n}_mirror_b.P", f"{n}_ls.T"), (f"{n}_in.y", f"{n}_abs.u"), (f"{n}_abs.y", f"{n}_flip.u"),
+        (f"{n}_flip.y", f"{n}_lst.xv"), (f"{n}_ls.A", f"{n}_lst.A"), (f"{n}_mirror_t.P", f"{n}_lst.B"),
+        (f"{n}_ls.QA", f"{n}_Qls.u1"), (f"{n}_lst.Q", f"{n}_Qls.u2"),
+    ]
+    m.components += blocks
+    m.inputs = {"xv": f"{n}_in.u"}
+    m.power["Pls"] = f"{n}_ls.A"
+    m.read = read
+    m.flow["Pls"] = f"{n}_Qls.y"  # Hopsan's flow out of the valve at Pls: the LS edges' to A and B less LS-T's
+    m.internal += internal
+    m.note += ("; the load-sensing edges: a ThreeWayValve (LS-A, LS-B) and a TwoWayValve (LS-T) between Pls and "
+               "PressureSources holding A's, B's and T's pressures (read by Sums)")
+    return m
+
+
+def _motor_jload(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicMotorJload.hpp: a Q-type motor of displacement Dm per revolution
+    with its inertia Jm: its equation system (the bilinear transform of Jm θ'' = Dm/2π (p_1 - p_2) - Bm θ' - T_m1,
+    solved with its ports' and shaft's TLM equations) stands for that law, and the flow out of P2
+    Dm/2π θ' + Cim (p_1 - p_2). A Motor (D = Dm per revolution, C_im = Cim, B_m = Bm, J = Jm; no external leakage)
+    whose shaft is Pm1, starting at its node's start angle and speed as Hopsan's integrators. Unlike Hopsan's
+    Pumps&Motors motors it does not clamp its flow (its ports' pressures are only floored at 0 Pa absolute, the
+    volumes' cavity law): option inlet = "free". Jm not above 0 refused."""
+    from hydroservo.components import Motor
+
+    j_m = par("Jm", 0.1)
+    if j_m <= 0.0:
+        par.problems.append(f"{par.where}: Jm = {j_m:g}; only an inertia above 0 is supported")
+        return Mapped()
+    comp = Motor(
+        n, D=f"{par('Dm', 5e-5)!r} m^3/rev", C_im=par("Cim", 0.0), B_m=par("Bm", 0.0), J=j_m,
+        theta0=par.start("Pm1", "Angle", 0.0), omega0=par.start("Pm1", "AngularVelocity", 0.0),
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "Pm1": f"{n}.shaft"})
+
+
+def _piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPiston.hpp: a C-type piston without mass, friction, leakage or end
+    stops: its chambers transmission-line volumes V1 = V01 + A1 limit(-x, 0, SL) and V2 = V02 + A2 limit(SL + x,
+    0, SL) (x the position of Pm1, Zc = betae Ts/((1 - alpha) V), their waves filtered by alpha as a
+    HydraulicVolume's: the volume V in the limit of a vanishing step), the force wave A1 c_1 - A2 c_2 at Pm1 (its
+    impedance A1² Zc1 + A2² Zc2). HydraulicCylinderC's law without B_p, leakage and stops: a Cylinder with V_A0 =
+    V01, V_B0 = V02 + A2 SL, beta_e = betae, no stops, the chambers' cavity law at 0 Pa absolute, absolute
+    pressures on the piston (p_amb 0 Pa_abs), starting at its ports' start pressures; alpha (a numerical filter)
+    has no continuous counterpart. Outside [0, SL] Hopsan's chamber volumes stop changing, the Cylinder's do not:
+    the cylinder's travel check flags a piston driven there. A1, A2, V01, V02, SL or betae not above 0 refused."""
+    from hydroservo.components import Cylinder
+
+    a1, a2, sl = par("A1", 0.001), par("A2", 0.001), par("SL", 0.5)
+    v1, v2, beta = par("V01", 0.001), par("V02", 0.001), par("betae", 1.7e7)
+    bad = [f"{k} = {val:g}" for k, val in (("A1", a1), ("A2", a2), ("SL", sl), ("V01", v1), ("V02", v2),
+                                          ("betae", beta)) if not val > 0.0]
+    if bad:
+        par.problems.append(f"{par.where}: {', '.join(bad)}; only values above 0 are supported")
+        return Mapped()
+    comp = Cylinder(
+        n, A_A=a1, A_B=a2, V_A0=v1, V_B0=v2 + a2 * sl, beta_e=beta, B_p=0.0, C_Li=0.0, x_min=0.0, x_max=sl,
+        k_stop=0.0, c_stop=0.0, pressure_floor="cavity-ports", p_floor="0 Pa_abs", p_amb="0 Pa_abs",
+        pA0=_abs(par.start("P1", "Pressure", 1e5)), pB0=_abs(par.start("P2", "Pressure", 1e5)),
+    )
+    return Mapped([comp], power={"P1": f"{n}.A", "P2": f"{n}.B", "Pm1": f"{n}.R"})
+
+
+def _fuel_tank(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/FuelComponents/HydraulicFuelTankG.hpp: a C component of wave variable
+    (p0 + gx hx ρ)·[massfuel > 0] and no impedance, hx = hf massfuel/massfuelmax, massfuel = massfuel0 - consfuel,
+    consfuel the trapezoidal integral of -ρ q_T (the flow out) limited to [0, massfuel0 + 1e-4] (its memory with
+    it): a HeadTank (p0 absolute, rho = rhofuel, g = gx, h_full = hf, m_full = massfuelmax, m0 = massfuel0, the
+    mass within [-1e-4 kg, massfuel0] as Hopsan's limit, vacuum when empty). Outputs massfuel and consfuel the
+    tank's mass and m_used. massfuelmax or rhofuel not above 0, or massfuel0 below 0, refused."""
+    from hydroservo.components import HeadTank
+
+    rho, m_full, m0 = par("rhofuel", 700.0), par("massfuelmax", 1000.0), par("massfuel0", 1000.0)
+    if not (rho > 0.0 and m_full > 0.0 and m0 >= 0.0):
+        par.problems.append(f"{par.where}: rhofuel = {rho:g} kg/m^3, massfuelmax = {m_full:g} kg, massfuel0 = {m0:g} "
+                            "kg; only rhofuel, massfuelmax above 0 and massfuel0 of 0 or more are supported")
+        return Mapped()
+    comp = HeadTank(
+        n, p0=_abs(par("p0", 1e5)), rho=rho, g=par("gx", 9.82), h_full=par("hf", 5.0), m_full=m_full, m0=m0,
+        m_min=-1e-4, m_max=max(m0, 1e-4), p_vac=_abs(0.0),
+    )
+    return Mapped([comp], power={"PT": f"{n}.P"}, outputs={"massfuel": f"{n}.mass", "consfuel": f"{n}.m_used"})
+
+
+def _pressure_controlled_pump_g(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/Special/HydraulicPressureControlledPumpG.hpp: a Q-type pump (P1 suction, P2 outlet,
+    P3 its reference, read without flow) whose regulator filters the error u = pdif - (p_2 - p_3) into the rate of
+    its displacement flow, dqp = s (1 + s/ω_p1e)/((L_pe s + R_pe)(τ_v s + 1)) u (bilinear, solved with its ports'
+    TLM equations; L_pe, R_pe = Lp, Rp times f = speednom √(pnom/p_2)/speed, ω_p1e = wp1 speed/speednom), dqp
+    within ±(1 - epsmin) Dp speed/2π √(p_2/pnom)/Tp, Tm and qp, its trapezoidal integral, within [epsmin, 1] Dp
+    speed/2π, each clamped with its memory; the flow at P2 qp - Kcp (p_2 - p_1). A LoadSensingPump with
+    ``regulator = "g"`` (D = Dp per revolution, omega = speed, C_leak = Kcp, p_dif = pdif, l_p = Lp, R_p = Rp,
+    omega_p1 = wp1, tau_v = tauv, t_p = Tp, t_m = Tm, eps_min = epsmin, p_nom = pnom, omega_nom = speednom; no flow
+    clamp: its ports are only floored at 0 Pa absolute, the volumes' cavity law), starting at rest at the start
+    value of qp (dqp's taken as 0). Its bilinear transform divides each step's terms by that step's f: the filter
+    acts on u/f (class notes of LoadSensingPump). Outputs qp and eps = qp/(Dp speed/2π); dqp is not aliased; qmin
+    and rho enter none of Hopsan's equations. A speed driven by a signal is refused (the regulator takes a constant
+    speed); values Hopsan divides by not above 0 and epsmin outside [0, 1] are refused."""
+    from hydroservo.components import LoadSensingPump
+
+    values = {k: par(k, d) for k, d in (("speed", 157.0), ("Dp", 3e-4), ("pnom", 7e6), ("speednom", 157.0),
+                                         ("tauv", 0.05), ("Tp", 0.001), ("Tm", 0.001), ("Lp", 1.83e10),
+                                         ("wp1", 13.3))}
+    bad = [f"{k} = {v:g}" for k, v in values.items() if not v > 0.0]
+    eps_min = par("epsmin", 0.0)
+    if not 0.0 <= eps_min <= 1.0:
+        bad.append(f"epsmin = {eps_min:g}")
+    if bad:
+        par.problems.append(f"{par.where}: {', '.join(bad)}; only values above 0 and epsmin in [0, 1] are supported")
+        return Mapped()
+    speed = values["speed"]
+    comp = LoadSensingPump(
+        n, regulator="g", D=f"{values['Dp']!r} m^3/rev", omega=speed, C_leak=par("Kcp", 1e-12), p_dif=par("pdif", 2e7),
+        l_p=values["Lp"], R_p=par("Rp", 1.68e10), omega_p1=values["wp1"], tau_v=values["tauv"], t_p=values["Tp"],
+        t_m=values["Tm"], eps_min=eps_min, p_nom=values["pnom"], omega_nom=values["speednom"],
+    )
+    q_max = comp.values["D"] * speed
+    q0 = min(max(par("qp", 0.0), eps_min * q_max), q_max)
+    p2 = max(par.start("P2", "Pressure", 1e5), 0.0)
+    u0 = par("pdif", 2e7) - p2 + max(par.start("P3", "Pressure", 1e5), 0.0)
+    big_u0 = math.sqrt(max(p2, 1.0) / values["pnom"]) * max(speed, 0.1) / values["speednom"] * u0
+    return Mapped(
+        [comp],
+        power={"P1": f"{n}.S", "P2": f"{n}.P", "P3": f"{n}.X"},
+        values={"qp": Var(1.0, f"{n}.eps", scale=f"{n}.D*{n}.omega", unit="m^3/s"), "eps": Var(1.0, f"{n}.eps")},
+        initial={f"{n}.q": q0, f"{n}.wu": big_u0, f"{n}.wh": big_u0},
     )
 
 
@@ -3373,6 +3794,19 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicCheckValvePreLoaded": _check_valve,
     "HydraulicCheckValveWithOrifice": _check_valve_with_orifice,
     "Hydraulic22DirectionalCheckValve": _directional_check_valve,
+    "HydraulicOrificeG": _orifice_g,
+    "HydraulicOrificeCheckValveG": _orifice_g,
+    "HydraulicSlitOrifice": _slit_orifice,
+    "Hydraulic22PoppetValve": _poppet_valve,
+    "Hydraulic33ShuttleValve": _shuttle_valve33,
+    "HydraulicValve43": _valve43_special,
+    "HydraulicValve63OC": _valve63_open_centre,
+    "HydraulicValve43LS": _valve43_ls,
+    "HydraulicPressureRelief2ValveG": _pressure_valve_g(reducing=False, mass=True),
+    "HydraulicMotorJload": _motor_jload,
+    "HydraulicPiston": _piston,
+    "HydraulicFuelTankG": _fuel_tank,
+    "HydraulicPressureControlledPumpG": _pressure_controlled_pump_g,
     "HydraulicVariableDisplacementPump": _variable_pump,
     "HydraulicPressureControlledPump": _pressure_controlled_pump,
     "MechanicVelocityTransformer": _velocity_source,

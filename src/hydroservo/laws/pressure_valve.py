@@ -27,6 +27,7 @@ __all__ = [
     "hysteresis_half_width",
     "valve_hysteresis",
     "spool_balance_rate",
+    "spool_mass_acceleration",
     "flow_force_gradient",
     "limited_lag_rate",
     "limited_rate",
@@ -267,6 +268,45 @@ def valve_hysteresis(target: Any, K: Any, half_width: Any) -> Any:
     [0.5, 1.0, 1.0, 1.5]
     """
     return bk.fmin(bk.fmax(K, target - half_width), target + half_width)
+
+
+def spool_mass_acceleration(balance_rate: Any, dK: Any, tau_m: Any) -> Any:
+    r"""Acceleration of a pressure-control valve's flow coefficient when its spool has mass [m^3/s/Pa^0.5/s^2].
+
+    A spool of mass :math:`M_v`, damped by :math:`B_v`, under the force :math:`F(x)` of its pilot, spring and flow
+    forces: :math:`M_v\ddot x + B_v\dot x = F(x)`. Without mass it moves at :math:`F/B_v`, the rate
+    :math:`r` of :func:`spool_balance_rate` (in the flow coefficient :math:`K = c\,x`); with mass its velocity
+    relaxes to that rate with the mechanical time constant :math:`\tau_m = M_v/B_v`:
+
+    .. math:: \ddot K = \frac{r - \dot K}{\tau_m}
+
+    (the force balance divided by :math:`B_v`; [Hopsan2026] Hydraulic/Special/HydraulicPressureRelief2ValveG.hpp,
+    whose spool is the transfer function :math:`A_v/(M_v s^2 + B_v s + k_e)`).
+
+    Parameters
+    ----------
+    balance_rate : array_like
+        The massless spool's rate, :func:`spool_balance_rate` [m^3/s/Pa^0.5/s].
+    dK : array_like
+        The rate of the flow coefficient, a state [m^3/s/Pa^0.5/s].
+    tau_m : array_like
+        :math:`M_v/B_v` [s], > 0.
+
+    Returns
+    -------
+    array_like
+        :math:`\ddot K` [m^3/s/Pa^0.5/s^2].
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Special/HydraulicPressureRelief2ValveG.hpp.
+
+    Examples
+    --------
+    >>> float(spool_mass_acceleration(2.0, 1.0, 0.5))
+    2.0
+    """
+    return (balance_rate - dK) / tau_m
 
 
 def flow_force_gradient(c_v: Any, dp: Any, rho: Any, phi: Any) -> Any:

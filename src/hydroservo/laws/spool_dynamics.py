@@ -40,11 +40,13 @@ from typing import Any
 import numpy as np
 
 from hydroservo import backend as bk
+from hydroservo.laws.orifice import signed_sqrt
 
 __all__ = [
     "first_order_spool_rate",
     "second_order_spool_acceleration",
     "rate_limited_spool_acceleration",
+    "damping_orifice_flow",
     "pade1_delay",
     "pade2_delay",
 ]
@@ -161,6 +163,52 @@ def rate_limited_spool_acceleration(u: Any, s: Any, v: Any, omega_n: Any, zeta: 
     v_d = omega_n / (2.0 * zeta) * (u - s)
     v_l = 2.0 * L_v / np.pi * bk.atan(np.pi * v_d / (2.0 * L_v))
     return bk.clip(2.0 * zeta * omega_n * (v_l - v), -L_a, L_a)
+
+
+def damping_orifice_flow(F: Any, A_c: Any, p_C: Any, K_d: Any, p_tr: Any = 0.0) -> Any:
+    r"""Flow out of the end chamber of a massless spool or poppet through its damping orifice [m^3/s].
+
+    A spool without mass is in force balance at every instant: the pressure in its end chamber (area
+    :math:`A_c`) is the one that balances the other forces on it, :math:`p_c = F/A_c` (``F`` the force of the
+    pilot pressures less the spring's, pushing the spool into the chamber). The chamber's oil leaves through
+    a damping orifice to the port C at :math:`p_C`, turbulent:
+
+    .. math:: Q = K_d\,\frac{p_c - p_C}{((p_c - p_C)^2 + p_{tr}^2)^{1/4}}, \qquad \dot x = Q/A_c
+
+    (:func:`hydroservo.laws.orifice.signed_sqrt`, regularised below :math:`p_{tr}`), so the spool moves at the
+    speed at which its orifice lets the oil out or in: the damping of Hopsan's poppet and shuttle valves
+    ([Hopsan2026] Hydraulic/Valves/Hydraulic22PoppetValve.hpp, Hydraulic/Valves/Hydraulic33ShuttleValve.hpp).
+
+    Parameters
+    ----------
+    F : array_like
+        Net force pushing the spool into its chamber [N].
+    A_c : array_like
+        Area of the end chamber [m^2], > 0.
+    p_C : array_like
+        Pressure beyond the damping orifice [Pa].
+    K_d : array_like
+        Flow coefficient of the damping orifice, C_q A_d sqrt(2/rho) [m^3/s/Pa^0.5].
+    p_tr : array_like
+        Transition pressure of the regularisation [Pa]; 0 for the turbulent law (NumPy input only).
+
+    Returns
+    -------
+    array_like
+        Flow out of the chamber [m^3/s]; the spool's velocity is this over A_c.
+
+    References
+    ----------
+    [Hopsan2026] Hydraulic/Valves/Hydraulic22PoppetValve.hpp (its spring chamber and damping orifice d_d).
+
+    Examples
+    --------
+    100 N on a 1 cm² chamber: 10 bar above a drain at 0 pushes the oil out through K_d = 1e-9:
+
+    >>> round(float(damping_orifice_flow(100.0, 1e-4, 0.0, 1e-9)) * 1e6, 4)  # cm^3/s
+    1.0
+    """
+    return K_d * signed_sqrt(F / A_c - p_C, p_tr)
 
 
 def pade1_delay(s: Any, w1: Any, delay: Any) -> tuple[Any, Any]:

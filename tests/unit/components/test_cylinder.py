@@ -135,6 +135,20 @@ def test_with_the_cavity_floor_the_internal_leakage_follows_the_pressure_states_
     assert float(out["QLi"]) == pytest.approx(1e-11 * (2e6 - 10e6))
 
 
+
+def test_with_the_cavity_floor_at_the_ports_only_the_piston_sees_the_pressure_states() -> None:
+    """pressure_floor = "cavity-ports" (Hopsan's HydraulicPiston): the ports see max(p_state, p_floor), the piston
+    A_A p_A,state - A_B p_B,state, so that a cavitating chamber pulls on it; "cavity" floors both."""
+    cyl = c.Cylinder("cyl", pressure_floor="cavity-ports", p_floor="0 Pa_abs", A_A=1e-3, A_B=5e-4, p_amb=0.0, B_p=0.0,
+                     k_stop=0.0, c_stop=0.0)
+    p = dict(cyl.values)
+    out = cyl.output_equations(0.0, {"pA_state": 2e6, "pB_state": -3e5}, {"x": 0.05, "v": 0.0}, p)
+    assert float(out["pB"]) == pytest.approx(-101325.0)  # the port sees the floor ...
+    assert float(out["F"]) == pytest.approx(1e-3 * 2e6 - 5e-4 * -3e5)  # ... the piston the state
+    cyl.set_option("pressure_floor", "cavity")
+    out = cyl.output_equations(0.0, {"pA_state": 2e6, "pB_state": -3e5}, {"x": 0.05, "v": 0.0}, p)
+    assert float(out["F"]) == pytest.approx(1e-3 * 2e6 - 5e-4 * -101325.0)
+
 def test_absolute_pressures_have_units() -> None:
     from hydroservo.units import to_si
 

@@ -45,6 +45,25 @@ def test_an_orifice_is_laminar_below_its_transition():
     assert q20 / q10 == pytest.approx(2.0, rel=1e-3)  # proportional to the drop, not to its root
 
 
+
+def test_a_blended_orifice_adds_its_laminar_and_turbulent_resistances() -> None:
+    """Option law = "blend": Q = A dp / (k_lam^-n + (rho |dp| / 2)^(n/2) / Cd^n)^(1/n), checked at a drop where
+    the two resistances are equal (Q = 2^(-1/n) of either law's), far below it (laminar, k_lam A dp) and far above
+    (turbulent); d_back the bore of the back flow; the transition law's nu does not enter."""
+    area, back = np.pi * 1e-3**2 / 4, np.pi * 0.5e-3**2 / 4
+    for n in (2.0, 4.0):
+        o = c.Orifice("o", law="blend", d="1 mm", d_back="0.5 mm", Cd=0.6, rho=870.0, k_lam=2e-5, n_blend=n, nu=1.0)
+
+        def q(dp: float, o: c.Orifice = o) -> float:
+            return float(o.output_equations(0.0, {}, {"pA": 1e5 + dp, "pB": 1e5}, o.values)["Q"])
+
+        dp_eq = 2 * 0.6**2 / (870.0 * 2e-5**2)  # k_lam^-1 = sqrt(rho dp / 2) / Cd
+        assert q(dp_eq) == pytest.approx(2e-5 * area * dp_eq * 2 ** (-1 / n), rel=1e-12)
+        assert q(dp_eq * 1e-4) == pytest.approx(2e-5 * area * dp_eq * 1e-4, rel=1e-3 if n == 4 else 1e-2)
+        turbulent = 0.6 * area * np.sqrt(2 * dp_eq * 1e4 / 870.0)
+        assert q(dp_eq * 1e4) == pytest.approx(turbulent, rel=1e-3 if n == 4 else 1e-2)
+        assert q(-dp_eq) == pytest.approx(-2e-5 * back * dp_eq * 2 ** (-1 / n), rel=1e-12)
+
 def test_a_check_valve_holds_its_cracking_pressure_plus_what_its_opening_needs():
     cv = c.CheckValve("cv", d="5 mm", p_crack="10 bar", dp_open="5 bar", Cd=0.6, rho=870.0)
     r = pump_orifice(cv, c.Pump("pump", D="2 cm^3/rev", omega="1500 rpm")).simulate()

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 from hydroservo import System
 from hydroservo import components as c
@@ -203,6 +204,41 @@ def test_a_balanced_spool_reaches_the_static_opening_with_the_time_constant_its_
     r = _between(inlet, "210 bar", "20 bar", float(t[-1])).simulate(t_eval=t, accuracy=1e-8)
     assert r["rv.K"][-1] == pytest.approx(30e5 / (Cs + Cf * dp), rel=1e-6)
 
+
+
+def test_a_spool_with_mass_is_the_balanced_spools_second_order_response_and_stops_inelastically():
+    """spool = "mass": tau_m K'' + K' = (over - (C_s + C_f dp) K)/(C_s tau) between fixed pressures, from rest at
+    K = 0: K = K_ss (1 - (s2 e^(s1 t) - s1 e^(s2 t))/(s2 - s1)), s1, s2 the roots of tau_m s^2 + s + b
+    (underdamped here: it overshoots); with the full opening below the overshoot, the spool stops there, its
+    velocity lost, and leaves the stop from rest to settle at K_ss."""
+    k_cs, k_cf, tau, tau_m = 1e-8, 2e-8, 0.02, 0.01
+    Cs, Cf = np.sqrt(P_NOM) / k_cs, 1.0 / (k_cf * np.sqrt(P_NOM))
+    dp, over = 190e5, 10e5
+    b = (Cs + Cf * dp) / (Cs * tau)
+    K_ss = over / (Cs + Cf * dp)
+    s1, s2 = np.roots([tau_m, 1.0, b]).astype(complex)
+    t = np.linspace(0.0, 0.05, 11)
+    closed_form = K_ss * (1.0 - (s2 * np.exp(s1 * t) - s1 * np.exp(s2 * t)) / (s2 - s1)).real
+    valve = c.ReliefValve("rv", p_crack="180 bar", pilot="drop", spool="mass", k_cs=k_cs, k_cf=k_cf, tau=tau,
+                          tau_m=tau_m, q_nom="1000 L/min")
+    r = _between(valve, "210 bar", "20 bar", float(t[-1])).simulate(t_eval=t, accuracy=1e-8)
+    np.testing.assert_allclose(r["rv.K"], closed_form, rtol=1e-5, atol=1e-12 * K_ss)
+    assert closed_form.max() > 1.15 * K_ss  # it overshoots
+    # a full opening below the overshoot: the spool reaches it at t0, where its velocity is lost (an inelastic
+    # stop, as Hopsan's clamp), and leaves it from rest: K_ss + (K_max - K_ss) (s2 e^(s1 t') - s1 e^(s2 t'))/(s2 - s1)
+    K_max = 1.05 * K_ss
+
+    def first(time: float) -> float:
+        return float((K_ss * (1.0 - (s2 * np.exp(s1 * time) - s1 * np.exp(s2 * time)) / (s2 - s1))).real) - K_max
+
+    t0 = brentq(first, 0.01, 0.03)
+    valve = c.ReliefValve("rv", p_crack="180 bar", pilot="drop", spool="mass", k_cs=k_cs, k_cf=k_cf, tau=tau,
+                          tau_m=tau_m, q_nom=K_max * np.sqrt(P_NOM))
+    after = t0 + np.array([0.002, 0.005, 0.01])
+    r = _between(valve, "210 bar", "20 bar", 1.0).simulate(t_eval=[0.0, *after, 1.0], accuracy=1e-8)
+    from_rest = K_ss + (K_max - K_ss) * ((s2 * np.exp(s1 * (after - t0)) - s1 * np.exp(s2 * (after - t0))) / (s2 - s1)).real
+    np.testing.assert_allclose(r["rv.K"][1:4], from_rest, rtol=1e-4)
+    assert r["rv.K"][4] == pytest.approx(K_ss, rel=1e-6) and abs(r["rv.ds"][4]) < 1e-6
 
 def test_a_balanced_reducing_valve_takes_the_drop_with_its_sign_and_stops_at_full_opening():
     """Hopsan's flow force 2 Cq w cos(phi) (p_1 - p_2) x takes the drop with its sign: with the outlet above the

@@ -304,7 +304,9 @@ CIRCUITS = Path(__file__).parent / "hopsan_circuits"
 @pytest.mark.parametrize(
     "name",
     ["spring_preload", "unequal_cylinder", "pump_at_zero", "start_value_order", "signal_blocks", "controllers",
-     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "valve416"],
+     "shuttle_valve", "pressure_controlled_pump", "signal_blocks2", "mechanic_gears", "valve416", "orifices_g",
+     "special_valves", "valve43", "valve63oc", "valve43ls", "relief2_valve_g",
+     "motor_jload", "piston", "fuel_tank"],
 )
 def test_small_circuits_match_hopsan(name: str) -> None:
     """Each Hopsan variable these circuits log, against Hopsan's run (hopsan_circuits/README.md), within 0.5 % of
@@ -326,7 +328,21 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     torque, and a lossless MechanicBallScrew driving a spring by a sine-wave torque) have no model of Hopsan's.
     The 4/3 valve of four independent edges (HydraulicValve416, whose own test file Hopsan's loader no longer reads)
     fills and drains two volumes through edges of different widths and laps, their spool positions swept past
-    Xvmax and below closing."""
+    Xvmax and below closing.
+    The geometric orifices (HydraulicOrificeG, HydraulicOrificeCheckValveG, HydraulicSlitOrifice) pass a sine-wave
+    pressure into drained volumes, laminar and turbulent, both ways (no Hopsan model uses them). The poppet valve
+    (Hydraulic22PoppetValve) opens, rests at its stop, closes and rests on its seat as its supply rises and falls;
+    the 3/3 shuttle valve (Hydraulic33ShuttleValve) shuttles between its stops under a sine-wave pressure at PP
+    against a constant one at PT (no Hopsan model uses either). HydraulicValve43 (Special), driven past its stroke
+    by a sine wave, with underlaps and a laminar onset of 1 bar, feeds two drained volumes (Hopsan's two models
+    that use it, of core 0, its loader no longer reads); HydraulicValve63OC the same with overlaps and its open
+    centre closing at 3 mm, and HydraulicValve43LS with its load-sensing port on a drained volume, whose flow
+    Hopsan takes from none of A, B, T (no model of Hopsan's uses either). HydraulicPressureRelief2ValveG's spool
+    with mass, underdamped, relieves a volume fed a sine-wave flow, striking both its stops. HydraulicMotorJload
+    turns both ways under a sine-wave pressure against a sine-wave torque. HydraulicPiston pushes a mass against a
+    spring, its rod-side chamber cavitating (its piston pulled by the chamber's pressure below 0 Pa absolute).
+    HydraulicFuelTankG is drawn empty and refilled by a sine-wave flow, its mass held at its start value when
+    filled beyond it."""
     imp = import_hopsan(CIRCUITS / f"{name}.hmf")
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
@@ -492,6 +508,247 @@ def test_tlm_sources_refuse_what_they_cannot_honour(
     path.write_text(_hmf([(kind, "S", {}), (neighbour[0], "N", {})], connections[:1]), encoding="utf-8")
     assert read_hopsan(path).t_end == 3.0
 
+
+
+def test_geometric_orifices_map_to_the_blended_orifice_law(tmp_path: Path) -> None:
+    """HydraulicOrificeG, HydraulicOrificeCheckValveG and HydraulicSlitOrifice: an Orifice with law = "blend", its
+    laminar coefficient from Hopsan's geometry (k_lam = 2 del^2 dh^2 / (L visc), L = dh + 32 del^2 lo (3 - sf);
+    the slit's 8 Ao^2 del^2 / (visc So sqrt(M))), the check valve's bores Ab forwards and Ao back; parameters that
+    Hopsan's law divides by, when 0, and a discharge coefficient above 1 are refused with the component named."""
+    v = _value
+    components = [
+        ("HydraulicOrificeG", "OG", {"Ao": v("2e-6"), "dh": v("0.001"), "lo": v("0.002"), "visc": v("0.04"),
+                                     "del": v("0.2"), "sf": v("1"), "Cdt": v("0.7"), "rho": v("880")}),
+        ("HydraulicOrificeCheckValveG", "CV", {"Ao": v("1e-6"), "Ab": v("4e-7"), "dh": v("0.001"), "lo": v("0.002"),
+                                               "visc": v("0.04"), "del": v("0.2")}),
+        ("HydraulicSlitOrifice", "SL", {"Ao": v("1e-6"), "So": v("0.004"), "lo": v("0.002"), "visc": v("0.04"),
+                                        "del": v("0.2"), "sf": v("0")}),
+    ]
+    path = tmp_path / "orifices.hmf"
+    path.write_text(_hmf(components, []), encoding="utf-8")
+    system = read_hopsan(path)
+    og, cv, sl = system["OG"], system["CV"], system["SL"]
+    assert og.option("law") == "blend" and og.values["n_blend"] == 2.0 and sl.values["n_blend"] == 4.0
+    assert np.pi * og.values["d"] ** 2 / 4 == pytest.approx(2e-6) and og.values["Cd"] == 0.7
+    assert og.values["rho"] == 880.0 and og.values["d_back"] == 0.0
+    big_l = 0.001 + 32 * 0.04 * 0.002 * 2
+    assert og.values["k_lam"] == pytest.approx(2 * 0.04 * 1e-6 / (big_l * 0.04))
+    assert np.pi * cv.values["d"] ** 2 / 4 == pytest.approx(4e-7) and np.pi * cv.values["d_back"] ** 2 / 4 == pytest.approx(1e-6)
+    assert cv.values["k_lam"] == pytest.approx(2 * 0.04 * 1e-6 / ((0.001 + 32 * 0.04 * 0.002 * 3) * 0.04))
+    assert cv.values["Cd"] == 0.67 and sl.values["Cd"] == 0.611
+    big_m = 1e-12 + 64 * 0.2**4 * 0.002**2 * 9 * 0.004**2
+    assert sl.values["k_lam"] == pytest.approx(8 * 1e-12 * 0.04 / (0.04 * 0.004 * np.sqrt(big_m)))
+    components[0][2]["visc"] = v("0")
+    components[2][2]["Cd"] = v("1.5")
+    path.write_text(_hmf(components, []), encoding="utf-8")
+    refused = r"OG \(HydraulicOrificeG\): visc = 0; only values above 0.*SL \(HydraulicSlitOrifice\): Cd = 1.5; a discharge"
+    with pytest.raises(ModelFileError, match=refused):
+        read_hopsan(path)
+
+
+def test_poppet_and_shuttle33_valves_map_to_an_orifice_damped_spool(tmp_path: Path) -> None:
+    """Hydraulic22PoppetValve: a SpoolOrificeDamped (areas pi d_1^2/4 at PN and the annulus at PS, chamber
+    pi d_2^2/4 drained to PC through d_d) and a TwoWayValve PS-PN of C_q pi d_1 f sqrt(2/rho); Hydraulic33ShuttleValve:
+    a SpoolOrificeDamped whose damping orifices d_1 and d_2 are in series (damping_flow = none), flipped into a
+    ThreeWayValve. The start position xv_out is limited to the stroke; a stroke of 0 is refused."""
+    v = _value
+    components = [
+        ("Hydraulic22PoppetValve", "PV", {"d_1": v("0.008"), "d_2": v("0.01"), "k": v("3e4"), "F_0": v("50"),
+                                          "f": v("0.5"), "x_vmax": v("0.004"), "d_d": v("0.0002"), "xv_out": v("0.02")}),
+        ("Hydraulic33ShuttleValve", "SV", {"d": v("0.012"), "f_pa": v("0.2"), "f_at": v("0.3"), "x_pa": v("1e-4"),
+                                           "x_at": v("-2e-4"), "d_1": v("0.001"), "d_2": v("0.002"), "xv_out": v("-0.003"),
+                                           "rho": v("880")}),
+    ]
+    ports = ["PV.PS", "PV.PN", "PV.PC", "SV.PP", "SV.PT", "SV.PA"]
+    components += [("HydraulicTankC", f"T{i}", {}) for i in range(len(ports))]
+    connections = [(port, f"T{i}.P1") for i, port in enumerate(ports)]
+    path = tmp_path / "valves.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = read_hopsan(path)
+    poppet, seat = system["PV_poppet"].values, system["PV"].values
+    assert poppet["A_1"] == pytest.approx(np.pi * 0.008**2 / 4) and poppet["A_c"] == pytest.approx(np.pi * 0.01**2 / 4)
+    assert poppet["A_1"] + poppet["A_2"] == pytest.approx(poppet["A_c"]) and poppet["F_0"] == 50.0 and poppet["k_s"] == 3e4
+    assert poppet["K_d"] == pytest.approx(0.67 * np.pi * 0.0002**2 / 4 * np.sqrt(2 / 870))
+    assert (poppet["x_min"], poppet["x_max"], poppet["x0"]) == (0.0, 0.004, 0.004)
+    assert seat["c_v"] == pytest.approx(0.67 * np.pi * 0.008 * 0.5 * np.sqrt(2 / 870)) and seat["x_AB"] == 0.0
+    spool, edges = system["SV_spool"], system["SV"].values
+    k_1, k_2 = (0.67 * np.pi * d**2 / 4 * np.sqrt(2 / 880) for d in (0.001, 0.002))
+    assert spool.option("damping_flow") == "none" and spool.values["x0"] == -0.003
+    assert spool.values["K_d"] == pytest.approx(k_1 * k_2 / np.hypot(k_1, k_2))
+    assert spool.values["A_1"] == spool.values["A_c"] == pytest.approx(np.pi * 0.012**2 / 4)
+    assert (spool.values["x_min"], spool.values["x_max"]) == (-0.01, 0.01) and system["SV_flip"].values["K"] == -1.0
+    assert edges["c_PA"] == pytest.approx(0.67 * 0.2 * np.pi * 0.012 * np.sqrt(2 / 880))
+    assert edges["c_AT"] == pytest.approx(0.67 * 0.3 * np.pi * 0.012 * np.sqrt(2 / 880))
+    assert (edges["x_PA"], edges["x_AT"]) == (1e-4, -2e-4)
+    components[0][2]["x_vmax"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"PV \(Hydraulic22PoppetValve\): x_vmax = 0 m"):
+        read_hopsan(path)
+
+
+def test_special_valve43_63oc_and_43ls_map_to_a_four_way_valve_on_their_limited_input(tmp_path: Path) -> None:
+    """HydraulicValve43 (Special): a Saturation of xv to ±Xvmax and a FourWayValve of c_v = Cq Fr pi Sd sqrt(2/rho),
+    every edge underlapped by Xap0, its transition pressure plam (D_h chosen so); HydraulicValve63OC's edges
+    overlapped by Xap0 and its open centre a TwoWayValve of Cq Froc pi Sd sqrt(2/rho) open below |xv| = Xoc0;
+    HydraulicValve43LS's load-sensing edges a ThreeWayValve (LS-A, LS-B, Ks wls wide) and a TwoWayValve (LS-T)
+    between Pls and PressureSources holding A's, B's and T's pressures; Xat0 unlike Xap0 is refused."""
+    from hydroservo.laws.orifice import transition_pressure
+
+    v = _value
+    params = {"rho": v("860"), "Sd": v("0.012"), "Frap": v("0.5"), "Frat": v("0.5"), "Frbp": v("0.5"), "Frbt": v("0.5"),
+              "Xap0": v("3e-4"), "Xat0": v("3e-4"), "Xbp0": v("3e-4"), "Xbt0": v("3e-4"), "Xvmax": v("0.004"),
+              "plam": v("2e5")}
+    ports = ["V.Pp", "V.Pt", "V.Pa", "V.Pb"]
+    components = [("HydraulicValve43", "V", params), *(("HydraulicTankC", f"T{i}", {}) for i in range(4))]
+    connections = [(port, f"T{i}.P1") for i, port in enumerate(ports)]
+    path = tmp_path / "valve43.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    system = read_hopsan(path)
+    valve = system["V"].values
+    assert valve["c_v"] == pytest.approx(0.67 * 0.5 * np.pi * 0.012 * np.sqrt(2 / 860))
+    assert [valve[k] for k in ("x_PA", "x_AT", "x_PB", "x_BT")] == [-3e-4] * 4
+    assert transition_pressure(valve["D_h"], valve["rho"], valve["nu"], valve["lambda_crit"]) == pytest.approx(2e5)
+    assert (system["V_xv"].values["lower"], system["V_xv"].values["upper"]) == (-0.004, 0.004)
+    oc = {**params, "Froc": v("0.25"), "Xoc0": v("0.002")}
+    oc_ports = ["W.Pp", "W.Pt", "W.Pa", "W.Pb", "W.Pocp", "W.Poct"]
+    oc_components = [("HydraulicValve63OC", "W", oc), *(("HydraulicTankC", f"U{i}", {}) for i in range(6))]
+    oc_connections = [(port, f"U{i}.P1") for i, port in enumerate(oc_ports)]
+    path.write_text(_hmf(oc_components, oc_connections), encoding="utf-8")
+    system = read_hopsan(path)
+    assert [system["W"].values[k] for k in ("x_PA", "x_AT", "x_PB", "x_BT")] == [3e-4] * 4  # overlaps here
+    centre = system["W_centre"].values
+    assert centre["c_v"] == pytest.approx(0.67 * 0.25 * np.pi * 0.012 * np.sqrt(2 / 860)) and centre["x_AB"] == -0.002
+    assert transition_pressure(centre["D_h"], centre["rho"], centre["nu"], centre["lambda_crit"]) == pytest.approx(2e5)
+    ls = {**params, "wls": v("0.003"), "Xlsa0": v("1e-4"), "Xlsb0": v("2e-4"), "Xls0": v("5e-4"), "Xvlsmax": v("0.002")}
+    ls_ports = ["L.Pp", "L.Pt", "L.Pa", "L.Pb", "L.Pls"]
+    ls_components = [("HydraulicValve43LS", "L", ls), *(("HydraulicTankC", f"U{i}", {}) for i in range(5))]
+    path.write_text(_hmf(ls_components, [(port, f"U{i}.P1") for i, port in enumerate(ls_ports)]), encoding="utf-8")
+    system = read_hopsan(path)
+    edges, lst = system["L_ls"].values, system["L_lst"].values
+    assert edges["c_PA"] == edges["c_AT"] == lst["c_v"] == pytest.approx(0.67 * 0.003 * np.sqrt(2 / 860))
+    assert (edges["x_PA"], edges["x_AT"], lst["x_AB"]) == (1e-4, 2e-4, -5e-4)
+    assert (system["L_xls"].values["lower"], system["L_xls"].values["upper"]) == (-0.002, 0.002)
+    assert system["L_mirror_a"].values["p0"] == pytest.approx(-101325.0)
+    params["Xat0"] = v("1e-4")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"V \(HydraulicValve43\): Xat0 = 0.0001 m differ from Xap0 = 0.0003 m"):
+        read_hopsan(path)
+
+
+def test_relief2_valve_g_maps_to_a_relief_valve_whose_spool_has_mass(tmp_path: Path) -> None:
+    """HydraulicPressureRelief2ValveG: HydraulicPressureReliefValveG's characteristics with the whole circumference
+    open (w = pi Dv sin phi) and spool = "mass", tau_m = Mv/Bv; its outputs xv and dxv the opening and its rate
+    times Xvmax (its own default 0.03 m); a spool mass of 0 is refused."""
+    v = _value
+    params = {"pref": v("8e6"), "Dv": v("0.012"), "Bv": v("50"), "Mv": v("0.02"), "Cq": v("0.7"), "phi": v("1.0"),
+              "ks": v("2e4"), "p0": v("2e5"), "rho": v("860")}
+    components = [("HydraulicPressureRelief2ValveG", "R", params), ("HydraulicTankC", "T1", {}),
+                  ("HydraulicTankC", "T2", {})]
+    connections = [("R.P1", "T1.P1"), ("R.P2", "T2.P1")]
+    path = tmp_path / "relief2.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    valve = imp.system["R"]
+    c = 0.7 * np.pi * 0.012 * np.sin(1.0) * np.sqrt(2 / 860)  # K per metre of opening
+    assert valve.option("spool") == "mass" and valve.option("pilot") == "drop"
+    assert valve.values["tau_m"] == pytest.approx(0.02 / 50) and valve.values["tau"] == pytest.approx(50 / 2e4)
+    assert valve.values["q_nom"] == pytest.approx(c * 0.03 * np.sqrt(valve.values["p_nom"]))
+    assert valve.values["p_crack"] == 8e6 and valve.values["p_tr"] == 2e5
+    assert imp.variables["R.dxv.Value"] == "R#dxv#Value" and imp.variables["R.xv.Value"] == "R#xv#Value"
+    params["Mv"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"R \(HydraulicPressureRelief2ValveG\): Mv = 0"):
+        read_hopsan(path)
+
+
+def test_motor_jload_maps_to_a_motor_with_its_inertia(tmp_path: Path) -> None:
+    """HydraulicMotorJload: a Motor of D = Dm per revolution, C_im = Cim, B_m = Bm, J = Jm, its flow not clamped
+    (inlet = "free"), its shaft Pm1; Jm of 0 is refused."""
+    v = _value
+    params = {"Dm": v("3e-5"), "Cim": v("2e-11"), "Bm": v("0.3"), "Jm": v("0.02")}
+    components = [("HydraulicMotorJload", "M", params), ("HydraulicTankC", "T1", {}), ("HydraulicTankC", "T2", {}),
+                  ("MechanicTorqueTransformer", "L", {})]
+    connections = [("M.P1", "T1.P1"), ("M.P2", "T2.P1"), ("M.Pm1", "L.P1")]
+    path = tmp_path / "motor.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    motor = read_hopsan(path)["M"]
+    assert motor.values["D"] == pytest.approx(3e-5 / (2 * np.pi)) and motor.values["C_im"] == 2e-11
+    assert (motor.values["B_m"], motor.values["J"]) == (0.3, 0.02) and motor.option("inlet") == "free"
+    params["Jm"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"M \(HydraulicMotorJload\): Jm = 0"):
+        read_hopsan(path)
+
+
+def test_hopsan_piston_maps_to_a_cylinder_without_friction_leakage_or_stops(tmp_path: Path) -> None:
+    """HydraulicPiston: a Cylinder of A1, A2, V01, V02 + A2 SL (chamber 2 measured from the other end), betae, no
+    friction, leakage or stops, its cavity floored at the ports only (pressure_floor = "cavity-ports"), its rod
+    Pm1; a stroke of 0 is refused."""
+    v = _value
+    params = {"A1": v("2e-3"), "A2": v("1e-3"), "V01": v("3e-4"), "V02": v("4e-4"), "SL": v("0.4"), "betae": v("8e8")}
+    components = [("HydraulicPiston", "P", params), ("HydraulicLaminarOrifice", "O1", {}),
+                  ("HydraulicLaminarOrifice", "O2", {}), ("MechanicTranslationalMass", "M", {})]
+    connections = [("P.P1", "O1.P1"), ("P.P2", "O2.P1"), ("P.Pm1", "M.P1")]
+    path = tmp_path / "piston.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    cyl = read_hopsan(path)["P"]
+    assert (cyl.values["A_A"], cyl.values["A_B"], cyl.values["V_A0"]) == (2e-3, 1e-3, 3e-4)
+    assert cyl.values["V_B0"] == pytest.approx(4e-4 + 1e-3 * 0.4) and cyl.values["beta_e"] == 8e8
+    assert (cyl.values["B_p"], cyl.values["C_Li"], cyl.values["k_stop"], cyl.values["c_stop"]) == (0, 0, 0, 0)
+    assert cyl.option("pressure_floor") == "cavity-ports"
+    params["SL"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"P \(HydraulicPiston\): SL = 0"):
+        read_hopsan(path)
+
+
+def test_fuel_tank_maps_to_a_head_tank(tmp_path: Path) -> None:
+    """HydraulicFuelTankG: a HeadTank of p0 (absolute), rhofuel, gx, hf, massfuelmax, its mass from massfuel0
+    within [-1e-4 kg, massfuel0], vacuum when empty; its outputs massfuel and consfuel; massfuelmax of 0 refused."""
+    v = _value
+    params = {"gx": v("9.81"), "rhofuel": v("750"), "p0": v("2e5"), "hf": v("3"), "massfuel0": v("40"),
+              "massfuelmax": v("80")}
+    components = [("HydraulicFuelTankG", "F", params), ("HydraulicLaminarOrifice", "O", {}), ("HydraulicTankC", "T", {})]
+    connections = [("F.PT", "O.P1"), ("O.P2", "T.P1")]
+    path = tmp_path / "fuel.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    imp = import_hopsan(path)
+    tank = imp.system["F"].values
+    assert tank["p0"] == pytest.approx(2e5 - 101325.0) and tank["p_vac"] == pytest.approx(-101325.0)
+    assert (tank["rho"], tank["g"], tank["h_full"], tank["m_full"], tank["m0"]) == (750, 9.81, 3, 80, 40)
+    assert (tank["m_min"], tank["m_max"]) == (-1e-4, 40)
+    assert imp.variables["F.massfuel.Value"] == "F#massfuel#Value"
+    params["massfuelmax"] = v("0")
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"F \(HydraulicFuelTankG\): rhofuel = 750 kg/m\^3, massfuelmax = 0"):
+        read_hopsan(path)
+
+
+def test_pressure_controlled_pump_g_maps_to_the_g_regulator_and_follows_hopsans_run() -> None:
+    """HydraulicPressureControlledPumpG: a LoadSensingPump with regulator = "g" (its parameters by Hopsan's names),
+    on hopsan_circuits/pressure_controlled_pump_g.hmf (the circuit of pressure_controlled_pump with the G pump:
+    it destrokes from its start flow to its minimum as its outlet fills, then the orifice closes and a flow is
+    drawn). Every trace within 0.5 % of its range but the pump's: its displacement flow qp (and eps) lags Hopsan's
+    by about 1.5 ms while the outlet pressure ramps at the start, 1.1 % of its range (the regulator takes the
+    rates of its error and lead through lags of tau_v/100, G_LAG), its port flows 0.53 %; known, not tuned."""
+    imp = import_hopsan(CIRCUITS / "pressure_controlled_pump_g.hmf")
+    pump = imp.system["Pump"]
+    assert pump.option("regulator") == "g" and pump.option("inlet") == "free"
+    assert pump.values["D"] == pytest.approx(1e-4 / (2 * np.pi)) and pump.values["omega"] == 157.0
+    assert (pump.values["l_p"], pump.values["R_p"], pump.values["omega_p1"]) == (1.83e10, 1.68e10, 13.3)
+    assert (pump.values["tau_v"], pump.values["t_p"], pump.values["t_m"], pump.values["eps_min"]) == (0.05, 0.02, 0.03, 0.05)
+    columns = (CIRCUITS / "pressure_controlled_pump_g.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
+    ref = np.loadtxt(CIRCUITS / "pressure_controlled_pump_g.csv", delimiter=",", skiprows=1)
+    result = imp.system.simulate(t_eval=ref[:, 0])
+    by_hopsan = {hopsan: alias for alias, hopsan in imp.variables.items()}
+    worst = {}
+    for i, column in enumerate(columns[1:], start=1):
+        y, y_ref = np.asarray(result[by_hopsan[column]])[1:], ref[1:, i]
+        scale = max(float(np.ptp(y_ref)), 0.01 * float(np.max(np.abs(y_ref))), 1e-12)
+        worst[column] = float(np.max(np.abs(y - y_ref))) / scale
+    known = {c: d for c, d in worst.items() if c.startswith(("Pump#", "TS#")) and not c.endswith("#Pressure")}
+    assert max(known.values()) <= 0.012 and max(known.values()) > 0.005  # the known lag, not more
+    assert all(d <= 0.005 for c, d in worst.items() if c not in known), worst
 
 def _value(text: str, unit: str = "") -> tuple[str, str]:
     return (text, unit)

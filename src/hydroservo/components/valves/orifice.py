@@ -10,7 +10,13 @@ import numpy as np
 from hydroservo import backend as bk
 from hydroservo.components.base import Component, Option, Output, Param, Port, register
 from hydroservo.components.valves.ports import FLUID_PARAMETERS, TWO_PORT_HYDRAULIC, TWO_PORT_PRESSURES
-from hydroservo.laws.orifice import DISCHARGE_COEFFICIENT, laminar_flow, orifice_flow, transition_pressure
+from hydroservo.laws.orifice import (
+    DISCHARGE_COEFFICIENT,
+    blended_flow,
+    laminar_flow,
+    orifice_flow,
+    transition_pressure,
+)
 
 __all__ = ["Orifice", "LaminarOrifice"]
 
@@ -34,13 +40,35 @@ class Orifice(Component):
     the orifice, as Hopsan's HydraulicTurbulentOrifice takes its area
     ([Hopsan2026] Hydraulic/Restrictors/HydraulicTurbulentOrifice.hpp); ``d``
     then sets only the laminar transition).
+
+    Option ``law``: ``transition`` (default), the law above; ``blend``, the laminar and turbulent resistances
+    added as an ``n_blend``-norm (:func:`hydroservo.laws.orifice.blended_flow`):
+
+    .. math:: Q = \frac{A\,\Delta p}{\big(k_{lam}^{-n} + (\rho|\Delta p|/2)^{n/2} C_d^{-n}\big)^{1/n}}
+
+    laminar (:math:`Q = k_{lam} A \Delta p`) at small drops, turbulent at large ones: Hopsan's orifices with
+    geometric parameters ([Hopsan2026] Hydraulic/Restrictors/HydraulicOrificeG.hpp and
+    Hydraulic/Special/HydraulicOrificeCheckValveG.hpp with n = 2, Hydraulic/Special/HydraulicSlitOrifice.hpp with
+    n = 4). ``lambda_crit`` and ``nu`` then do not enter.
+
+    ``d_back`` > 0 is the bore for flow from B to A (a check valve whose back flow passes a different bore,
+    Hopsan's HydraulicOrificeCheckValveG); 0, the default, is ``d`` both ways. The area switches at
+    :math:`\Delta p = 0`, where the flow is 0 either way, so the flow stays continuous.
     """
 
-    OPTIONS = {"area": Option("bore", ("bore", "input"), "the bore's area, or the input A_in's")}
+    OPTIONS = {
+        "area": Option("bore", ("bore", "input"), "the bore's area, or the input A_in's"),
+        "law": Option("transition", ("transition", "blend"), "turbulent with its laminar transition, or the "
+                      "laminar and turbulent resistances blended"),
+    }
     PARAMETERS = {
         "d": Param(1e-3, "m", "bore diameter", min=0.0, min_inclusive=False),
         "Cd": Param(DISCHARGE_COEFFICIENT, "", "discharge coefficient", min=0.0, max=1.0, min_inclusive=False),
         **FLUID_PARAMETERS,
+        "d_back": Param(0.0, "m", "bore diameter for flow from B to A (0: d)", min=0.0),
+        "k_lam": Param(5e-4, "m/s/Pa", "laminar flow per unit of area and of pressure drop (law = blend)", min=0.0,
+                       min_inclusive=False),
+        "n_blend": Param(2.0, "", "exponent of the resistances' sum (law = blend)", min=1.0),
     }
     INPUTS = {**TWO_PORT_PRESSURES, "A_in": Port("m^2", "the orifice's area (option area = input)", default=0.0)}
     OUTPUTS = {"Q": Output("m^3/s", "flow from A to B")}
@@ -49,9 +77,16 @@ class Orifice(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
+        dp = u["pA"] - u["pB"]
+        if self.option("area") == "input":
+            area = bk.fabs(u["A_in"])
+        else:
+            d_back = bk.if_else(p["d_back"] > 0.0, p["d_back"], p["d"])
+            area = np.pi * bk.if_else(dp >= 0.0, p["d"], d_back) ** 2 / 4.0
+        if self.option("law") == "blend":
+            return {"Q": blended_flow(area, dp, p["rho"], p["Cd"], p["k_lam"], p["n_blend"])}
         p_tr = transition_pressure(p["d"], p["rho"], p["nu"], p["lambda_crit"])
-        area = bk.fabs(u["A_in"]) if self.option("area") == "input" else np.pi * p["d"] ** 2 / 4.0
-        return {"Q": orifice_flow(area, u["pA"] - u["pB"], p["rho"], p["Cd"], p_tr)}
+        return {"Q": orifice_flow(area, dp, p["rho"], p["Cd"], p_tr)}
 
 
 @register

@@ -18,10 +18,18 @@ from hydroservo.laws.pressure_valve import (
     opening_fraction,
     pressure_valve_coefficient,
     spool_balance_rate,
+    spool_mass_acceleration,
     valve_hysteresis,
 )
 
 __all__ = ["ReliefValve", "PressureReducingValve", "CounterbalanceValve", "PressureCompensatorValve"]
+
+#: The time constant with which a spool with mass (option ``spool = "mass"``) settles on a bound, as a fraction of
+#: its ``tau_m``: its velocity is relaxed to the held rate within it. Hopsan's stop is inelastic (its clamped
+#: transfer function); with STOP_RELAXATION's 1e-3 the spool left its stop some 1e-5 s late on
+#: tests/unit/io/hopsan_circuits/relief2_valve_g.hmf (0.34 % of its position's range), with 1e-5 within Hopsan's
+#: own uncertainty (0.1 %).
+MASS_STOP_RELAXATION = 1e-5
 
 #: The spool's characteristics, shared by every pressure-control valve ([Hopsan2026] defaults).
 SPOOL_PARAMETERS = {
@@ -39,6 +47,8 @@ SPOOL_PARAMETERS = {
         1e4, "Pa", "drop below which the flow is taken as laminar (regularisation at null)", min=0.0, min_inclusive=False
     ),
     "p_h": Param(0.0, "Pa", "width of the spool's hysteresis in the pilot pressure (0: none)", min=0.0),
+    "tau_m": Param(1e-4, "s", "mechanical time constant of the spool, mass over damping (spool = mass)", min=0.0,
+                   min_inclusive=False),
 }
 
 
@@ -59,12 +69,19 @@ class _PressureControl(Component):
     static opening, reached with the time constant
     :math:`\tau C_s/(C_s + C_f\Delta p)` that the flow forces shorten
     ([Hopsan2026] Hydraulic/Special/HydraulicPressureReliefValveG.hpp,
-    HydraulicPressureReducingValveG.hpp; there ``tau`` is :math:`B_v/k_s`).
+    HydraulicPressureReducingValveG.hpp; there ``tau`` is :math:`B_v/k_s`); ``mass``, that spool with mass
+    :math:`M_v`: its velocity relaxes to the massless spool's rate with the time constant ``tau_m``
+    :math:`= M_v/B_v`, :math:`\tau_m\ddot K = \dot K_{balance} - \dot K`
+    (:func:`~hydroservo.laws.pressure_valve.spool_mass_acceleration`; [Hopsan2026]
+    Hydraulic/Special/HydraulicPressureRelief2ValveG.hpp), a second state ``dK``; at a bound the spool stops
+    (inelastic, as Hopsan's clamped transfer function): its position is held there (``limited_rate``) and its
+    velocity relaxed to the held rate within ``MASS_STOP_RELAXATION`` ``tau_m``; output ``ds`` the opening's rate.
     """
 
     OPTIONS = {
         "spool": Option(
-            "lag", ("lag", "balance"), "the spool: a lag of constant tau, or the force balance of a damped spool"
+            "lag", ("lag", "balance", "mass"),
+            "the spool: a lag of constant tau, or the force balance of a damped spool, without or with mass",
         )
     }
     STATES = {"K": State("m^3/s/Pa^0.5", "flow coefficient of the spool", nominal=1e-6)}
@@ -85,10 +102,14 @@ class _PressureControl(Component):
         return self.PILOT_PORTS.get(self.option("pilot"), ()) if "pilot" in self.OPTIONS else ()
 
     def options_changed(self) -> None:
-        """Option ``pilot`` from ports: their pressures inputs, their flows (none) outputs."""
+        """Option ``pilot`` from ports: their pressures inputs, their flows (none) outputs; option ``spool = "mass"``:
+        the rate of K a state, the opening's rate an output."""
         cls = type(self)
         self.INPUTS, self.OUTPUTS = dict(cls.INPUTS), dict(cls.OUTPUTS)  # type: ignore[misc]
-        self.HYDRAULIC = dict(cls.HYDRAULIC)  # type: ignore[misc]
+        self.HYDRAULIC, self.STATES = dict(cls.HYDRAULIC), dict(cls.STATES)  # type: ignore[misc]
+        if self.option("spool") == "mass":
+            self.STATES["dK"] = State("m^3/s/Pa^0.5/s", "rate of the spool's flow coefficient", nominal=1e-4)
+            self.OUTPUTS["ds"] = Output("1/s", "rate of the opening (0 at a bound)")
         for port in self._pilot_ports():
             self.INPUTS[f"p{port}"] = Port("Pa", f"pilot pressure at {port}")
             self.OUTPUTS[f"Q{port}"] = Output("m^3/s", f"pilot flow at {port} (none)")
@@ -96,10 +117,10 @@ class _PressureControl(Component):
 
     def check(self) -> None:
         super().check()
-        if self.option("spool") == "balance" and self.values["p_h"] > 0.0:
+        if self.option("spool") != "lag" and self.values["p_h"] > 0.0:
             raise ParameterError(
                 f"{self.name}.p_h = {self.values['p_h']:g} Pa: a hysteresis needs spool = \"lag\"; "
-                "expected 0 with spool = \"balance\""
+                f"expected 0 with spool = \"{self.option('spool')}\""
             )
 
     def _K(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
@@ -109,16 +130,28 @@ class _PressureControl(Component):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         K = self._K(x, p)
-        return {
+        out = {
             "Q": turbulent_flow(K, u["pA"] - u["pB"], p["p_tr"]),
             "s": K * bk.sqrt(p["p_nom"]) / p["q_nom"],
             **{f"Q{port}": 0.0 for port in self._pilot_ports()},
         }
+        if self.option("spool") == "mass":
+            out["ds"] = self._mass_rate(x, p) * bk.sqrt(p["p_nom"]) / p["q_nom"]
+        return out
+
+    def _mass_rate(self, x: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        """Option spool = mass: the rate of K, its velocity state held at a bound."""
+        return limited_rate(x["K"], x["dK"], p["q_nom"] / bk.sqrt(p["p_nom"]), MASS_STOP_RELAXATION * p["tau_m"])
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         dp, K_max = u["pA"] - u["pB"], p["q_nom"] / bk.sqrt(p["p_nom"])
+        if self.option("spool") == "mass":
+            rate = spool_balance_rate(self.over(u, p), dp, x["K"], p["k_cs"], p["k_cf"], p["p_nom"], p["tau"])
+            held = self._mass_rate(x, p)
+            relax = MASS_STOP_RELAXATION * p["tau_m"]
+            return {"K": held, "dK": spool_mass_acceleration(rate, x["dK"], p["tau_m"]) - (x["dK"] - held) / relax}
         if self.option("spool") == "balance":
             rate = spool_balance_rate(self.over(u, p), dp, x["K"], p["k_cs"], p["k_cf"], p["p_nom"], p["tau"])
             # the spool's own time constant, tau C_s/(C_s + C_f dp), sets the approach to a bound
