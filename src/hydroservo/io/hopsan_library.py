@@ -1846,7 +1846,7 @@ def _pressure_controlled_pump_g(hc: HopsanComponent, n: str, par: _Params) -> Ma
     return Mapped(
         [comp],
         power={"P1": f"{n}.S", "P2": f"{n}.P", "P3": f"{n}.X"},
-        values={"qp": Var(1.0, f"{n}.eps", scale=f"{n}.D*{n}.omega", unit="m^3/s"), "eps": Var(1.0, f"{n}.eps")},
+        values={"qp": Var(1.0, f"{n}.eps", text=f"{n}.D*{n}.omega*{n}.eps", unit="m^3/s"), "eps": Var(1.0, f"{n}.eps")},
         initial={f"{n}.q": q0, f"{n}.wu": big_u0, f"{n}.wh": big_u0},
     )
 

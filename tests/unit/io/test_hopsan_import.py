@@ -14,12 +14,13 @@ import re
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
 
 from hydroservo.data import reference_text
-from hydroservo.errors import ModelFileError
+from hydroservo.errors import ImplausibleResultWarning, ModelFileError
 from hydroservo.io.hopsan_library import LIBRARY, REFUSED, import_hopsan, read_hopsan, safe_name
 
 COMPONENTS = [
@@ -299,6 +300,19 @@ def test_parameters_set_by_constant_signals_take_their_values_and_others_are_ref
 
 
 CIRCUITS = Path(__file__).parent / "hopsan_circuits"
+#: Circuits whose pressures the plausibility check flags, in Hopsan's runs as in hydroservo's: a flow source filling
+#: a volume behind a relief valve set on its drop, which bounds no pressure of the circuit (relief2_valve_g: 26.7 MPa
+#: in Hopsan's run), and a pump whose outlet the flow drawn closes against its orifice (pressure_controlled_pump_g:
+#: 85.2 MPa in Hopsan's run)
+_FLAGGED = {"relief2_valve_g": r"V\.p = ", "pressure_controlled_pump_g": r"Vol\.p = "}
+
+
+def _simulate_flagged(system: Any, name: str, t: Any) -> Any:
+    """The run of a circuit of :data:`_FLAGGED`, its flag expected (and checked), or of any other, unflagged."""
+    if name not in _FLAGGED:
+        return system.simulate(t_eval=t)
+    with pytest.warns(ImplausibleResultWarning, match=_FLAGGED[name]):
+        return system.simulate(t_eval=t)
 
 
 @pytest.mark.parametrize(
@@ -347,7 +361,7 @@ def test_small_circuits_match_hopsan(name: str) -> None:
     text = (CIRCUITS / f"{name}.csv").read_text(encoding="utf-8")
     columns = text.splitlines()[0].split(",")
     ref = np.loadtxt(CIRCUITS / f"{name}.csv", delimiter=",", skiprows=1)
-    result = imp.system.simulate(t_eval=ref[:, 0])
+    result = _simulate_flagged(imp.system, name, ref[:, 0])
     by_hopsan = {hopsan: alias for alias, hopsan in imp.variables.items()}
     compared = 0
     for i, column in enumerate(columns[1:], start=1):
@@ -739,7 +753,7 @@ def test_pressure_controlled_pump_g_maps_to_the_g_regulator_and_follows_hopsans_
     assert (pump.values["tau_v"], pump.values["t_p"], pump.values["t_m"], pump.values["eps_min"]) == (0.05, 0.02, 0.03, 0.05)
     columns = (CIRCUITS / "pressure_controlled_pump_g.csv").read_text(encoding="utf-8").splitlines()[0].split(",")
     ref = np.loadtxt(CIRCUITS / "pressure_controlled_pump_g.csv", delimiter=",", skiprows=1)
-    result = imp.system.simulate(t_eval=ref[:, 0])
+    result = _simulate_flagged(imp.system, "pressure_controlled_pump_g", ref[:, 0])
     by_hopsan = {hopsan: alias for alias, hopsan in imp.variables.items()}
     worst = {}
     for i, column in enumerate(columns[1:], start=1):
