@@ -10,7 +10,7 @@ module                 components
 :mod:`.accumulator`    Accumulator
 :mod:`.pumps`          Pump, VariablePump, LoadSensingPump, Motor, Machine,
                        CentrifugalPump, CentrifugalPumpInertia
-:mod:`.machine_parts`  SwashPlate, PumpPiston, ValvePlate (an axial piston
+:mod:`.machine_parts`  SwashPlate, SwashPlateDrive, PumpPiston, ValvePlate (an axial piston
                        machine of its parts)
 :mod:`.cylinder`       Cylinder, FourChamberCylinder
 :mod:`.mass`           Mass, MassPair
@@ -74,7 +74,7 @@ from hydroservo.components.control import (
 from hydroservo.components.cylinder import Cylinder, FourChamberCylinder
 from hydroservo.components.line import Hose, Line, LosslessLine
 from hydroservo.components.linearized import Linearized, LoadPressureCylinder
-from hydroservo.components.machine_parts import PumpPiston, SwashPlate, ValvePlate
+from hydroservo.components.machine_parts import PumpPiston, SwashPlate, SwashPlateDrive, ValvePlate
 from hydroservo.components.mass import Mass, MassPair
 from hydroservo.components.mechanics import (
     Damper,
@@ -211,6 +211,7 @@ __all__ = [
     "CentrifugalPump",
     "CentrifugalPumpInertia",
     "SwashPlate",
+    "SwashPlateDrive",
     "PumpPiston",
     "ValvePlate",
     "FourWayValve",

@@ -33,7 +33,7 @@ from hydroservo.laws.orifice import orifice_flow
 from hydroservo.laws.rigid_body import rigid_body_acceleration
 from hydroservo.units import VACUUM
 
-__all__ = ["SwashPlate", "PumpPiston", "ValvePlate"]
+__all__ = ["SwashPlate", "SwashPlateDrive", "PumpPiston", "ValvePlate"]
 
 #: most pistons a block or a valve plate may have
 MAX_PISTONS = 64
@@ -92,6 +92,10 @@ class _PerPiston(Component):
     def config(self) -> dict[str, Any]:
         return {"pistons": self._pistons}
 
+    def _phase(self, k: int, p: Mapping[str, Any]) -> Any:
+        """Piston k's phase on the plate: its offset plus 2π (k - 1)/N."""
+        return p["theta_offset"] + 2.0 * math.pi * (k - 1) / self._pistons
+
 
 @register
 class SwashPlate(_PerPiston):
@@ -136,9 +140,6 @@ class SwashPlate(_PerPiston):
 
     _declarations = staticmethod(_swash_plate_declarations)
 
-    def _phase(self, k: int, p: Mapping[str, Any]) -> Any:
-        return p["theta_offset"] + 2.0 * math.pi * (k - 1) / self._pistons
-
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
@@ -159,6 +160,73 @@ class SwashPlate(_PerPiston):
             _, _, arm = swash_plate_piston(theta, omega, p["r"], p["angle"], self._phase(k, p))
             load = load + u[f"F{k}"] * arm
         return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], friction=p["B_rot"] * omega)}
+
+
+def _swash_plate_drive_declarations(n: int) -> dict[str, Any]:
+    return {
+        "INPUTS": {
+            "movement": Port("rad/s", "minus the block's angular velocity (Hopsan's movement; SwashPlate's output)",
+                             default=0.0),
+            **{f"F{k}": Port("N", f"force on piston port C{k}, outward", default=0.0) for k in range(1, n + 1)},
+        },
+        "MECHANICAL": {f"C{k}": Mechanical(f"x{k}", f"v{k}", f"F{k}", f"piston {k}'s foot (outward)")
+                       for k in range(1, n + 1)},
+        "OUTPUTS": {
+            "theta": Output("rad", "angle of the block"),
+            **{f"x{k}": Output("m", f"position of piston {k}'s foot, outward") for k in range(1, n + 1)},
+            **{f"v{k}": Output("m/s", f"velocity of piston {k}'s foot, outward") for k in range(1, n + 1)},
+        },
+    }
+
+
+@register
+class SwashPlateDrive(_PerPiston):
+    r"""A swash plate whose cylinder block is turned at a given speed: its ``pistons`` N pistons' feet stroked as
+    :class:`SwashPlate`'s.
+
+    The block's angle :math:`\theta` turns at :math:`-u_{movement}` (the input ``movement``, Hopsan's sign, as
+    :class:`SwashPlate`'s output of that name); piston k's foot, the translational port ``C{k}``, is at
+    :math:`x_0 + r\tan\gamma\,\sin a_k`, :math:`a_k = -\theta - \theta_{offset} - 2\pi (k-1)/N`, and moves at
+    :math:`-r\tan\gamma\cos a_k\,\dot\theta` (:func:`~hydroservo.laws.axial_piston.swash_plate_piston`). No
+    inertia: the speed is imposed. The torque the pistons' forces take from the drive, :math:`\sum_k F_k\,\partial
+    x_k/\partial\theta`, is no output: read from the forces at its ports (which follow the feet's velocities), it
+    would close an algebraic loop through the pistons; :class:`SwashPlate` turns under it.
+
+    Hopsan's MechanicSwashPlate ([Hopsan2026] Hydraulic/MachineParts/MechanicSwashPlate.hpp) is this law: its
+    angle the integral of ``movement`` from 0, its pistons at :math:`x_0 + r\tan\gamma\sin(a_1 - \theta_{offset}
+    - 2\pi i/N)`, :math:`a_1 = -\theta`, its output torque (not mapped) :math:`\sum f_i r\tan\gamma\cos(\cdot)`
+    with the forces :math:`f_i = -F_i` at its ports.
+    """
+
+    PARAMETERS = {
+        "r": Param(0.05, "m", "pitch radius of the pistons on the swash plate", min=0.0, min_inclusive=False),
+        "angle": Param(0.0, "rad", "swash plate angle", min=-1.5, max=1.5),
+        "theta_offset": Param(0.0, "rad", "phase of the first piston (the plate's offset)"),
+        "x0": Param(0.0, "m", "mean position of the pistons' feet, outward"),
+        "theta0": Param(0.0, "rad", "initial angle"),
+    }
+    STATES = {"theta": State("rad", "angle of the block", initial="theta0", nominal=1.0)}
+    INPUTS = _swash_plate_drive_declarations(9)["INPUTS"]
+    MECHANICAL = _swash_plate_drive_declarations(9)["MECHANICAL"]
+    OUTPUTS = _swash_plate_drive_declarations(9)["OUTPUTS"]
+
+    _declarations = staticmethod(_swash_plate_drive_declarations)
+
+    def output_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        theta, omega = x["theta"], -u["movement"]
+        out: dict[str, Any] = {"theta": theta}
+        for k in range(1, self._pistons + 1):
+            stroke, velocity, _ = swash_plate_piston(theta, omega, p["r"], p["angle"], self._phase(k, p))
+            out[f"x{k}"] = p["x0"] + stroke
+            out[f"v{k}"] = velocity
+        return out
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"theta": -u["movement"]}
 
 
 @register

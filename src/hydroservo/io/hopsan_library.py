@@ -190,6 +190,7 @@ MULTIPORTS: dict[str, frozenset[str]] = {
 SUBPORTS: dict[str, frozenset[str]] = {
     "HydraulicValvePlate": frozenset({"P1"}),
     "MechanicCylinderBlockWithSwashPlate": frozenset({"P1"}),
+    "MechanicSwashPlate": frozenset({"P1"}),
 }
 
 #: Hopsan's mechanical multiports whose connections each keep their node's start position (an offset from the
@@ -2985,6 +2986,32 @@ def _cylinder_block(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     )
 
 
+def _swash_plate(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
+    """[Hopsan2026] Hydraulic/MachineParts/MechanicSwashPlate.hpp: a swash plate turned at ``movement``, each
+    connection to its multiport P1 a piston's foot at x_0 + r tan(angle) sin(a_1 - theta_offset - 2π k/N) with
+    a_1 the integral of ``movement`` from 0 (k from 0 in the order of the connections): a SwashPlateDrive of that
+    many pistons, its C{k+1} the k-th connection, its mean position x_0 0 (Hopsan's startX, read after its
+    initialisation has written 0 to every connection's position, as the cylinder block's). ``movement`` a
+    parameter (a Constant ``{n}_movement``) or the signal driving it; ``angle`` a parameter (a signal that varies
+    is refused); its output torque is not mapped (read from the forces at its ports, it would close an algebraic
+    loop through the pistons), and a connection to it is refused."""
+    from hydroservo.components import Constant, SwashPlateDrive
+
+    pistons = _subport_count(par, "P1")
+    comp = SwashPlateDrive(n, pistons=pistons, r=par("r", 0.05), angle=par("angle", 0.0),
+                           theta_offset=par("theta_offset", 0.0), x0=0.0)
+    m = Mapped(
+        [comp],
+        power={f"P1#{k}": f"{n}.C{k}" for k in range(1, pistons + 1)},
+    )
+    if "movement" in par.driven:
+        m.inputs["movement"] = f"{n}.movement"
+    else:
+        m.components.append(Constant(f"{n}_movement", value=par("movement", 0.0)))
+        m.internal.append((f"{n}_movement.y", f"{n}.movement"))
+    return m
+
+
 def _pump_piston(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
     """[Hopsan2026] Hydraulic/MachineParts/HydraulicPumpPiston.hpp: a C-type piston of one chamber, V = V_1 +
     A_1 (s_l/2 - x_3) with x_3 counted into the bore, its leakage c_leak p to 0 Pa absolute and its force
@@ -3908,6 +3935,7 @@ LIBRARY: dict[str, Builder] = {
     "HydraulicFixedDisplacementMotorQ": _motor_q("C_lm", variable=False),
     "HydraulicMachineC": _machine_c,
     "MechanicCylinderBlockWithSwashPlate": _cylinder_block,
+    "MechanicSwashPlate": _swash_plate,
     "HydraulicPumpPiston": _pump_piston,
     "HydraulicValvePlate": _valve_plate,
     "HydraulicVariableDisplacementMotorQ": _motor_q("C_im", variable=True),

@@ -169,3 +169,18 @@ def test_a_valve_plate_meters_each_bore_to_the_port_it_faces_as_a_turbulent_orif
             total += out[f"Q{k}"]
         assert abs(total) < 1e-15
     assert plate.state_equations(0.0, {"theta": 0.0}, {"movement": 150.0}, p, {}) == {"theta": 150.0}
+
+
+def test_a_swash_plate_drive_strokes_its_pistons_at_the_speed_it_is_given() -> None:
+    """SwashPlateDrive: θ' = -movement, piston k's foot at x_0 + r tan γ sin a_k, moving at -r tan γ cos a_k θ'
+    (a_k = -θ - θ_offset - 2π(k-1)/N), whatever the forces on its ports."""
+    drive = c.SwashPlateDrive("sp", pistons=4, r=0.04, angle=0.15, theta_offset=0.2, x0=0.01)
+    p = drive.values
+    theta, movement = 1.3, -25.0
+    out = drive.output_equations(0.0, {"theta": theta}, {"movement": movement, **{f"F{k}": 1e3 * k for k in range(1, 5)}}, p)
+    for k in range(1, 5):
+        a = -theta - 0.2 - 2 * math.pi * (k - 1) / 4
+        assert out[f"x{k}"] == pytest.approx(0.01 + 0.04 * math.tan(0.15) * math.sin(a), rel=1e-12)
+        assert out[f"v{k}"] == pytest.approx(-0.04 * math.tan(0.15) * math.cos(a) * -movement, rel=1e-12)
+    assert drive.state_equations(0.0, {"theta": theta}, {"movement": movement}, p, out) == {"theta": 25.0}
+    assert set(drive.MECHANICAL) == {"C1", "C2", "C3", "C4"} and drive.config() == {"pistons": 4}

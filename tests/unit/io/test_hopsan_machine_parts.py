@@ -135,3 +135,30 @@ def test_hopsans_machine_parts_refuse_what_they_cannot_follow(tmp_path: Path) ->
     connections = [c for c in connections if c[1] != "VP.P1"]
     with pytest.raises(ModelFileError, match=r"VP \(HydraulicValvePlate\): nothing is connected to its multiport P1"):
         import_hopsan(_write(tmp_path, components, connections))
+
+
+def test_hopsans_swash_plate_strokes_its_pistons_at_the_speed_it_is_given(tmp_path: Path) -> None:
+    """MechanicSwashPlate: its angle the integral of ``movement`` from 0, connection i's foot at r tan(angle)
+    sin(a_1 - theta_offset - 2π i/N) moving at r tan(angle) cos(·) movement (its startX 0); the forces on its
+    ports are those of what is joined to them (three force sources); its torque output is not mapped, and a
+    connection to it is refused."""
+    components = [
+        ("MechanicSwashPlate", "Plate", {"r#Value": "0.05", "angle#Value": "0.2", "theta_offset#Value": "0.3",
+                                         "movement#Value": "10"}),
+        *[("MechanicForceTransformer", name, {"F#Value": force}) for name, force in (("Fa", "100"), ("Fb", "-40"),
+                                                                                      ("Fc", "70"))],
+        ("SignalGain", "Gain", {"k#Value": "1"}),
+    ]
+    connections = [("Fa.P1", "Plate.P1"), ("Fb.P1", "Plate.P1"), ("Fc.P1", "Plate.P1")]
+    system = import_hopsan(_write(tmp_path, components, connections)).system
+    assert system["Plate"].pistons == 3 and system["Plate"].values["x0"] == 0.0
+    t = np.array([0.0, 0.013, 0.05, 0.3])
+    r = system.simulate(t_eval=t, accuracy=1e-9)
+    stroke = 0.05 * math.tan(0.2)
+    for i, name in enumerate(("Fa", "Fb", "Fc")):
+        a = 10.0 * t - 0.3 - 2 * math.pi * i / 3
+        np.testing.assert_allclose(r[f"{name}.P1.Position"], stroke * np.sin(a), atol=1e-9)
+        np.testing.assert_allclose(r[f"{name}.P1.Velocity"], stroke * np.cos(a) * 10.0, atol=1e-7)
+    np.testing.assert_allclose(r["Fb.P1.Force"], -40.0)
+    with pytest.raises(ModelFileError, match=r"Plate.*torque"):
+        import_hopsan(_write(tmp_path, components, [*connections, ("Plate.torque", "Gain.in")]))
