@@ -1,5 +1,5 @@
 """Hopsan's transmission lines as lumped ladders: how close they come as their segments multiply
-===========================================================================================
+=============================================================================================
 
 HydraulicLineTest (Hopsan's component test of its lines) imported with 10 to 200 segments per line and with the
 import's default (5 T/Ts: 200 for the lossless line, 47 for the hose), each run
