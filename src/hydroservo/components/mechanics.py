@@ -125,8 +125,30 @@ class FixedPosition(Component):
 _CONTACT_COMPLIANCE = 1e-6
 
 
+class _MasslessEnd(Component):
+    """An end whose position is an algebraic unknown (solved with the forces of its nodes: its residual is the
+    subclass's) and whose velocity is that position's rate: the rate of the state ``x_f`` that follows it with
+    the time constant ``tau``, :math:`v = (x - x_f)/\tau`. Its outputs read no input, so no loop runs through
+    them; its guess for the position is where ``x_f`` is."""
+
+    TAU = Param(1e-6, "s", "time constant of the end's velocity (the rate of its position)", min=0.0,
+                min_inclusive=False)
+
+    @staticmethod
+    def _velocity(x: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
+        return (x["x"] - x["x_f"]) / p["tau"]
+
+    def state_equations(
+        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
+    ) -> dict[str, Any]:
+        return {"x_f": y["v"]}
+
+    def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
+        return {"x": x["x_f"]}
+
+
 @register
-class Wall(Component):
+class Wall(_MasslessEnd):
     r"""A wall and the free end that meets it: the end of whatever is joined to port ``P`` is free (it takes no
     force) while it is away from the wall, and is held at the wall while pressed against it; it leaves the wall
     as soon as it is pulled away (a unilateral contact).
@@ -154,8 +176,7 @@ class Wall(Component):
         "B": Param(0.0, "N*s/m", "damping of the free end against its surroundings, away from the wall", min=0.0),
         "x_stop": Param(0.0, "m", "position of the wall, along the port's outward direction"),
         "x0": Param(0.0, "m", "initial position of the end (at least x_stop)"),
-        "tau": Param(1e-6, "s", "time constant of the end's velocity (the rate of its position)", min=0.0,
-                     min_inclusive=False),
+        "tau": _MasslessEnd.TAU,
     }
     STATES = {"x_f": State("m", "the end's position, followed with the time constant tau", initial="x0", nominal=0.1)}
     ALGEBRAIC = {"x": Algebraic("m", "position of the end, outward (away from the wall)", nominal=0.1)}
@@ -169,26 +190,17 @@ class Wall(Component):
     @staticmethod
     def _push(x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> Any:
         """The wall's push on the end, B v - F (the force it takes to hold the end where it is)."""
-        return p["B"] * (x["x"] - x["x_f"]) / p["tau"] - u["F"]
+        return p["B"] * Wall._velocity(x, p) - u["F"]
 
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        # the outputs read no input: the force of the node enters through the residual (no loop through it)
-        return {"x": x["x"], "v": (x["x"] - x["x_f"]) / p["tau"]}
-
-    def state_equations(
-        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
-    ) -> dict[str, Any]:
-        return {"x_f": y["v"]}
+        return {"x": x["x"], "v": self._velocity(x, p)}
 
     def residual_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"x": contact_residual(x["x"] - p["x_stop"], self._push(x, u, p), _CONTACT_COMPLIANCE)}
-
-    def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
-        return {"x": x["x_f"]}
 
     def switch_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
@@ -198,7 +210,7 @@ class Wall(Component):
 
 
 @register
-class RigidLink(Component):
+class RigidLink(_MasslessEnd):
     r"""A massless rigid link: its ends carry one force (Hopsan's MechanicTranslationalLosslessConnector,
     [Hopsan2026] Mechanic/Linear/MechanicTranslationalLosslessConnector.hpp).
 
@@ -217,8 +229,7 @@ class RigidLink(Component):
     PARAMETERS = {
         "length": Param(0.0, "m", "end 1's position plus end 2's (each outward)"),
         "x0": Param(0.0, "m", "initial position of end 2"),
-        "tau": Param(1e-6, "s", "time constant of the link's velocity (the rate of its position)", min=0.0,
-                     min_inclusive=False),
+        "tau": _MasslessEnd.TAU,
     }
     STATES = {"x_f": State("m", "the link's position, followed with the time constant tau", initial="x0", nominal=0.1)}
     ALGEBRAIC = {"x": Algebraic("m", "position of end 2, outward", nominal=0.1)}
@@ -240,22 +251,13 @@ class RigidLink(Component):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        # the outputs read no input: the forces of the nodes enter through the residual (no loop through them)
-        v = (x["x"] - x["x_f"]) / p["tau"]
+        v = self._velocity(x, p)
         return {"x": x["x"], "v": v, "x_P1": p["length"] - x["x"], "v_P1": -v}
-
-    def state_equations(
-        self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
-    ) -> dict[str, Any]:
-        return {"x_f": y["v"]}
 
     def residual_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         return {"x": u["F"] - u["F_P1"]}
-
-    def guess_equations(self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]) -> dict[str, Any]:
-        return {"x": x["x_f"]}
 
 
 @register
