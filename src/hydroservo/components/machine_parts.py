@@ -92,13 +92,28 @@ class _PerPiston(Component):
     def config(self) -> dict[str, Any]:
         return {"pistons": self._pistons}
 
+
+class _OnSwashPlate(_PerPiston):
+    """A part whose pistons' feet a swash plate strokes (parameters ``r``, ``angle``, ``theta_offset``, ``x0``)."""
+
     def _phase(self, k: int, p: Mapping[str, Any]) -> Any:
         """Piston k's phase on the plate: its offset plus 2π (k - 1)/N."""
         return p["theta_offset"] + 2.0 * math.pi * (k - 1) / self._pistons
 
+    def _feet(self, theta: Any, omega: Any, p: Mapping[str, Any]) -> tuple[dict[str, Any], list[Any]]:
+        """The pistons' feet on a swash plate (:func:`~hydroservo.laws.axial_piston.swash_plate_piston`): their
+        positions and velocities as outputs ``x{k}``, ``v{k}``, and their arms ∂x_k/∂θ."""
+        feet: dict[str, Any] = {}
+        arms = []
+        for k in range(1, self._pistons + 1):
+            stroke, velocity, arm = swash_plate_piston(theta, omega, p["r"], p["angle"], self._phase(k, p))
+            feet[f"x{k}"], feet[f"v{k}"] = p["x0"] + stroke, velocity
+            arms.append(arm)
+        return feet, arms
+
 
 @register
-class SwashPlate(_PerPiston):
+class SwashPlate(_OnSwashPlate):
     r"""A cylinder block turning on its shaft, its ``pistons`` N pistons' feet stroked by a swash plate.
 
     .. math:: J\,\dot\omega = T - B_{rot}\,\omega + \sum_{k=1}^{N} F_k\,\frac{\partial x_k}{\partial\theta},
@@ -144,20 +159,14 @@ class SwashPlate(_PerPiston):
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
         theta, omega = x["theta"], x["omega"]
-        out = {"theta": theta, "omega": omega, "movement": -omega}
-        for k in range(1, self._pistons + 1):
-            stroke, velocity, _ = swash_plate_piston(theta, omega, p["r"], p["angle"], self._phase(k, p))
-            out[f"x{k}"] = p["x0"] + stroke
-            out[f"v{k}"] = velocity
-        return out
+        return {"theta": theta, "omega": omega, "movement": -omega, **self._feet(theta, omega, p)[0]}
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
     ) -> dict[str, Any]:
         theta, omega = x["theta"], x["omega"]
         load = u["T"]
-        for k in range(1, self._pistons + 1):
-            _, _, arm = swash_plate_piston(theta, omega, p["r"], p["angle"], self._phase(k, p))
+        for k, arm in enumerate(self._feet(theta, omega, p)[1], start=1):
             load = load + u[f"F{k}"] * arm
         return {"theta": omega, "omega": rigid_body_acceleration(load, theta, p["J"], friction=p["B_rot"] * omega)}
 
@@ -180,7 +189,7 @@ def _swash_plate_drive_declarations(n: int) -> dict[str, Any]:
 
 
 @register
-class SwashPlateDrive(_PerPiston):
+class SwashPlateDrive(_OnSwashPlate):
     r"""A swash plate whose cylinder block is turned at a given speed: its ``pistons`` N pistons' feet stroked as
     :class:`SwashPlate`'s.
 
@@ -215,13 +224,7 @@ class SwashPlateDrive(_PerPiston):
     def output_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any]
     ) -> dict[str, Any]:
-        theta, omega = x["theta"], -u["movement"]
-        out: dict[str, Any] = {"theta": theta}
-        for k in range(1, self._pistons + 1):
-            stroke, velocity, _ = swash_plate_piston(theta, omega, p["r"], p["angle"], self._phase(k, p))
-            out[f"x{k}"] = p["x0"] + stroke
-            out[f"v{k}"] = velocity
-        return out
+        return {"theta": x["theta"], **self._feet(x["theta"], -u["movement"], p)[0]}
 
     def state_equations(
         self, t: Any, x: Mapping[str, Any], u: Mapping[str, Any], p: Mapping[str, Any], y: Mapping[str, Any]
