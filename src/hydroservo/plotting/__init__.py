@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["pyplot", "finish", "lpm", "panel_units"]
+__all__ = ["pyplot", "finish", "lpm", "panel_units", "by_dimension", "axis_label", "curve_label"]
 
 
 def pyplot(file: Any) -> Any:
@@ -116,6 +116,52 @@ def by_dimension(panels: Any, units: dict[str, str]) -> list[list[str]]:
                 home.append(name)
         out += [g for g in groups if g not in out]
     return out
+
+
+#: The longest list of names an axis is labelled with; past it, what the signals are (the legend names them).
+_LABEL_CHARS = 28
+
+
+def curve_label(name: str, descriptions: dict[str, str]) -> str:
+    """``"name: description"``, or the name alone where the description only spells it again (an imported
+    Hopsan variable's ``"Hopsan's Mass#P2#Position"``)."""
+    import re
+
+    described = descriptions.get(name, "")
+    letters = re.sub(r"\W|_", "", name)
+    return name if not described or letters in re.sub(r"\W|_", "", described) else f"{name}: {described}"
+
+
+def axis_label(panel: list[str], descriptions: dict[str, str], unit: str, drawn: str | None = None) -> str:
+    """``"p1, p2 [Pa]"``; for a panel whose names would not fit beside the axis, what its signals have in common
+    (``"pressure [Pa]"``: their description, else the quantity of ``drawn``, the unit they are drawn in) or how
+    many they are: the legend names them."""
+    import textwrap
+
+    names = ", ".join(panel)
+    if len(f"{names} [{unit}]") > _LABEL_CHARS:
+        described = {descriptions.get(n, "") for n in panel}
+        common = described.pop() if len(panel) > 1 and len(described) == 1 and "" not in described else None
+        quantity = _quantity(unit if drawn is None else drawn)
+        names = common or quantity or (f"{len(panel)} signals" if len(panel) > 1 else "signal")
+    return textwrap.fill(f"{names} [{unit}]", _LABEL_CHARS)
+
+
+#: Quantities an axis may be labelled by, the first of a dimension naming it
+_QUANTITY_NAMES = ("pressure", "position", "velocity", "acceleration", "flow", "force", "volume", "area", "mass",
+                   "torque", "angle", "speed", "current", "voltage", "power")
+
+
+def _quantity(unit: str) -> str | None:
+    """The name of the quantity ``unit`` measures (``"pressure"`` for bar), if it is one of :data:`_QUANTITY_NAMES`."""
+    from hydroservo.units import QUANTITIES, same_dimension
+
+    if not unit or unit == "-":
+        return None
+    try:
+        return next((name for name in _QUANTITY_NAMES if same_dimension(QUANTITIES[name], unit)), None)
+    except Exception:  # a unit pint does not know: no quantity
+        return None
 
 
 def lpm(q: Any) -> Any:

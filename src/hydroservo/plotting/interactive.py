@@ -101,7 +101,7 @@ def result_figure(
 
     Hovering shows every signal of the panel at that time, each with its unit.
     """
-    from hydroservo.plotting import by_dimension, panel_units
+    from hydroservo.plotting import axis_label, by_dimension, panel_units
     from hydroservo.units import si_unit
 
     units = units or {}
@@ -115,7 +115,8 @@ def result_figure(
     for row, panel in enumerate(chosen, start=1):
         yaxis = "y" if row == 1 else f"y{row}"
         shown_units = []
-        for name, drawn in zip(panel, panel_units(result.units, panel, dict(units))):
+        drawn_units = panel_units(result.units, panel, dict(units))
+        for name, drawn in zip(panel, drawn_units):
             unit = si_unit(drawn)
             shown_units.append(unit)
             x, y = _thin(t, np.asarray(result.get(name, drawn), dtype=float))
@@ -130,7 +131,8 @@ def result_figure(
             })
             color += 1
         distinct = list(dict.fromkeys(shown_units))
-        layout["yaxis" if row == 1 else f"yaxis{row}"] = _axis(f"{', '.join(panel)} [{', '.join(distinct)}]")
+        label = axis_label(panel, result.descriptions, ", ".join(distinct), drawn_units[0])
+        layout["yaxis" if row == 1 else f"yaxis{row}"] = _axis(label.replace("\n", "<br>"))
     layout["xaxis"] = _axis("t [s]")
     return {"data": data, "layout": layout}
 

@@ -6,7 +6,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, BinaryIO, Protocol
 
-from hydroservo.plotting import by_dimension, finish, panel_units, pyplot
+from hydroservo.plotting import axis_label, by_dimension, curve_label, finish, panel_units, pyplot
 from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
@@ -51,7 +51,7 @@ def plot_result(
     plt = pyplot(file)
     chosen = names or result.panels or [[n] for n in result.names[:6]]
     panels = by_dimension([[n] if isinstance(n, str) else list(n) for n in chosen], result.units)
-    labels = [[_curve_label(n, result.descriptions) for n in panel] for panel in panels]
+    labels = [[curve_label(n, result.descriptions) for n in panel] for panel in panels]
     # legends of many or long labels go beside the axes, the figure widened for them
     beside = any(len(panel) > 4 or max(map(len, panel)) > _LEGEND_CHARS for panel in labels)
     fig, axes = plt.subplots(len(panels), 1, sharex=True, figsize=(11.0 if beside else 7.5, 1.9 + 1.6 * len(panels)),
@@ -61,7 +61,7 @@ def plot_result(
         for n, unit, label in zip(panel, drawn, named):
             ax.plot(result.t, result.get(n, unit), label=label)
         shown = [si_unit(u) for u in drawn]
-        ax.set_ylabel(_axis_label(panel, result.descriptions, " / ".join(dict.fromkeys(shown)), drawn[0]), fontsize="small")
+        ax.set_ylabel(axis_label(panel, result.descriptions, " / ".join(dict.fromkeys(shown)), drawn[0]), fontsize="small")
         if beside:
             ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize="x-small", framealpha=0.8)
         else:
@@ -72,49 +72,5 @@ def plot_result(
     return finish(fig, file, plt, show)
 
 
-#: The longest list of names an axis is labelled with; past it, what the signals are (the legend names them).
-_LABEL_CHARS = 28
 #: The longest curve label a legend inside the axes takes; past it (or past four curves), the legends go beside.
 _LEGEND_CHARS = 48
-
-
-def _curve_label(name: str, descriptions: dict[str, str]) -> str:
-    """``"name: description"``, or the name alone where the description only spells it again (an imported
-    Hopsan variable's ``"Hopsan's Mass#P2#Position"``)."""
-    import re
-
-    described = descriptions.get(name, "")
-    letters = re.sub(r"\W|_", "", name)
-    return name if not described or letters in re.sub(r"\W|_", "", described) else f"{name}: {described}"
-
-
-def _axis_label(panel: list[str], descriptions: dict[str, str], unit: str, drawn: str | None = None) -> str:
-    """``"p1, p2 [Pa]"``; for a panel whose names would not fit beside the axis, what its signals have in common
-    (``"pressure [Pa]"``: their description, else the quantity of ``drawn``, the unit they are drawn in) or how
-    many they are: the legend names them."""
-    import textwrap
-
-    names = ", ".join(panel)
-    if len(f"{names} [{unit}]") > _LABEL_CHARS:
-        described = {descriptions.get(n, "") for n in panel}
-        common = described.pop() if len(panel) > 1 and len(described) == 1 and "" not in described else None
-        quantity = _quantity(unit if drawn is None else drawn)
-        names = common or quantity or (f"{len(panel)} signals" if len(panel) > 1 else "signal")
-    return textwrap.fill(f"{names} [{unit}]", _LABEL_CHARS)
-
-
-#: Quantities an axis may be labelled by, the first of a dimension naming it
-_QUANTITY_NAMES = ("pressure", "position", "velocity", "acceleration", "flow", "force", "volume", "area", "mass",
-                   "torque", "angle", "speed", "current", "voltage", "power")
-
-
-def _quantity(unit: str) -> str | None:
-    """The name of the quantity ``unit`` measures (``"pressure"`` for bar), if it is one of :data:`_QUANTITY_NAMES`."""
-    from hydroservo.units import QUANTITIES, same_dimension
-
-    if not unit or unit == "-":
-        return None
-    try:
-        return next((name for name in _QUANTITY_NAMES if same_dimension(QUANTITIES[name], unit)), None)
-    except Exception:  # a unit pint does not know: no quantity
-        return None

@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+from hydroservo.plotting import axis_label as _axis_label
 from hydroservo.plotting import by_dimension
-from hydroservo.plotting.results import _axis_label, _curve_label
+from hydroservo.plotting import curve_label as _curve_label
 
 
 def test_a_panel_of_pressures_and_flows_becomes_a_panel_each() -> None:

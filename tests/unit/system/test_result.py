@@ -114,7 +114,7 @@ def test_a_result_file_keeps_temperatures_in_degc(tmp_path) -> None:
 def test_a_panel_of_many_long_names_is_labelled_by_what_they_are() -> None:
     """The names of a panel label its axis while they fit beside it (the legend names them too); past that the
     axis says what they have in common: their description, else their quantity, else how many they are."""
-    from hydroservo.plotting.results import _axis_label
+    from hydroservo.plotting import axis_label as _axis_label
 
     assert _axis_label(["p1", "p2"], {}, "Pa") == "p1, p2 [Pa]"
     many = [f"Hydraulic_Volume_{k}.p" for k in range(6)]
