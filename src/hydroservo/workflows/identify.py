@@ -95,7 +95,8 @@ class FrictionReport(Report):
         out.append("")
         for k, val in self.fit.parameters.items():
             se = self.fit.stderr[k]
-            shown = "not determined" if not math.isfinite(se) or se > abs(val) else f"± {se:.3g}"
+            shown = ("held at the model's value" if k in self.fit.held
+                     else "not determined" if not math.isfinite(se) or se > abs(val) else f"± {se:.3g}")
             out.append(f"  {self.component}.{k:<5} = {val:.6g} {si_unit(STRIBECK_PARAMETERS[k])}  ({shown})")
         if self.files:
             out.append(f"wrote {', '.join(self.files.values())}")
@@ -109,13 +110,15 @@ class FrictionReport(Report):
         from hydroservo.io.component_file import component_toml
 
         fit = self.fit
-        determined = {k: v for k, v in fit.parameters.items() if math.isfinite(fit.stderr[k]) and fit.stderr[k] <= abs(v)}
+        determined = {k: v for k, v in fit.parameters.items()
+                      if k not in fit.held and math.isfinite(fit.stderr[k]) and fit.stderr[k] <= abs(v)}
         left = [k for k in fit.parameters if k not in determined]
         header = _header("Stribeck friction (eq. 3.47)", self.model, self.records, self.component, "friction.toml",
                          list(determined))
         if left:
             header += ("\nNot determined by the records, so not written (the model keeps its own): "
-                       + ", ".join(f"{k} (the fit ended at {fit.parameters[k]:.4g} {STRIBECK_PARAMETERS[k]})" for k in left))
+                       + ", ".join(f"{k} (held at the model's {fit.parameters[k]:.4g} {STRIBECK_PARAMETERS[k]})" if k in fit.held
+                        else f"{k} (the fit ended at {fit.parameters[k]:.4g} {STRIBECK_PARAMETERS[k]})" for k in left))
         return component_toml(
             self.component_type, determined, STRIBECK_PARAMETERS,
             comments={k: f"± {fit.stderr[k]:.3g}" for k in determined},
@@ -141,7 +144,6 @@ class IdentifyFriction(_Procedure):
     FILES: ClassVar[tuple[str, ...]] = ("friction.toml", "friction.png")
 
     command: str = "command.y"
-    window: float = 0.05
     settle: float = 0.25
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> FrictionReport:
@@ -149,7 +151,7 @@ class IdentifyFriction(_Procedure):
 
         parts = [friction_from_record(self.system, r, command=self.command, position=f"{self.load}.x",
                                       pressures=(f"{self.cylinder}.pA", f"{self.cylinder}.pB"), cylinder=self.cylinder,
-                                      load=self.load, window=self.window, settle=self.settle) for r in self._records]
+                                      load=self.load, settle=self.settle) for r in self._records]
         order = np.argsort(np.concatenate([p.velocity for p in parts]))
         points = FrictionPoints(
             np.concatenate([p.velocity for p in parts])[order], np.concatenate([p.force for p in parts])[order],
@@ -158,8 +160,22 @@ class IdentifyFriction(_Procedure):
         )
         fit = fit_stribeck(points.velocity, points.force)
         comp = self.system[self.load]
+        notes = list(fit.warnings)
+        static = [k for k in ("F_s0", "c_s") if not fit.stderr[k] <= abs(fit.parameters[k])]
+        own = {k: float(comp.values[k]) for k in ("F_s0", "c_s") if k in comp.values}
+        if static and len(own) == 2 and own["c_s"] > 0:
+            # The static term is not determined: left free it trades with the Coulomb and viscous terms along a
+            # flat valley and drags them off (a c_s above every speed makes F_s0 a second F_c0). It is not written,
+            # so the model keeps its own; B and F_c0 are fitted again with it held there, as the model will use them.
+            fit = fit_stribeck(points.velocity, points.force, held=own)
+            notes = [  # the free fit's notes are superseded: its other terms were dragged along the valley
+                "F_s0 and c_s are not determined by these points (the static term needs speeds near and below the "
+                "Stribeck velocity); B and F_c0 were fitted with them held at the model's own values "
+                f"(F_s0 = {own['F_s0']:.4g} N, c_s = {own['c_s']:.4g} m/s), which are not written",
+                *fit.warnings,
+            ]
         return FrictionReport(self.system.name, self.load, type(comp).__name__, points, fit,
-                              [r.name for r in self._records], warnings=list(fit.warnings))
+                              [r.name for r in self._records], warnings=notes)
 
 
 # -- leakage -------------------------------------------------------------------------------
