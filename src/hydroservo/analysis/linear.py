@@ -35,7 +35,7 @@ from typing import TYPE_CHECKING, Any
 import casadi as ca
 import numpy as np
 
-from hydroservo.errors import ModelError, ParameterError, TrimError
+from hydroservo.errors import ModelError, ParameterError, TrimError, did_you_mean
 from hydroservo.system.assembly import assemble
 
 if TYPE_CHECKING:
@@ -297,11 +297,19 @@ def operating_point(
 ) -> dict[str, float]:
     """The states of an operating point (SI).
 
-    ``at`` is ``"trim"`` (an equilibrium at time ``t``; with ``free`` states,
-    a steady motion, :meth:`hydroservo.system.model.Model.trim`),
-    ``"initial"`` (the initial state), or a mapping of state names to values
-    (numbers in SI or quantities with units; the states not named keep their
-    initial values).
+    ``at`` is
+
+    * ``"trim"``: an equilibrium at time ``t`` (the signals' values then). With ``free`` states it is a
+      *steady motion* (:meth:`hydroservo.system.model.Model.trim`): the free states are not solved for and
+      their rates need not vanish (a piston's position while it moves at constant speed), the others are solved
+      for a steady state. The free states keep the values of the system at time ``t``: the initial values at
+      ``t = 0``, else those of a run from the initial state to ``t`` (so the steady motion passes where the
+      system is then, not where it started), which is also the solver's guess for the other states;
+    * ``"run"``: the state of a run from the initial state at time ``t``, every state as simulated
+      (*linearisation along a run*: the states' rates, the ``drift``, need not vanish); ``free`` does not apply;
+    * ``"initial"``: the initial state;
+    * a mapping of state names to values (numbers in SI or quantities with units; the states not named keep
+      their initial values).
     """
     from hydroservo.units import to_si
 
@@ -316,17 +324,41 @@ def operating_point(
         return dict(zip(model.state_names, x.tolist()))
     if at == "initial":
         return dict(zip(model.state_names, x.tolist()))
-    if at == "trim":
-        try:
-            return model.trim(p, t=t, x_guess=x, free=free)
-        except TrimError:
-            if not t > 0:
-                raise
-        # far from the initial state (a drive moving fast): start from where a run is at time t
-        run = system.simulate(t, params=params, n_points=2)
-        guess = np.array([run[n][-1] for n in model.state_names])
-        return model.trim(p, t=t, x_guess=guess, free=free)
-    raise ParameterError(f"operating point {at!r}: expected 'trim', 'initial' or a mapping of states to values")
+    if at not in ("trim", "run"):
+        raise ParameterError(f"operating point {at!r}: expected 'trim', 'run', 'initial' or a mapping of states to values")
+    if at == "run" and free:
+        raise ParameterError(
+            f"free = {', '.join(free)}: free states belong to a trim (a steady motion); at 'run' every state is the "
+            "run's own at t"
+        )
+    unknown = [n for n in free if n not in model.state_names]
+    if unknown:
+        raise TrimError(
+            f"free = {unknown[0]!r} is not a state of {system.name!r}{did_you_mean(unknown[0], model.state_names)}; "
+            f"states: {', '.join(model.state_names)}"
+        )
+    if at == "run" or (free and t > 0):
+        run = _state_at(system, model.state_names, t, params)
+        if at == "run":
+            return dict(zip(model.state_names, run.tolist()))
+        return model.trim(p, t=t, x_guess=run, free=free)
+    try:
+        return model.trim(p, t=t, x_guess=x, free=free)
+    except TrimError:
+        if not t > 0:
+            raise
+    # far from the initial state (a drive moving fast): start from where a run is at time t
+    return model.trim(p, t=t, x_guess=_state_at(system, model.state_names, t, params), free=free)
+
+
+def _state_at(system: System, names: Sequence[str], t: float, params: Mapping[str, Any] | None) -> np.ndarray:
+    """Every state of a run of ``system`` from its initial state at time ``t`` [s] (SI); at ``t = 0`` the initial
+    state."""
+    if not t > 0:
+        model = system.build()
+        return np.asarray(model.x0(system.parameter_vector(params)), dtype=float).ravel()
+    run = system.simulate(t, params=params, n_points=2)
+    return np.array([float(run[n][-1]) for n in names])
 
 
 def linearize(
@@ -413,7 +445,8 @@ def linearize(
         {o: float(v) for o, v in zip(out_names, y0.ravel())},
         {s: float(v) for s, v in zip(state_names, f0.ravel())},
         np.where(np.asarray(nominal) > 0, nominal, 1.0), a.name, float(t),
-        {"at": at if isinstance(at, str) else "given", **({"free": list(free)} if free else {})},
+        {"at": at if isinstance(at, str) else "given", **({"free": list(free)} if free else {}),
+         **({"states_from_run": True} if (at == "run" or (at == "trim" and free)) and t > 0 else {})},
     )
 
 

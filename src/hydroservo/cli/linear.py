@@ -47,12 +47,14 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("model", metavar="NAME_OR_FILE")
     p.add_argument("--set", action="append", default=[], metavar="PARAM=VALUE",
                    help='set a parameter or option, with units: --set "command.amplitude=0.5"')
-    p.add_argument("--at", default="trim", metavar="trim|initial|FILE|STATE=VALUE,...",
-                   help="operating point: an equilibrium (default), the initial state, an operating-point file "
+    p.add_argument("--at", default="trim", metavar="trim|run|initial|FILE|STATE=VALUE,...",
+                   help="operating point: an equilibrium (default), the state a run from the initial state reaches at "
+                   "--t (every state as simulated), the initial state, an operating-point file "
                    "(TOML, state = value with units) or states given here")
     p.add_argument("--t", default="0", metavar="T", help="time of the operating point (the signals' values then), e.g. 0.3")
     p.add_argument("--free", default=None, metavar="STATE,...",
-                   help="states left free by the trim: a steady motion, e.g. --free load.x")
+                   help="states left free by the trim: a steady motion, e.g. --free load.x; they keep the values a run "
+                   "from the initial state has at --t")
     p.add_argument("--inputs", default=None, metavar="NAME,...",
                    help="component inputs (spool.u) or parameters (supply.p); default: the inputs fed by signal blocks")
     p.add_argument("--outputs", default=None, metavar="NAME,...", help="states, outputs or aliases; default: the states")

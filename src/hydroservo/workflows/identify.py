@@ -200,6 +200,10 @@ class LeakageReport(Report):
             self.title(),
             f"  {e.parameter} = {e.value:.5g} ± {e.stderr:.2g} m³/s/Pa  ({e.value * 6e4 * 1e5:.4g} L/min/bar)",
             f"  from chamber B's balance: {e.from_b:.5g} m³/s/Pa" if math.isfinite(e.from_b) else "  chamber B: no balance",
+            (f"  law sensitivity: the plain turbulent orifice law gives {e.turbulent:.5g} m³/s/Pa ({100 * e.law_sensitivity:+.2f} %)"
+             + (f"; the supply edge drops {e.edge_drop / 1e5:.3g} bar, {e.edge_drop / e.transition:.2g} times the law's "
+                f"laminar transition ({e.transition / 1e5:.3g} bar)" if math.isfinite(e.edge_drop) and e.transition > 0 else ""))
+            if math.isfinite(e.law_sensitivity) else "  law sensitivity: the model's valve has no laminar transition to vary",
             f"  settled over {e.interval[0]:g}..{e.interval[1]:g} s: "
             + ", ".join(f"{k} = {v / 1e5:.4g} bar" for k, v in e.conditions.items() if k.endswith((".pA", ".pB"))),
         ]
@@ -216,7 +220,8 @@ class LeakageReport(Report):
         e = self.estimate
         return component_toml(
             self.component_type, {"C_Li": e.value}, {"C_Li": "m^3/s/Pa"},
-            comments={"C_Li": f"± {e.stderr:.3g} m^3/s/Pa; = {e.value * 6e9:.4g} L/min/bar"},
+            comments={"C_Li": f"± {e.stderr:.3g} m^3/s/Pa; = {e.value * 6e9:.4g} L/min/bar"
+                      + (f"; the plain turbulent orifice law gives {100 * e.law_sensitivity:+.1f} %" if math.isfinite(e.law_sensitivity) else "")},
             header=_header("Internal leakage (eq. 3.42)", self.model, self.records, self.component, "leakage.toml", ["C_Li"]),
         )
 

@@ -29,13 +29,14 @@ __all__ = ["Linearize", "LinearReport", "run", "operating_point"]
 
 
 def operating_point(at: str | Mapping[str, Any] | Path, what: str = "--at") -> Any:
-    """``"trim"``, ``"initial"``, ``"STATE=VALUE,..."``, a mapping of states, or an operating-point file (TOML)."""
+    """``"trim"``, ``"run"``, ``"initial"``, ``"STATE=VALUE,..."``, a mapping of states, or an operating-point file
+    (TOML)."""
     from hydroservo.io import read_operating_point
 
     if isinstance(at, Mapping):
         return dict(at)
     text = str(at)
-    if text in ("trim", "initial"):
+    if text in ("trim", "run", "initial"):
         return text
     if "=" in text and not Path(text).exists():
         point = {}
@@ -172,7 +173,8 @@ class LinearReport(Report):
         from hydroservo.units import si_unit
 
         lin = self.model
-        out = [self.title() + (f", steady motion of {', '.join(lin.info['free'])}" if lin.info.get("free") else "")]
+        out = [self.title() + (f", steady motion of {', '.join(lin.info['free'])}" if lin.info.get("free") else "")
+               + (" through the run's state at t" if lin.info.get("states_from_run") and lin.info.get("free") else "")]
         out.append(f"  {len(lin.states)} states, {len(lin.inputs)} inputs ({', '.join(lin.inputs)}), "
                    f"{len(lin.outputs)} outputs")
         out.append("  operating point:")
@@ -270,12 +272,14 @@ class Linearize(Workflow):
     sets : list of "COMPONENT.PARAMETER=VALUE" or dict, optional
         Changes to its parameters first.
     at : str, mapping or Path
-        ``"trim"`` (an equilibrium, default), ``"initial"``, ``"STATE=VALUE,..."``, a mapping of states, or an
-        operating-point file.
+        ``"trim"`` (an equilibrium, default), ``"run"`` (the state a run from the initial state reaches at ``t``,
+        every state as simulated), ``"initial"``, ``"STATE=VALUE,..."``, a mapping of states, or an
+        operating-point file (:func:`hydroservo.analysis.linear.operating_point`).
     t : float or str
         Time of the operating point [s] (the signals' values then).
     free : list of str
-        States the trim leaves free: a steady motion.
+        States the trim leaves free: a steady motion. They keep the system's values at ``t`` (a run's from the
+        initial state; at ``t = 0`` the initial ones).
     inputs, outputs : list of str, optional
         Component inputs or parameters; states, outputs or aliases (default: the signal-block inputs; the states).
     frequencies : array, optional

@@ -217,6 +217,62 @@ def test_a_fast_steady_motion_is_found_from_where_a_run_is() -> None:
     assert lin.x0["load.v"] == pytest.approx(lin.drift["load.x"]) and lin.x0["load.v"] > 0.1
 
 
+def _finite_differences(system, x0, t):
+    """Central differences of the simulated model's rates at the states ``x0`` (SI) and time ``t``."""
+    model = system.build()
+    p = system.parameter_vector()
+    x = np.array([x0[n] for n in model.state_names])
+    J = np.empty((x.size, x.size))
+    for j in range(x.size):
+        e = np.zeros(x.size)
+        e[j] = 1e-6 * model.nominal[j]
+        J[:, j] = (np.asarray(model.f(t, x + e, p)).ravel() - np.asarray(model.f(t, x - e, p)).ravel()) / (2 * e[j])
+    return J, np.asarray(model.f(t, x, p)).ravel()
+
+
+def test_linearize_along_a_run_is_the_simulated_state_at_t() -> None:
+    """Issue 37: at t = 0.35 s (36.8 % signal) the arm is at 35.3 mm, moving at 72.8 mm/s. ``at="run"`` takes every
+    state from the run; the steady motion (``free=["load.x"]``) passes through the run's position, not the initial
+    20 mm, and its hydraulic mode is 95.0 Hz (106.8 Hz at 20 mm, the former answer). Both A matrices equal central
+    differences of the simulated model at their points (1e-5 of each row's largest entry, as the transient test)."""
+    from hydroservo.analysis.ladder import _tables_off
+
+    s = hs.load_model("robot-arm")
+    names = s.build().state_names
+    run = s.simulate(t_end=0.35, n_points=2)
+    along = linearize(s, "run", t=0.35)
+    for n in names:
+        assert along.x0[n] == pytest.approx(float(run[n][-1]), rel=1e-12, abs=1e-15), n
+    assert along.x0["load.x"] == pytest.approx(0.0353, abs=1e-4)
+    steady = linearize(s, t=0.35, free=["load.x"])
+    assert steady.x0["load.x"] == along.x0["load.x"]  # the free state is the run's
+    for n in ("spool.s", "cyl.pA", "cyl.pB", "load.v"):  # the run is in steady motion by then: the trim stays on it
+        assert steady.x0[n] == pytest.approx(along.x0[n], rel=1e-3), n
+    # The spool rests at the signal by then, where the valve's hysteresis table switches between its opening and
+    # closing branches: a difference quotient in spool.s straddles that jump, so its column is compared on the
+    # arm without the tables (below), every other column here.
+    keep = [names.index(n) for n in names if n != "spool.s"]
+    for lin in (along, steady):
+        J, f = _finite_differences(s, lin.x0, 0.35)
+        scale = np.abs(J[:, keep]).max(axis=1, keepdims=True) + 1e-30
+        np.testing.assert_allclose(lin.A[:, keep] / scale, J[:, keep] / scale, atol=1e-5)
+        np.testing.assert_allclose([lin.drift[n] for n in names], f, rtol=1e-9, atol=1e-12)
+        hydraulic = max(m.frequency for m in lin.modes() if m.damping < 1)
+        assert hydraulic == pytest.approx(95.0, abs=0.1)
+    plain = s.copy()
+    _tables_off(plain)
+    for lin in (linearize(plain, "run", t=0.35), linearize(plain, t=0.35, free=["load.x"])):
+        assert lin.x0["load.x"] > 0.03
+        J, f = _finite_differences(plain, lin.x0, 0.35)
+        scale = np.abs(J).max(axis=1, keepdims=True) + 1e-30
+        np.testing.assert_allclose(lin.A / scale, J / scale, atol=1e-5)
+    assert along.info["states_from_run"] and steady.info["states_from_run"]
+    with pytest.raises(ParameterError, match="free states belong to a trim"):
+        linearize(s, "run", t=0.35, free=["load.x"])
+    with pytest.raises(TrimError, match="did you mean 'load.x'"):
+        linearize(s, t=0.35, free=["load.xx"])
+
+
 def test_simulated_sines_match_the_linear_model_where_the_system_is_linear() -> None:
     """A mass-spring is linear: the simulated fundamental equals the transfer function (gain within 1e-3 dB,
     phase within 0.1 deg: 64 samples per period, four periods)."""
