@@ -1287,3 +1287,78 @@ def test_a_good_run_leaves_its_two_files_in_out(ws: Workspace, run) -> None:
     o = run("simulate", model_file(ws), "--t-end", "20 ms", "--out", ws.out)
     assert o.code == 0, o.describe()
     assert sorted(p.name for p in ws.out.iterdir()) == ["valve-cylinder.csv", "valve-cylinder.png"]
+
+
+# ---- issue 37: identification messages ----
+def _rig_edit(ws: Workspace, name: str, as_name: str, edit: Callable[[list[str]], list[str]]) -> Path:
+    """The example record ``name`` with its data rows (the lines after the header) edited, written as ``as_name``."""
+    lines = example_files()[name].splitlines()
+    head = next(i for i, line in enumerate(lines) if line.startswith("t ["))
+    return ws.write(as_name, "\n".join([*lines[: head + 1], *edit(lines[head + 1 :])]) + "\n")
+
+
+def _cell(column: int, value: str, rows: Any = None) -> Callable[[list[str]], list[str]]:
+    """Set ``column`` of the data rows ``rows`` (all if None) to ``value``."""
+    def edit(body: list[str]) -> list[str]:
+        out = []
+        for i, line in enumerate(body):
+            cells = line.split(",")
+            if rows is None or i in rows:
+                cells[column] = value
+            out.append(",".join(cells))
+        return out
+
+    return edit
+
+
+# id -> (argv builder, patterns): each said before "cannot be integrated at the starting values (load.B = 280)"
+# or "the rate of cyl.pA does not depend on cyl.C_Li", or was taken silently
+RIG_RECORD_CASES: dict[str, tuple[Callable[[Workspace], list[Any]], list[str]]] = {
+    "calibrate-record-in-inches": (
+        lambda w: ["calibrate", "robot-arm", "--record",
+                   w.write("step-200Hz.csv", example_files()["arm_step-200Hz.csv"].replace("load.x [mm]", "load.x [in]")),
+                   "--input", "command.y", "--fit", "load.B"],
+        [r"step-200Hz\.csv", r"column 'load\.x'", r"data row 1\b", r"20\.006 in", r"stroke, 0 \.\. 0\.3 m", r"\[in\]"],
+    ),
+    "calibrate-record-cell-1e308": (
+        lambda w: ["calibrate", "robot-arm", "--record", _rig_edit(w, "arm_step-200Hz.csv", "step-200Hz.csv",
+                   _cell(1, "1e308", {14})), "--input", "command.y", "--fit", "load.B"],
+        [r"step-200Hz\.csv", r"column 'load\.x'", r"data row 15\b", r"1e\+308 mm", r"expected a position within"],
+    ),
+    "calibrate-record-first-cell-1e308": (
+        lambda w: ["calibrate", "robot-arm", "--record", _rig_edit(w, "arm_step-200Hz.csv", "step-200Hz.csv",
+                   _cell(1, "1e308", {0})), "--input", "command.y", "--fit", "load.B"],
+        [r"column 'load\.x'", r"data row 1\b", r"1e\+308 mm", r"expected a position within"],
+    ),
+    "leakage-record-below-vacuum": (
+        lambda w: ["identify", "leakage", f"{w.example('arm_locked-200Hz.csv')},"
+                   f"{_rig_edit(w, 'arm_locked-40Hz.csv', 'arm_locked-40Hz.csv', _cell(1, '-1.5'))}",
+                   "--model", "robot-arm", "--set", "load.x0=295 mm"],
+        [r"arm_locked-40Hz\.csv", r"column 'cyl\.pA'", r"data row 1\b", r"-1\.5 bar", r"(?i)at or above vacuum"],
+    ),
+    "leakage-record-without-a-pressure-difference": (
+        lambda w: ["identify", "leakage", f"{w.example('arm_locked-200Hz.csv')},"
+                   f"{_rig_edit(w, 'arm_locked-40Hz.csv', 'arm_locked-40Hz.csv', lambda b: _cell(2, '0.5')(_cell(1, '0.5')(b)))}",
+                   "--model", "robot-arm", "--set", "load.x0=295 mm"],
+        [r"chamber A's pressure \(0\.5 bar, column 'cyl\.pA'\) is not above chamber B's", r"open towards A"],
+    ),
+    "friction-record-below-vacuum": (
+        lambda w: ["identify", "friction", f"{w.example('arm_friction-200Hz.csv')},"
+                   f"{_rig_edit(w, 'arm_friction-40Hz.csv', 'arm_friction-40Hz.csv', _cell(2, '-3', {40}))}",
+                   "--model", "robot-arm"],
+        [r"arm_friction-40Hz\.csv", r"column 'cyl\.pB'", r"data row 41\b", r"-3 bar", r"(?i)vacuum"],
+    ),
+}
+
+
+@pytest.mark.parametrize("case", list(RIG_RECORD_CASES))
+def test_rig_records_name_the_value_that_is_wrong(case: str, ws: Workspace, run) -> None:
+    argv, patterns = RIG_RECORD_CASES[case]
+    refused(run, ws, [*argv(ws), "--out", ws.out], patterns)
+
+
+def test_api_linearize_run_refuses_free_states() -> None:
+    from hydroservo.analysis.linear import linearize
+
+    api_refused(lambda: linearize(hs.load_model("robot-arm"), "run", t=0.1, free=["load.x"]),
+                r"free = load\.x", r"belong to a trim")

@@ -308,6 +308,66 @@ def driven_system(system: System, record: Record, inputs: Sequence[str]) -> Syst
     return driven
 
 
+#: How far below vacuum a recorded pressure may read before it is refused [Pa]: a transducer's offset and noise,
+#: a tenth of a bar (oil itself cannot be below absolute zero pressure).
+RECORD_VACUUM_SLACK = 1e4
+#: A recorded state more than this many times the model's nominal magnitude of it is refused: no unit slip of a
+#: real sensor reaches it, an overflowed or garbled cell does (1e308).
+RECORD_SCALE_LIMIT = 1e6
+
+
+def record_fault(model: Model, p: np.ndarray, record: Record, names: Sequence[str]) -> str | None:
+    """The first recorded value of the signals ``names`` the model cannot take, as a message naming the record,
+    its column and data row, the value and what was expected; None if there is none.
+
+    Checked against the bounds the model's components declare (:mod:`hydroservo.system.plausibility`): a pressure
+    more than :data:`RECORD_VACUUM_SLACK` below vacuum, a position beyond its end stops by more than the
+    plausibility margin (1 % of the stroke); also a value that is no finite number once in SI, and a state more than
+    :data:`RECORD_SCALE_LIMIT` times its nominal magnitude. Such a value (a column in the wrong unit, an overflowed
+    cell) would otherwise surface as a model that cannot be integrated or a balance that does not exist.
+    """
+    from hydroservo.system.plausibility import TRAVEL_MARGIN
+    from hydroservo.units import VACUUM
+
+    lows, highs = (np.asarray(b, dtype=float).ravel() for b in model.limit_bounds(p))
+    watched = {w.signal: (w, float(lo), float(hi)) for w, lo, hi in zip(model.watched, lows, highs)}
+    for name in names:
+        if name not in record:
+            continue
+        ch = record[name]
+        unit = coherent_unit(model.units.get(name, ""))
+        try:
+            with np.errstate(over="ignore", invalid="ignore"):
+                v = ch.to(unit)
+        except UnitError:
+            continue  # the dimension is refused where the column is compared
+        given = np.isfinite(ch.values)
+        faults: list[tuple[np.ndarray, str]] = [(given & ~np.isfinite(v), f"a finite number in {si_unit(unit)}")]
+        w = watched.get(name)
+        if w is not None and w[0].kind == "pressure":
+            faults.append((given & (v < VACUUM - RECORD_VACUUM_SLACK),
+                           f"a pressure at or above vacuum ({VACUUM / 1e5:.4g} bar gauge): oil cannot be below absolute zero"))
+        if w is not None and w[0].kind == "travel" and math.isfinite(w[1]) and math.isfinite(w[2]) and abs(w[2] - w[1]) < 1e20:
+            slack = TRAVEL_MARGIN * (w[2] - w[1])
+            faults.append((given & ((v < w[1] - slack) | (v > w[2] + slack)),
+                           f"a position within {w[0].owner}'s stroke, {w[1]:.4g} .. {w[2]:.4g} m"))
+        if name in model.state_names:
+            scale = float(model.nominal[model.state_names.index(name)])
+            faults.append((given & (np.abs(v) > RECORD_SCALE_LIMIT * scale),
+                           f"a value within {RECORD_SCALE_LIMIT:.0e} times the model's magnitude of {name} ({scale:g} {si_unit(unit)})"))
+        for mask, expected in faults:
+            if mask.any():
+                k = int(np.argmax(mask))
+                row = f"data row {k + 1}" if ch.source else f"sample {k + 1}"
+                shown = f"{ch.values[k]:g} {si_unit(ch.unit)}".strip()
+                converted = f" = {v[k]:.4g} {si_unit(unit)}" if ch.unit != unit and np.isfinite(v[k]) else ""
+                return (
+                    f"record {record.name!r} ({ch.where}, {row}, t = {ch.t[k]:g} s): {shown}{converted}; expected "
+                    f"{expected}. Is the column's unit ([{ch.unit}]) right?"
+                )
+    return None
+
+
 def prepare(
     system: System, record: Record, inputs: Sequence[str] = (), *, initial: str = "record",
 ) -> Experiment:
@@ -345,6 +405,9 @@ def prepare(
         ok = ch.valid & (ch.t >= t0)
         values[n] = ch.to(model.units.get(n, ""))[ok]
         index[n] = np.searchsorted(grid, ch.t[ok])
+    fault = record_fault(model, driven.parameter_vector(), record, [*measured, *inputs])
+    if fault:
+        raise ParameterError(fault)
     fixed: dict[str, float] = {}
     estimate: list[str] = []
     if initial in ("record", "estimate", "trim"):

@@ -38,6 +38,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from hydroservo.errors import ParameterError
+from hydroservo.identification.calibration import record_fault
 from hydroservo.identification.records import Record
 from hydroservo.identification.steady import segments
 from hydroservo.laws.friction import stribeck
@@ -98,6 +99,9 @@ def friction_from_record(
     for n in (position, *pressures):
         if n not in record:
             raise ParameterError(f"record {record.name!r}: no column {n!r}; the friction test needs the rod position and both chamber pressures")
+    fault = record_fault(system.build(), system.parameter_vector(), record, [position, *pressures, command])
+    if fault:
+        raise ParameterError(fault)
     ch = record[position]
     x_all = ch.to("m")
     pa = record[pressures[0]]  # the forces at chamber A's samples, the other signals interpolated to them

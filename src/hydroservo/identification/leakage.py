@@ -39,7 +39,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from hydroservo.errors import HydroservoError, ParameterError
-from hydroservo.identification.calibration import driven_system
+from hydroservo.identification.calibration import driven_system, record_fault
 from hydroservo.identification.records import Record
 from hydroservo.identification.steady import balancing_value
 
@@ -111,6 +111,9 @@ def leakage_from_record(
     driven = driven_system(system, record, inputs)
     model = driven.build()
     p = driven.parameter_vector()
+    fault = record_fault(model, p, record, [pA, pB, f"{load}.x", *inputs])
+    if fault:
+        raise ParameterError(fault)
     parameter = f"{cylinder}.C_Li"
     if parameter not in model.parameter_names:
         raise ParameterError(f"leakage: {system.name!r} has no parameter {parameter}")
@@ -128,6 +131,12 @@ def leakage_from_record(
         means[n] = float(np.mean(vals))
         errors[n] = float(np.std(vals, ddof=1) / math.sqrt(vals.size))
         halves[n] = (float(np.mean(vals[: vals.size // 2])), float(np.mean(vals[vals.size // 2 :])))
+    if not means[pA] > means[pB]:
+        raise ParameterError(
+            f"record {record.name!r}: over {lo:g}..{hi:g} s chamber A's pressure ({means[pA] / 1e5:.4g} bar, column "
+            f"{pA!r}) is not above chamber B's ({means[pB] / 1e5:.4g} bar, column {pB!r}): no pressure difference drives "
+            "a leakage flow from A to B; expected the piston locked and the valve a little open towards A"
+        )
     held = {pA: means[pA], pB: means[pB]}
     x_name, v_name = f"{load}.x", f"{load}.v"
     if x_name in model.state_names:
