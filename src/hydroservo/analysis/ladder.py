@@ -134,7 +134,8 @@ def build_ladder(
     kinds: Sequence[str] = RUNGS,
     improved: Sequence[bool] = (False, True),
 ) -> list[Rung]:
-    """The rungs (module notes) linearised at the operating point ``at`` (:func:`~hydroservo.analysis.linear.operating_point`).
+    """The rungs (module notes) linearised at the operating point ``at`` (:func:`~hydroservo.analysis.linear.operating_point`:
+    with ``free`` states at ``t > 0``, a steady motion through the state a run from the initial state has at ``t``).
 
     A system without compensation tables has no *improved* rungs apart from its plain ones: they are left out.
     The simplified rungs need one valve driving one cylinder; for other systems they are left out.

@@ -64,7 +64,8 @@ def add_parsers(sub: Any) -> None:
     p.add_argument("--output", default=None, help="the displacement compared (default: the first alias or position)")
     p.add_argument("--t", default=None, metavar="T", help="time of the operating point (default: while the signal is on)")
     p.add_argument("--free", default=None, metavar="STATE,...",
-                   help="states free in the operating point (default: the masses' positions: a steady motion)")
+                   help="states free in the operating point (default: the masses' positions: a steady motion), at the "
+                   "values a run from the initial state has at --t")
     p.add_argument("--models", default=None, metavar="M1,M2", help="some of nonlinear,linear,linear-feedback,simplified,simplified-feedback")
     p.add_argument("--measured", action="append", default=[], metavar="STEP=FILE.csv[:COLUMN]",
                    help="a measured response for a step (time [s] in column 0, the output in its unit): the reference")

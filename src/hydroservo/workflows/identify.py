@@ -162,7 +162,7 @@ class IdentifyFriction(_Procedure):
         comp = self.system[self.load]
         notes = list(fit.warnings)
         static = [k for k in ("F_s0", "c_s") if not fit.stderr[k] <= abs(fit.parameters[k])]
-        own = {k: float(comp.values[k]) for k in ("F_s0", "c_s") if k in comp.values}
+        own: dict[str, float] = {k: float(comp.values[k]) for k in ("F_s0", "c_s") if k in comp.values}
         if static and len(own) == 2 and own["c_s"] > 0:
             # The static term is not determined: left free it trades with the Coulomb and viscous terms along a
             # flat valley and drags them off (a c_s above every speed makes F_s0 a second F_c0). It is not written,

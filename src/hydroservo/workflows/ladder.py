@@ -177,7 +177,8 @@ class Ladder(Workflow):
     t : float or str, optional
         Time of the operating point [s] (default: while the signal is on).
     free : list of str, optional
-        States free in the operating point (default: the masses' positions, a steady motion).
+        States free in the operating point (default: the masses' positions, a steady motion), at the values a run
+        from the initial state has at ``t`` (:func:`hydroservo.analysis.linear.operating_point`).
     models : list of str, optional
         Some of :data:`hydroservo.analysis.ladder.RUNGS` (default all).
     measured : mapping, optional

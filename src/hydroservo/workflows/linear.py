@@ -115,7 +115,8 @@ class LinearReport(Report):
         return ", ".join(parts)
 
     def title(self) -> str:
-        return f"{self.model.name}: linear model at {self.model.info.get('at', '')} (t = {self.model.t:g} s)"
+        at = self.model.info.get("at", "")
+        return f"{self.model.name}: linear model at {'the state of a run' if at == 'run' else at} (t = {self.model.t:g} s)"
 
     def _stem(self) -> str:
         return safe_name(self.system.name)

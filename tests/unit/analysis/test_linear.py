@@ -307,3 +307,15 @@ def test_simulated_sines_on_a_steady_motion_and_where_linearity_ends() -> None:
             np.testing.assert_allclose(sim.gain_db[0, 1:], linear, atol=0.5)
         else:
             assert np.all(sim.gain_db[0, 1:] - linear > 6.0)
+
+
+def test_the_linearize_command_takes_the_run_s_state() -> None:
+    """``hydroservo linearize --at run --t 0.35``: the workflow says where it linearised, at 35.3 mm."""
+    from hydroservo.workflows import linear
+
+    report = linear.run("robot-arm", at="run", t="0.35 s", write=False)
+    assert report.model.x0["load.x"] == pytest.approx(0.0353, abs=1e-4)
+    assert report.lines()[0] == "robot-arm: linear model at the state of a run (t = 0.35 s)"
+    steady = linear.run("robot-arm", t="0.35 s", free=["load.x"], write=False)
+    assert steady.lines()[0].endswith("steady motion of load.x through the run's state at t")
+    assert steady.model.x0["load.x"] == report.model.x0["load.x"]
