@@ -15,7 +15,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-__all__ = ["text_table", "one_line", "comment_lines"]
+__all__ = ["text_table", "one_line", "comment_lines", "xml_text"]
 
 
 def text_table(
@@ -89,3 +89,23 @@ def comment_lines(text: str, mark: str = "#") -> list[str]:
     ['# made from "a', '# b.hmf"', '#', '# second']
     """
     return [f"{mark} {one_line(line)}".rstrip() if line.strip() else mark for line in text.splitlines()]
+
+
+def _xml_forbidden(ch: str) -> bool:
+    code = ord(ch)
+    return (code < 0x20 and ch not in "\t\n\r") or 0xD800 <= code <= 0xDFFF or code in (0xFFFE, 0xFFFF)
+
+
+def xml_text(text: str) -> str:
+    """``text`` as an XML 1.0 document can hold it (an attribute's value, an element's text): the characters XML
+    forbids even as references (control characters other than tab, line feed and carriage return, lone
+    surrogates, U+FFFE, U+FFFF) written as their escapes (``\\x00``); the XML writer (ElementTree) escapes the
+    rest (``&``, ``<``, quotes, line breaks in attributes). Every name and description in an FMU's
+    modelDescription.xml goes through this.
+
+    >>> xml_text('a\\x00b\\nc<d>')
+    'a\\\\x00b\\nc<d>'
+    """
+    if not any(_xml_forbidden(ch) for ch in text):
+        return text
+    return "".join(repr(ch)[1:-1] if _xml_forbidden(ch) else ch for ch in text)
