@@ -51,8 +51,8 @@ from __future__ import annotations
 
 import copy
 import functools
-import math
 import keyword
+import math
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
