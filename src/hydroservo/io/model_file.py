@@ -277,9 +277,11 @@ def _base(system: System) -> Path | None:
 
 
 def write_model(system: System, path: str | Path) -> Path:
-    """Write ``system`` as a TOML model file."""
+    """Write ``system`` as a TOML model file (UTF-8), read back first: what is written loads as ``system``
+    (:func:`checked_model_text`)."""
     path = Path(path)
-    path.write_text(model_to_toml(system))
+    text = checked_model_text(model_to_toml(system), system, f"model file {str(path)!r}")
+    path.write_text(text, encoding="utf-8")
     return path
 
 

@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any, ClassVar
 
 from hydroservo.components.base import MAX_NAME
+from hydroservo.errors import shorten
 from hydroservo.io.text import one_line
 from hydroservo.workflows.base import Progress, Report, Workflow
 
@@ -39,12 +40,12 @@ class HopsanReport(Report):
             "",
             "  Hopsan component -> hydroservo",
         ]
-        shown = [(one_line(f"{path} ({kind})"), became) for path, kind, became in imp.mapping]
+        shown = [(f"{shorten(one_line(path), 100)} ({kind})", became) for path, kind, became in imp.mapping]
         width = max((len(left) for left, _ in shown), default=0)
         out += [f"  {left:<{width}}  {became}" for left, became in shown]
         if imp.renamed:
             out += ["", f"  renamed (hydroservo's names are identifiers, not Python keywords, of at most {MAX_NAME} characters):"]
-            out += [f"  {one_line(path)} -> {name}" for path, name in imp.renamed.items()]
+            out += [f"  {shorten(one_line(path), 100)} -> {name}" for path, name in imp.renamed.items()]
         if self.files:
             out += ["", f"wrote {self.files['model']}: hydroservo simulate {self.files['model']}"]
         return out

@@ -94,6 +94,18 @@ def test_script_json_in_a_report_has_no_tag_to_end_it() -> None:
     assert "<" not in text and "\u2028" not in text and json.loads(text) == value
 
 
+@pytest.mark.parametrize("text", list(HOSTILE.values()), ids=list(HOSTILE))
+def test_write_model_of_a_system_named_anything_reads_back(text: str, tmp_path: Path) -> None:
+    from hydroservo.io.model_file import write_model
+
+    system = load_model("position-servo")
+    system.name, system.description = text, text
+    system.alias("hostile", "-load.x", "m", text)
+    again = read_model(write_model(system, tmp_path / "m.toml"))
+    assert (again.name, again.description, again.aliases["hostile"].description) == (text, text, text)
+    assert again.initial == system.initial and again.parameter_values() == system.parameter_values()
+
+
 def test_the_component_name_rule_refuses_keywords_and_long_names_at_loading(tmp_path: Path) -> None:
     assert name_problem("class") and name_problem("x" * (MAX_NAME + 1)) and name_problem("4x")
     assert name_problem("match") is None and name_problem("x" * MAX_NAME) is None  # soft keywords are names
