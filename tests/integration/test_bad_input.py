@@ -1362,3 +1362,118 @@ def test_api_linearize_run_refuses_free_states() -> None:
 
     api_refused(lambda: linearize(hs.load_model("robot-arm"), "run", t=0.1, free=["load.x"]),
                 r"free = load\.x", r"belong to a trim")
+
+# ---- issue 37: files that cannot be rewritten by their contents ----
+# A name, a description or a file name holding a line break, quotes, control characters or a keyword is written
+# escaped (or mapped to a valid name, and said so): what import-hopsan and export write loads as the model they
+# describe, never with lines of the name made live TOML. An .hmf without components is refused before writing.
+_I37_INJECTION = 'Force\n[initial]\n"Mass.x" = "0.5 m"\n#'
+
+
+def _i37_attr(text: str) -> str:
+    from xml.sax.saxutils import quoteattr
+
+    return quoteattr(text, {"\n": "&#10;", "\r": "&#13;"})
+
+
+def _i37_hmf(force: str = "Force", mass: str = "Mass", objects: str | None = None) -> str:
+    """A force on a mass on a spring to a wall, as Hopsan writes it (or ``objects`` alone, no connections)."""
+    comps = [
+        ("MechanicForceTransformer", force, {"F#Value": "10"}),
+        ("MechanicTranslationalMass", mass, {"m": "1", "B#Value": "1", "x_min#Value": "-1", "x_max#Value": "1"}),
+        ("MechanicTranslationalSpring", "Spring", {"k#Value": "100"}),
+        ("MechanicFixedPosition", "Wall", {}),
+    ]
+    links = [((force, "P1"), (mass, "P1")), ((mass, "P2"), ("Spring", "P1")), (("Spring", "P2"), ("Wall", "Pm1"))]
+    if objects is None:
+        objects = "".join(
+            f'<component name={_i37_attr(n)} typename="{k}"><parameters>'
+            + "".join(f'<parameter type="double" name="{p}" value="{v}"/>' for p, v in params.items())
+            + "</parameters></component>"
+            for k, n, params in comps
+        )
+        connects = "".join(
+            f"<connect startcomponent={_i37_attr(a)} startport=\"{pa}\" endcomponent={_i37_attr(b)} endport=\"{pb}\"/>"
+            for (a, pa), (b, pb) in links
+        )
+    else:
+        connects = ""
+    return (
+        '<?xml version="1.0" encoding="UTF-8"?>\n<hopsanmodelfile><system name="Small" typename="Subsystem">'
+        '<simulationtime stop="1" timestep="0.001" start="0"/>'
+        f"<objects>{objects}</objects><connections>{connects}</connections></system></hopsanmodelfile>"
+    )
+
+
+def _i37_written(ws: Workspace) -> Path:
+    (written,) = [p for p in ws.out.rglob("*.toml")]
+    return written
+
+
+_I37_HOPSAN_NAMES = {
+    "newline-injection": (_I37_INJECTION, "Mass"),
+    "cr-injection": ('F\r[initial]\r"Mass.x" = "0.5 m"', "Mass"),
+    "quotes-hash-brackets": ('F "q" \\ # [t] """ \'\'\'', "Mass"),
+    "u2028": ("F\u2028[initial]", "Mass"),
+    "keyword": ("Force", "class"),
+    "10000-characters": ("Force", "M" * 10_000),
+}
+
+
+@pytest.mark.parametrize("case", list(_I37_HOPSAN_NAMES))
+def test_i37_import_hopsan_of_hostile_component_names_writes_the_model_imported(case: str, ws: Workspace, run) -> None:
+    force, mass = _I37_HOPSAN_NAMES[case]
+    hmf = ws.write("small.hmf", _i37_hmf(force, mass))
+    o = run("import-hopsan", hmf, "--out", ws.out)
+    assert o.code == 0, o.describe()
+    from hydroservo.system.expressions import names_in
+
+    again = hs.load_model(_i37_written(ws))
+    assert again.initial == {}, f"the name started a state: {again.initial}"  # Hopsan starts the mass at 0
+    for alias, entry in again.aliases.items():  # each expression of the file can be read: the model runs
+        names_in(entry.expr, alias)
+    assert "[initial]" not in [line.strip() for line in _i37_written(ws).read_text(encoding="utf-8").splitlines()]
+    if case in ("keyword", "10000-characters"):
+        assert "renamed" in o.out
+
+
+@pytest.mark.parametrize("stem", ["bad\nname", 'q"[x]#', "class"], ids=["newline", "quote-bracket-hash", "keyword"])
+def test_i37_import_hopsan_of_a_hostile_file_name_writes_a_file_that_loads(stem: str, ws: Workspace, run) -> None:
+    hmf = ws.write(f"{stem}.hmf", _i37_hmf())
+    o = run("import-hopsan", hmf, "--out", ws.out)
+    assert o.code == 0, o.describe()
+    assert {"Force", "Mass", "Spring", "Wall"} <= set(hs.load_model(_i37_written(ws)).components)
+
+
+@pytest.mark.parametrize(
+    "objects", ["", '<component name="Sink" typename="SignalSink"/>'], ids=["no-components", "only-a-sink"]
+)
+def test_i37_import_hopsan_of_an_empty_model(objects: str, ws: Workspace, run) -> None:
+    hmf = ws.write("empty.hmf", _i37_hmf(objects=objects))
+    refused(run, ws, ["import-hopsan", hmf, "--out", ws.out], [r"empty\.hmf", r"no component", r"expected"])
+
+
+@pytest.mark.parametrize("full", [False, True], ids=["plain", "full"])
+def test_i37_export_of_a_model_named_with_a_line_break(full: bool, ws: Workspace, run) -> None:
+    name = 'vc\n[initial]\n"load.x" = "50 mm"\n#'
+    path = model_file(ws, text=vc_text(n=("model", "name", tq(name))))
+    o = run("export", path, *(["--full"] if full else []))
+    assert o.code == 0, o.describe()
+    exported = ws.write("exported.toml", o.out)
+    again, original = hs.load_model(exported), hs.load_model(path)
+    assert again.name == name and again.initial == original.initial and "load.x" not in again.initial
+
+
+@pytest.mark.parametrize("name", ["class", "L" * 10_000], ids=["keyword", "10000-characters"])
+def test_i37_a_component_name_the_model_file_rule_refuses(name: str, ws: Workspace, run) -> None:
+    text = vc_base().replace("[components.load]", f"[components.{name}]")
+    path = model_file(ws, text=text)
+    refused(run, ws, ["simulate", path, "--out", ws.out], [r"vc\.toml", r"component name", r"keyword|characters"])
+
+
+def test_i37_export_c_of_a_model_named_like_a_template_key(ws: Workspace, run) -> None:
+    path = model_file(ws, text=vc_text(n=("model", "name", tq("vc @X@ */ ??/ \\"))))
+    o = run("export-c", path, "--step", "1e-4", "--out", ws.out)
+    assert o.code == 0, o.describe()  # was: RuntimeError "C template stepper.h: no value for @X@"
+    header = next(ws.out.rglob("*.h")).read_text(encoding="utf-8").splitlines()[0]
+    assert header.endswith("*/") is False and "*/" not in header.split("'")[1]

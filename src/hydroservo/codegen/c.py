@@ -48,6 +48,7 @@ import numpy as np
 
 from hydroservo.errors import ModelError, ParameterError, SolverError, shorten
 from hydroservo.io.files import OutputFolder
+from hydroservo.io.text import one_line
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import ACCURACY_PER_RTOL_OF
 from hydroservo.system.model import Model
@@ -179,7 +180,8 @@ def check_inputs(system: System, inputs: Sequence[str], what: str = "inputs") ->
 
 def _markdown_table(header: Sequence[str], rows: Sequence[Sequence[str]]) -> str:
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(cell.replace("|", "\\|") for cell in row) + " |" for row in rows]
+    # a cell on its line (a description's line break as its escape), its bars not the table's
+    lines += ["| " + " | ".join(one_line(cell).replace("|", "\\|") for cell in row) + " |" for row in rows]
     return "\n".join(lines)
 
 

@@ -73,6 +73,7 @@ from hydroservo.codegen.c import (
 from hydroservo.data import c_template
 from hydroservo.errors import ParameterError, shorten
 from hydroservo.io.files import OutputFolder
+from hydroservo.io.text import xml_text
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import DEFAULT_ACCURACY, tolerances
 from hydroservo.system.model import Model
@@ -279,9 +280,9 @@ def model_description(
         "fmiModelDescription",
         {
             "fmiVersion": "2.0",
-            "modelName": system.name,
+            "modelName": xml_text(system.name),
             "guid": guid,
-            "description": system.description or f"hydroservo model {system.name!r}",
+            "description": xml_text(system.description or f"hydroservo model {system.name!r}"),
             "generationTool": f"hydroservo {__version__}",
             "variableNamingConvention": "structured" if structured else "flat",
             "numberOfEventIndicators": "0",
@@ -321,7 +322,7 @@ def model_description(
     for vr, v in enumerate(every):
         attributes = {"name": v.name, "valueReference": str(vr)}
         if v.description:
-            attributes["description"] = v.description
+            attributes["description"] = xml_text(v.description)
         real = {"unit": v.unit} if v.unit else {}
         if v.kind == "parameter":
             param = spec[v.signal]

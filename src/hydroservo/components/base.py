@@ -51,6 +51,7 @@ from __future__ import annotations
 
 import copy
 import functools
+import keyword
 import math
 import warnings
 from collections.abc import Mapping
@@ -58,7 +59,7 @@ from dataclasses import dataclass, field, replace
 from typing import Any, ClassVar, Self
 
 from hydroservo.data import parameter_set
-from hydroservo.errors import ParameterError, RenamedWarning, UnitError, did_you_mean
+from hydroservo.errors import ParameterError, RenamedWarning, UnitError, did_you_mean, shorten
 from hydroservo.units import check_unit, coherent_unit, is_absolute_pressure, is_bare_number, si_unit, to_si
 
 __all__ = [
@@ -77,7 +78,30 @@ __all__ = [
     "REGISTRY",
     "register",
     "RenamedWarning",
+    "MAX_NAME",
+    "name_problem",
 ]
+
+#: The longest component name [characters]: a name is written into expressions (aliases, initial values) that
+#: are read back, and into every file that names signals.
+MAX_NAME = 100
+
+
+def name_problem(name: str) -> str | None:
+    """Why ``name`` cannot name a component, or None: a component name is an identifier (letters, digits, _, not
+    starting with a digit), not a Python keyword (expressions such as ``-class.x`` could not be read) and at most
+    :data:`MAX_NAME` characters. The one rule: a model file's loader and every writer of names check by it.
+
+    >>> name_problem("load"), name_problem("class"), name_problem("4_3")
+    (None, "a Python keyword, which expressions of its signals could not name; expected another name, e.g. 'class_'", 'expected a Python identifier (letters, digits, _; not starting with a digit)')
+    """
+    if not isinstance(name, str) or not name.isidentifier():
+        return "expected a Python identifier (letters, digits, _; not starting with a digit)"
+    if keyword.iskeyword(name):
+        return f"a Python keyword, which expressions of its signals could not name; expected another name, e.g. {name + '_'!r}"
+    if len(name) > MAX_NAME:
+        return f"{len(name)} characters; expected at most {MAX_NAME}"
+    return None
 
 #: Placeholder unit of signal blocks (sources, sums, gains): replaced by the
 #: block's ``unit`` argument, or by "" (dimensionless) when none is given.
@@ -313,8 +337,9 @@ class Component:
     RENAMED: ClassVar[dict[str, str]] = {}
 
     def __init__(self, name: str, unit: str | None = None, **values: Any) -> None:
-        if not name.isidentifier():
-            raise ParameterError(f"component name {name!r}: expected a Python identifier (letters, digits, _)")
+        problem = name_problem(name)
+        if problem is not None:
+            raise ParameterError(f"component name {shorten(str(name))!r}: {problem}")
         self.name = name
         self.unit = unit
         self._bind_signal_unit(unit or "")

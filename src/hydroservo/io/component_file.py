@@ -28,7 +28,7 @@ from hydroservo.components.base import REGISTRY, Component
 from hydroservo.components.valves.staged_slot import StagedSlotValve
 from hydroservo.data import parameter_set
 from hydroservo.errors import ParameterError
-from hydroservo.io.toml import read_toml, toml_quantity, toml_string, toml_table, toml_value
+from hydroservo.io.toml import read_toml, toml_comments, toml_quantity, toml_string, toml_table, toml_value
 from hydroservo.laws.staged_slot import BRIDGE_PARAMETERS
 
 __all__ = [
@@ -69,7 +69,7 @@ def component_toml(
     the parameters were fitted to, the reproduced characteristics); readers
     ignore them.
     """
-    lines = [f"# {line}" if line else "#" for line in header.splitlines()]
+    lines = toml_comments(header)
     entries = {"type": toml_string(type_name)}
     entries.update({k: toml_string(v) for k, v in (options or {}).items()})
     entries.update({k: toml_quantity(v, units.get(k, "")) for k, v in params.items()})

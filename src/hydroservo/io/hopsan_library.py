@@ -203,11 +203,40 @@ SHARED_STARTS = frozenset({
 STARTS_DIFFER = "StartsDiffer"
 
 
-def safe_name(name: str) -> str:
-    """A Hopsan name as a hydroservo component name: characters other than letters, digits and _ become _, and
-    a name that starts with a digit gets a ``c_`` in front (``4_3_Servo_Valve`` -> ``c_4_3_Servo_Valve``)."""
+#: The longest name an imported component is given [characters]: what a mapping adds to it (``_spool``, ``_2``)
+#: stays within the longest component name (:data:`hydroservo.components.base.MAX_NAME`).
+LONGEST_NAME = cbase.MAX_NAME - 24
+
+
+def _plain_name(name: str) -> str:
     safe = re.sub(r"\W", "_", name, flags=re.ASCII)
     return f"c_{safe}" if not safe or safe[0].isdigit() else safe
+
+
+def _shortened(name: str, longest: int) -> str:
+    """``name`` if it is at most ``longest`` characters, else its start and a digest of the whole (two long names
+    that differ only at their ends stay apart)."""
+    import hashlib
+
+    if len(name) <= longest:
+        return name
+    return f"{name[:longest - 9]}_{hashlib.sha256(name.encode('utf-8', 'surrogatepass')).hexdigest()[:8]}"
+
+
+def safe_name(name: str) -> str:
+    """A Hopsan name as a hydroservo component name, valid by the model file's rule
+    (:func:`hydroservo.components.base.name_problem`): characters other than letters, digits and _ become _, a
+    name that starts with a digit gets a ``c_`` in front (``4_3_Servo_Valve`` -> ``c_4_3_Servo_Valve``), a Python
+    keyword a ``_`` behind (``class`` -> ``class_``), and a name longer than :data:`LONGEST_NAME` is cut, with a
+    digest of the whole behind.
+
+    >>> safe_name("4_3 Servo-Valve"), safe_name("class"), len(safe_name("M" * 10000))
+    ('c_4_3_Servo_Valve', 'class_', 76)
+    """
+    import keyword
+
+    safe = _shortened(_plain_name(name), LONGEST_NAME)
+    return f"{safe}_" if keyword.iskeyword(safe) else safe
 
 
 def _abs(p: float) -> str:
@@ -4104,6 +4133,9 @@ class HopsanImport:
     mapping: list[tuple[str, str, str]]  #: (Hopsan path, Hopsan type, what it became)
     names: dict[str, str]  #: Hopsan path -> hydroservo component name
     variables: dict[str, str]  #: alias -> Hopsan's name of the variable (``Servo1$Valve#PA#Pressure``)
+    #: Hopsan path -> the name it was given where hydroservo's rule for names refuses Hopsan's (a Python keyword,
+    #: a name too long): said in the import's report and in the model file's header
+    renamed: dict[str, str] = field(default_factory=dict)
 
 
 def read_hopsan(path: str | Path, line_segments: int | None = None) -> System:
@@ -4145,6 +4177,8 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
         for end in connection:
             if _end(end)[0] not in seen_names:
                 problems.append(f"{source}: connection {' – '.join(connection)}: no component {_end(end)[0]!r} in the model")
+    if not model.components:
+        problems.append(f"{source}: no components; expected a Hopsan model with at least one component")
     if problems:
         raise ModelFileError("; ".join(problems))
     unsupported = [c for c in model.components if c.typename not in LIBRARY]
@@ -4158,6 +4192,7 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
             f"{', '.join(sorted(LIBRARY))} (docs/hopsan.md)"
         )
     names: dict[str, str] = {}
+    renamed: dict[str, str] = {}
     used: set[str] = set()
     mapped: dict[str, Mapped] = {}
     mapping: list[tuple[str, str, str]] = []
@@ -4176,6 +4211,8 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
         connected[c] = connected.get(c, frozenset()) - ports
     for hc in model.components:
         name = safe_name("_".join((*hc.path, hc.name)))
+        if name != _plain_name("_".join((*hc.path, hc.name))):
+            renamed[hc.full_name] = name
         base, k = name, 1
         while name in used:
             k += 1
@@ -4197,6 +4234,9 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
         mapped[hc.full_name] = m
         became = m.note or ", ".join(f"{type(c).__name__} {c.name}" for c in m.components)
         mapping.append((hc.full_name, hc.typename, became))
+    if not _kept_components(mapped):
+        problems.append(f"{source}: no component hydroservo keeps (each is a display, a sink or a logger, which "
+                        "are dropped); expected a model with at least one component that is simulated")
     if problems:
         raise ModelFileError("; ".join(problems))
 
@@ -4348,7 +4388,12 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
     system.display_units = ["Pa_abs"]  # pressures shown absolute, as Hopsan shows them
     _refuse_loops_of_unit_delays(system, source, [hc.full_name for hc in model.components if hc.typename == "SignalUnitDelay"])
     _start_from_inputs(system, {k: v for m in mapped.values() for k, v in m.start_from_input.items()})
-    return HopsanImport(system, model, mapping, names, hopsan_names)
+    return HopsanImport(system, model, mapping, names, hopsan_names, renamed)
+
+
+def _kept_components(mapped: dict[str, Mapped]) -> list[str]:
+    """The names of the hydroservo components the mapped Hopsan components became."""
+    return [comp.name for m in mapped.values() for comp in m.components]
 
 
 def _split_subports(model: HopsanModel) -> HopsanModel:
@@ -4577,7 +4622,8 @@ def _is_input_variable(hc: HopsanComponent, port: str) -> bool:
 def _alias(full_name: str) -> str:
     """A Hopsan component's path as the head of an alias: each name made safe (``Tank C_1`` -> ``Tank_C_1``), but
     a leading digit kept (``4_3_Servo_Valve.PA.Flow``, as Hopsan logs it)."""
-    return ".".join(re.sub(r"\W", "_", part, flags=re.ASCII) or "_" for part in full_name.split("."))
+    return ".".join(_shortened(re.sub(r"\W", "_", part, flags=re.ASCII) or "_", LONGEST_NAME)
+                    for part in full_name.split("."))
 
 
 def _end(end: str) -> tuple[str, str]:

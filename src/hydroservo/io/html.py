@@ -171,8 +171,9 @@ def _table(t: Table) -> str:
 
 
 def _script_json(value: Any) -> str:
-    """JSON safe inside a <script> element."""
-    return json.dumps(value, default=_plain).replace("</", "<\\/")
+    """JSON safe inside a <script> element: ASCII (U+2028 escaped), and no ``<`` at all (``</script>`` and
+    ``<!--`` in a name cannot end or change the element), every ``<`` being inside a JSON string, as ``\\u003c``."""
+    return json.dumps(value, default=_plain).replace("<", "\\u003c")
 
 
 def _plain(value: Any) -> Any:

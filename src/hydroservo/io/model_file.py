@@ -57,10 +57,10 @@ from typing import Any
 from hydroservo.components.base import REGISTRY, Component
 from hydroservo.components.signals import Table
 from hydroservo.data import model_names, model_text
-from hydroservo.errors import HydroservoError, ModelFileError, did_you_mean
+from hydroservo.errors import HydroservoError, ModelFileError, did_you_mean, shorten
 from hydroservo.io.component_file import read_component_file
 from hydroservo.io.tables import read_time_table
-from hydroservo.io.toml import read_toml, toml_key, toml_quantity, toml_string, toml_value
+from hydroservo.io.toml import read_toml, toml_comment, toml_key, toml_quantity, toml_string, toml_value
 from hydroservo.system import System
 from hydroservo.system.nodes import port_of
 from hydroservo.units import UnitChoice, format_quantity, to_si
@@ -70,6 +70,7 @@ __all__ = [
     "write_model",
     "model_to_toml",
     "edited_model_text",
+    "checked_model_text",
     "system_from_dict",
     "load_model",
     "builtin_models",
@@ -89,31 +90,31 @@ def _component_lines(
 ) -> list[str]:
     """``shared``: parameters written as comments, being another component's (name); ``taken``: parameters
     written with another component's value and text (a spool's stroke set on its valve)."""
-    lines = [f"[components.{comp.name}]", f"type = {toml_string(type(comp).__name__)}"]
+    lines = [f"[components.{toml_key(comp.name)}]", f"type = {toml_string(type(comp).__name__)}"]
     if comp.unit is not None:
         lines.append(f"unit = {toml_string(comp.unit)}")
     for key, opt in comp.OPTIONS.items():
-        lines.append(f"{key} = {toml_string(comp.option(key))}  # one of {', '.join(opt.choices)}")
+        lines.append(f"{toml_key(key)} = {toml_string(comp.option(key))}  {toml_comment('one of ' + ', '.join(opt.choices))}")
     for key, spec in comp.PARAMETERS.items():
         value, given = (taken or {}).get(key, (comp.values[key], comp.given.get(key)))
         text = toml_quantity(value, spec.unit, given)
         if spec.fluid and key not in comp.explicit:  # the circuit's fluid, or the default until there is one
             source = "from the circuit fluid" if fluid else "default; a circuit fluid replaces it unless set here"
-            lines.append(f"# {key} = {text}  # {spec.description}: {source}")
+            lines.append(toml_comment(f"{key} = {text}  # {spec.description}: {source}"))
             continue
         if shared and key in shared:
-            lines.append(f"# {key} = {text}  # {spec.description}: the stroke of {shared[key]!r}, which drives it")
+            lines.append(toml_comment(f"{key} = {text}  # {spec.description}: the stroke of {shared[key]!r}, which drives it"))
             continue
-        lines.append(f"{key} = {text}  # {spec.description}")
+        lines.append(f"{toml_key(key)} = {text}  {toml_comment(spec.description)}")
     for key, val in comp.config().items():
-        lines.append(f"{key} = {toml_value(val)}")
+        lines.append(f"{toml_key(key)} = {toml_value(val)}")
     return lines
 
 
 def model_to_toml(system: System) -> str:
     """The system as a TOML model file (text)."""
     lines = [
-        f"# hydroservo model file: {system.name}",
+        toml_comment(f"hydroservo model file: {system.name}"),
         "# Every dimensional value carries its unit; edit freely and run with `hydroservo simulate FILE`.",
         "",
         "[model]",
@@ -225,6 +226,50 @@ def edited_model_text(text: str, system: System, keys: Sequence[str], where: str
     return edited if same else None
 
 
+def checked_model_text(text: str, system: System, what: str = "model file") -> str:
+    """``text``, a model file written of ``system``, if it loads and describes ``system``: the same components
+    and parameter values, options, connections, initial values and aliases, and every expression in it readable.
+    Whatever a name or a description held, what is written loads; a text that would not is refused here, before
+    anything is written.
+
+    Raises
+    ------
+    ModelFileError
+        Naming ``what`` and what would not load or would differ.
+    """
+    import tomllib
+    import warnings
+
+    from hydroservo.system.expressions import names_in
+
+    try:
+        data = tomllib.loads(text)
+        with warnings.catch_warnings():  # the read-back is a check: what it would warn of is said elsewhere
+            warnings.simplefilter("ignore")
+            again = system_from_dict(data, where=what, base=_base(system))
+        for name, alias in again.aliases.items():
+            names_in(alias.expr, f"alias {name!r}")
+        for state, value in again.initial.items():
+            if isinstance(value, str):
+                names_in(value, f"initial {state!r}")
+    except (tomllib.TOMLDecodeError, HydroservoError) as exc:
+        raise ModelFileError(f"{what} of {shorten(system.name)!r} would not load ({exc}); nothing was written") from None
+
+    def described(s: System) -> tuple[Any, ...]:
+        return (
+            s.name, s.t_end, list(s.components), s.parameter_values(),
+            {c: comp.option_values for c, comp in s.components.items()},
+            {frozenset(node.ports) for node in s.nodes()}, dict(s.connections), dict(s.initial),
+            dict(s.aliases),
+        )
+
+    if described(again) != described(system):
+        raise ModelFileError(
+            f"{what} of {shorten(system.name)!r}: does not read back as the same model; nothing was written"
+        )
+    return text
+
+
 def _base(system: System) -> Path | None:
     """The folder a model file's relative paths (tables) are read from: the file's."""
     source = str(system.source or "")
@@ -232,9 +277,11 @@ def _base(system: System) -> Path | None:
 
 
 def write_model(system: System, path: str | Path) -> Path:
-    """Write ``system`` as a TOML model file."""
+    """Write ``system`` as a TOML model file (UTF-8), read back first: what is written loads as ``system``
+    (:func:`checked_model_text`)."""
     path = Path(path)
-    path.write_text(model_to_toml(system))
+    text = checked_model_text(model_to_toml(system), system, f"model file {str(path)!r}")
+    path.write_text(text, encoding="utf-8")
     return path
 
 

@@ -26,7 +26,7 @@ import numpy as np
 from hydroservo.errors import ParameterError, UnitError
 from hydroservo.identification.records import Channel, Record
 from hydroservo.io.files import OutputFolder, csv_rows, read_text
-from hydroservo.io.results import parseable_unit
+from hydroservo.io.results import csv_comments, csv_header_row, parseable_unit
 from hydroservo.units import check_unit, same_dimension, si_definition
 
 __all__ = ["read_record", "write_record", "record_files"]
@@ -128,19 +128,19 @@ def record_files(record: Record, stem: str | None = None, comment: str = "") -> 
     """The CSV text of ``record``, one file per sample rate, by file name (``STEM-200Hz.csv``); ``comment``
     (lines of text) heads every file as ``#`` lines."""
     stem = stem or record.name
-    head = "".join(f"# {line}".rstrip() + "\n" for line in comment.splitlines())
+    head = csv_comments(comment) if comment else ""
     groups = record.by_rate()
     out: dict[str, str] = {}
     for rate, names in sorted(groups.items(), key=lambda kv: -kv[0]):
         label = f"{rate:g}Hz".replace(".", "p")
         fname = f"{stem}.csv" if len(groups) == 1 else f"{stem}-{label}.csv"
         first = record[names[0]]
-        lines = ["t [s]," + ",".join(f"{n} [{record[n].unit or '-'}]" for n in names)]
+        header = csv_header_row(["t [s]", *(f"{n} [{record[n].unit or '-'}]" for n in names)])
         cols = [first.t, *(record[n].values for n in names)]
         buffer = io.StringIO()
         np.savetxt(buffer, np.column_stack(cols), fmt="%.10g", delimiter=",")
         body = buffer.getvalue().replace("nan", "")
-        out[fname] = head + "\n".join(lines) + "\n" + body
+        out[fname] = head + header + body
     return out
 
 

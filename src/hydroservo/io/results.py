@@ -6,6 +6,7 @@ import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
+from hydroservo.io.text import comment_lines, one_line
 from hydroservo.units import si_unit
 
 if TYPE_CHECKING:
@@ -47,6 +48,29 @@ def csv_header(name: str, unit: str, ascii: bool = False) -> str:
     return f"{name} [{si_unit(unit)}]"
 
 
+def csv_header_row(columns: list[str]) -> str:
+    """The header row of a CSV (with its line end): each column's name on one line (a line break or a control
+    character written as its escape, :func:`hydroservo.io.text.one_line`), quoted where a comma or a quote needs
+    it; every CSV hydroservo writes heads its columns so.
+
+    >>> print(csv_header_row(["t [s]", 'a,"b"\\nc [m]']), end="")
+    t [s],"a,""b""\\nc [m]"
+    """
+    import csv
+    import io
+
+    text = io.StringIO()
+    csv.writer(text, lineterminator="\n").writerow([one_line(str(c)) for c in columns])
+    return text.getvalue()
+
+
+def csv_comments(lines: list[str] | tuple[str, ...] | str) -> str:
+    """``lines`` (or a text of lines) as the ``# `` comment lines that head a CSV (with their line ends), each on
+    one line whatever it holds (:func:`hydroservo.io.text.comment_lines`)."""
+    texts = [lines] if isinstance(lines, str) else list(lines)
+    return "".join(f"{c}\n" for text in texts for c in (comment_lines(text) or ["#"]))
+
+
 def write_table(
     path: str | Path,
     columns: list[str],
@@ -80,10 +104,9 @@ def write_table(
         return "" if math.isnan(v) else (f"{v:.{digits}g}" if digits else repr(v))
 
     text = io.StringIO()
-    for line in comments:
-        text.write(f"# {line}\n")
+    text.write(csv_comments(comments))
+    text.write(csv_header_row(columns))
     writer = csv.writer(text, lineterminator="\n")
-    writer.writerow(columns)
     if isinstance(rows, np.ndarray) and rows.ndim == 2 and rows.dtype.kind == "f":
         body = io.StringIO()
         np.savetxt(body, rows, fmt=f"%.{digits or 17}g", delimiter=",")

@@ -1,5 +1,7 @@
-"""Plain-text tables, as reports print them in a terminal: laid out by tabulate, the one place columns are
-aligned (numbers on their decimal point, text to the left, a missing value as ``-``).
+"""Plain text: tables as reports print them in a terminal, laid out by tabulate, the one place columns are
+aligned (numbers on their decimal point, text to the left, a missing value as ``-``); and text that must stay on
+one line of a file we write (a comment of a model file or a CSV), whatever it holds (:func:`one_line`,
+:func:`comment_lines`).
 
 >>> print("\\n".join(text_table([["cyl.pA", 6.78e6, "Pa"], ["load.x", -0.18285, "m"]], ["signal", "final", "unit"])))
 signal        final  unit
@@ -13,7 +15,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-__all__ = ["text_table"]
+__all__ = ["text_table", "one_line", "comment_lines", "xml_text"]
 
 
 def text_table(
@@ -63,3 +65,47 @@ def text_table(
     )
     pad = " " * indent
     return [(pad + line).rstrip() for line in text.splitlines()]
+
+
+def one_line(text: str) -> str:
+    """``text`` as one line of printable characters: each character that is not printable (a line break, a
+    carriage return, a tab, a control character, U+2028, a lone surrogate) written as its escape, ``\\n``,
+    ``\\x00``, ``\\u2028``, so that a name or a path in a comment can neither end the comment nor make the
+    file unreadable. Every comment hydroservo writes into a file puts its text through this.
+
+    >>> print(one_line('Force\\n[initial]\\r\\x00 \\u2028ok'))
+    Force\\n[initial]\\r\\x00 \\u2028ok
+    """
+    if text.isprintable():
+        return text
+    return "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in text)
+
+
+def comment_lines(text: str, mark: str = "#") -> list[str]:
+    """The lines of ``text`` as comment lines of a file (TOML, CSV): each ``mark`` and a space, then the line
+    with every character that is not printable escaped (:func:`one_line`); an empty line is ``mark`` alone.
+
+    >>> comment_lines('made from "a\\nb.hmf"\\n\\nsecond')
+    ['# made from "a', '# b.hmf"', '#', '# second']
+    """
+    return [f"{mark} {one_line(line)}".rstrip() if line.strip() else mark for line in text.splitlines()]
+
+
+def _xml_forbidden(ch: str) -> bool:
+    code = ord(ch)
+    return (code < 0x20 and ch not in "\t\n\r") or 0xD800 <= code <= 0xDFFF or code in (0xFFFE, 0xFFFF)
+
+
+def xml_text(text: str) -> str:
+    """``text`` as an XML 1.0 document can hold it (an attribute's value, an element's text): the characters XML
+    forbids even as references (control characters other than tab, line feed and carriage return, lone
+    surrogates, U+FFFE, U+FFFF) written as their escapes (``\\x00``); the XML writer (ElementTree) escapes the
+    rest (``&``, ``<``, quotes, line breaks in attributes). Every name and description in an FMU's
+    modelDescription.xml goes through this.
+
+    >>> xml_text('a\\x00b\\nc<d>')
+    'a\\\\x00b\\nc<d>'
+    """
+    if not any(_xml_forbidden(ch) for ch in text):
+        return text
+    return "".join(repr(ch)[1:-1] if _xml_forbidden(ch) else ch for ch in text)

@@ -1,7 +1,10 @@
 """TOML: the one reader of TOML files and the one writer of TOML values, for every file hydroservo writes.
 
 Values are written by tomlkit, which escapes and formats them as TOML requires; :func:`edit_toml` changes
-values of a file's text with everything else in it kept (its comments, order and layout).
+values of a file's text with everything else in it kept (its comments, order and layout). Every string and key
+hydroservo writes into a TOML file goes through :func:`toml_string` or :func:`toml_key`, and every comment through
+:func:`toml_comment`: whatever a name, a description or a path holds (a line break, a quote, ``#``, ``[``, a
+control character, U+2028), it is written escaped and reads back as the same text, and it never becomes TOML.
 """
 
 from __future__ import annotations
@@ -12,11 +15,15 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from hydroservo.errors import HydroservoError, ParameterError
+from hydroservo.errors import HydroservoError, ParameterError, shorten
 from hydroservo.io.files import read_text
+from hydroservo.io.text import comment_lines, one_line
 from hydroservo.units import format_quantity
 
-__all__ = ["read_toml", "toml_string", "toml_key", "toml_value", "toml_quantity", "toml_table", "edit_toml"]
+__all__ = [
+    "read_toml", "toml_string", "toml_key", "toml_value", "toml_quantity", "toml_table", "toml_comment", "toml_comments",
+    "edit_toml",
+]
 
 
 def read_toml(path: str | Path, what: str, error: type[HydroservoError] = ParameterError) -> dict[str, Any]:
@@ -28,18 +35,50 @@ def read_toml(path: str | Path, what: str, error: type[HydroservoError] = Parame
         raise error(f"{what} {str(path)!r}: malformed TOML: {exc}") from None
 
 
+def _printable(quoted: str, text: str) -> str:
+    """A basic string or quoted key tomlkit wrote, with what it leaves raw and is not printable (U+2028, U+0085,
+    a byte-order mark) as a TOML escape; a text TOML cannot hold (a lone surrogate) is refused."""
+    if quoted.isprintable():
+        return quoted
+    if any(0xD800 <= ord(ch) <= 0xDFFF for ch in text):
+        raise ParameterError(f"text {shorten(text)!r}: holds a lone surrogate, which no file can hold; expected text")
+    return "".join(
+        ch if ch.isprintable() else (f"\\u{ord(ch):04X}" if ord(ch) <= 0xFFFF else f"\\U{ord(ch):08X}") for ch in quoted
+    )
+
+
 def toml_string(s: str) -> str:
-    """A TOML basic string, escaped as TOML requires (quotes, backslashes, newlines and control characters)."""
+    """A TOML basic string, escaped as TOML requires (quotes, backslashes, newlines and control characters) and
+    every other character that is not printable escaped too (U+2028), so that it shows on one line.
+
+    >>> print(toml_string('a"b\\n[c]\\u2028'))
+    "a\\"b\\n[c]\\u2028"
+    """
     import tomlkit
 
-    return tomlkit.string(s).as_string()
+    return _printable(tomlkit.string(s).as_string(), s)
 
 
 def toml_key(k: str) -> str:
-    """A TOML key: bare when it can be, quoted otherwise."""
+    """A TOML key: bare when it can be, quoted (and escaped as :func:`toml_string` escapes) otherwise."""
     import tomlkit
 
-    return tomlkit.key(k).as_string()
+    return _printable(tomlkit.key(k).as_string(), k)
+
+
+def toml_comment(text: str) -> str:
+    """A TOML comment of one line: ``# `` and ``text`` with every character that is not printable written as
+    its escape (:func:`hydroservo.io.text.one_line`), so that nothing in it can end the comment.
+
+    >>> print(toml_comment('Force\\n[initial]'))
+    # Force\\n[initial]
+    """
+    return f"# {one_line(text)}"
+
+
+def toml_comments(text: str) -> list[str]:
+    """The lines of ``text`` as TOML comment lines (:func:`hydroservo.io.text.comment_lines`)."""
+    return comment_lines(text, "#")
 
 
 def toml_value(v: Any) -> str:
@@ -79,10 +118,10 @@ def toml_quantity(value: float, unit: str, given: str | None = None) -> str:
 
 def toml_table(name: str, entries: Mapping[str, Any], comments: Mapping[str, str] | None = None) -> list[str]:
     """Lines of a ``[name]`` table of already formatted values (``entries``: key -> TOML text)."""
-    lines = [f"[{name}]"]
+    lines = [f"[{toml_key(name)}]"]
     for key, text in entries.items():
         note = (comments or {}).get(key)
-        lines.append(f"{toml_key(key)} = {text}" + (f"  # {note}" if note else ""))
+        lines.append(f"{toml_key(key)} = {text}" + (f"  {toml_comment(note)}" if note else ""))
     return lines
 
 

@@ -293,14 +293,13 @@ def _tables(
 
 
 def fill_template(name: str, values: Mapping[str, str]) -> str:
-    """The C template ``name`` of ``hydroservo.data`` with every ``@KEY@`` replaced."""
+    """The C template ``name`` of ``hydroservo.data`` with every ``@KEY@`` replaced, in one pass: a value (a model's
+    name in a comment) is never read as a key."""
     text = c_template(name)
-    for key, value in values.items():
-        text = text.replace(f"@{key}@", value)
-    left = sorted(set(re.findall(r"@[A-Z_]+@", text)))
+    left = sorted(set(re.findall(r"@([A-Z][A-Z0-9_]*)@", text)) - set(values))
     if left:  # a template and this writer disagree: a bug, not the user's input
-        raise RuntimeError(f"C template {name}: no value for {', '.join(left)}")
-    return text
+        raise RuntimeError(f"C template {name}: no value for {', '.join(f'@{key}@' for key in left)}")
+    return re.sub(r"@([A-Z][A-Z0-9_]*)@", lambda m: values[m.group(1)], text)
 
 
 def compiler() -> list[str]:

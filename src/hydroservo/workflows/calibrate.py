@@ -100,11 +100,12 @@ class CalibrationReport(Report):
 
     def model_file(self) -> str:
         from hydroservo.io.model_file import model_to_toml
+        from hydroservo.io.toml import toml_comment
 
         c = self.calibration
         head = [
-            f"# {self.model} calibrated by hydroservo on {', '.join(e.name for e in c.experiments)}:",
-            *(f"#   {p.name} = {c.parameter(p.name)['value']:.6g} ± {c.parameter(p.name)['stderr']:.3g} {p.unit}"
+            toml_comment(f"{self.model} calibrated by hydroservo on {', '.join(e.name for e in c.experiments)}:"),
+            *(toml_comment(f"  {p.name} = {c.parameter(p.name)['value']:.6g} ± {c.parameter(p.name)['stderr']:.3g} {p.unit}")
               for p in c.parameters),
         ]
         return "\n".join(head) + "\n" + model_to_toml(c.system)

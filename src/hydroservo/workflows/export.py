@@ -59,10 +59,12 @@ class ExportModel(Workflow):
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> ModelFileReport:
-        from hydroservo.io.model_file import model_to_toml
+        from hydroservo.io.model_file import checked_model_text, model_to_toml
 
         text = None if self.full else self._edited()
-        return ModelFileReport(self.system, text if text is not None else model_to_toml(self.system))
+        text = text if text is not None else model_to_toml(self.system)
+        # what is written loads and is this model, whatever its names and descriptions hold: checked before writing
+        return ModelFileReport(self.system, checked_model_text(text, self.system, "the exported model file"))
 
     def _edited(self) -> str | None:
         """The file the model was read from (a model file, a built-in model's), its comments and layout kept, with

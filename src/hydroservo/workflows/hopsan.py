@@ -10,6 +10,9 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, ClassVar
 
+from hydroservo.components.base import MAX_NAME
+from hydroservo.errors import shorten
+from hydroservo.io.text import one_line
 from hydroservo.workflows.base import Progress, Report, Workflow
 
 __all__ = ["ImportHopsan", "HopsanReport"]
@@ -37,8 +40,12 @@ class HopsanReport(Report):
             "",
             "  Hopsan component -> hydroservo",
         ]
-        width = max(len(f"{path} ({kind})") for path, kind, _ in imp.mapping)
-        out += [f"  {f'{path} ({kind})':<{width}}  {became}" for path, kind, became in imp.mapping]
+        shown = [(f"{shorten(one_line(path), 100)} ({kind})", became) for path, kind, became in imp.mapping]
+        width = max((len(left) for left, _ in shown), default=0)
+        out += [f"  {left:<{width}}  {became}" for left, became in shown]
+        if imp.renamed:
+            out += ["", f"  renamed (hydroservo's names are identifiers, not Python keywords, of at most {MAX_NAME} characters):"]
+            out += [f"  {shorten(one_line(path), 100)} -> {name}" for path, name in imp.renamed.items()]
         if self.files:
             out += ["", f"wrote {self.files['model']}: hydroservo simulate {self.files['model']}"]
         return out
@@ -49,6 +56,7 @@ class HopsanReport(Report):
             "model": imp.system.name,
             "source": imp.system.source,
             "components": [{"hopsan": p, "type": k, "hydroservo": b} for p, k, b in imp.mapping],
+            "renamed": dict(imp.renamed),
             "aliases": list(imp.system.aliases),
             "t_end": imp.system.t_end,
             "hopsan_timestep": imp.system.meta["hopsan_timestep"],
@@ -84,15 +92,23 @@ class ImportHopsan(Workflow):
         return [self.file_name]
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> HopsanReport:
-        from hydroservo.io.model_file import model_to_toml
+        from hydroservo.io.model_file import checked_model_text, model_to_toml
+        from hydroservo.io.toml import toml_comment
 
         imp = self.imported
         header = [
-            f"# Imported from the Hopsan model file {Path(self.file).name} by hydroservo import-hopsan.",
+            toml_comment(f"Imported from the Hopsan model file {Path(self.file).name} by hydroservo import-hopsan."),
             "# Hopsan's pressures are absolute: they are written in Pa_abs. Its port variables are aliases named",
             "# as Hopsan logs them, with dots (Mass#P2#Position is Mass.P2.Position), in SI (docs/hopsan.md).",
             "# Hopsan component -> hydroservo:",
-            *(f"#   {path} ({kind}) -> {became}" for path, kind, became in imp.mapping),
-            "",
+            *(toml_comment(f"  {path} ({kind}) -> {became}") for path, kind, became in imp.mapping),
         ]
-        return HopsanReport(imp, "\n".join(header) + model_to_toml(imp.system), self.file_name)
+        if imp.renamed:
+            header += [
+                f"# Renamed (hydroservo's names are identifiers, not Python keywords, of at most {MAX_NAME} characters):",
+                *(toml_comment(f"  {path} -> {name}") for path, name in imp.renamed.items()),
+            ]
+        # what is written loads and is the model imported: checked before anything is written
+        text = checked_model_text("\n".join([*header, ""]) + model_to_toml(imp.system), imp.system,
+                                  f"the model file imported from {Path(self.file).name!r}")
+        return HopsanReport(imp, text, self.file_name)

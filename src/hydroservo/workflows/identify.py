@@ -285,11 +285,11 @@ class FlowCoefficientReport(Report):
         return {"model": self.model, **self.result.to_dict(), "files": self.files}
 
     def parameter_file(self) -> str:
-        from hydroservo.io.toml import toml_string, toml_table, toml_value
+        from hydroservo.io.toml import toml_comments, toml_string, toml_table, toml_value
 
         header = _header("Flow-coefficient compensation K(x_v) and hysteresis H(x_v, d_f) (eqs. 3.22-3.23)",
                          self.model, self.records, self.result.valve, "flow-coefficient.toml", ["tables"])
-        lines = [f"# {line}" for line in header.splitlines()]
+        lines = toml_comments(header)
         tables = {k: [round(float(v), 6) for v in vals] for k, vals in self.result.tables.items()}
         lines += toml_table("component", {"type": toml_string(self.component_type), "tables": toml_value(tables)})
         return "\n".join(lines) + "\n"

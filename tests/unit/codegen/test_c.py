@@ -539,3 +539,11 @@ def test_refusals_name_the_reason(flight: tuple[CStepper, hs.Result]) -> None:
     with pytest.raises(SolverError, match="step budget of 10 steps was used up"):
         stepper.integrate([0.0, 2.0], method="dopri5", max_steps=10)
     assert 0.0 < stepper.time < 2.0  # left at the last accepted step
+
+
+def test_the_readmes_tables_keep_a_description_with_line_breaks_and_bars_in_its_cell() -> None:
+    from hydroservo.codegen.c import _markdown_table
+
+    table = _markdown_table(("name", "description"), [("`y`", "first line\n| not a row | x\r\u2028end")])
+    lines = table.splitlines()
+    assert len(lines) == 3 and lines[2].count(" | ") == 1 and "\\n" in lines[2] and "\\|" in lines[2]

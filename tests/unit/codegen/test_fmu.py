@@ -146,3 +146,34 @@ def test_bad_arguments_are_refused_before_anything_is_written(tmp_path: Path) ->
         export_fmu(s, tmp_path, binary=False)
     export_fmu(s, tmp_path, binary=False, force=True)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["spring.fmu"]
+
+
+HOSTILE_NAMES = {
+    "injection": 'spring\n[initial]\n"load.x" = "50 mm"\n#',
+    "control": "nul\x00esc\x1bbell\x07",
+    "markup": 'a </fmiModelDescription> & "q" <!-- @NAME@ */ ??/ \\',
+    "u2028": "line\u2028sep",
+}
+
+
+@pytest.mark.parametrize("name", list(HOSTILE_NAMES.values()), ids=list(HOSTILE_NAMES))
+def test_a_model_named_anything_gives_a_model_description_that_reads_back(name: str, tmp_path: Path) -> None:
+    """The name and description reach the XML through io.text.xml_text and ElementTree's escaping, and the C
+    sources' comments and strings through _c_comment and _c_string: the FMU's files hold them and nothing else."""
+    from hydroservo.io.text import xml_text
+
+    system = _spring()
+    system.name, system.description = name, name
+    system.alias("y", "-load.x", "m", name)
+    export = export_fmu(system, tmp_path, binary=False, name="spring")
+    root = _description(export.path)
+    assert root.get("modelName") == xml_text(name) and root.get("description") == xml_text(name)
+    (y,) = [v for v in _variables(root) if v.get("name") == "y"]
+    assert y.get("description") == xml_text(name)
+    with zipfile.ZipFile(export.path) as archive:
+        sources = {n: archive.read(n).decode() for n in archive.namelist() if n.endswith((".c", ".h"))}
+    heads = [t.split("\n", 1)[0] for t in sources.values() if t.startswith("/*") and "hydroservo model '" in t]
+    assert heads  # the stepper's and the FMI interface's
+    for first in heads:
+        quoted = first.split("'", 1)[1].rsplit("'", 1)[0]  # the name, escaped: one line, no comment end
+        assert "*/" not in quoted and "@" not in quoted.replace("@NAME@", "") and quoted.isascii()
