@@ -211,7 +211,7 @@ class Result(_Signals):
 
         Returns the figure. With ``file`` (``.png``, ``.svg``, ``.pdf``) it is
         written there and closed; without, it is shown where it can be: a
-        notebook shows it, a script with a display opens it in a window
+        notebook shows it (once, also as a cell's last value), a script with a display opens it in a window
         (``plt.show()``), and where there is no display a warning says to give
         ``file``.
         """
