@@ -27,6 +27,7 @@ __all__ = [
     "system_summary",
     "dataframe_table",
     "files_section",
+    "notes_section",
     "page",
 ]
 
@@ -96,6 +97,16 @@ def system_summary(system: System) -> list[Item]:
     if facts:
         items.append(Text("; ".join(facts)))
     return items
+
+
+def notes_section(notes: Sequence[str], title: str = "Notes") -> Section | None:
+    """The model's notes (as a run shows them: :meth:`~hydroservo.workflows.simulate.SimulationReport.notes`), or
+    None when it has none."""
+    from hydroservo.io.html import Notice, Section
+
+    if not notes:
+        return None
+    return Section(title, [Notice(note, "info") for note in notes])
 
 
 def files_section(files: Mapping[str, str]) -> Section | None:

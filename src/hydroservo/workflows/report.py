@@ -97,6 +97,9 @@ class ModelReport(Report):
         about = pages.system_summary(system)
         if about:
             sections.append(Section("Model", about))
+        noted = pages.notes_section(sim.notes())
+        if noted is not None:
+            sections.append(noted)
         warned = pages.warnings_section(sim.warnings)
         if warned is not None:
             sections.append(warned)
