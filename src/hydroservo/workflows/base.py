@@ -29,7 +29,7 @@ from __future__ import annotations
 import html
 import json
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
@@ -49,6 +49,7 @@ __all__ = [
     "Progress",
     "numbers",
     "load_with_sets",
+    "check_names",
     "parse_sets",
     "output_folder",
     "safe_name",
@@ -286,6 +287,27 @@ def load_with_sets(
         except HydroservoError as exc:
             raise ParameterError(f"{what} {', '.join(items)}: {exc}") from None
     return system
+
+
+def check_names(system: System, what: str, names: Iterable[str] | None, kind: str) -> None:
+    """Refuse, before any work, the first of ``names`` that ``system`` has not as ``kind``: ``"signal"`` (a state,
+    an output or an alias), ``"state"``, or ``"input"`` (a component input or a parameter, a former name too);
+    the message names ``what`` (the option or argument: ``--outputs``) and the closest names
+    (:func:`~hydroservo.errors.did_you_mean`)."""
+    if not names:
+        return
+    model = system.build()
+    known: dict[str, list[str]] = {
+        "signal": [*model.state_names, *model.output_names],
+        "state": list(model.state_names),
+        "input": [f"{c}.{k}" for c, comp in system.components.items() for k in [*comp.INPUTS, *comp.PARAMETERS, *comp.RENAMED]],
+    }
+    said = {"signal": "a state, output or alias", "state": "a state", "input": "a component input or a parameter"}
+    for name in names:
+        if name not in known[kind]:
+            raise ParameterError(
+                f"{what} {shorten(str(name))!r}: not {said[kind]} of {system.name!r}{did_you_mean(str(name), known[kind])}"
+            )
 
 
 def asked_units(system: System, units: Any, si: bool, what: Callable[[str], str]) -> UnitChoice:

@@ -41,6 +41,8 @@ def solver_table(stats: Mapping[str, Any]) -> Table:
         "netfails": "error-test failures", "nniters": "Newton iterations", "nncfails": "Newton failures",
         "rtol": "relative tolerance", "atol": "absolute tolerance", "wall_time_s": "integration wall time [s]",
         "nrejected": "rejected steps", "njevals": "Jacobians", "nevents": "events (steps ended at a kink)",
+        "compile_load_wall_time_s": "model compiled to C, or loaded from the cache [s]",
+        "run_wall_time_s": "whole run, model build included [s]",
     }
     rows = [[labels.get(k, k), v] for k, v in stats.items() if isinstance(v, int | float) and math.isfinite(v)]
     captions = {

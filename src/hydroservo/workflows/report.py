@@ -110,7 +110,7 @@ class ModelReport(Report):
         sections.append(Section("Parameters", [pages.parameter_table(system)]))
         if self.validation is not None:
             sections += self.validation.document().sections
-        sections.append(Section("Solver", [pages.solver_table({**sim.result.stats, "wall_time_s": sim.wall_time})]))
+        sections.append(Section("Solver", [pages.solver_table(sim.solver_stats())]))
         sections.append(pages.references_section(system.references()))
         subtitle = f"simulated for {sim.t_end:g} s" + (f" with {', '.join(sim.changes)}" if sim.changes else "")
         return Page(system.name, subtitle, sections, footer())

@@ -65,6 +65,9 @@ class SimulationReport(Report):
     all_signals: bool = False
     #: what this run changes of the model's default run, on which its notes were measured (empty: none)
     departures: list[str] = field(default_factory=list)
+    #: the time taken to have the model as C before the run [s]: compiled into the cache folder the first time
+    #: (seconds), loaded from it after (milliseconds); None where the run is not compiled (CVODES)
+    compile_time: float | None = None
 
     def notes(self) -> list[str]:
         """The model's notes, each said to be of the default run where this run departs from it
@@ -81,8 +84,9 @@ class SimulationReport(Report):
 
         result = self.result
         out = [
-            f"simulated {self.system.name!r} for {self.t_end:g} s in {self.wall_time * 1e3:.1f} ms "
-            f"(integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps"
+            f"simulated {self.system.name!r} for {self.t_end:g} s in {self.wall_time * 1e3:.1f} ms ("
+            + (f"compile/load {self.compile_time * 1e3:.1f} ms, " if self.compile_time is not None else "")
+            + f"integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps"
             + (f", {result.stats['method']}" + (" compiled" if result.stats["method"] != "cvodes" else "")
                if "method" in result.stats else "")
             + ")"
@@ -102,6 +106,8 @@ class SimulationReport(Report):
         result = self.result
         solver = {k: v for k, v in result.stats.items() if k != "wall_time_s"}
         solver["integration_wall_time_s"] = result.stats["wall_time_s"]
+        if self.compile_time is not None:
+            solver["compile_load_wall_time_s"] = self.compile_time
         own = _crossings(result)
         return {
             "model": self.system.name,
@@ -115,6 +121,13 @@ class SimulationReport(Report):
             "departures": list(self.departures),
             "files": self.files,
         }
+
+    def solver_stats(self) -> dict[str, Any]:
+        """The run's solver statistics, with the whole run's wall time and the compile (or cache load) time."""
+        stats = {**self.result.stats, "run_wall_time_s": self.wall_time}
+        if self.compile_time is not None:
+            stats["compile_load_wall_time_s"] = self.compile_time
+        return stats
 
     def artifacts(self) -> list[Artifact]:
         name = safe_name(self.system.name)
@@ -141,7 +154,7 @@ class SimulationReport(Report):
             Section("Response", [Figure(result_figure(result, panels, result.shown_units(self.units), title=self.title()))]),
             Section("Signals", [pages.signal_table(result, result.shown_units(self.units))]),
             Section("Parameters", [pages.parameter_table(system)]),
-            Section("Solver", [pages.solver_table(result.stats)]),
+            Section("Solver", [pages.solver_table(self.solver_stats())]),
             pages.references_section(system.references()),
             pages.files_section(self.files),
         ], self.warnings)
@@ -330,6 +343,7 @@ class Simulate(Workflow):
         if self.system.plots and "png" in self.kinds:
             self._check_plots()
         start = time.perf_counter()
+        compile_time = self._compile()
         result = self.system.simulate(
             t_end=self.duration, n_points=self.points, initial=self.initial, rtol=self.rtol,
             accuracy=self.accuracy_value, method=self.method, max_steps=self.max_steps,
@@ -345,8 +359,27 @@ class Simulate(Workflow):
         changes = _shown_sets(self.sets)
         return SimulationReport(
             self.system, result, self.duration, wall, list(self.kinds), changes, self.unit_choice, self.ascii,
-            self.all_signals, self.departures(), warnings=found,
+            self.all_signals, self.departures(), compile_time, warnings=found,
         )
+
+    def _compile(self) -> float | None:
+        """Have the model compiled to C before the run, where its method runs it compiled, and say how long that
+        took [s]: the first run of a model compiles it into the cache folder (seconds), a later one loads it
+        (milliseconds), so that the time a run reports is not taken for integration. None for CVODES, and where
+        the model cannot be compiled (the run itself says why, or falls back to CVODES with a warning)."""
+        from hydroservo.errors import HydroservoError
+        from hydroservo.system.integration import AUTO_MAX_STATES
+        from hydroservo.system.native import native
+
+        model = self.system.build()
+        if self.method == "cvodes" or (self.method == "auto" and model.nx > AUTO_MAX_STATES):
+            return None
+        start = time.perf_counter()
+        try:
+            native(model)
+        except HydroservoError:
+            return None
+        return time.perf_counter() - start
 
     def departures(self) -> list[str]:
         """What this run changes of the model's default run (the model as its file gives it, its duration, the
