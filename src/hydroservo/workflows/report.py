@@ -1,4 +1,4 @@
-"""One page to show a colleague: a model's circuit, parameters, response, warnings, solver statistics,
+"""One page to show a colleague: a model's notes, circuit, parameters, response, warnings, solver statistics,
 validation verdicts and references, or a result file's signals (``hydroservo report MODEL|RESULT``).
 
 The page is one self-contained HTML file (:mod:`hydroservo.io.html`): it opens from disk or an e-mail
@@ -7,7 +7,7 @@ attachment with no network, its plots zoom, pan and show each value with its uni
 >>> from hydroservo.workflows import report
 >>> page = report.run("flight-simulator", t_end="0.2 s", validation=False)
 >>> [s.title for s in page.document().sections][:3]
-['Model', 'Circuit', 'Response']
+['Model', 'Notes', 'Circuit']
 """
 
 from __future__ import annotations
