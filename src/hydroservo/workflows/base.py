@@ -302,11 +302,11 @@ def check_names(system: System, what: str, names: Iterable[str] | None, kind: st
         "state": list(model.state_names),
         "input": [f"{c}.{k}" for c, comp in system.components.items() for k in [*comp.INPUTS, *comp.PARAMETERS, *comp.RENAMED]],
     }
-    said = {"signal": "a state, output or alias", "state": "a state", "input": "a component input or a parameter"}
+    said = {"signal": "not a state, output or alias", "state": "not a state", "input": "neither a component input nor a parameter"}
     for name in names:
         if name not in known[kind]:
             raise ParameterError(
-                f"{what} {shorten(str(name))!r}: not {said[kind]} of {system.name!r}{did_you_mean(str(name), known[kind])}"
+                f"{what} {shorten(str(name))!r}: {said[kind]} of {system.name!r}{did_you_mean(str(name), known[kind])}"
             )
 
 
