@@ -77,6 +77,11 @@ class RenamedWarning(UserWarning):
     """A parameter or component type was given under the name it had before it was renamed."""
 
 
+class BareNumberWarning(UserWarning):
+    """A bare number was given in Python (``params={"load.W": 3000}``) for a parameter the model gives in a unit
+    other than SI (``"6400 lbf"``): it is taken in SI (3000 N), as numbers always are; the CLI refuses it."""
+
+
 def shorten(text: str, limit: int = 60) -> str:
     """``text`` as a message shows it: whole, or its first ``limit`` characters and how long it was."""
     return text if len(text) <= limit else f"{text[:limit]}... ({len(text)} characters)"

@@ -35,7 +35,7 @@ import math
 import re
 from typing import TYPE_CHECKING, Any
 
-from hydroservo.errors import UnitError, shorten
+from hydroservo.errors import UnitError, did_you_mean, shorten
 
 if TYPE_CHECKING:
     import pint
@@ -290,7 +290,8 @@ def _unit(unit: str) -> pint.Unit:
     try:
         return registry().Unit(unit)
     except Exception as exc:  # pint raises several exception types
-        raise UnitError(f"unknown unit {unit!r}: {exc}") from None
+        detail = "" if f"{unit!r} is not defined" in str(exc) else f": {exc}"  # pint's words where they add a part
+        raise UnitError(f"unknown unit {unit!r}{did_you_mean(unit, _shipped())}{detail}") from None
 
 
 def check_unit(unit: str) -> None:

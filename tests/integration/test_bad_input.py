@@ -1477,3 +1477,23 @@ def test_i37_export_c_of_a_model_named_like_a_template_key(ws: Workspace, run) -
     assert o.code == 0, o.describe()  # was: RuntimeError "C template stepper.h: no value for @X@"
     header = next(ws.out.rglob("*.h")).read_text(encoding="utf-8").splitlines()[0]
     assert header.endswith("*/") is False and "*/" not in header.split("'")[1]
+
+# ---- issue 37: what the user sees (names and units with their closest matches) ----
+SUGGESTED = {
+    "linearize-unknown-output": (["linearize", "robot-arm", "--outputs", "load.vv"],
+                                 [r"--outputs 'load\.vv'", r"did you mean 'load\.v'"]),
+    "linearize-unknown-input": (["linearize", "robot-arm", "--inputs", "valve.uu"], [r"--inputs 'valve\.uu'", r"did you mean"]),
+    "linearize-unknown-free-state": (["linearize", "robot-arm", "--free", "load.xx"], [r"--free 'load\.xx'", r"did you mean 'load\.x'"]),
+    "simulate-unknown-unit": (["simulate", "robot-arm", "--units", "p=barr"], [r"--units", r"unknown unit 'barr'", r"did you mean 'bar'"]),
+}
+
+
+@pytest.mark.parametrize("case", list(SUGGESTED))
+def test_issue37_names_and_units_suggested(case: str, ws: Workspace, run) -> None:
+    argv, patterns = SUGGESTED[case]
+    refused(run, ws, [*argv, "--out", ws.out], patterns)
+
+
+def test_issue37_api_unknown_unit_of_a_signal() -> None:
+    result = hs.load_model("robot-arm").simulate(t_end=0.01, n_points=3)
+    api_refused(lambda: result.get("cyl.pA", "barr"), r"cyl\.pA", r"unknown unit 'barr'", r"did you mean 'bar'")

@@ -74,3 +74,41 @@ def test_the_api_suggests_signals_components_and_parameters() -> None:
     result = s.simulate(n_points=11, method="cvodes")
     with pytest.raises(HydroservoError, match=r"no signal 'load.xx' .*\(did you mean 'load.x'"):
         result["load.xx"]
+
+
+# -- issue 37: the names and units of every option get their closest matches -----------------------------------
+@pytest.mark.parametrize(
+    ("argv", "expected"),
+    [
+        (["linearize", "robot-arm", "--outputs", "load.vv"],
+         "--outputs 'load.vv': not a state, output or alias of 'robot-arm' (did you mean 'load.v'"),
+        (["linearize", "robot-arm", "--inputs", "command.amplitud"], "(did you mean 'command.amplitude'"),
+        (["linearize", "robot-arm", "--free", "load.xx"], "--free 'load.xx': not a state of 'robot-arm' (did you mean 'load.x'"),
+        (["linearize", "robot-arm", "--at", "load.xx=0.01"], "--at 'load.xx': not a state of 'robot-arm' (did you mean 'load.x'"),
+        (["sensitivity", "robot-arm", "--vary", "lod.m=10..20"], "no component 'lod' (did you mean 'load'?)"),
+        (["sensitivity", "robot-arm", "--vary", "load.m=10..20", "--metric", "peek(load.x)"],
+         "unknown kind 'peek' (did you mean 'peak'?)"),
+        (["sensitivity", "robot-arm", "--vary", "load.m=10..20", "--metric", "peak(load.xx)"],
+         "'load.xx' is not a state, output or alias of the model (did you mean 'load.x'"),
+        (["sensitivity", "robot-arm", "--method", "oat", "--vary", "load.m=10..20", "--signals", "load.xx"],
+         "signal 'load.xx': not a state, output or alias of 'robot-arm' (did you mean 'load.x'"),
+        (["ladder", "robot-arm", "--free", "load.xx"], "free = 'load.xx' is not a state (did you mean 'load.x'"),
+        (["simulate", "robot-arm", "--units", "p=barr"], "unknown unit 'barr' (did you mean 'bar'"),
+        (["simulate", "robot-arm", "--set", "load.m=20 kgg"], "unknown unit 'kgg' (did you mean 'kg'?)"),
+    ],
+    ids=["linearize-outputs", "linearize-inputs", "linearize-free", "linearize-at", "sensitivity-vary",
+         "sensitivity-metric-kind", "sensitivity-metric-signal", "sensitivity-signals", "ladder-free", "units-unit",
+         "set-unit"],
+)
+def test_every_name_and_unit_option_suggests(argv: list[str], expected: str, cli) -> None:
+    code, out, err = cli(*argv)
+    assert code == 2 and out == "" and expected in err, err
+    assert err.count("hydroservo: error:") == 1 and err.count("\n") == 1
+
+
+def test_an_unknown_unit_is_called_so_with_its_closest_units() -> None:
+    result = hs.load_model("robot-arm").simulate(t_end=0.01, n_points=3)
+    with pytest.raises(HydroservoError, match=r"signal 'cyl.pA' of 'robot-arm': unknown unit 'barr' \(did you mean 'bar'"):
+        result.get("cyl.pA", "barr")
+    with pytest.raises(HydroservoError, match=r"is in Pa: cannot show it in 'mm', a unit of another dimension"):
+        result.get("cyl.pA", "mm")

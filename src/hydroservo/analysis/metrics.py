@@ -31,7 +31,7 @@ from typing import Any
 import numpy as np
 
 from hydroservo.analysis.step import step_metrics
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, did_you_mean
 from hydroservo.units import si_unit, to_si
 
 __all__ = ["KINDS", "Metric", "parse_metric", "metrics_of", "describe", "default_metrics"]
@@ -112,9 +112,9 @@ def parse_metric(text: str, units: Mapping[str, str] | None = None, t_end: float
         )
     kind, signal, a, b = m.groups()
     if kind not in KINDS:
-        raise ParameterError(f"metric {text!r}: unknown kind {kind!r}; expected one of {', '.join(KINDS)}")
+        raise ParameterError(f"metric {text!r}: unknown kind {kind!r}{did_you_mean(kind, KINDS)}; expected one of {', '.join(KINDS)}")
     if units is not None and signal not in units:
-        raise ParameterError(f"metric {text!r}: {signal!r} is not a state, output or alias of the model")
+        raise ParameterError(f"metric {text!r}: {signal!r} is not a state, output or alias of the model{did_you_mean(signal, units)}")
     times = [None if v is None else to_si(v, "s", what=f"metric {text!r}") for v in (a, b)]
     for v in times:
         if v is not None and (not math.isfinite(v) or v < 0 or (t_end is not None and v > t_end)):

@@ -28,7 +28,7 @@ import numpy as np
 
 from hydroservo.analysis.campaign import Runs, run_design
 from hydroservo.analysis.metrics import Metric, default_metrics, describe, metrics_of, parse_metric
-from hydroservo.errors import ParameterError
+from hydroservo.errors import ParameterError, did_you_mean
 from hydroservo.units import split_quantity
 
 if TYPE_CHECKING:
@@ -86,7 +86,8 @@ def _levels(system: System, name: str, values: Sequence[Any]) -> tuple[str, list
     """(key, levels, is_option) of a factor."""
     cname, _, pname = name.partition(".")
     if cname not in system.components:
-        raise ParameterError(f"factor {name!r}: no component {cname!r}; components: {', '.join(system.components)}")
+        raise ParameterError(f"factor {name!r}: no component {cname!r}{did_you_mean(cname, system.components)}; "
+                             f"components: {', '.join(system.components)}")
     comp = system.components[cname]
     if pname in comp.OPTIONS:
         choices = comp.OPTIONS[pname].choices
@@ -116,7 +117,7 @@ def one_at_a_time(
     keep = list(signals) if signals else [s for panel in system.default_panels() for s in panel]
     for s in keep:
         if s not in model.units:
-            raise ParameterError(f"signal {s!r}: not a state, output or alias of {system.name!r}")
+            raise ParameterError(f"signal {s!r}: not a state, output or alias of {system.name!r}{did_you_mean(s, model.units)}")
     needed = sorted({*keep, *(s for m in chosen for s in m.signals)})
     if not factors:
         raise ParameterError("one at a time: no factors; give a mapping 'comp.param' -> levels")

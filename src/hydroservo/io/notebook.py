@@ -17,7 +17,8 @@ if TYPE_CHECKING:
     from hydroservo.system.result import BatchResult, Result
     from hydroservo.system.system import System
 
-__all__ = ["parameter_table", "signal_table", "dataframe_table", "system_html", "result_html", "batch_html", "study_html"]
+__all__ = ["parameter_table", "signal_table", "dataframe_table", "system_html", "result_html", "batch_html", "study_html",
+           "departures", "scoped_notes"]
 
 
 def _value(value: float, unit: str) -> str:
@@ -77,6 +78,51 @@ def signal_table(result: Result, units: Mapping[str, str] | None = None, names: 
     return Table(["signal", "unit", "final", "min", "max", "meaning"], rows)
 
 
+def departures(system: System) -> list[str]:
+    """What ``system`` changes of the model its file describes (read again from :attr:`System.source`): the
+    parameters and options whose values differ, a component added or removed, other initial values, another
+    duration, by name. A model's notes (``[model] notes``) were measured on the model as its file gives it: they
+    hold only for a run with none of these (:func:`scoped_notes`). Empty for a system built in Python (no file)."""
+    import math
+
+    from hydroservo.errors import HydroservoError
+    from hydroservo.io.model_file import load_model
+
+    if not system.source or not system.notes:
+        return []
+    try:
+        base = load_model(system.source.removeprefix("built-in:"))
+    except HydroservoError:
+        return ["the model file, which no longer loads"]
+    if list(base.components) != list(system.components):
+        return ["the circuit's components"]
+    found = []
+    before = base.parameter_values()
+    for key, value in system.parameter_values().items():
+        old = before.get(key)
+        if old is None or not (old == value or (math.isnan(old) and math.isnan(value))):
+            found.append(key)
+    for cname, comp in system.components.items():
+        found += [f"{cname}.{k}" for k, v in comp.option_values.items() if base.components[cname].option_values.get(k) != v]
+    if base.initial != system.initial:
+        found.append("the initial values")
+    if base.t_end != system.t_end:
+        found.append("t_end")
+    return found
+
+
+def scoped_notes(system: System, changes: Sequence[str] = (), what: str = "run") -> list[str]:
+    """The model's notes as they are true of a run: as they are where the run is the model's default run (the
+    model as its file gives it, its duration, the default solver and output times), else each said to be
+    measured on the default run, with what this run (``what``: or this system) ``changes`` (:func:`departures`
+    and the run's own settings), so that no figure of a note is shown as this run's."""
+    if not changes:
+        return list(system.notes)
+    shown = ", ".join(changes[:6]) + (f" and {len(changes) - 6} more" if len(changes) > 6 else "")
+    return [f"[measured on the model's default run; this {what} changes {shown}, so it may not hold here] {note}"
+            for note in system.notes]
+
+
 def system_html(system: System) -> str:
     """The notebook's display of ``system``: name and description, source, notes, circuit, parameters (folded)."""
     from hydroservo.io.html import Drawing, Notice, Text, fragment
@@ -88,7 +134,7 @@ def system_html(system: System) -> str:
     if system.meta.get("validation"):
         about.append(f"validation: {system.meta['validation']}")
     items: list[Any] = [Text("; ".join(about) + ".")]
-    items += [Notice(note, "info") for note in system.notes]
+    items += [Notice(note, "info") for note in scoped_notes(system, departures(system), "system")]
     try:
         items.append(Drawing(system.diagram().svg))
     except Exception as exc:  # noqa: BLE001 - a circuit that cannot be drawn still shows the rest

@@ -30,17 +30,62 @@ __all__ = ["pyplot", "finish", "lpm", "panel_units", "by_dimension", "axis_label
 
 
 def pyplot(file: Any) -> Any:
-    """``matplotlib.pyplot``, with the file backend (Agg) when the figure goes to ``file`` and pyplot is not in use
-    yet (a command-line run); a notebook's or a window's backend is kept, so later plots still show there."""
-    import sys
+    """What a plot draws with: ``subplots``, ``rcParams``, ``get_cmap``, ``cm``, ``Rectangle``, ``close``.
 
-    import matplotlib
-
-    if file is not None and "matplotlib.pyplot" not in sys.modules:
-        matplotlib.use("Agg", force=False)
+    A figure that goes to ``file`` is a plain :class:`matplotlib.figure.Figure`, drawn and written without pyplot:
+    matplotlib's backend is never chosen or changed (a notebook's stays its own), and pyplot, which would show
+    the figure again at the end of a notebook's cell, never holds it. A figure to be shown (``file`` None) is
+    pyplot's, on the backend in use, a :class:`~hydroservo.plotting.shown.ShownFigure`, which a notebook shows
+    once."""
+    if file is not None:
+        return _FileFigures()
     import matplotlib.pyplot as plt
 
-    return plt
+    return _ShownFigures(plt)
+
+
+class _FileFigures:
+    """The parts of pyplot the plots use, for figures written to a file: pyplot is not imported."""
+
+    def subplots(self, nrows: int = 1, ncols: int = 1, *, figsize: Any = None, dpi: Any = None, **kwargs: Any) -> Any:
+        from matplotlib.figure import Figure
+
+        fig = Figure(figsize=figsize, dpi=dpi)
+        return fig, fig.subplots(nrows, ncols, **kwargs)
+
+    def close(self, fig: Any) -> None:
+        """Nothing to close: no backend holds the figure."""
+
+    def get_cmap(self, name: str) -> Any:
+        import matplotlib
+
+        return matplotlib.colormaps[name]
+
+    def __getattr__(self, name: str) -> Any:
+        import matplotlib
+        import matplotlib.cm
+        import matplotlib.patches
+
+        found = {"rcParams": lambda: matplotlib.rcParams, "cm": lambda: matplotlib.cm,
+                 "Rectangle": lambda: matplotlib.patches.Rectangle}.get(name)
+        if found is None:
+            raise AttributeError(f"pyplot's {name!r} is not offered for a figure written to a file")
+        return found()
+
+
+class _ShownFigures:
+    """pyplot, its figures made as :class:`~hydroservo.plotting.shown.ShownFigure`."""
+
+    def __init__(self, plt: Any) -> None:
+        self._plt = plt
+
+    def subplots(self, *args: Any, **kwargs: Any) -> Any:
+        from hydroservo.plotting.shown import ShownFigure
+
+        return self._plt.subplots(*args, FigureClass=ShownFigure, **kwargs)
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._plt, name)
 
 
 def finish(fig: Any, file: Any, plt: Any, show: bool | None = False) -> Any:

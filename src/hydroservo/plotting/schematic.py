@@ -850,9 +850,7 @@ def draw(system: System, *, parameters: bool = True, title: str | None = None) -
     """The circuit diagram of ``system`` (module notes): each component's symbol with its name and, with
     ``parameters``, its main parameters in the units they were given in."""
     import matplotlib
-
-    matplotlib.use("Agg", force=False)
-    from matplotlib.figure import Figure
+    from matplotlib.figure import Figure  # not pyplot: the backend in use (a notebook's) is never changed
 
     found = circuit(system)
     nodes: dict[str, _Node] = {}

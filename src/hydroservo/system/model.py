@@ -21,7 +21,14 @@ from typing import TYPE_CHECKING, Any
 import casadi as ca
 import numpy as np
 
-from hydroservo.errors import ImplausibleResultWarning, InterpretedWarning, ParameterError, SolverError, TrimError
+from hydroservo.errors import (
+    ImplausibleResultWarning,
+    InterpretedWarning,
+    ParameterError,
+    SolverError,
+    TrimError,
+    did_you_mean,
+)
 from hydroservo.system.implicit import NEWTON_STEPS, TOLERANCE
 from hydroservo.system.integration import (
     AUTO_MAX_STATES,
@@ -285,7 +292,7 @@ class Model:
         x0 = np.asarray(self.x0(p), dtype=float).ravel()
         for name, val in initial.items():
             if name not in self.state_names:
-                raise ParameterError(f"initial: {name!r} is not a state; states: {', '.join(self.state_names)}")
+                raise ParameterError(f"initial: {name!r} is not a state{did_you_mean(name, self.state_names)}; states: {', '.join(self.state_names)}")
             x0[self.state_names.index(name)] = float(val)
         return x0
 
@@ -716,7 +723,8 @@ class Model:
         x = np.asarray(self.x0(p), dtype=float).ravel() if x_guess is None else np.asarray(x_guess, dtype=float)
         unknown_free = [n for n in free if n not in self.state_names]
         if unknown_free:
-            raise TrimError(f"trim of {self.name!r}: free = {unknown_free[0]!r} is not a state; states: {', '.join(self.state_names)}")
+            raise TrimError(f"trim of {self.name!r}: free = {unknown_free[0]!r} is not a state{did_you_mean(unknown_free[0], self.state_names)}; "
+                            f"states: {', '.join(self.state_names)}")
         solved = np.array([n not in free for n in self.state_names], dtype=bool)
         if self.nx == 0:
             return {}

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any, BinaryIO
 import numpy as np
 
 from hydroservo.errors import ParameterError, SolverError, UnitError, did_you_mean
-from hydroservo.units import UnitChoice, convert, si_unit
+from hydroservo.units import UnitChoice, check_unit, convert, si_unit
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -101,11 +101,16 @@ class _Signals:
             return values
         own = self.units.get(name, "")
         try:
+            check_unit(unit)
+        except UnitError as exc:
+            raise UnitError(f"signal {name!r} of {self.model!r}: {exc}") from None
+        try:
             converted: np.ndarray = convert(values, own, unit)
             return converted
         except UnitError:
             raise UnitError(
-                f"signal {name!r} of {self.model!r} is in {si_unit(own)}: cannot show it in {unit!r}"
+                f"signal {name!r} of {self.model!r} is in {si_unit(own)}: cannot show it in {unit!r}, a unit of another "
+                "dimension"
             ) from None
 
 
@@ -211,7 +216,7 @@ class Result(_Signals):
 
         Returns the figure. With ``file`` (``.png``, ``.svg``, ``.pdf``) it is
         written there and closed; without, it is shown where it can be: a
-        notebook shows it, a script with a display opens it in a window
+        notebook shows it (once, also as a cell's last value), a script with a display opens it in a window
         (``plt.show()``), and where there is no display a warning says to give
         ``file``.
         """

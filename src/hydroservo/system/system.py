@@ -21,12 +21,21 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from hydroservo.components.base import Component, Hydraulic, Mechanical
-from hydroservo.errors import HydroservoError, ModelError, ParameterError, UnitError, did_you_mean
+from hydroservo.errors import BareNumberWarning, HydroservoError, ModelError, ParameterError, UnitError, did_you_mean
 from hydroservo.system.assembly import assemble
 from hydroservo.system.integration import batch_columns
 from hydroservo.system.model import Model
 from hydroservo.system.nodes import Node, nodes, port_kind, port_of, port_signals, resolve
-from hydroservo.units import UnitChoice, check_unit, inferred_units, same_dimension, to_si
+from hydroservo.units import (
+    UnitChoice,
+    check_unit,
+    coherent_unit,
+    inferred_units,
+    is_bare_number,
+    same_dimension,
+    split_quantity,
+    to_si,
+)
 
 if TYPE_CHECKING:
     from pathlib import Path
@@ -112,6 +121,21 @@ def split_name(ref: str, what: str) -> tuple[str, str]:
     if len(parts) != 2 or not all(parts):
         raise ModelError(f"{what}: {ref!r} is not of the form 'component.signal'")
     return parts[0], parts[1]
+
+
+def model_unit(comp: Component, pname: str, value: Any) -> str | None:
+    """The unit the model gives parameter ``pname`` of ``comp`` in (``"lbf"`` for ``load.W = "6400 lbf"``), where
+    ``value`` is a bare number (``3000``, ``"3000"``), which is taken in SI, and that unit is not SI; None for a
+    value with its unit, zero (nothing in any unit without an offset), a parameter given in SI or without a unit.
+    The CLI refuses such a number (``--set load.W=3000``); the Python API warns (:meth:`System.simulate`)."""
+    spec = comp.PARAMETERS.get(pname)
+    given = comp.given.get(pname)
+    if spec is None or not spec.unit or given is None or not is_bare_number(value):
+        return None
+    if float(value) == 0.0 and spec.unit not in ("degC",):
+        return None
+    unit = split_quantity(given)[1]
+    return unit if unit and unit != coherent_unit(unit) else None
 
 
 class System:
@@ -751,7 +775,19 @@ class System:
         return self._vector(self.build(), params)
 
     def _vector(self, model: Model, params: Mapping[str, Any] | None) -> np.ndarray:
-        """:meth:`parameter_vector` for ``model``, built already."""
+        """:meth:`parameter_vector` for ``model``, built already; a bare number for a parameter the model gives in
+        a unit other than SI is taken in SI with a :class:`~hydroservo.errors.BareNumberWarning` (:func:`model_unit`)."""
+        import warnings
+
+        for key, val in (params or {}).items():
+            cname, _, pname = str(key).partition(".")
+            unit = model_unit(self.components[cname], pname, val) if cname in self.components else None
+            if unit is not None:
+                si = coherent_unit(self.components[cname].PARAMETERS[pname].unit)
+                warnings.warn(BareNumberWarning(
+                    f"params {key!r}: {val!r} is taken in SI, {val} {si}, but the model gives {key} in {unit} "
+                    f"({self.components[cname].given[pname]!r}); give the unit to say which you mean: "
+                    f"{{{key!r}: '{val} {unit}'}} or {{{key!r}: '{val} {si}'}}"), stacklevel=3)
         given = self.parse_parameters(params)
         values = self.parameter_values()
         values.update(given)

@@ -29,12 +29,12 @@ from __future__ import annotations
 import html
 import json
 import math
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
 
-from hydroservo.errors import HydroservoError, ParameterError, did_you_mean, shorten
+from hydroservo.errors import BareNumberWarning, HydroservoError, ParameterError, did_you_mean, shorten
 
 if TYPE_CHECKING:
     from hydroservo.io.files import OutputFolder
@@ -49,6 +49,7 @@ __all__ = [
     "Progress",
     "numbers",
     "load_with_sets",
+    "check_names",
     "parse_sets",
     "output_folder",
     "safe_name",
@@ -288,6 +289,27 @@ def load_with_sets(
     return system
 
 
+def check_names(system: System, what: str, names: Iterable[str] | None, kind: str) -> None:
+    """Refuse, before any work, the first of ``names`` that ``system`` has not as ``kind``: ``"signal"`` (a state,
+    an output or an alias), ``"state"``, or ``"input"`` (a component input or a parameter, a former name too);
+    the message names ``what`` (the option or argument: ``--outputs``) and the closest names
+    (:func:`~hydroservo.errors.did_you_mean`)."""
+    if not names:
+        return
+    model = system.build()
+    known: dict[str, list[str]] = {
+        "signal": [*model.state_names, *model.output_names],
+        "state": list(model.state_names),
+        "input": [f"{c}.{k}" for c, comp in system.components.items() for k in [*comp.INPUTS, *comp.PARAMETERS, *comp.RENAMED]],
+    }
+    said = {"signal": "not a state, output or alias", "state": "not a state", "input": "neither a component input nor a parameter"}
+    for name in names:
+        if name not in known[kind]:
+            raise ParameterError(
+                f"{what} {shorten(str(name))!r}: {said[kind]} of {system.name!r}{did_you_mean(str(name), known[kind])}"
+            )
+
+
 def asked_units(system: System, units: Any, si: bool, what: Callable[[str], str]) -> UnitChoice:
     """The units a workflow's options ask for (``units``: ``"p=bar, mm"``, a mapping; ``si``), checked against
     ``system``'s signals before anything runs; ``what`` names an option (``--units`` or ``units``).
@@ -315,22 +337,28 @@ def asked_units(system: System, units: Any, si: bool, what: Callable[[str], str]
 
 def _refuse_ambiguous_number(comp: Any, pname: str, val: Any, shown: str, what: str) -> None:
     """Refuse a bare number given as text (``--set load.W=3000``) for a dimensional parameter that the model
-    gives in a unit other than SI (``"6400 lbf"``): it would be taken in SI (N), not in the model's unit.
-    A number in a model that gives the parameter in SI, or without a unit, is SI as everywhere; zero is zero."""
-    from hydroservo.units import coherent_unit, is_bare_number, split_quantity
+    gives in a unit other than SI (``"6400 lbf"``): it would be taken in SI (N), not in the model's unit
+    (:func:`hydroservo.system.system.model_unit`; the Python API warns of a number, which it documents as SI).
+    A number in a model that gives the parameter in SI, or without a unit, is SI as everywhere; zero is zero.
+    A number (not text) from Python is taken in SI with a :class:`~hydroservo.errors.BareNumberWarning`."""
+    import warnings
 
-    spec = comp.PARAMETERS.get(pname)
-    given = comp.given.get(pname)
-    if spec is None or not spec.unit or given is None or not isinstance(val, str) or not is_bare_number(val):
+    from hydroservo.system.system import model_unit
+    from hydroservo.units import coherent_unit
+
+    unit = model_unit(comp, pname, val)
+    if unit is None:
         return
-    if float(val) == 0.0 and spec.unit not in ("degC",):  # nothing, in any unit without an offset
-        return
-    unit = split_quantity(given)[1]
-    if unit and unit != coherent_unit(unit):
+    given, si = comp.given[pname], coherent_unit(comp.PARAMETERS[pname].unit)
+    if not isinstance(val, str):  # a number in Python is SI, as the API documents it: said, not refused
+        warnings.warn(BareNumberWarning(
+            f"{shown}: taken in SI, {val} {si}, but the model gives {comp.name}.{pname} in {unit} ({given!r}); "
+            f"give the unit to say which you mean: '{val} {unit}' or '{val} {si}'"), stacklevel=4)
+    else:
         raise ParameterError(
             f"{shown}: the model gives {comp.name}.{pname} in {unit} ({given!r}), and a bare number would be taken "
-            f"in SI ({coherent_unit(spec.unit)}); give the unit you mean: {what} \"{comp.name}.{pname}={val.strip()} "
-            f"{unit}\" or {what} \"{comp.name}.{pname}={val.strip()} {coherent_unit(spec.unit)}\""
+            f"in SI ({si}); give the unit you mean: {what} \"{comp.name}.{pname}={val.strip()} "
+            f"{unit}\" or {what} \"{comp.name}.{pname}={val.strip()} {si}\""
         )
 
 

@@ -14,7 +14,16 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ParameterError, shorten
-from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, asked_units, load_with_sets, safe_name
+from hydroservo.workflows.base import (
+    Artifact,
+    Progress,
+    Report,
+    Workflow,
+    asked_units,
+    check_names,
+    load_with_sets,
+    safe_name,
+)
 
 if TYPE_CHECKING:
     import numpy as np
@@ -319,6 +328,9 @@ class Linearize(Workflow):
 
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
         self.point = operating_point(self.at, self.name("at"))
+        for what, names, kind in (("inputs", self.inputs, "input"), ("outputs", self.outputs, "signal"),
+                                  ("free", self.free, "state"), ("at", self.point if isinstance(self.point, Mapping) else None, "state")):
+            check_names(self.system, self.name(what), names, kind)
         self.time = to_si(self.t, "s", what=self.name("t"))
         self.grid = None if self.frequencies is None else np.asarray(self.frequencies, dtype=float)
         self.unit_choice = self.system.unit_choice(asked_units(self.system, self.units, self.si, self.name))

@@ -27,6 +27,7 @@ __all__ = [
     "system_summary",
     "dataframe_table",
     "files_section",
+    "notes_section",
     "page",
 ]
 
@@ -40,6 +41,8 @@ def solver_table(stats: Mapping[str, Any]) -> Table:
         "netfails": "error-test failures", "nniters": "Newton iterations", "nncfails": "Newton failures",
         "rtol": "relative tolerance", "atol": "absolute tolerance", "wall_time_s": "integration wall time [s]",
         "nrejected": "rejected steps", "njevals": "Jacobians", "nevents": "events (steps ended at a kink)",
+        "compile_load_wall_time_s": "model compiled to C, or loaded from the cache [s]",
+        "run_wall_time_s": "whole run, model build included [s]",
     }
     rows = [[labels.get(k, k), v] for k, v in stats.items() if isinstance(v, int | float) and math.isfinite(v)]
     captions = {
@@ -96,6 +99,16 @@ def system_summary(system: System) -> list[Item]:
     if facts:
         items.append(Text("; ".join(facts)))
     return items
+
+
+def notes_section(notes: Sequence[str], title: str = "Notes") -> Section | None:
+    """The model's notes (as a run shows them: :meth:`~hydroservo.workflows.simulate.SimulationReport.notes`), or
+    None when it has none."""
+    from hydroservo.io.html import Notice, Section
+
+    if not notes:
+        return None
+    return Section(title, [Notice(note, "info") for note in notes])
 
 
 def files_section(files: Mapping[str, str]) -> Section | None:

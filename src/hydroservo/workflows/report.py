@@ -1,4 +1,4 @@
-"""One page to show a colleague: a model's circuit, parameters, response, warnings, solver statistics,
+"""One page to show a colleague: a model's notes, circuit, parameters, response, warnings, solver statistics,
 validation verdicts and references, or a result file's signals (``hydroservo report MODEL|RESULT``).
 
 The page is one self-contained HTML file (:mod:`hydroservo.io.html`): it opens from disk or an e-mail
@@ -7,7 +7,7 @@ attachment with no network, its plots zoom, pan and show each value with its uni
 >>> from hydroservo.workflows import report
 >>> page = report.run("flight-simulator", t_end="0.2 s", validation=False)
 >>> [s.title for s in page.document().sections][:3]
-['Model', 'Circuit', 'Response']
+['Model', 'Notes', 'Circuit']
 """
 
 from __future__ import annotations
@@ -97,6 +97,9 @@ class ModelReport(Report):
         about = pages.system_summary(system)
         if about:
             sections.append(Section("Model", about))
+        noted = pages.notes_section(sim.notes())
+        if noted is not None:
+            sections.append(noted)
         warned = pages.warnings_section(sim.warnings)
         if warned is not None:
             sections.append(warned)
@@ -107,7 +110,7 @@ class ModelReport(Report):
         sections.append(Section("Parameters", [pages.parameter_table(system)]))
         if self.validation is not None:
             sections += self.validation.document().sections
-        sections.append(Section("Solver", [pages.solver_table({**sim.result.stats, "wall_time_s": sim.wall_time})]))
+        sections.append(Section("Solver", [pages.solver_table(sim.solver_stats())]))
         sections.append(pages.references_section(system.references()))
         subtitle = f"simulated for {sim.t_end:g} s" + (f" with {', '.join(sim.changes)}" if sim.changes else "")
         return Page(system.name, subtitle, sections, footer())

@@ -5,7 +5,7 @@
 >>> report.lines()[0].startswith("simulated 'flight-simulator' for 0.2 s")
 True
 >>> sorted(report.to_dict())
-['files', 'model', 'notes', 'signals', 'solver', 't_end_s', 'wall_time_s', 'warnings']
+['departures', 'files', 'model', 'notes', 'signals', 'solver', 't_end_s', 'wall_time_s', 'warnings']
 """
 
 from __future__ import annotations
@@ -63,6 +63,18 @@ class SimulationReport(Report):
     ascii: bool = False
     #: the table lists every signal, not only the model's main ones
     all_signals: bool = False
+    #: what this run changes of the model's default run, on which its notes were measured (empty: none)
+    departures: list[str] = field(default_factory=list)
+    #: the time taken to have the model as C before the run [s]: compiled into the cache folder the first time
+    #: (seconds), loaded from it after (milliseconds); None where the run is not compiled (CVODES)
+    compile_time: float | None = None
+
+    def notes(self) -> list[str]:
+        """The model's notes, each said to be of the default run where this run departs from it
+        (:func:`hydroservo.io.notebook.scoped_notes`)."""
+        from hydroservo.io.notebook import scoped_notes
+
+        return scoped_notes(self.system, self.departures)
 
     def title(self) -> str:
         return f"{self.system.name}: simulated response" + (f" ({', '.join(self.changes)})" if self.changes else "")
@@ -72,8 +84,9 @@ class SimulationReport(Report):
 
         result = self.result
         out = [
-            f"simulated {self.system.name!r} for {self.t_end:g} s in {self.wall_time * 1e3:.1f} ms "
-            f"(integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps"
+            f"simulated {self.system.name!r} for {self.t_end:g} s in {self.wall_time * 1e3:.1f} ms ("
+            + (f"compile/load {self.compile_time * 1e3:.1f} ms, " if self.compile_time is not None else "")
+            + f"integration {result.stats['wall_time_s'] * 1e3:.2f} ms, {result.stats.get('nsteps', '?')} steps"
             + (f", {result.stats['method']}" + (" compiled" if result.stats["method"] != "cvodes" else "")
                if "method" in result.stats else "")
             + ")"
@@ -84,7 +97,7 @@ class SimulationReport(Report):
         out += text_table(rows, ["signal", "unit", "final", "min", "max"])
         if len(shown) < len(summary):
             out.append(f"({len(summary) - len(shown)} more signals in the CSV and --json; --all lists them here)")
-        out += [f"note: {text}" for text in self.system.notes]
+        out += [f"note: {text}" for text in self.notes()]
         if self.files:
             out.append(f"wrote {' and '.join(self.files.values())}")
         return out
@@ -93,6 +106,8 @@ class SimulationReport(Report):
         result = self.result
         solver = {k: v for k, v in result.stats.items() if k != "wall_time_s"}
         solver["integration_wall_time_s"] = result.stats["wall_time_s"]
+        if self.compile_time is not None:
+            solver["compile_load_wall_time_s"] = self.compile_time
         own = _crossings(result)
         return {
             "model": self.system.name,
@@ -102,9 +117,17 @@ class SimulationReport(Report):
             "wall_time_s": self.wall_time,
             "warnings": [w.to_dict() for w in result.warnings]
             + [{"message": text} for text in self.warnings if text not in own],
-            "notes": list(self.system.notes),
+            "notes": self.notes(),
+            "departures": list(self.departures),
             "files": self.files,
         }
+
+    def solver_stats(self) -> dict[str, Any]:
+        """The run's solver statistics, with the whole run's wall time and the compile (or cache load) time."""
+        stats = {**self.result.stats, "run_wall_time_s": self.wall_time}
+        if self.compile_time is not None:
+            stats["compile_load_wall_time_s"] = self.compile_time
+        return stats
 
     def artifacts(self) -> list[Artifact]:
         name = safe_name(self.system.name)
@@ -116,7 +139,8 @@ class SimulationReport(Report):
         return [Artifact(kind, f"{name}.{kind}", writers[kind]) for kind in self.kinds]
 
     def document(self) -> Page:
-        """The run: the circuit, the response (interactive), the signals, the parameters, the solver, references."""
+        """The run: the model and its notes, the circuit, the response (interactive), the signals, the parameters,
+        the solver, references."""
         from hydroservo.io.html import Figure, Section
         from hydroservo.plotting.interactive import result_figure
         from hydroservo.workflows import pages
@@ -125,11 +149,12 @@ class SimulationReport(Report):
         panels = system.plots or system.default_panels()
         return pages.page(self.title(), f"simulated for {self.t_end:g} s", [
             Section("Model", pages.system_summary(system)) if pages.system_summary(system) else None,
+            pages.notes_section(self.notes()),
             pages.circuit_section(system),
             Section("Response", [Figure(result_figure(result, panels, result.shown_units(self.units), title=self.title()))]),
             Section("Signals", [pages.signal_table(result, result.shown_units(self.units))]),
             Section("Parameters", [pages.parameter_table(system)]),
-            Section("Solver", [pages.solver_table(result.stats)]),
+            Section("Solver", [pages.solver_table(self.solver_stats())]),
             pages.references_section(system.references()),
             pages.files_section(self.files),
         ], self.warnings)
@@ -318,6 +343,7 @@ class Simulate(Workflow):
         if self.system.plots and "png" in self.kinds:
             self._check_plots()
         start = time.perf_counter()
+        compile_time = self._compile()
         result = self.system.simulate(
             t_end=self.duration, n_points=self.points, initial=self.initial, rtol=self.rtol,
             accuracy=self.accuracy_value, method=self.method, max_steps=self.max_steps,
@@ -333,8 +359,49 @@ class Simulate(Workflow):
         changes = _shown_sets(self.sets)
         return SimulationReport(
             self.system, result, self.duration, wall, list(self.kinds), changes, self.unit_choice, self.ascii,
-            self.all_signals, warnings=found,
+            self.all_signals, self.departures(), compile_time, warnings=found,
         )
+
+    def _compile(self) -> float | None:
+        """Have the model compiled to C before the run, where its method runs it compiled, and say how long that
+        took [s]: the first run of a model compiles it into the cache folder (seconds), a later one loads it
+        (milliseconds), so that the time a run reports is not taken for integration. None for CVODES, and where
+        the model cannot be compiled (the run itself says why, or falls back to CVODES with a warning)."""
+        from hydroservo.errors import HydroservoError
+        from hydroservo.system.integration import AUTO_MAX_STATES
+        from hydroservo.system.native import native
+
+        model = self.system.build()
+        if self.method == "cvodes" or (self.method == "auto" and model.nx > AUTO_MAX_STATES):
+            return None
+        start = time.perf_counter()
+        try:
+            native(model)
+        except HydroservoError:
+            return None
+        return time.perf_counter() - start
+
+    def departures(self) -> list[str]:
+        """What this run changes of the model's default run (the model as its file gives it, its duration, the
+        initial state from its parameters, the default solver, accuracy and output times), by the names the
+        user gave them: a note of the model's is of the default run only (:meth:`SimulationReport.notes`)."""
+        from hydroservo.io.notebook import departures
+        from hydroservo.system.integration import DEFAULT_ACCURACY
+
+        found = departures(self.system)
+        if self.duration != self.system.t_end:
+            found.append(f"{self.name('t_end')} {self.t_end}")
+        if self.initial != "parameters":
+            found.append(f"{self.name('initial')} {self.initial}")
+        if self.method != "auto":
+            found.append(f"{self.name('method')} {self.method}")
+        if self.accuracy_value is not None and self.accuracy_value != DEFAULT_ACCURACY:
+            found.append(f"{self.name('accuracy')} {self.accuracy}")
+        if self.rtol is not None:
+            found.append(f"{self.name('rtol')} {self.rtol:g}")
+        if self.points != type(self).points:
+            found.append(f"{self.name('points')} {self.points}")
+        return found
 
 
 def _shown_sets(sets: Sequence[str] | Mapping[str, Any] | None) -> list[str]:

@@ -70,15 +70,28 @@ def test_plot_without_a_file_warns_where_nothing_can_show_it(flight, tmp_path) -
     assert fig.axes[0].get_ylabel() == "y [in]" and (tmp_path / "y.png").stat().st_size > 5000
 
 
-def test_writing_a_plot_keeps_the_backend_a_notebook_chose(flight, tmp_path, monkeypatch) -> None:
-    import matplotlib
+def test_showing_a_system_and_writing_a_plot_never_choose_a_backend(tmp_path) -> None:
+    """In a fresh interpreter (a notebook's kernel before its first plot): drawing the circuit and writing a plot
+    to a file neither import pyplot nor choose matplotlib's backend, so the notebook's own stays."""
+    import subprocess
+    import sys
 
-    from hydroservo.plotting import pyplot
-
-    chosen = []
-    monkeypatch.setattr(matplotlib, "use", lambda *a, **k: chosen.append(a))
-    pyplot(tmp_path / "x.png")  # pyplot is in use (imported by the test above): its backend stays
-    assert chosen == []
+    script = f"""
+import sys
+import matplotlib
+chosen = []
+matplotlib.use = lambda *a, **k: chosen.append(a)
+import hydroservo as hs
+system = hs.load_model("flight-simulator")
+system._repr_html_()
+result = system.simulate(t_end=0.05, n_points=11)
+result._repr_html_()
+result.plot("y", file={str(tmp_path / "y.png")!r})
+print(chosen, "matplotlib.pyplot" in sys.modules)
+"""
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.split() == ["[]", "False"] and (tmp_path / "y.png").stat().st_size > 5000
 
 
 def test_a_batch_shows_its_runs_and_the_signal_they_differ_in_most(flight) -> None:
