@@ -92,7 +92,7 @@ def test_the_api_suggests_signals_components_and_parameters() -> None:
          "'load.xx' is not a state, output or alias of the model (did you mean 'load.x'"),
         (["sensitivity", "robot-arm", "--method", "oat", "--vary", "load.m=10..20", "--signals", "load.xx"],
          "signal 'load.xx': not a state, output or alias of 'robot-arm' (did you mean 'load.x'"),
-        (["ladder", "robot-arm", "--free", "load.xx"], "free = 'load.xx' is not a state (did you mean 'load.x'"),
+        (["ladder", "robot-arm", "--free", "load.xx"], "free = 'load.xx' is not a state of 'robot-arm' (did you mean 'load.x'"),
         (["simulate", "robot-arm", "--units", "p=barr"], "unknown unit 'barr' (did you mean 'bar'"),
         (["simulate", "robot-arm", "--set", "load.m=20 kgg"], "unknown unit 'kgg' (did you mean 'kg'?)"),
     ],

@@ -319,7 +319,8 @@ def operating_point(
     if isinstance(at, Mapping):
         for name, value in at.items():
             if name not in model.state_names:
-                raise ParameterError(f"operating point: {name!r} is not a state of {system.name!r}; states: {', '.join(model.state_names)}")
+                raise ParameterError(f"operating point: {name!r} is not a state of {system.name!r}"
+                                     f"{did_you_mean(name, model.state_names)}; states: {', '.join(model.state_names)}")
             x[model.state_names.index(name)] = to_si(value, model.units[name], what=name)
         return dict(zip(model.state_names, x.tolist()))
     if at == "initial":
