@@ -48,6 +48,7 @@ import numpy as np
 from hydroservo.data import c_template
 from hydroservo.errors import ParameterError
 from hydroservo.system.implicit import TOLERANCE as ALGEBRAIC_TOLERANCE
+from hydroservo.system.integration import Interrupted, interruptible
 from hydroservo.version import __version__
 
 if TYPE_CHECKING:
@@ -615,7 +616,11 @@ SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "time": (_DBL, [_INST]),
     "message": (ctypes.c_char_p, [_INST]),
     "statistics": (None, [_INST, _LL, _LL, _LL]),
+    "set_stop": (None, [_INST, ctypes.POINTER(ctypes.c_int)]),
 }
+
+#: The status of ``NAME_integrate`` when the stop flag (``NAME_set_stop``) was set: stopped by Ctrl-C.
+INTERRUPTED = 8
 
 
 def bind(path: Path, cid: str) -> dict[str, Any]:
@@ -676,15 +681,22 @@ class Native:
         instance = c["new"]()
         if not instance:
             raise MemoryError("out of memory for a compiled model instance")
+        times = np.ascontiguousarray(grid, dtype=float)
         try:
             c["set_parameters"](instance, pointer(np.ascontiguousarray(p, dtype=float)))
             c["set_states"](instance, pointer(np.ascontiguousarray(x0, dtype=float)))
-            times = np.ascontiguousarray(grid, dtype=float)
             X = np.full((times.size, self.nx), np.nan)
-            status = c["integrate"](
-                instance, ADAPTIVE_METHODS.index(method) + 1, int(bool(events)), float(rtol), float(atol),
-                float(max_step), int(max_steps), times.size, pointer(times), pointer(X), None,
-            )  # fmt: skip
+            with interruptible() as stop:  # Ctrl-C sets the flag the C code reads before every step
+                c["set_stop"](instance, None if stop is None else ctypes.byref(stop))
+                try:
+                    status = c["integrate"](
+                        instance, ADAPTIVE_METHODS.index(method) + 1, int(bool(events)), float(rtol), float(atol),
+                        float(max_step), int(max_steps), times.size, pointer(times), pointer(X), None,
+                    )  # fmt: skip
+                except KeyboardInterrupt:  # Python's handler of the same SIGINT, run as the call returned
+                    status = INTERRUPTED
+                if status == INTERRUPTED:
+                    raise Interrupted(f"{method} (compiled)", float(c["time"](instance)), float(times[-1]))
             counts = [ctypes.c_longlong() for _ in range(5)]
             c["integration_statistics"](instance, *(ctypes.byref(k) for k in counts))
             stats = dict(zip(("nsteps", "nrejected", "nfevals", "njevals", "nevents"), (k.value for k in counts)))
