@@ -74,13 +74,15 @@ def _interrupted(stop: Any, message: str, printed: str) -> bool:
     return bool(stop is not None and stop.value) or "KeyboardInterrupt" in message or "KeyboardInterrupt" in printed
 
 
-def _interpreted_once(why: str) -> None:
-    """Say once a process that ``method="auto"`` runs CVODES in CasADi's interpreter, and why."""
+def _interpreted_once(
+    why: str, remedy: str = "Install a C compiler (cc, gcc or clang) for the compiled solvers, or pass"
+) -> None:
+    """Say once a process that ``method="auto"`` runs CVODES in CasADi's interpreter, why, and the remedy."""
     if not _INTERPRETED_SAID.is_set():
         _INTERPRETED_SAID.set()
         warnings.warn(
             f"simulating with CVODES in CasADi's interpreter, 2 to 5 times slower than compiled ({why}). "
-            "Install a C compiler (cc, gcc or clang) for the compiled solvers, or pass method='cvodes' to choose it",
+            f"{remedy} method='cvodes' to choose it",
             InterpretedWarning,
             stacklevel=5,
         )
@@ -412,10 +414,13 @@ class Model:
             return method
         if self.nx > AUTO_MAX_STATES:
             return "cvodes"
-        from hydroservo.system.native import native
+        from hydroservo.system.native import CacheFolderError, native
 
         try:
             native(self)
+        except CacheFolderError as exc:
+            _interpreted_once(str(exc), "Pass")
+            return "cvodes"
         except ParameterError as exc:
             _interpreted_once(str(exc))
             return "cvodes"
@@ -423,10 +428,12 @@ class Model:
 
     def _compiled_solvers(self, method: str) -> Any:
         """The compiled solvers of this model (:func:`hydroservo.system.native.native`), or why not."""
-        from hydroservo.system.native import native
+        from hydroservo.system.native import CacheFolderError, native
 
         try:
             return native(self)
+        except CacheFolderError:  # it says which folder, and what to do
+            raise
         except ParameterError as exc:
             raise ParameterError(
                 f"method = {method!r} runs the model compiled to C, which needs a C compiler: {exc}. "

@@ -56,6 +56,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "ADAPTIVE_METHODS",
+    "CacheFolderError",
     "METHODS",
     "NEWTON_TOLERANCE",
     "Native",
@@ -508,6 +509,27 @@ def cache_folder() -> Path:
     return Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "hydroservo"
 
 
+class CacheFolderError(ParameterError):
+    """The cache folder (:func:`cache_folder`) cannot hold or give back compiled models: not a folder, a link to
+    nothing, not writable, or not a place libraries can be loaded from. ``method="auto"`` then runs CVODES (one
+    warning naming the folder); a compiled method asked for by name is refused with this message."""
+
+
+def _unusable(folder: Path, exc: OSError | None = None, why: str = "") -> CacheFolderError:
+    """Why ``folder`` cannot be the cache: what is there, else the system's reason."""
+    if folder.is_symlink() and not folder.exists():
+        why = f"a link to {os.readlink(folder)!r}, which does not exist"
+    elif folder.exists() and not folder.is_dir():
+        why = "not a folder"
+    elif not why and exc is not None:
+        why = f"compiled models cannot be written there ({(exc.strerror or str(exc)).lower()})"
+    origin = "HYDROSERVO_CACHE" if os.environ.get("HYDROSERVO_CACHE") else "the user's cache folder"
+    return CacheFolderError(
+        f"cache folder {str(folder)!r} ({origin}): {why}; expected a writable folder to keep compiled models in "
+        "(set HYDROSERVO_CACHE to one)"
+    )
+
+
 def _digest(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
@@ -530,6 +552,8 @@ def compiled(sources: SourceSet, flags: Sequence[str] = CACHE_FLAGS) -> Path:
 
     Raises
     ------
+    CacheFolderError
+        If the cache folder cannot hold the library (not a folder, not writable).
     ParameterError
         If there is no C compiler, or it fails.
     """
@@ -539,16 +563,23 @@ def compiled(sources: SourceSet, flags: Sequence[str] = CACHE_FLAGS) -> Path:
         sort_keys=True,
     )
     key = hashlib.sha256(recipe.encode("utf-8")).hexdigest()
-    root = cache_folder() / "c"
+    folder = cache_folder()
+    root = folder / "c"
     entry = root / key[:40]
     library = _library_name(sources.name)
     if _intact(entry, library):
         return entry / library
-    root.mkdir(parents=True, exist_ok=True)
-    build = Path(tempfile.mkdtemp(prefix=".build-", dir=root))
     try:
-        for file, text in sources.files.items():
-            (build / file).write_text(text, encoding="utf-8")
+        root.mkdir(parents=True, exist_ok=True)
+        build = Path(tempfile.mkdtemp(prefix=".build-", dir=root))
+    except OSError as exc:
+        raise _unusable(folder, exc) from None
+    try:
+        try:
+            for file, text in sources.files.items():
+                (build / file).write_text(text, encoding="utf-8")
+        except OSError as exc:  # a full disk, a quota
+            raise _unusable(folder, exc) from None
         compile_library(build, [f for f in sources.files if f.endswith(".c")], library, flags)
         (build / _STAMP).write_text(_digest(build / library) + "\n", encoding="ascii")
         if entry.exists():  # damaged: out of the way first
@@ -561,7 +592,7 @@ def compiled(sources: SourceSet, flags: Sequence[str] = CACHE_FLAGS) -> Path:
         if build.exists():
             shutil.rmtree(build, ignore_errors=True)
     if not _intact(entry, library):
-        raise ParameterError(f"C compiler cache {entry}: the compiled model could not be stored (is the folder writable?)")
+        raise _unusable(folder, why=f"the compiled model could not be stored in {str(entry)!r}")
     return entry / library
 
 
@@ -653,7 +684,10 @@ class Native:
         self.name = "hs_" + hashlib.sha256(model.name.encode("utf-8")).hexdigest()[:12]
         self.sources = model_sources(model, self.name)
         self.path = compiled(self.sources)
-        self._c = bind(self.path, self.name)
+        try:
+            self._c = bind(self.path, self.name)
+        except OSError as exc:  # a folder mounted noexec, a library removed meanwhile
+            raise _unusable(cache_folder(), why=f"the compiled model cannot be loaded from there ({exc})") from None
         self.nx = model.nx
 
     def integrate(
