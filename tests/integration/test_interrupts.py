@@ -214,3 +214,23 @@ def test_interruptible_restores_the_wakeup_fd(monkeypatch: pytest.MonkeyPatch) -
         assert signal.set_wakeup_fd(-1) == -1
     finally:
         signal.set_wakeup_fd(previous)
+
+
+@needs_compiler
+def test_an_exported_stepper_stops_when_the_flag_is_set(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The fixed-step loop of the exported C (``NAME_run``) reads the same flag before every step."""
+    from hydroservo.codegen.c import CStepper
+
+    monkeypatch.setattr(signal, "getsignal", lambda _: signal.default_int_handler)
+    stepper = CStepper(hs.load_model("flight-simulator"), step=1e-4, method="rk4")
+    setter = threading.Timer(0.3, lambda: setattr(STOP, "value", 1))
+    start = time.process_time()
+    with pytest.raises(Interrupted) as caught:
+        with interruptible():
+            setter.start()
+            stepper.advance(10**9)  # 1e5 s of steps: hours
+    setter.join()
+    assert caught.value.t is not None and caught.value.t > 0 and stepper.status == 0
+    assert time.process_time() - start < 30.0
+    STOP.value = 0
+    stepper.advance(10)  # the instance goes on from where it stopped, outside the guard
