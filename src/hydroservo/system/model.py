@@ -1254,11 +1254,13 @@ class Model:
         start = np.concatenate([np.asarray(x0, dtype=float) / self.nominal, (np.asarray(dx0, dtype=float) / nominal).ravel(order="F")])
         scale_vec = np.asarray([s if c is not None else 0.0 for c, s in zip(columns, scale)], dtype=float)
         try:
-            with captured() as printed:
+            with interruptible() as stop, captured() as printed:
                 args = {integ.index_in("x0"): start, integ.index_in("p"): np.concatenate([p, scale_vec])}
                 out, _ = _buffered(integ, args, raises=True)
         except RuntimeError as exc:
             t_fail, _ = failure_point(printed.getvalue())
+            if _interrupted(stop, str(exc), printed.getvalue()):
+                raise Interrupted(f"sensitivities of {self.name!r} (cvodes)", t_fail, float(grid[-1])) from None
             where = f" at t = {t_fail:.6g} s" if t_fail is not None else ""
             raise SolverError(f"integration of {self.name!r} with its sensitivities failed{where}: {translate(str(exc))}") from None
         nt = out.shape[1]
