@@ -145,6 +145,14 @@ print("started", flush=True)
 try:
     if what == "batch":
         system.batch({"load.m": np.linspace(100.0, 200.0, 8)}, 10000.0, method=method, max_steps=10**9, threads=2)
+    elif what == "sensitivities":  # CVODES with forward sensitivities: calibration's integrations
+        from hydroservo.system.integration import SolverSettings
+
+        model = system.build()
+        p = system._vector(model, None)
+        x0 = np.asarray(model.x0(p), dtype=float).ravel()
+        model.sensitivities(np.linspace(0.0, 10000.0, 1001), p, x0, np.zeros((model.nx, 1)),
+                            [model.parameter_names.index("load.m")], [1.0], SolverSettings.of(max_steps=10**9))
     else:
         system.simulate(10000.0, method=method, max_steps=10**9)
 except Interrupted as exc:
@@ -161,6 +169,7 @@ else:
         pytest.param("simulate", "rodas3", marks=needs_compiler),
         pytest.param("batch", "rodas3", marks=needs_compiler),
         ("simulate", "cvodes"),
+        ("sensitivities", "cvodes"),
     ],
 )
 def test_ctrl_c_raises_interrupted_in_the_python_api(what: str, method: str, tmp_path: Path) -> None:
@@ -174,6 +183,8 @@ def test_ctrl_c_raises_interrupted_in_the_python_api(what: str, method: str, tmp
     assert said.startswith("Interrupted:"), stdout
     if what == "batch":
         assert f"batch of 'position-servo' ({method}; 0 of 8 runs done) interrupted" in said, said
+    elif what == "sensitivities":
+        assert "sensitivities of 'position-servo' (cvodes) interrupted at t = " in said, said
     else:
         assert f"simulation of 'position-servo' ({method}" in said and "interrupted at t = " in said, said
     assert after < CPU_AFTER_SIGNAL, f"{after:.2f} s of CPU after SIGINT"
