@@ -1497,3 +1497,71 @@ def test_issue37_names_and_units_suggested(case: str, ws: Workspace, run) -> Non
 def test_issue37_api_unknown_unit_of_a_signal() -> None:
     result = hs.load_model("robot-arm").simulate(t_end=0.01, n_points=3)
     api_refused(lambda: result.get("cyl.pA", "barr"), r"cyl\.pA", r"unknown unit 'barr'", r"did you mean 'bar'")
+
+# ---- issue 37: interrupts and cache folder faults ----
+def _unusable_cache(ws: Workspace, kind: str) -> Path:
+    """A cache folder (HYDROSERVO_CACHE) that cannot hold compiled models: ``kind`` says which fault."""
+    if kind == "proc":
+        return Path("/proc")  # a folder no one can make folders in, root included
+    if kind == "file":
+        return ws.write("cache-file", "not a folder\n")
+    if kind == "dangling-link":
+        link = ws.inp / "cache-link"
+        link.symlink_to(ws.root / "no-such-folder")
+        return link
+    folder = ws.inp / "read-only"
+    folder.mkdir()
+    folder.chmod(0o555)
+    return folder
+
+
+CACHE_FAULTS = ["proc", "file", "dangling-link", "read-only"]
+
+
+def _skip_unusable(kind: str) -> None:
+    if kind == "proc" and not Path("/proc").is_dir():
+        pytest.skip("no /proc on this system")
+    if kind == "read-only" and os.geteuid() == 0:
+        pytest.skip("run as root: a folder's mode does not stop root writing (the /proc case stands for it)")
+    from hydroservo.system.native import has_compiler
+
+    if not has_compiler():
+        pytest.skip("no C compiler: nothing is cached")
+
+
+@pytest.mark.parametrize("kind", CACHE_FAULTS)
+def test_unusable_cache_folder_falls_back_to_cvodes_with_one_warning(
+    kind: str, ws: Workspace, run, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The default method: the run goes on interpreted (a child process: the warning is said once a process),
+    with one warning naming the folder, and writes its files."""
+    _skip_unusable(kind)
+    folder = _unusable_cache(ws, kind)
+    monkeypatch.setenv("HYDROSERVO_CACHE", str(folder))
+    o = run("simulate", model_file(ws), "--t-end", "20 ms", "--out", ws.out, "--json", isolate=True)
+    assert o.code == 0, o.describe()
+    assert "Traceback" not in o.err, o.describe()
+    warned = [line for line in o.err.splitlines() if line.startswith("hydroservo: warning:")]
+    about = [line for line in warned if str(folder) in line]
+    assert len(about) == 1 and "CVODES" in about[0], o.describe()
+    assert json.loads(o.out)["solver"]["method"] == "cvodes"
+    assert sorted(p.name for p in ws.out.iterdir()) == ["valve-cylinder.csv", "valve-cylinder.png"]
+
+
+@pytest.mark.parametrize("kind", CACHE_FAULTS)
+def test_unusable_cache_folder_refuses_a_compiled_method_by_name(
+    kind: str, ws: Workspace, run, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _skip_unusable(kind)
+    folder = _unusable_cache(ws, kind)
+    monkeypatch.setenv("HYDROSERVO_CACHE", str(folder))
+    refused(run, ws, ["simulate", model_file(ws), "--t-end", "20 ms", "--method", "ros23", "--out", ws.out],
+            [re.escape(str(folder)), r"HYDROSERVO_CACHE", r"writable folder"])  # fmt: skip
+
+
+def test_api_unusable_cache_folder_refuses_a_compiled_method(ws: Workspace, monkeypatch: pytest.MonkeyPatch) -> None:
+    _skip_unusable("file")
+    folder = _unusable_cache(ws, "file")
+    monkeypatch.setenv("HYDROSERVO_CACHE", str(folder))
+    system = hs.load_model(model_file(ws))
+    api_refused(lambda: system.simulate(t_end=0.02, n_points=11, method="dopri5"), re.escape(str(folder)), "not a folder")

@@ -23,7 +23,8 @@ module                 commands
 A command module imports the library when its command runs, not when the
 parser is built, so that ``--help`` and ``--version`` answer at once. Every
 error caused by the input (files, options, values) is printed as one message
-and exits with code 2; ``--debug`` shows the traceback instead.
+and exits with code 2; Ctrl-C stops the run, says where, writes nothing and
+exits with code 130; ``--debug`` shows the traceback instead.
 """
 
 from __future__ import annotations
@@ -196,6 +197,17 @@ def main(argv: Sequence[str] | None = None) -> int:
             raise
         print(f"hydroservo: error: {exc}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt as exc:  # Ctrl-C: the solvers stop within a step (hydroservo.system.integration)
+        if args.debug:
+            raise
+        solvers = sys.modules.get("hydroservo.system.integration")  # imported if a run was under way
+        said = str(exc) if solvers is not None and isinstance(exc, solvers.Interrupted) else "interrupted"
+        print(f"hydroservo: {said}; nothing written", file=sys.stderr)
+        return INTERRUPTED
+
+
+#: The exit status after Ctrl-C: 128 + SIGINT, as a shell reports a command it interrupted.
+INTERRUPTED = 130
 
 
 if __name__ == "__main__":

@@ -50,11 +50,12 @@ from hydroservo.errors import ModelError, ParameterError, SolverError, shorten
 from hydroservo.io.files import OutputFolder
 from hydroservo.io.text import one_line
 from hydroservo.system.assembly import assemble
-from hydroservo.system.integration import ACCURACY_PER_RTOL_OF
+from hydroservo.system.integration import ACCURACY_PER_RTOL_OF, Interrupted, interruptible
 from hydroservo.system.model import Model
 from hydroservo.system.native import (
     _C_RESERVED,
     ADAPTIVE_METHODS,
+    INTERRUPTED,
     METHODS,
     NEWTON_TOLERANCE,
     _c_comment,
@@ -587,7 +588,7 @@ class CStepper:
 
     def advance(self, steps: int) -> None:
         """``steps`` steps in one call into C, recording nothing: the loop a benchmark times."""
-        self._check(self._c["run"](self._inst, int(steps), None, None, None))
+        self._check(self._interruptible("run", int(steps), None, None, None))
 
     def run(self, t_end: float | str, inputs: Mapping[str, Any] | None = None) -> tuple[np.ndarray, np.ndarray]:
         """Step on for ``t_end`` (a whole number of steps), in one call into C.
@@ -635,7 +636,7 @@ class CStepper:
                           + [self._c["get_output"](self._inst, j) for j in range(ny)]])  # fmt: skip
         t0 = self.time
         X, Y = np.empty((n, nx)), np.empty((n, ny))
-        self._check(self._c["run"](self._inst, n, pointer(U), pointer(X), pointer(Y)))
+        self._check(self._interruptible("run", n, pointer(U), pointer(X), pointer(Y)))
         times = t0 + self.step_size * np.arange(n + 1)
         return times, np.vstack([start, np.hstack([X, Y])])
 
@@ -670,11 +671,10 @@ class CStepper:
         grid = np.ascontiguousarray(times, dtype=float)
         nx, ny = len(self.export.states), len(self.export.outputs)
         X, Y = np.zeros((grid.size, nx)), np.zeros((grid.size, ny))
-        status = self._c["integrate"](
-            self._inst, ADAPTIVE_METHODS.index(method) + 1, int(bool(events)), float(rtol), float(atol), float(max_step),
-            int(max_steps), grid.size,
-            pointer(grid), pointer(X), pointer(Y),
-        )
+        status = self._interruptible(
+            "integrate", ADAPTIVE_METHODS.index(method) + 1, int(bool(events)), float(rtol), float(atol),
+            float(max_step), int(max_steps), grid.size, pointer(grid), pointer(X), pointer(Y),
+        )  # fmt: skip
         self._check(status, method)
         return X, Y
 
@@ -702,6 +702,22 @@ class CStepper:
                 f"{what} {shorten(name)!r}: not one of the stepper's {what}s ({', '.join(names) or 'none'})"
             )
         return list(names).index(name)
+
+    def _interruptible(self, function: str, *args: Any) -> int:
+        """The C ``function`` (``run``, ``integrate``) on this instance, stopped within a step by Ctrl-C
+        (:func:`~hydroservo.system.integration.interruptible`): raises
+        :class:`~hydroservo.system.integration.Interrupted` with the time reached."""
+        with interruptible() as stop:
+            self._c["set_stop"](self._inst, None if stop is None else ctypes.byref(stop))
+            try:
+                status = int(self._c[function](self._inst, *args))
+            except KeyboardInterrupt:  # Python's handler of the same SIGINT, run as the call returned
+                status = INTERRUPTED
+            finally:
+                self._c["set_stop"](self._inst, None)
+        if status == INTERRUPTED:
+            raise Interrupted(f"C stepper of {self.export.model!r}", float(self._c["time"](self._inst)))
+        return status
 
     def _check(self, status: int, method: str | None = None) -> None:
         self.status = status

@@ -5,14 +5,23 @@ here before any integrator is built, so a bad one is refused with its name and
 value instead of failing inside SUNDIALS. CVODES reports failures as return
 flags and prints its own lines; :func:`captured` keeps those lines off the
 user's terminal and :func:`translate` turns a flag into a sentence.
+
+A run is stopped by Ctrl-C (SIGINT) within a step: :func:`interruptible` arms
+the flag :data:`STOP` that the compiled solvers read before every step (CVODES
+is stopped by CasADi, which runs Python's signal handler from its callbacks),
+and the run raises :class:`Interrupted`, never a solver failure.
 """
 
 from __future__ import annotations
 
 import contextlib
+import ctypes
 import io
 import math
+import os
 import re
+import signal
+import socket
 import sys
 import threading
 from collections.abc import Iterable, Iterator, Mapping, Sequence
@@ -23,7 +32,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError, did_you_mean
 
-__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "METHODS", "DEFAULT_METHOD", "AUTO_METHOD", "AUTO_MAX_STATES", "check_method", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point"]
+__all__ = ["MAX_POINTS", "DEFAULT_ACCURACY", "DEFAULT_MAX_STEPS", "METHODS", "DEFAULT_METHOD", "AUTO_METHOD", "AUTO_MAX_STATES", "check_method", "default_max_steps", "tolerances", "SolverSettings", "output_grid", "batch_columns", "captured", "translate", "failure_point", "STOP", "Interrupted", "interruptible"]
 
 #: Largest output grid [points]: 100 001 points of 20 signals are 16 MB; a million would be gigabytes.
 MAX_POINTS = 100_001
@@ -305,3 +314,110 @@ def failure_point(printed: str) -> tuple[float | None, float | None]:
         return float(t), (float(h) if h else None)
     except ValueError:
         return None, None
+
+
+# -- interrupts ------------------------------------------------------------------------------------------------
+
+#: The stop flag of the compiled solvers (``NAME_set_stop`` in the exported C): nonzero while the runs under
+#: :func:`interruptible` are to stop. Set by the watcher thread when SIGINT arrives, or when the thread that armed
+#: the guard leaves it on a KeyboardInterrupt; cleared when a guard is armed.
+STOP = ctypes.c_int(0)
+
+
+class Interrupted(KeyboardInterrupt):
+    """A run stopped by an interrupt (Ctrl-C, SIGINT): a :class:`KeyboardInterrupt` that says where.
+
+    ``t`` is the time the run had reached [s] (None if not known), ``t_end`` the time it was to reach [s],
+    ``what`` the run (e.g. "'position-servo' (rodas3, compiled)").
+    """
+
+    def __init__(self, what: str = "the run", t: float | None = None, t_end: float | None = None) -> None:
+        self.what, self.t, self.t_end = what, t, t_end
+        super().__init__(str(self))
+
+    def __str__(self) -> str:
+        if self.t is None:
+            return f"{self.what} interrupted"
+        end = "" if self.t_end is None else f" of {self.t_end:.6g} s"
+        return f"{self.what} interrupted at t = {self.t:.6g} s{end}"
+
+
+_GUARD_LOCK = threading.Lock()
+_armed = 0  # guards entered on the main thread while the flag is armed
+_previous_fd = -1  # the wakeup fd the outermost armed guard replaced (restored when it ends)
+_pair: tuple[socket.socket, socket.socket] | None = None  # the watcher reads [0]; Python's handler writes [1]
+
+
+def _watch(reader: socket.socket) -> None:
+    """The watcher thread: Python's C-level signal handler writes each signal's number to the wakeup socket,
+    also while the main thread is inside C with the interpreter's lock released; SIGINT sets :data:`STOP`.
+    Bytes are passed on to the wakeup fd the guard replaced (an event loop's), so that it misses nothing."""
+    while True:
+        try:
+            data = reader.recv(512)
+        except OSError:
+            return
+        if not data:
+            return
+        if signal.SIGINT in data:
+            STOP.value = 1
+        forward = _previous_fd
+        if forward != -1:
+            with contextlib.suppress(OSError):
+                os.write(forward, data)
+
+
+def _arm() -> bool:
+    """Point Python's signal wakeup at the watcher (main thread, lock held); False if it cannot be."""
+    global _pair, _previous_fd
+    if _pair is None:
+        reader, writer = socket.socketpair()
+        writer.setblocking(False)
+        _pair = (reader, writer)
+        threading.Thread(target=_watch, args=(reader,), name="hydroservo-interrupts", daemon=True).start()
+    try:
+        _previous_fd = signal.set_wakeup_fd(_pair[1].fileno(), warn_on_full_buffer=False)
+    except (ValueError, OSError):
+        return False
+    return True
+
+
+@contextlib.contextmanager
+def interruptible() -> Iterator[ctypes.c_int | None]:
+    """Runs inside stop on Ctrl-C: yields :data:`STOP` for the compiled solvers to read, or None where an
+    interrupt cannot reach them.
+
+    On the main thread, with Python's own SIGINT handler in place (the one that raises KeyboardInterrupt), the
+    outermost guard clears the flag and points the signal wakeup (:func:`signal.set_wakeup_fd`) at a watcher
+    thread that sets the flag when SIGINT arrives, and puts the wakeup it replaced back when it ends; guards
+    inside it only count. On another thread (a batch's runs), it yields the flag while the main thread has one
+    armed (the batch's caller waits inside it), else None: runs on threads of the user's own are not stopped.
+    SIGINT ignored or handled by the user's own handler: None, nothing changed. A KeyboardInterrupt leaving the
+    guard sets the flag, so that runs on other threads under it stop too.
+    """
+    global _armed, _previous_fd
+    if threading.current_thread() is not threading.main_thread():
+        yield STOP if _armed else None
+        return
+    outermost = counted = False
+    with _GUARD_LOCK:
+        if _armed:
+            _armed += 1
+            counted = True
+        elif signal.getsignal(signal.SIGINT) is signal.default_int_handler and _arm():
+            STOP.value = 0
+            _armed, counted, outermost = 1, True, True
+    try:
+        yield STOP if counted else None
+    except KeyboardInterrupt:
+        if counted:
+            STOP.value = 1
+        raise
+    finally:
+        if counted:
+            with _GUARD_LOCK:
+                _armed -= 1
+                if outermost:
+                    with contextlib.suppress(ValueError, OSError):
+                        signal.set_wakeup_fd(_previous_fd)
+                    _previous_fd = -1

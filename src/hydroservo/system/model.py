@@ -34,11 +34,13 @@ from hydroservo.system.integration import (
     AUTO_MAX_STATES,
     AUTO_METHOD,
     DEFAULT_METHOD,
+    Interrupted,
     SolverSettings,
     batch_columns,
     captured,
     check_method,
     failure_point,
+    interruptible,
     output_grid,
     translate,
 )
@@ -72,13 +74,22 @@ def _progress_of(
     return report, bar
 
 
-def _interpreted_once(why: str) -> None:
-    """Say once a process that ``method="auto"`` runs CVODES in CasADi's interpreter, and why."""
+def _interrupted(stop: Any, message: str, printed: str) -> bool:
+    """Whether CVODES stopped because of Ctrl-C: CasADi runs Python's SIGINT handler in its callbacks, and the
+    callback that met the KeyboardInterrupt fails the integration (CV_RHSFUNC_FAIL, CV_LSETUP_FAIL, ...);
+    ``stop`` is the flag :func:`~hydroservo.system.integration.interruptible` armed for the run (or None)."""
+    return bool(stop is not None and stop.value) or "KeyboardInterrupt" in message or "KeyboardInterrupt" in printed
+
+
+def _interpreted_once(
+    why: str, remedy: str = "Install a C compiler (cc, gcc or clang) for the compiled solvers, or pass"
+) -> None:
+    """Say once a process that ``method="auto"`` runs CVODES in CasADi's interpreter, why, and the remedy."""
     if not _INTERPRETED_SAID.is_set():
         _INTERPRETED_SAID.set()
         warnings.warn(
             f"simulating with CVODES in CasADi's interpreter, 2 to 5 times slower than compiled ({why}). "
-            "Install a C compiler (cc, gcc or clang) for the compiled solvers, or pass method='cvodes' to choose it",
+            f"{remedy} method='cvodes' to choose it",
             InterpretedWarning,
             stacklevel=5,
         )
@@ -377,10 +388,13 @@ class Model:
         start = time.perf_counter()
         found: dict[str, Any] = {}  # the integrator's statistics
         try:
-            with captured() as printed:
+            with interruptible() as stop, captured() as printed:
                 args = {integ.index_in("x0"): x0 / self.nominal, integ.index_in("p"): p}
                 xf, _ = _buffered(integ, args, raises=True, stats=found)
         except RuntimeError as exc:
+            if _interrupted(stop, str(exc), printed.getvalue()):  # CasADi ran Python's SIGINT handler in a callback
+                t_stop, _ = failure_point(printed.getvalue())
+                raise Interrupted(f"simulation of {self.name!r} (cvodes)", t_stop, float(grid[-1])) from None
             raise self._diagnose(str(exc), printed.getvalue(), grid, x0, p, settings) from None
         wall = time.perf_counter() - start
         if not np.isfinite(xf).all():
@@ -407,10 +421,13 @@ class Model:
             return method
         if self.nx > AUTO_MAX_STATES:
             return "cvodes"
-        from hydroservo.system.native import native
+        from hydroservo.system.native import CacheFolderError, native
 
         try:
             native(self)
+        except CacheFolderError as exc:
+            _interpreted_once(str(exc), "Pass")
+            return "cvodes"
         except ParameterError as exc:
             _interpreted_once(str(exc))
             return "cvodes"
@@ -418,10 +435,12 @@ class Model:
 
     def _compiled_solvers(self, method: str) -> Any:
         """The compiled solvers of this model (:func:`hydroservo.system.native.native`), or why not."""
-        from hydroservo.system.native import native
+        from hydroservo.system.native import CacheFolderError, native
 
         try:
             return native(self)
+        except CacheFolderError:  # it says which folder, and what to do
+            raise
         except ParameterError as exc:
             raise ParameterError(
                 f"method = {method!r} runs the model compiled to C, which needs a C compiler: {exc}. "
@@ -434,10 +453,13 @@ class Model:
         """One run of a compiled variable-step method (:mod:`hydroservo.system.native`)."""
         solver = self._compiled_solvers(method)
         start = time.perf_counter()
-        X, stats, failure, t_reached, x_reached = solver.integrate(
-            p, x0, grid, method=method, rtol=settings.rtol, atol=settings.atol, max_steps=settings.max_steps,
-            events=events,
-        )
+        try:
+            X, stats, failure, t_reached, x_reached = solver.integrate(
+                p, x0, grid, method=method, rtol=settings.rtol, atol=settings.atol, max_steps=settings.max_steps,
+                events=events,
+            )
+        except Interrupted as exc:
+            raise Interrupted(f"simulation of {self.name!r} ({method}, compiled)", exc.t, exc.t_end) from None
         wall = time.perf_counter() - start
         if failure is not None:
             raise SolverError(
@@ -968,12 +990,15 @@ class Model:
             done = len(failures)
             report, bar = _progress_of(progress, n, self.name)
             try:
-                for c0 in range(0, len(todo), chunk):
-                    part = todo[c0 : c0 + chunk]
-                    solve(part)
-                    done += len(part)
-                    if report is not None:
-                        report(done, n)
+                with interruptible():  # Ctrl-C stops the runs on every thread (compiled) or CVODES' map
+                    for c0 in range(0, len(todo), chunk):
+                        part = todo[c0 : c0 + chunk]
+                        solve(part)
+                        done += len(part)
+                        if report is not None:
+                            report(done, n)
+            except KeyboardInterrupt:
+                raise Interrupted(f"batch of {self.name!r} ({method}; {done} of {n} runs done)") from None
             finally:
                 if bar is not None:
                     bar.close()
@@ -1102,8 +1127,10 @@ class Model:
         if key not in self._batch_maps:
             self._batch_maps[key] = integ.map(size, "thread", key[2])
         mapped = self._batch_maps[key]
-        with captured():
+        with interruptible() as stop, captured() as printed:
             xf, code = _buffered(mapped, {mapped.index_in("x0"): Z0[:, runs], mapped.index_in("p"): P[:, runs]})
+        if code != 0 and _interrupted(stop, "", printed.getvalue()):
+            raise KeyboardInterrupt  # not a failure of these runs: the batch says how far it got
         if code != 0:
             if size == 1:  # the reason, from the integrator's own error
                 try:
@@ -1148,8 +1175,12 @@ class Model:
             )  # fmt: skip
             return i, Xi, failure
 
-        with ThreadPoolExecutor(max_workers=max(1, min(nthreads, len(runs)))) as pool:
-            finished = list(pool.map(one, runs))
+        with interruptible():  # armed here on the main thread: the runs on the pool's threads read its flag
+            pool = ThreadPoolExecutor(max_workers=max(1, min(nthreads, len(runs))))
+            try:
+                finished = list(pool.map(one, runs))
+            finally:  # on Ctrl-C: the runs not started are dropped, the running ones stop within a step
+                pool.shutdown(wait=True, cancel_futures=True)
         good = []
         for i, Xi, failure in finished:
             if failure is not None:
@@ -1231,11 +1262,13 @@ class Model:
         start = np.concatenate([np.asarray(x0, dtype=float) / self.nominal, (np.asarray(dx0, dtype=float) / nominal).ravel(order="F")])
         scale_vec = np.asarray([s if c is not None else 0.0 for c, s in zip(columns, scale)], dtype=float)
         try:
-            with captured() as printed:
+            with interruptible() as stop, captured() as printed:
                 args = {integ.index_in("x0"): start, integ.index_in("p"): np.concatenate([p, scale_vec])}
                 out, _ = _buffered(integ, args, raises=True)
         except RuntimeError as exc:
             t_fail, _ = failure_point(printed.getvalue())
+            if _interrupted(stop, str(exc), printed.getvalue()):
+                raise Interrupted(f"sensitivities of {self.name!r} (cvodes)", t_fail, float(grid[-1])) from None
             where = f" at t = {t_fail:.6g} s" if t_fail is not None else ""
             raise SolverError(f"integration of {self.name!r} with its sensitivities failed{where}: {translate(str(exc))}") from None
         nt = out.shape[1]

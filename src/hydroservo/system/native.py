@@ -48,6 +48,7 @@ import numpy as np
 from hydroservo.data import c_template
 from hydroservo.errors import ParameterError
 from hydroservo.system.implicit import TOLERANCE as ALGEBRAIC_TOLERANCE
+from hydroservo.system.integration import Interrupted, interruptible
 from hydroservo.version import __version__
 
 if TYPE_CHECKING:
@@ -55,6 +56,7 @@ if TYPE_CHECKING:
 
 __all__ = [
     "ADAPTIVE_METHODS",
+    "CacheFolderError",
     "METHODS",
     "NEWTON_TOLERANCE",
     "Native",
@@ -506,6 +508,27 @@ def cache_folder() -> Path:
     return Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "hydroservo"
 
 
+class CacheFolderError(ParameterError):
+    """The cache folder (:func:`cache_folder`) cannot hold or give back compiled models: not a folder, a link to
+    nothing, not writable, or not a place libraries can be loaded from. ``method="auto"`` then runs CVODES (one
+    warning naming the folder); a compiled method asked for by name is refused with this message."""
+
+
+def _unusable(folder: Path, exc: OSError | None = None, why: str = "") -> CacheFolderError:
+    """Why ``folder`` cannot be the cache: what is there, else the system's reason."""
+    if folder.is_symlink() and not folder.exists():
+        why = f"a link to {os.readlink(folder)!r}, which does not exist"
+    elif folder.exists() and not folder.is_dir():
+        why = "not a folder"
+    elif not why and exc is not None:
+        why = f"compiled models cannot be written there ({(exc.strerror or str(exc)).lower()})"
+    origin = "HYDROSERVO_CACHE" if os.environ.get("HYDROSERVO_CACHE") else "the user's cache folder"
+    return CacheFolderError(
+        f"cache folder {str(folder)!r} ({origin}): {why}; expected a writable folder to keep compiled models in "
+        "(set HYDROSERVO_CACHE to one)"
+    )
+
+
 def _digest(path: Path) -> str:
     return hashlib.sha256(path.read_bytes()).hexdigest()
 
@@ -528,6 +551,8 @@ def compiled(sources: SourceSet, flags: Sequence[str] = CACHE_FLAGS) -> Path:
 
     Raises
     ------
+    CacheFolderError
+        If the cache folder cannot hold the library (not a folder, not writable).
     ParameterError
         If there is no C compiler, or it fails.
     """
@@ -537,16 +562,23 @@ def compiled(sources: SourceSet, flags: Sequence[str] = CACHE_FLAGS) -> Path:
         sort_keys=True,
     )
     key = hashlib.sha256(recipe.encode("utf-8")).hexdigest()
-    root = cache_folder() / "c"
+    folder = cache_folder()
+    root = folder / "c"
     entry = root / key[:40]
     library = _library_name(sources.name)
     if _intact(entry, library):
         return entry / library
-    root.mkdir(parents=True, exist_ok=True)
-    build = Path(tempfile.mkdtemp(prefix=".build-", dir=root))
     try:
-        for file, text in sources.files.items():
-            (build / file).write_text(text, encoding="utf-8")
+        root.mkdir(parents=True, exist_ok=True)
+        build = Path(tempfile.mkdtemp(prefix=".build-", dir=root))
+    except OSError as exc:
+        raise _unusable(folder, exc) from None
+    try:
+        try:
+            for file, text in sources.files.items():
+                (build / file).write_text(text, encoding="utf-8")
+        except OSError as exc:  # a full disk, a quota
+            raise _unusable(folder, exc) from None
         compile_library(build, [f for f in sources.files if f.endswith(".c")], library, flags)
         (build / _STAMP).write_text(_digest(build / library) + "\n", encoding="ascii")
         if entry.exists():  # damaged: out of the way first
@@ -559,7 +591,7 @@ def compiled(sources: SourceSet, flags: Sequence[str] = CACHE_FLAGS) -> Path:
         if build.exists():
             shutil.rmtree(build, ignore_errors=True)
     if not _intact(entry, library):
-        raise ParameterError(f"C compiler cache {entry}: the compiled model could not be stored (is the folder writable?)")
+        raise _unusable(folder, why=f"the compiled model could not be stored in {str(entry)!r}")
     return entry / library
 
 
@@ -614,7 +646,11 @@ SIGNATURES: dict[str, tuple[Any, list[Any]]] = {
     "time": (_DBL, [_INST]),
     "message": (ctypes.c_char_p, [_INST]),
     "statistics": (None, [_INST, _LL, _LL, _LL]),
+    "set_stop": (None, [_INST, ctypes.POINTER(ctypes.c_int)]),
 }
+
+#: The status of ``NAME_integrate`` when the stop flag (``NAME_set_stop``) was set: stopped by Ctrl-C.
+INTERRUPTED = 8
 
 
 def bind(path: Path, cid: str) -> dict[str, Any]:
@@ -647,7 +683,10 @@ class Native:
         self.name = "hs_" + hashlib.sha256(model.name.encode("utf-8")).hexdigest()[:12]
         self.sources = model_sources(model, self.name)
         self.path = compiled(self.sources)
-        self._c = bind(self.path, self.name)
+        try:
+            self._c = bind(self.path, self.name)
+        except OSError as exc:  # a folder mounted noexec, a library removed meanwhile
+            raise _unusable(cache_folder(), why=f"the compiled model cannot be loaded from there ({exc})") from None
         self.nx = model.nx
 
     def integrate(
@@ -675,15 +714,22 @@ class Native:
         instance = c["new"]()
         if not instance:
             raise MemoryError("out of memory for a compiled model instance")
+        times = np.ascontiguousarray(grid, dtype=float)
         try:
             c["set_parameters"](instance, pointer(np.ascontiguousarray(p, dtype=float)))
             c["set_states"](instance, pointer(np.ascontiguousarray(x0, dtype=float)))
-            times = np.ascontiguousarray(grid, dtype=float)
             X = np.full((times.size, self.nx), np.nan)
-            status = c["integrate"](
-                instance, ADAPTIVE_METHODS.index(method) + 1, int(bool(events)), float(rtol), float(atol),
-                float(max_step), int(max_steps), times.size, pointer(times), pointer(X), None,
-            )  # fmt: skip
+            with interruptible() as stop:  # Ctrl-C sets the flag the C code reads before every step
+                c["set_stop"](instance, None if stop is None else ctypes.byref(stop))
+                try:
+                    status = c["integrate"](
+                        instance, ADAPTIVE_METHODS.index(method) + 1, int(bool(events)), float(rtol), float(atol),
+                        float(max_step), int(max_steps), times.size, pointer(times), pointer(X), None,
+                    )  # fmt: skip
+                except KeyboardInterrupt:  # Python's handler of the same SIGINT, run as the call returned
+                    status = INTERRUPTED
+                if status == INTERRUPTED:
+                    raise Interrupted(f"{method} (compiled)", float(c["time"](instance)), float(times[-1]))
             counts = [ctypes.c_longlong() for _ in range(5)]
             c["integration_statistics"](instance, *(ctypes.byref(k) for k in counts))
             stats = dict(zip(("nsteps", "nrejected", "nfevals", "njevals", "nevents"), (k.value for k in counts)))

@@ -92,6 +92,7 @@ struct @NAME@_instance {
     casadi_real *res[@UPPER@_SZ_RES];
     casadi_int iw[@UPPER@_AT_LEAST_1(@UPPER@_SZ_IW)];
     casadi_real w[@UPPER@_AT_LEAST_1(@UPPER@_SZ_W)];
+    const volatile int *stop; /* @NAME@_set_stop: the host's flag, read before every step (NULL: none) */
     char message[512];
 };
 
@@ -576,6 +577,11 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
     for (int i = 0; i < @UPPER@_N_SWITCHES; ++i) m->side[i] = (signed char)@NAME@_side(m->g1[i], i);
 #endif
     while (out < n_times) {
+        if (m->stop != NULL && *m->stop) {
+            snprintf(m->message, sizeof m->message, "t = %.9g s: interrupted (the host's stop flag was set)", t);
+            status = @UPPER@_INTERRUPTED;
+            break;
+        }
         if (taken >= max_steps) {
             snprintf(m->message, sizeof m->message,
                      "t = %.9g s: the step budget of %ld steps was used up (last step %.3g s); the dynamics are too "
@@ -719,6 +725,11 @@ int @NAME@_run(@NAME@_instance *m, long n, const double *inputs, double *states,
         if (inputs != NULL) {
             for (int j = 0; j < @UPPER@_N_INPUTS; ++j) @NAME@_set_input(m, j, inputs[k * @UPPER@_N_INPUTS + j]);
         }
+        if (m->stop != NULL && *m->stop) {
+            snprintf(m->message, sizeof m->message, "t = %.9g s: interrupted (the host's stop flag was set)",
+                     @NAME@_now(m, m->steps));
+            return @UPPER@_INTERRUPTED;
+        }
         int status = @NAME@_step(m);
         if (status) return status;
         if (states != NULL) {
@@ -747,6 +758,10 @@ size_t @NAME@_instance_size(void) {
 
 @NAME@_instance *@NAME@_new(void) {
     return @NAME@_init(malloc(sizeof(@NAME@_instance)));
+}
+
+void @NAME@_set_stop(@NAME@_instance *m, const volatile int *flag) {
+    m->stop = flag;
 }
 
 void @NAME@_free(@NAME@_instance *m) {

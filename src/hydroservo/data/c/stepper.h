@@ -42,6 +42,7 @@ extern "C" {
 #define @UPPER@_TOO_MUCH_WORK 5 /* integrate: the step budget was used up */
 #define @UPPER@_STEP_TOO_SMALL 6 /* integrate: the step fell below what floating point resolves */
 #define @UPPER@_BAD_ARGUMENT 7  /* integrate: a method, tolerance or output time not accepted */
+#define @UPPER@_INTERRUPTED 8   /* run, integrate: the host's stop flag was set (@NAME@_set_stop) */
 
 /* The adaptive methods of @NAME@_integrate. */
 #define @UPPER@_DOPRI5 1 /* explicit Runge-Kutta pair of Dormand and Prince, order 5(4) */
@@ -119,6 +120,11 @@ void @NAME@_outputs(@NAME@_instance *m, double t, const double *x, double *y);
 int @NAME@_check(@NAME@_instance *m, double t, const double *x);
 /* The nominal magnitude of a state, in its unit (a host integrator's scale for it); NaN for an index out of range. */
 double @NAME@_state_nominal(int index);
+
+/* A flag of the host's that @NAME@_run and @NAME@_integrate read before every step: while it is nonzero they
+ * return @UPPER@_INTERRUPTED, the instance at its last step (set from a signal handler or another thread, e.g.
+ * on Ctrl-C, to stop a long run within a step). NULL (the default) reads none. The flag must outlive the calls. */
+void @NAME@_set_stop(@NAME@_instance *m, const volatile int *flag);
 
 /* Time since the last reset [s]: where the last @NAME@_integrate ended (0 without one), plus the number of
  * steps since times @UPPER@_STEP. */
