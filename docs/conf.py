@@ -87,6 +87,9 @@ sphinx_gallery_conf = {
     "abort_on_example_error": True,
     "matplotlib_animations": False,
     "within_subsection_order": "FileNameSortKey",
+    # no pages of the examples' run times: sphinx-gallery styles their tables with scripts from CDNs (jQuery,
+    # DataTables), and the site reads offline (above); the times are the build machine's, not the reader's
+    "write_computation_times": False,
 }
 
 # -- the pages -----------------------------------------------------------------------------------------------------

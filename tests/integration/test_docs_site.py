@@ -1,5 +1,6 @@
 """The documentation site reads offline: its equations are typeset by a MathJax served from the built site, never
-from a CDN (docs/conf.py: the extension sphinx-mathjax-offline, in the ``[docs]`` extra).
+from a CDN (docs/conf.py: the extension sphinx-mathjax-offline, in the ``[docs]`` extra), and no page loads a
+script from elsewhere (sphinx-gallery's pages of run times, which do, are not written).
 
 Sphinx's own default loads MathJax from a CDN, so that a copy of the site read without a network shows every
 equation as raw LaTeX. The first tests read docs/conf.py and pyproject.toml (no Sphinx needed: they run with the
@@ -50,6 +51,8 @@ def test_conf_serves_mathjax_from_the_built_site() -> None:
         if "mathjax" in name.lower():
             assert not re.search(r"https?://|//cdn", str(value)), f"{name} = {value!r}"
     assert not re.search(r"https?://[^\s\"']*mathjax", CONF.read_text(encoding="utf-8"), flags=re.I)
+    # sphinx-gallery's pages of run times load jQuery and DataTables from CDNs: not written
+    assert re.search(r"[\"']write_computation_times[\"']\s*:\s*False", str(conf["sphinx_gallery_conf"]))
 
 
 def test_the_docs_extra_installs_the_mathjax_it_serves() -> None:
