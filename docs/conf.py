@@ -6,6 +6,11 @@ errors). Sphinx, not MkDocs, because the package's docstrings cross-reference wi
 MkDocs' mkdocstrings would print raw; the user guide stays Markdown (MyST), the examples are executed at build
 time by sphinx-gallery with their figures, and the component reference is generated from the components'
 declarations (``docs/tools/generated.py``) with its equations rendered by MathJax.
+
+MathJax is served from the built site, never from a CDN, so that the site reads offline (a copy on a laptop, a
+download of CI's build): the extension ``sphinx-mathjax-offline`` (PyPI, in the ``[docs]`` extra) carries MathJax
+3.2.2, copies it to ``_static/mathjax/`` at the end of the build and points ``mathjax_path`` there
+(``tests/integration/test_docs_site.py`` keeps it so).
 """
 
 from __future__ import annotations
@@ -35,6 +40,7 @@ extensions = [
     "sphinx.ext.autosummary",
     "sphinx.ext.napoleon",
     "sphinx.ext.mathjax",
+    "sphinx-mathjax-offline",  # MathJax from the package, not a CDN (above)
     "sphinx.ext.viewcode",
     "sphinx_gallery.gen_gallery",
 ]
@@ -81,6 +87,9 @@ sphinx_gallery_conf = {
     "abort_on_example_error": True,
     "matplotlib_animations": False,
     "within_subsection_order": "FileNameSortKey",
+    # no pages of the examples' run times: sphinx-gallery styles their tables with scripts from CDNs (jQuery,
+    # DataTables), and the site reads offline (above); the times are the build machine's, not the reader's
+    "write_computation_times": False,
 }
 
 # -- the pages -----------------------------------------------------------------------------------------------------

@@ -1,4 +1,5 @@
-"""``hydroservo examples DIR``: write the example files the README's commands use (:mod:`hydroservo.workflows.examples`)."""
+"""``hydroservo examples DIR``: write the example files the README's commands use, and a Hopsan model file to try
+``import-hopsan`` on (:mod:`hydroservo.workflows.examples`)."""
 
 from __future__ import annotations
 
@@ -20,7 +21,9 @@ def cmd_examples(args: argparse.Namespace) -> int:
 
 def add_parsers(sub: Any) -> None:
     """Add ``examples``."""
-    p = sub.add_parser("examples", help="write the example model, datasheet and curve files the README uses")
+    p = sub.add_parser(
+        "examples", help="write the example model, datasheet and curve files the README uses, and a Hopsan model to import"
+    )
     p.add_argument("dir", metavar="DIR", help="folder to write them to (created if missing)")
     p.add_argument("--force", action="store_true", help="replace files of the same names")
     p.set_defaults(func=cmd_examples)

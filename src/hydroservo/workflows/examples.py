@@ -1,7 +1,9 @@
-"""The example files the README's commands use (``hydroservo examples DIR``).
+"""The example files the README's commands use (``hydroservo examples DIR``), and a Hopsan model to import.
 
 >>> from hydroservo.workflows import examples
 >>> "pump_circuit.toml" in examples.run().texts
+True
+>>> "hopsan_servo.hmf" in examples.run().texts
 True
 """
 
@@ -18,7 +20,8 @@ __all__ = ["Examples", "ExamplesReport", "run"]
 
 @dataclass
 class ExamplesReport(Report):
-    """The example files: model files, a datasheet, synthetic curves and Bode data."""
+    """The example files: model files, a datasheet, synthetic curves and Bode data, and a Hopsan model file
+    (``hopsan_servo.hmf``, written for hydroservo in Hopsan's format) for ``hydroservo import-hopsan``."""
 
     command: ClassVar[str] = "examples"
 
@@ -35,7 +38,11 @@ class ExamplesReport(Report):
 
     def lines(self) -> list[str]:
         folder = str(Path(next(iter(self.files.values()))).parent) if self.files else ""
-        return [f"wrote {len(self.texts)} example files to {folder}: {', '.join(self.texts)}"]
+        out = [f"wrote {len(self.texts)} example files to {folder}: {', '.join(self.texts)}"]
+        for name in (n for n in self.texts if n.endswith(".hmf")):
+            out.append(f"{name} is a Hopsan model: hydroservo import-hopsan {name} --out DIR writes it as a hydroservo "
+                       "model file (docs/hopsan.md)")
+        return out
 
     def to_dict(self) -> dict[str, Any]:
         return {"files": self.files}
