@@ -25,7 +25,6 @@
 from __future__ import annotations
 
 import csv
-import io
 import math
 import os
 import re
@@ -150,8 +149,8 @@ def read_bytes(
         chunks: list[bytes] = []
         total, want = 0, cap + 1
         try:
-            while total < want:
-                chunk = os.read(fd, min(_CHUNK, want - total))
+            while total < want:  # first the whole file in one read (one buffer, not copied again), then the rest
+                chunk = os.read(fd, min(max(_CHUNK, opened.st_size + 1), want - total) if not chunks else min(_CHUNK, want - total))
                 if not chunk:
                     break
                 chunks.append(chunk)
@@ -192,26 +191,37 @@ def iter_csv_rows(text: str, what: str = "CSV file") -> Iterator[tuple[int, list
 
     def lines() -> Iterator[str]:
         nonlocal number
-        for line in io.StringIO(text, newline=None):
+        for line in _lines(text):
             number += 1
-            if line.strip() and not line.lstrip().startswith("#"):
+            first = line.lstrip()[:1]
+            if first and first != "#":
                 yield line
 
-    reader = csv.reader(lines())
-    while True:
-        try:
-            row = next(reader)
-        except StopIteration:
-            return
-        except csv.Error as exc:
-            if "field larger than field limit" in str(exc):
-                raise ParameterError(
-                    f"{what}: line {number}: a cell of more than {MAX_CELL} characters; expected numbers, names and "
-                    "units in cells of at most that length"
-                ) from None
-            raise ParameterError(f"{what}: line {number}: not CSV ({exc}); expected comma-separated cells") from None
-        if any(cell.strip() for cell in row):
-            yield number, row
+    try:
+        for row in csv.reader(lines()):
+            if "".join(row).strip():
+                yield number, row
+    except csv.Error as exc:
+        if "field larger than field limit" in str(exc):
+            raise ParameterError(
+                f"{what}: line {number}: a cell of more than {MAX_CELL} characters; expected numbers, names and "
+                "units in cells of at most that length"
+            ) from None
+        raise ParameterError(f"{what}: line {number}: not CSV ({exc}); expected comma-separated cells") from None
+
+
+def _lines(text: str, chunk: int = 1 << 20) -> Iterator[str]:
+    """The lines of ``text`` as ``str.splitlines`` gives them, a chunk of about ``chunk`` characters (cut after a
+    newline) at a time: a large text is never copied whole into a list of lines (nor into a StringIO, which holds
+    4 bytes a character)."""
+    start, end_of_text = 0, len(text)
+    while start < end_of_text:
+        end = min(start + chunk, end_of_text)
+        if end < end_of_text:
+            cut = text.find("\n", end - 1)
+            end = end_of_text if cut < 0 else cut + 1
+        yield from text[start:end].splitlines()
+        start = end
 
 
 def csv_rows(text: str, what: str = "CSV file") -> list[list[str]]:

@@ -70,7 +70,8 @@ def _read_file(path: Path) -> dict[str, Channel]:
         if name in seen:
             raise ParameterError(f"{where}: column {name!r} appears twice")
         seen.add(name)
-    values = _body(rows, header, where, text.count("\n") + text.count("\r") + 1)
+    lines = text.count("\n") + 1 if "\n" in text else text.count("\r") + 1
+    values = _body(rows, header, where, min(lines, len(text) // len(header) + 1))
     del text
     if len(values) < 2:
         raise ParameterError(f"{where}: {len(values)} sample(s); a record needs at least two")
@@ -87,13 +88,13 @@ def _body(rows: Iterator[tuple[int, list[str]]], header: list[tuple[str, str]], 
     never held as strings. A cell that is not a plain decimal number (:func:`~hydroservo.units.plain_number`: no
     ``2_0.0``) or is infinite is refused, naming the row and the column."""
     width = len(header)
-    values = np.empty((max(2, min(most, 1 << 16, (1 << 22) // width)), width))  # grown as rows come
+    values = np.empty((max(2, most), width))  # no more rows than lines, nor than cells of ``width`` characters
     n = 0
     for _, row in rows:
         if len(row) != width:
             raise ParameterError(f"{where}: data row {n + 1} has {len(row)} cells; the header has {width}")
-        if n == len(values):
-            values = np.concatenate([values, np.empty((min(n, most - n) if most > n else n, width))])
+        if n == len(values):  # lines broken at other characters than newlines (str.splitlines)
+            values = np.concatenate([values, np.empty((n, width))])
         joined = ",".join(row)
         try:
             if "_" in joined or not joined.isascii():
