@@ -115,7 +115,7 @@ class HopsanModel:
 
 # -- parameter expressions ---------------------------------------------------------------------------------------
 
-_TOKEN = re.compile(r"\s*(?:(?P<number>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)|(?P<name>[A-Za-z_][\w.]*)|(?P<op>[-+*/^()]))")
+_TOKEN = re.compile(r"\s*(?:(?P<number>(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)|(?P<name>[A-Za-z_][\w.]*)|(?P<op>[-+*/^()]))")
 
 
 def evaluate(text: str, names: dict[str, float], *, what: str = "value") -> float:

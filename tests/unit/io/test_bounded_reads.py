@@ -200,3 +200,11 @@ def test_identify_friction_on_a_record_over_the_limit_warns_what_it_used(tmp_pat
     assert "1941 samples at 200 Hz, more than the 1500 used: every 2nd kept (971 samples, 100 Hz)" in report.warnings[0]
     with pytest.raises(ParameterError, match=r"max_samples 1: expected a whole number, 2 or more"):
         IdentifyFriction("robot-arm", [files], max_samples=1)
+
+
+@pytest.mark.parametrize("text", ["\u0662", "2_0", "\uff12"])
+def test_a_hopsan_parameter_value_is_a_plain_number(text: str) -> None:
+    from hydroservo.io.hopsan import evaluate
+
+    with pytest.raises(ValueError, match="x: "):
+        evaluate(text, {}, what="x")
