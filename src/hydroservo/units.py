@@ -54,6 +54,7 @@ __all__ = [
     "format_quantity",
     "parse_quantity",
     "is_bare_number",
+    "plain_number",
     "TEMPERATURE_UNITS",
     "split_quantity",
     "check_unit",
@@ -240,8 +241,8 @@ def dimension(unit: str) -> Dimension | None:
 MAX_TEXT = 200
 #: The largest exponent a unit may carry (``m^3``, ``Pa^0.5``).
 MAX_EXPONENT = 12
-_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
-_TOKEN = re.compile(r"\s+|\*\*|\^|\*|/|\(|\)|[-+]|(?:\d+\.?\d*|\.\d+)|[^\W\d][\w°µΩ]*|[%°µΩ]")
+_NUMBER = re.compile(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+_TOKEN = re.compile(r"\s+|\*\*|\^|\*|/|\(|\)|[-+]|(?:[0-9]+\.?[0-9]*|\.[0-9]+)|[^\W\d][\w°µΩ]*|[%°µΩ]")
 
 
 def _unit_tokens(unit: str) -> list[str]:
@@ -310,18 +311,33 @@ def same_dimension(a: str, b: str) -> bool:
     return bool(_unit(a).dimensionality == _unit(b).dimensionality)
 
 
+def plain_number(text: str) -> float | None:
+    """The number a text holds as a plain decimal (``"0.5"``, ``" -1.5e-3 "``, ``"inf"``, ``"nan"``), else None.
+
+    Python's ``float`` also takes digit groups (``"2_0.0"`` is 20) and digits of other scripts (``"٢٠"``); a
+    value in a file or an option is a plain decimal, so neither is a number here.
+
+    >>> plain_number("2.5e3"), plain_number("2_0.0"), plain_number("20 kg"), plain_number(" -inf ")
+    (2500.0, None, None, -inf)
+    """
+    stripped = text.strip()
+    try:
+        value = float(stripped)
+    except ValueError:
+        return None
+    if "_" in stripped or not stripped.isascii():
+        return None
+    return value
+
+
 def is_bare_number(value: Any) -> bool:
-    """True for a number, or a string holding only a number (``"0.5"``)."""
+    """True for a number, or a string holding only a plain decimal number (``"0.5"``; :func:`plain_number`)."""
     if isinstance(value, bool):
         return False
     if isinstance(value, (int, float)):
         return True
     if isinstance(value, str):
-        try:
-            float(value)
-        except ValueError:
-            return False
-        return True
+        return plain_number(value) is not None
     return False
 
 
@@ -335,6 +351,11 @@ def split_quantity(text: str, *, what: str = "value") -> tuple[float, str]:
         raise UnitError(
             f"{what}: cannot read {shorten(text)!r} as a quantity; expected a number followed by a unit, "
             "e.g. '1500 psi' or '25.5 L/min'"
+        )
+    if stripped[match.end() : match.end() + 1] == "_":
+        raise UnitError(
+            f"{what}: {shorten(text)!r}: digits grouped with '_' are not read; expected a plain number, "
+            "e.g. '20.0 kg' or '1500 psi'"
         )
     magnitude = float(match.group())
     if not math.isfinite(magnitude):
@@ -413,8 +434,8 @@ def to_si(value: Any, unit: str, *, what: str = "value") -> float:
                 f"{what}: {value!r}: a temperature needs its unit, e.g. '{value} degC' or '{value} K' (bare numbers "
                 "are SI, and kelvin is rarely what is meant)"
             )
-        out = float(value)
-        if math.isnan(out):
+        out = float(value) if not isinstance(value, str) else plain_number(value)
+        if out is None or math.isnan(out):
             raise UnitError(f"{what}: {value!r} is not a number")
         return out
     if isinstance(value, str):  # two shipped units of one dimension: no registry (module notes)

@@ -18,7 +18,11 @@ import numpy as np
 from hydroservo.errors import ParameterError, UnitError, did_you_mean
 from hydroservo.units import check_unit, coherent_unit, same_dimension, si_definition, si_unit
 
-__all__ = ["Channel", "Record", "derivatives"]
+__all__ = ["Channel", "Record", "derivatives", "MAX_SAMPLES", "thinned"]
+
+#: The most samples per channel that calibration and the identification procedures use: a channel with more is
+#: thinned to every k-th sample (:func:`thinned`), so that a fit's cost is bounded whatever the record's length.
+MAX_SAMPLES = 20_000
 
 
 @dataclass(frozen=True)
@@ -146,6 +150,49 @@ class Record:
         for n, c in self.channels.items():
             groups.setdefault(c.t.tobytes(), []).append(n)
         return {round(self.channels[names[0]].rate, 6): names for names in groups.values()}
+
+
+def thinned(record: Record, most: int = MAX_SAMPLES) -> tuple[Record, list[str]]:
+    """``record`` with every channel of more than ``most`` samples thinned to every k-th sample (the fewest k that
+    leaves at most ``most``), and what was done, one line per group of channels sampled together.
+
+    Each sample kept is as it was logged (no averaging), so a signal's noise is unchanged; a fit on the samples
+    kept has the standard errors of those samples, larger than the whole record would give (by about the square
+    root of k). A record within the limit is returned as it is, with no lines.
+
+    >>> import numpy as np
+    >>> t = np.linspace(0, 1, 50_001)
+    >>> rec, said = thinned(Record("long", {"load.x": Channel("load.x", t, t, "mm", "long.csv")}))
+    >>> rec["load.x"].t.size
+    16667
+    >>> print(said[0])
+    record 'long', long.csv: 50001 samples at 5e+04 Hz, more than the 20000 used: every 3rd kept (16667 samples, 1.667e+04 Hz); standard errors are those of the samples kept
+    """
+    if isinstance(most, bool) or not isinstance(most, int) or most < 2:
+        raise ParameterError(f"max_samples = {most!r}: expected a whole number, 2 or more")
+    if all(c.t.size <= most for c in record.channels.values()):
+        return record, []
+    channels: dict[str, Channel] = {}
+    said: dict[tuple[str, int], str] = {}
+    for name, ch in record.channels.items():
+        n = ch.t.size
+        if n <= most:
+            channels[name] = ch
+            continue
+        k = -(-n // most)
+        kept = Channel(name, ch.t[::k], ch.values[::k], ch.unit, ch.source)
+        channels[name] = kept
+        said.setdefault((ch.source, n), (
+            f"record {record.name!r}{', ' + ch.source if ch.source else ''}: {n} samples at {ch.rate:.4g} Hz, more "
+            f"than the {most} used: every {_ordinal(k)} kept ({kept.t.size} samples, {kept.rate:.4g} Hz); standard "
+            "errors are those of the samples kept"
+        ))
+    return Record(record.name, channels), list(said.values())
+
+
+def _ordinal(k: int) -> str:
+    suffix = "th" if 10 <= k % 100 <= 20 else {1: "st", 2: "nd", 3: "rd"}.get(k % 10, "th")
+    return f"{k}{suffix}"
 
 
 def derivatives(t: np.ndarray, x: np.ndarray, window: float, order: int = 2) -> tuple[np.ndarray, np.ndarray]:

@@ -17,8 +17,8 @@ from pathlib import Path
 import numpy as np
 
 from hydroservo.analysis.frequency import FrequencyResponse
-from hydroservo.errors import ParameterError
-from hydroservo.io.files import csv_rows, read_text
+from hydroservo.errors import ParameterError, shorten
+from hydroservo.io.files import csv_rows, plain_float, read_text
 
 __all__ = ["read_bode", "write_bode"]
 
@@ -38,8 +38,8 @@ def read_bode(path: str | Path) -> FrequencyResponse:
     """
 
     path = Path(path)
-    text = read_text(path, "Bode file")
-    reader = iter(csv_rows(text))
+    text = read_text(path, "Bode file", kind="table")
+    reader = iter(csv_rows(text, f"Bode file {str(path)!r}"))
     try:
         header = next(reader)
     except StopIteration:
@@ -72,9 +72,9 @@ def read_bode(path: str | Path) -> FrequencyResponse:
                 vals.append(math.nan)  # gain-only data
                 continue
             try:
-                value = float(cell)
+                value = plain_float(cell)
             except ValueError:
-                raise ParameterError(f"{where}, row {lineno}, {key}: {cell!r} is not a number") from None
+                raise ParameterError(f"{where}, row {lineno}, {key}: {shorten(cell)!r} is not a number") from None
             if not math.isfinite(value):
                 raise ParameterError(f"{where}, row {lineno}, {key} = {cell!r}: expected a finite number")
             vals.append(value)

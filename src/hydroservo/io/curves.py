@@ -27,8 +27,8 @@ from pathlib import Path
 import numpy as np
 
 from hydroservo.analysis.static_bench import Bench, BenchCurves
-from hydroservo.errors import ParameterError
-from hydroservo.io.files import csv_rows, read_text
+from hydroservo.errors import ParameterError, shorten
+from hydroservo.io.files import csv_rows, plain_float, read_text
 from hydroservo.units import from_si, to_si
 
 __all__ = [
@@ -51,13 +51,13 @@ def read_csv_table(
     """
     path = Path(path)
     where = f"{what} {str(path)!r}"
-    lines = [line for line in read_text(path, what).splitlines() if line.strip()]
+    lines = [line for line in read_text(path, what, kind="table").splitlines() if line.strip()]
     meta: dict[str, str] = {}
     for line in lines:
         if line.startswith("#") and "=" in line:
             key, _, value = line[1:].partition("=")
             meta[key.strip()] = value.split("#")[0].strip()
-    rows = csv_rows("\n".join(lines))
+    rows = csv_rows("\n".join(lines), where)
     if len(rows) < 2:
         raise ParameterError(f"{where}: expected a header and data rows")
     cols: dict[str, tuple[int, str]] = {}
@@ -76,9 +76,9 @@ def read_csv_table(
         for lineno, row in enumerate(rows[1:], start=2):
             cell = row[i].strip() if i < len(row) else ""
             try:
-                number = float(cell) if cell else np.nan
+                number = plain_float(cell) if cell else np.nan
             except ValueError:
-                raise ParameterError(f"{where}, row {lineno}, column {name}: {cell!r} is not a number") from None
+                raise ParameterError(f"{where}, row {lineno}, column {name}: {shorten(cell)!r} is not a number") from None
             if cell and not np.isfinite(number):
                 raise ParameterError(
                     f"{where}, row {lineno}, column {name}: {cell!r}; expected a finite number "

@@ -10,7 +10,10 @@ An ``.hmf`` comes from someone else, so it is read defensively:
 
 * XML through defusedxml, which refuses entity declarations (no billion laughs) and external entities or DTDs
   (nothing fetched, no file read), on top of expat;
-* at most :data:`MAX_BYTES` of file, :data:`MAX_DEPTH` levels of subsystems, :data:`MAX_COMPONENTS` components;
+* only a regular file, of at most the cap of model files (:data:`hydroservo.io.files.CAPS`, 20 MB unless
+  ``HYDROSERVO_MAX_MODEL_MB`` says otherwise), read by :func:`hydroservo.io.files.read_bytes`; an encoding its
+  XML declaration names that cannot be read is refused; at most :data:`MAX_DEPTH` levels of subsystems,
+  :data:`MAX_COMPONENTS` components;
 * parameter values evaluated by a bounded grammar (:func:`evaluate`: numbers, names of system parameters, ``+``,
   ``-``, ``*``, ``/``, ``^``, parentheses; at most 200 characters and 20 levels deep), never by ``eval``;
 * every refusal a :class:`~hydroservo.errors.ModelFileError` naming the file, the component's path and the
@@ -26,6 +29,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from hydroservo.errors import ModelFileError, shorten
+from hydroservo.io.files import plain_float, read_bytes
 
 if TYPE_CHECKING:
     from xml.etree.ElementTree import Element
@@ -36,13 +40,10 @@ __all__ = [
     "HopsanParameter",
     "read_hmf",
     "evaluate",
-    "MAX_BYTES",
     "MAX_DEPTH",
     "MAX_COMPONENTS",
 ]
 
-#: The largest model file read [bytes]: Hopsan's largest example is about 1 MB.
-MAX_BYTES = 20_000_000
 #: The deepest nesting of subsystems read.
 MAX_DEPTH = 32
 #: The most components read (all subsystems together).
@@ -114,7 +115,7 @@ class HopsanModel:
 
 # -- parameter expressions ---------------------------------------------------------------------------------------
 
-_TOKEN = re.compile(r"\s*(?:(?P<number>(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)|(?P<name>[A-Za-z_][\w.]*)|(?P<op>[-+*/^()]))")
+_TOKEN = re.compile(r"\s*(?:(?P<number>(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?)|(?P<name>[A-Za-z_][\w.]*)|(?P<op>[-+*/^()]))")
 
 
 def evaluate(text: str, names: dict[str, float], *, what: str = "value") -> float:
@@ -231,20 +232,15 @@ def evaluate(text: str, names: dict[str, float], *, what: str = "value") -> floa
 # -- the file ------------------------------------------------------------------------------------------------------
 
 
+_DECLARED_ENCODING = re.compile(rb"""^\s*<\?xml[^>]*?\bencoding\s*=\s*["']([^"']{0,60})["']""")
+
+
 def _parse(path: Path) -> Element:
     """The root element of ``path``, parsed by defusedxml (no entities, no DTD, nothing fetched)."""
     from defusedxml import DefusedXmlException
     from defusedxml.ElementTree import ParseError, fromstring
 
-    try:
-        size = path.stat().st_size
-    except OSError as exc:
-        raise ModelFileError(f"Hopsan model {str(path)!r}: cannot read ({exc.strerror})") from None
-    if path.is_dir():
-        raise ModelFileError(f"Hopsan model {str(path)!r}: is a folder; expected an .hmf file")
-    if size > MAX_BYTES:
-        raise ModelFileError(f"Hopsan model {str(path)!r}: {size} bytes; expected at most {MAX_BYTES}")
-    data = path.read_bytes()
+    data = read_bytes(path, "Hopsan model", ModelFileError, kind="model")
     try:
         root = fromstring(data, forbid_dtd=True, forbid_entities=True, forbid_external=True)
     except DefusedXmlException as exc:
@@ -254,6 +250,13 @@ def _parse(path: Path) -> Element:
         ) from None
     except ParseError as exc:
         raise ModelFileError(f"Hopsan model {str(path)!r}: not well-formed XML ({exc}); expected an .hmf file") from None
+    except (LookupError, ValueError, UnicodeError) as exc:  # expat asks Python's codecs for an encoding it lacks
+        declared = _DECLARED_ENCODING.match(data)
+        named = f"the encoding {declared.group(1).decode('ascii', 'replace')!r}" if declared else "its encoding"
+        raise ModelFileError(
+            f"Hopsan model {str(path)!r}: its XML declaration names {named}, which cannot be read ({shorten(str(exc), 120)}); "
+            "expected UTF-8, as Hopsan writes (or ISO-8859-1, US-ASCII, UTF-16)"
+        ) from None
     if root.tag != "hopsanmodelfile":
         raise ModelFileError(f"Hopsan model {str(path)!r}: root element <{shorten(root.tag)}>; expected <hopsanmodelfile>")
     return root
@@ -263,7 +266,7 @@ def _float(text: str | None, where: str, what: str, default: float) -> float:
     if text is None or not text.strip():
         return default
     try:
-        value = float(text)
+        value = plain_float(text)
     except ValueError:
         raise ModelFileError(f"{where}: {what} = {shorten(text)!r}; expected a number") from None
     if not math.isfinite(value):

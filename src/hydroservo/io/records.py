@@ -11,23 +11,27 @@ Table 5.1)::
 
 Column names are the model's signal names (states, outputs, aliases); a
 results file written by hydroservo is a record too. Lines starting with ``#``
-are comments; empty cells and ``nan`` are missing samples. Values keep the
-unit of their header: the record is converted where it meets a model.
+are comments; empty cells and ``nan`` are missing samples. A cell is a plain
+decimal number: ``inf`` and ``2_0.0`` (which Python's ``float`` reads as 20)
+are refused with the file, the row and the column. Values keep the unit of
+their header: the record is converted where it meets a model. A file is read
+up to the cap of records (:data:`hydroservo.io.files.CAPS`).
 """
 
 from __future__ import annotations
 
 import io
-from collections.abc import Sequence
+import math
+from collections.abc import Iterator, Sequence
 from pathlib import Path
 
 import numpy as np
 
-from hydroservo.errors import ParameterError, UnitError
+from hydroservo.errors import ParameterError, UnitError, shorten
 from hydroservo.identification.records import Channel, Record
-from hydroservo.io.files import OutputFolder, csv_rows, read_text
+from hydroservo.io.files import OutputFolder, iter_csv_rows, read_text
 from hydroservo.io.results import csv_comments, csv_header_row, parseable_unit
-from hydroservo.units import check_unit, same_dimension, si_definition
+from hydroservo.units import check_unit, plain_number, same_dimension, si_definition
 
 __all__ = ["read_record", "write_record", "record_files"]
 
@@ -49,14 +53,16 @@ def _header(cell: str, where: str, k: int) -> tuple[str, str]:
 
 def _read_file(path: Path) -> dict[str, Channel]:
     where = f"record {str(path)!r}"
-    text = read_text(path, "record")
-    rows = csv_rows(text)
-    if not rows:
+    text = read_text(path, "record", kind="record")
+    rows = iter_csv_rows(text, where)
+    first = next(rows, None)
+    if first is None:
         raise ParameterError(f"{where}: no header; expected a first line such as 't [s],load.x [mm]'")
-    header = [_header(c, where, k) for k, c in enumerate(rows[0])]
+    head = first[1]
+    header = [_header(c, where, k) for k, c in enumerate(head)]
     (tname, tunit), signals = header[0], header[1:]
     if tname not in _TIME_NAMES or not same_dimension(tunit, "s"):
-        raise ParameterError(f"{where}: first column {rows[0][0].strip()!r}: expected the time, e.g. 't [s]'")
+        raise ParameterError(f"{where}: first column {head[0].strip()!r}: expected the time, e.g. 't [s]'")
     if not signals:
         raise ParameterError(f"{where}: only a time column; expected signal columns 'name [unit]' after it")
     seen: set[str] = set()
@@ -64,29 +70,63 @@ def _read_file(path: Path) -> dict[str, Channel]:
         if name in seen:
             raise ParameterError(f"{where}: column {name!r} appears twice")
         seen.add(name)
-    body = rows[1:]
-    if len(body) < 2:
-        raise ParameterError(f"{where}: {len(body)} sample(s); a record needs at least two")
-    values = np.full((len(body), len(header)), np.nan)
-    for i, row in enumerate(body):
-        if len(row) != len(header):
-            raise ParameterError(f"{where}: data row {i + 1} has {len(row)} cells; the header has {len(header)}")
-        for j, cell in enumerate(row):
-            cell = cell.strip()
-            if not cell:
-                continue
-            try:
-                values[i, j] = float(cell)
-            except ValueError:
-                raise ParameterError(
-                    f"{where}: data row {i + 1}, column {header[j][0]!r}: {cell!r} is not a number"
-                ) from None
+    lines = text.count("\n") + 1 if "\n" in text else text.count("\r") + 1
+    values = _body(rows, header, where, min(lines, len(text) // len(header) + 1))
+    del text
+    if len(values) < 2:
+        raise ParameterError(f"{where}: {len(values)} sample(s); a record needs at least two")
     factor, offset, _ = si_definition(tunit)
     t = values[:, 0] * factor + offset
     if not np.all(np.isfinite(t)):
         k = int(np.argmax(~np.isfinite(t)))
         raise ParameterError(f"{where}: data row {k + 1} has no time; every row needs one")
     return {name: Channel(name, t, values[:, j + 1], unit, str(path)) for j, (name, unit) in enumerate(signals)}
+
+
+def _body(rows: Iterator[tuple[int, list[str]]], header: list[tuple[str, str]], where: str, most: int) -> np.ndarray:
+    """The data rows as an array (one row per line; NaN: a missing sample), filled row by row: a large record is
+    never held as strings. A cell that is not a plain decimal number (:func:`~hydroservo.units.plain_number`: no
+    ``2_0.0``) or is infinite is refused, naming the row and the column."""
+    width = len(header)
+    values = np.empty((max(2, most), width))  # no more rows than lines, nor than cells of ``width`` characters
+    n = 0
+    for _, row in rows:
+        if len(row) != width:
+            raise ParameterError(f"{where}: data row {n + 1} has {len(row)} cells; the header has {width}")
+        if n == len(values):  # lines broken at other characters than newlines (str.splitlines)
+            values = np.concatenate([values, np.empty((n, width))])
+        joined = ",".join(row)
+        try:
+            if "_" in joined or not joined.isascii():
+                raise ValueError
+            values[n] = row  # NumPy reads the strings as float() does
+        except ValueError:
+            values[n] = [_cell(cell, where, n, header[j][0]) for j, cell in enumerate(row)]
+        n += 1
+    values = values[:n]
+    infinite = np.isinf(values)
+    if infinite.any():
+        i, j = (int(k) for k in np.argwhere(infinite)[0])
+        raise ParameterError(
+            f"{where}: data row {i + 1}, column {header[j][0]!r}: {values[i, j]:g} is infinite; expected a finite "
+            "number (an empty cell or nan for a missing sample)"
+        )
+    return values
+
+
+def _cell(cell: str, where: str, i: int, column: str) -> float:
+    """One cell: a plain decimal number, or empty / nan (a missing sample)."""
+    text = cell.strip()
+    if not text:
+        return math.nan
+    value = plain_number(text)
+    if value is None:
+        hint = "; digits grouped with '_' are not read" if "_" in text else ""
+        raise ParameterError(
+            f"{where}: data row {i + 1}, column {column!r}: {shorten(text)!r} is not a number{hint}; expected a plain "
+            "decimal number, or an empty cell or nan for a missing sample"
+        )
+    return value
 
 
 def read_record(paths: str | Path | Sequence[str | Path], name: str | None = None) -> Record:

@@ -190,12 +190,12 @@ def read_csv(path: str | Path, model: str | None = None) -> Any:
     import numpy as np
 
     from hydroservo.errors import HydroservoError, ParameterError
-    from hydroservo.io.files import csv_rows, read_text
+    from hydroservo.io.files import csv_rows, plain_float, read_text
     from hydroservo.system.result import Result as RunResult
 
     path = Path(path)
-    text = read_text(path, "result file")
-    rows = csv_rows(text)
+    text = read_text(path, "result file", kind="record")
+    rows = csv_rows(text, f"result file {str(path)!r}")
     if len(rows) < 3:
         raise ParameterError(f"result file {str(path)!r}: {max(len(rows) - 1, 0)} row(s); expected a header and at "
                              "least two times")
@@ -210,7 +210,7 @@ def read_csv(path: str | Path, model: str | None = None) -> Any:
     if names[0] not in ("t", "time") or units[0] != "s":
         raise ParameterError(f"result file {str(path)!r}: first column {header[0]!r}: expected the time, 't [s]'")
     try:
-        values = np.array([[float(c) if c.strip() else np.nan for c in r] for r in rows[1:] if r], dtype=float)
+        values = np.array([[plain_float(c) if c.strip() else np.nan for c in r] for r in rows[1:] if r], dtype=float)
     except ValueError as exc:
         raise ParameterError(f"result file {str(path)!r}: {exc}; expected numbers") from None
     if values.ndim != 2 or values.shape[1] != len(names):

@@ -20,7 +20,8 @@ import re
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from hydroservo.errors import ParameterError
+from hydroservo.errors import HydroservoError, ParameterError
+from hydroservo.io.files import read_text
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -45,8 +46,8 @@ class RunStore:
         text = json.dumps(fingerprint, sort_keys=True, default=str)
         if manifest.exists():
             try:
-                old = json.dumps(json.loads(manifest.read_text(encoding="utf-8")), sort_keys=True, default=str)
-            except (OSError, ValueError):
+                old = json.dumps(json.loads(read_text(manifest, "runs manifest")), sort_keys=True, default=str)
+            except (HydroservoError, ValueError):
                 old = ""
             if old != text:
                 if not force:

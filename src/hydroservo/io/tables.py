@@ -8,15 +8,12 @@ from pathlib import Path
 import numpy as np
 
 from hydroservo.errors import ParameterError, shorten
-from hydroservo.io.files import csv_rows, read_text
+from hydroservo.io.files import csv_rows, plain_float, read_text
 
 __all__ = [
     "read_time_table", "read_lookup_table", "parse_lookup_table", "read_plo_table", "parse_plo_table",
-    "read_lookup_table_2d", "parse_lookup_table_2d", "read_lookup_table_3d", "parse_lookup_table_3d", "MAX_TABLE_BYTES",
+    "read_lookup_table_2d", "parse_lookup_table_2d", "read_lookup_table_3d", "parse_lookup_table_3d",
 ]
-
-#: The largest lookup-table file read [bytes].
-MAX_TABLE_BYTES = 20_000_000
 
 
 def read_time_table(path: str | Path, column: str | int = 1, what: str = "table") -> tuple[np.ndarray, np.ndarray]:
@@ -26,13 +23,13 @@ def read_time_table(path: str | Path, column: str | int = 1, what: str = "table"
     names the reader in error messages (e.g. the component that asked).
     """
     path = Path(path)
-    text = read_text(path, f"{what}.file")
-    rows = csv_rows(text)
+    text = read_text(path, f"{what}.file", kind="table")
+    rows = csv_rows(text, f"{what}.file {str(path)!r}")
     if not rows:
         raise ParameterError(f"{what}.file: {str(path)!r} is empty")
     header = rows[0]
     try:
-        float(header[0])
+        plain_float(header[0])
         data, names = rows, None
     except ValueError:
         data, names = rows[1:], [h.strip() for h in header]
@@ -43,7 +40,7 @@ def read_time_table(path: str | Path, column: str | int = 1, what: str = "table"
     else:
         col = int(column)
     try:
-        arr = np.array([[float(r[0]), float(r[col])] for r in data])
+        arr = np.array([[plain_float(r[0]), plain_float(r[col])] for r in data])
     except (ValueError, IndexError):
         raise ParameterError(
             f"{what}.file: {str(path)!r} needs numbers in column 0 (time, s) and column {col}"
@@ -61,21 +58,15 @@ def read_lookup_table(
     what: str = "table",
 ) -> tuple[np.ndarray, np.ndarray]:
     """Breakpoints and values from the CSV file ``path``, read as Hopsan reads a lookup table
-    (:func:`parse_lookup_table`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    (:func:`parse_lookup_table`); at most the cap of tables (:data:`hydroservo.io.files.CAPS`), UTF-8 text."""
     path = Path(path)
     text = _table_text(path, what)
     return parse_lookup_table(text, index_column, value_column, separator, skip, comment, f"{what}: {str(path)!r}")
 
 
 def _table_text(path: Path, what: str) -> str:
-    """The text of a table file: at most :data:`MAX_TABLE_BYTES`, UTF-8."""
-    try:
-        size = path.stat().st_size
-    except OSError as exc:
-        raise ParameterError(f"{what}: table file {str(path)!r}: cannot read ({exc.strerror})") from None
-    if size > MAX_TABLE_BYTES:
-        raise ParameterError(f"{what}: table file {str(path)!r}: {size} bytes, more than the {MAX_TABLE_BYTES} read")
-    return read_text(path, f"{what}: table file")
+    """The text of a table file: UTF-8, at most the cap of tables (:data:`hydroservo.io.files.CAPS`)."""
+    return read_text(path, f"{what}: table file", kind="table")
 
 
 def parse_lookup_table(
@@ -134,7 +125,7 @@ def _sorted_table(index: list[float], values: list[float], what: str) -> tuple[n
 
 def read_plo_table(path: str | Path, invar: str = "Time", outvar: str = "Data", what: str = "table") -> tuple[np.ndarray, np.ndarray]:
     """Breakpoints and values from the PLO file ``path`` (:func:`parse_plo_table`); at most
-    :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    the cap of tables (:data:`hydroservo.io.files.CAPS`), UTF-8 text."""
     path = Path(path)
     return parse_plo_table(_table_text(path, what), invar, outvar, f"{what}: {str(path)!r}")
 
@@ -176,7 +167,7 @@ def parse_plo_table(text: str, invar: str = "Time", outvar: str = "Data", what: 
         if len(rest) < start + count:
             raise ParameterError(f"{what}: {max(len(rest) - start, 0)} {kind} where the header announces {count}")
         try:
-            out = [float(t) for t in rest[start:start + count]]
+            out = [plain_float(t) for t in rest[start:start + count]]
         except ValueError:
             raise ParameterError(f"{what}: {kind}: a field that is no number") from None
         if not all(np.isfinite(out)):
@@ -223,7 +214,7 @@ def _numeric_rows(
                 )
             field = fields[col].strip().replace(",", ".", 1)
             try:
-                value = float(field)
+                value = plain_float(field)
             except ValueError:
                 value = float("nan")
             if not np.isfinite(value):
@@ -235,7 +226,7 @@ def _numeric_rows(
 
 def read_lookup_table_2d(path: str | Path, comment: str = "", what: str = "table") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Row and column breakpoints and values from the CSV file ``path``, read as Hopsan reads a two-dimensional
-    lookup table (:func:`parse_lookup_table_2d`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    lookup table (:func:`parse_lookup_table_2d`); at most the cap of tables (:data:`hydroservo.io.files.CAPS`), UTF-8 text."""
     path = Path(path)
     return parse_lookup_table_2d(_table_text(path, what), comment, f"{what}: {str(path)!r}")
 
@@ -294,7 +285,7 @@ def read_lookup_table_3d(
     path: str | Path, comment: str = "", what: str = "table"
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Row, column and plane breakpoints and values from the CSV file ``path``, read as Hopsan reads a
-    three-dimensional lookup table (:func:`parse_lookup_table_3d`); at most :data:`MAX_TABLE_BYTES`, UTF-8 text."""
+    three-dimensional lookup table (:func:`parse_lookup_table_3d`); at most the cap of tables (:data:`hydroservo.io.files.CAPS`), UTF-8 text."""
     path = Path(path)
     return parse_lookup_table_3d(_table_text(path, what), comment, f"{what}: {str(path)!r}")
 

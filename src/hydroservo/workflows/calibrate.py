@@ -67,6 +67,24 @@ def _records(items: Sequence[RecordFiles] | None, what: str) -> list[Record]:
     return records
 
 
+def _thinned(records: list[Record], most: int | None, what: str) -> tuple[list[Record], list[str]]:
+    """``records`` with each channel of more than ``most`` samples (default
+    :data:`~hydroservo.identification.records.MAX_SAMPLES`) thinned, and the lines that say so: the cost of a fit
+    is bounded by the samples it uses, not by the record's length."""
+    from hydroservo.identification.records import MAX_SAMPLES, thinned
+
+    limit = MAX_SAMPLES if most is None else most
+    if isinstance(limit, bool) or not isinstance(limit, int) or limit < 2:
+        raise ParameterError(f"{what} {limit!r}: expected a whole number, 2 or more")
+    out: list[Record] = []
+    said: list[str] = []
+    for record in records:
+        kept, lines = thinned(record, limit)
+        out.append(kept)
+        said += lines
+    return out, said
+
+
 # -- calibrate ---------------------------------------------------------------------------
 @dataclass
 class CalibrationReport(Report):
@@ -223,6 +241,10 @@ class Calibrate(Workflow):
         Starting points (the model's values, and the rest drawn over the bounds).
     plan : bool
         Do not fit: report what the records (as planned experiments) would determine at the model's values.
+    max_samples : int, optional
+        The most samples per channel used (default
+        :data:`~hydroservo.identification.records.MAX_SAMPLES`, 20 000): a longer channel is thinned to every k-th
+        sample, and a warning says so (rows in, rows used, how).
     """
 
     OPTIONS: ClassVar[dict[str, str]] = {"sets": "--set", "records": "--record", "inputs": "--input", "validate": "--validate"}
@@ -240,6 +262,7 @@ class Calibrate(Workflow):
     gradient: str = "exact"
     accuracy: float | None = None
     max_evaluations: int = 200
+    max_samples: int | None = None
 
     def __post_init__(self) -> None:
         from hydroservo.identification.calibration import CALIBRATION_ACCURACY
@@ -248,8 +271,9 @@ class Calibrate(Workflow):
             raise ParameterError(f"{self.name('max_evaluations')} {self.max_evaluations!r}: expected a whole number from 1 to 100000")
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
         self.inputs = signal_list(self.inputs)
-        self._records = _records(self.records, self.name("records"))
-        self._validate = _records(self.validate, "")
+        self._records, said = _thinned(_records(self.records, self.name("records")), self.max_samples, self.name("max_samples"))
+        self._validate, also = _thinned(_records(self.validate, ""), self.max_samples, self.name("max_samples"))
+        self._notes = said + also
         self._noise = parse_noise(self.noise, self.name("noise"))
         if not self.fit:
             raise ParameterError(f"{self.name('fit')}: no parameter to fit; expected e.g. {self.name('fit')} valve.c_v")
@@ -277,7 +301,7 @@ class Calibrate(Workflow):
         if self.plan:
             plan = plan_experiment(self.system, self._records, self.fit, self._noise, inputs=self.inputs,
                                    initial=self.initial, accuracy=self._accuracy)
-            return PlanReport(name, plan, warnings=list(plan.warnings))
+            return PlanReport(name, plan, warnings=[*self._notes, *plan.warnings])
         result = calibrate(self.system, self._records, self.fit, inputs=self.inputs, noise=self._noise,
                            initial=self.initial, starts=self.starts, accuracy=self._accuracy, gradient=self.gradient,
                            max_evaluations=self.max_evaluations, progress=progress)
@@ -286,7 +310,7 @@ class Calibrate(Workflow):
             if progress:
                 progress(f"predicting {len(self._validate)} record(s) not fitted")
             prediction = predict(result.system, self._validate, inputs=self.inputs, accuracy=self._accuracy)
-        return CalibrationReport(name, result, prediction, warnings=list(result.warnings))
+        return CalibrationReport(name, result, prediction, warnings=[*self._notes, *result.warnings])
 
 
 def run(model: str | Path | System, records: Sequence[RecordFiles], fit: Sequence[str] | Mapping[str, Any], **options: Any) -> CalibrationReport | PlanReport:

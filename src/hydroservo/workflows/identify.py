@@ -17,7 +17,7 @@ import numpy as np
 
 from hydroservo.errors import ParameterError
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, load_with_sets, safe_name
-from hydroservo.workflows.calibrate import RecordFiles, _records, signal_list
+from hydroservo.workflows.calibrate import RecordFiles, _records, _thinned, signal_list
 
 if TYPE_CHECKING:
     from hydroservo.identification.flow_coefficient import FlowCoefficientTables
@@ -52,10 +52,13 @@ class _Procedure(Workflow):
     cylinder: str = "cyl"
     load: str = "load"
     sets: Sequence[str] | Mapping[str, Any] | None = None
+    #: The most samples per channel used (default :data:`~hydroservo.identification.records.MAX_SAMPLES`): a longer
+    #: channel is thinned to every k-th sample, and the report's warnings say so.
+    max_samples: int | None = None
 
     def __post_init__(self) -> None:
         self.system = load_with_sets(self.model, self.sets, self.name("sets"))
-        self._records = _records(self.records, "RECORD")
+        self._records, self._notes = _thinned(_records(self.records, "RECORD"), self.max_samples, self.name("max_samples"))
         for what in ("cylinder", "load"):
             name = getattr(self, what)
             if name not in self.system.components:
@@ -175,7 +178,7 @@ class IdentifyFriction(_Procedure):
                 *fit.warnings,
             ]
         return FrictionReport(self.system.name, self.load, type(comp).__name__, points, fit,
-                              [r.name for r in self._records], warnings=notes)
+                              [r.name for r in self._records], warnings=[*self._notes, *notes])
 
 
 # -- leakage -------------------------------------------------------------------------------
@@ -251,7 +254,7 @@ class IdentifyLeakage(_Procedure):
         rec = self._records[0]
         est = leakage_from_record(self.system, rec, inputs=self.inputs, cylinder=self.cylinder, load=self.load, window=self.window)
         comp = self.system[self.cylinder]
-        return LeakageReport(self.system.name, self.cylinder, type(comp).__name__, est, [rec.name], warnings=list(est.warnings))
+        return LeakageReport(self.system.name, self.cylinder, type(comp).__name__, est, [rec.name], warnings=[*self._notes, *est.warnings])
 
 
 # -- flow coefficient ------------------------------------------------------------------------
@@ -327,7 +330,7 @@ class IdentifyFlowCoefficient(_Procedure):
         result = flow_coefficient_tables(self.system, self._records, inputs=self.inputs, valve=self.valve,
                                          cylinder=self.cylinder, load=self.load, bin_width=self.bin_width)
         return FlowCoefficientReport(self.system.name, result, type(self.system[self.valve]).__name__,
-                                     [r.name for r in self._records], warnings=list(result.warnings))
+                                     [r.name for r in self._records], warnings=[*self._notes, *result.warnings])
 
 
 def friction(model: str | Path | System, records: Sequence[RecordFiles], **options: Any) -> FrictionReport:
