@@ -1743,3 +1743,12 @@ def test_quantity_with_digit_groups(value: str, place: str, ws: Workspace, run) 
 def test_api_quantity_with_digit_groups(vc_system: hs.System) -> None:
     api_refused(lambda: vc_system.set("load.m", "2_0.0"), r"2_0\.0", r"digits grouped")
     api_refused(lambda: vc_system.simulate(t_end=0.02, params={"load.m": "2_0.0 kg"}), r"2_0\.0 kg", r"digits grouped")
+
+
+@pytest.mark.parametrize(("argv", "option"), [
+    (["ladder", "robot-arm", "--steps", "2_0"], "--steps"),
+    (["simulate", "flight-simulator", "--accuracy", "1_0%"], "--accuracy"),
+])
+def test_option_numbers_with_digit_groups(argv: list[str], option: str, ws: Workspace, run) -> None:
+    # the options' number lists read with float() took '2_0' as 20
+    refused(run, ws, [*argv, "--out", ws.out], [re.escape(option), r"'(2_0|1_0%)'"])

@@ -35,6 +35,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
 
 from hydroservo.errors import BareNumberWarning, HydroservoError, ParameterError, did_you_mean, shorten
+from hydroservo.units import plain_number
 
 if TYPE_CHECKING:
     from hydroservo.io.files import OutputFolder
@@ -201,6 +202,14 @@ def footer() -> str:
     return f"made by hydroservo {__version__} on {datetime.date.today().isoformat()}"
 
 
+def _plain(text: str) -> float:
+    """A plain decimal (:func:`hydroservo.units.plain_number`), else ValueError: ``2_5`` is not 25."""
+    value = plain_number(text)
+    if value is None:
+        raise ValueError(text)
+    return value
+
+
 def numbers(
     text: str,
     what: str,
@@ -216,7 +225,7 @@ def numbers(
     import math
 
     try:
-        vals = [float(v) for v in text.split(",") if v.strip()]
+        vals = [_plain(v) for v in text.split(",") if v.strip()]
     except ValueError:
         raise ParameterError(f"{what} {text!r}: expected comma-separated numbers, e.g. 5,25,50") from None
     if not vals:

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ParameterError, shorten
+from hydroservo.units import plain_number
 from hydroservo.workflows.base import (
     Artifact,
     Progress,
@@ -48,10 +49,8 @@ RunsProgress = Callable[[int, int, int, float], None]
 def _quantity(text: Any) -> Any:
     if not isinstance(text, str):
         return text
-    try:
-        return float(text)
-    except ValueError:
-        return text
+    value = plain_number(text)  # "2_0.0" is not 20: left as text, refused where it is read as a quantity
+    return text if value is None else value
 
 
 @dataclass(frozen=True)
