@@ -20,7 +20,8 @@ the published ratio being the median of the rounds' ratios. In-process times are
 (steadier than wall time on a shared machine; both tools run one thread), in process (Hopsan: ``hopsan_bench``, built by
 ``../shared/tools/hopsan/build_hopsan.sh``: its ``simulate`` call, the model loaded and initialised outside
 it; hydroservo: ``System.simulate`` on the model built, the compiled solvers from the cache) and per process
-(``hopsancli`` and ``hydroservo simulate --json``, and the standalone simulator of ``export-c --main``).
+(``hopsancli`` and ``hydroservo simulate --json``, and the standalone simulator of ``export-c --main``: the
+CPU time of each whole process, its children included).
 
 Without Hopsan (no ``--hopsan`` and no ``HOPSAN_ROOT``) its figures are quoted from docs/engine.md (measured
 on this machine type, 2 cores, with the same programs).
@@ -144,14 +145,29 @@ def per_step(repeat: int) -> float:
     return median_time(run, repeat) / steps
 
 
+def process_cpu(argv: list[str], env: dict[str, str] | None = None) -> float:
+    """The CPU time [s] of one whole process (user + system, its children included)."""
+    proc = subprocess.Popen(argv, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(proc.pid, 0)
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise RuntimeError(f"{' '.join(argv)} failed")
+    return usage.ru_utime + usage.ru_stime
+
+
+def median_process(fn, repeat: int) -> float:
+    """The median over ``repeat`` calls of ``fn()``, which returns a time."""
+    return statistics.median(fn() for _ in range(repeat))
+
+
 def per_process(repeat: int, hopsan: Path | None) -> dict[str, float]:
     found = {}
     with tempfile.TemporaryDirectory() as folder:
         export = export_c(hs.load_model("position-servo"), Path(folder) / "c", step=1e-4, main=True, build=True)
         for accuracy in ("1e-2", "1e-3"):
-            found[f"standalone simulator, accuracy {accuracy}"] = median_time(
-                lambda a=accuracy: subprocess.run([str(export.executable), "--method", "dopri5", "--accuracy", a,
-                                                   "--points", "601"], capture_output=True, check=True),  # fmt: skip
+            found[f"standalone simulator, accuracy {accuracy}"] = median_process(
+                lambda a=accuracy: process_cpu(
+                    [str(export.executable), "--method", "dopri5", "--accuracy", a, "--points", "601"]
+                ),
                 repeat,
             )
         # as installed by pip: the modules' bytecode compiled (into a folder of this run's, by a first run, which
@@ -161,18 +177,17 @@ def per_process(repeat: int, hopsan: Path | None) -> dict[str, float]:
         command = [sys.executable, "-m", "hydroservo", "simulate", "position-servo", "--json"]
         for args in ([], ["--method", "dopri5", "--accuracy", "1e-2"]):
             subprocess.run([*command, *args], capture_output=True, check=True, env=env)
-        found["hydroservo simulate --json (its defaults: rodas3 compiled, accuracy 1e-4)"] = median_time(
-            lambda: subprocess.run(command, capture_output=True, check=True, env=env), repeat
+        found["hydroservo simulate --json (its defaults: rodas3 compiled, accuracy 1e-4)"] = median_process(
+            lambda: process_cpu(command, env), repeat
         )
-        found["hydroservo simulate --json --method dopri5 --accuracy 1e-2"] = median_time(
-            lambda: subprocess.run([*command, "--method", "dopri5", "--accuracy", "1e-2"], capture_output=True,
-                                   check=True, env=env), repeat  # fmt: skip
+        found["hydroservo simulate --json --method dopri5 --accuracy 1e-2"] = median_process(
+            lambda: process_cpu([*command, "--method", "dopri5", "--accuracy", "1e-2"], env), repeat
         )
     if hopsan is not None:
         cli = hopsan / "install" / "bin" / "hopsancli"
         model = hopsan / "PositionServo.hmf"
-        found["hopsancli (Ts 1e-4, its default)"] = median_time(
-            lambda: subprocess.run([str(cli), "-m", str(model), "-s", "hmf"], capture_output=True, check=True), repeat
+        found["hopsancli (Ts 1e-4, its default)"] = median_process(
+            lambda: process_cpu([str(cli), "-m", str(model), "-s", "hmf"]), repeat
         )
     return found
 
@@ -318,7 +333,7 @@ def main() -> None:
         print(f"{label:<36}{ta:>26}{tb:>30}{ratio:>9}")
     steps = found["per_step"]
     print(f"\nper step: compiled rk4 {steps['hydroservo rk4'] * 1e6:.3f} us; Hopsan {steps['hopsan'] * 1e6:.3f} us")
-    print("\nper process (wall, median):")
+    print("\nper process (CPU time, median):")
     for label, seconds in found["per_process"].items():
         print(f"  {label:<60}{seconds:>8.3f} s")
     print("\nthe cheapest settings again, the two tools in turn (CPU time, medians; ratio round by round):")

@@ -65,6 +65,8 @@ def machine() -> dict:
         "python": sys.version.split()[0],
         "packages": versions,
         "commit": commit,
+        # other processes' load moves wall time most, CPU time too (shared caches): say how busy the machine was
+        "load_average_1min": os.getloadavg()[0] if hasattr(os, "getloadavg") else None,
     }
 
 

@@ -99,8 +99,8 @@ def rows() -> list[tuple[str, str, str]]:
         fig[f"batch_speedup_{m}"] = v
     record("compiled", fig, script=SCRIPT)
     out.append((
-        "batch of 64 flight-simulator runs, compiled rodas3, 2 threads",
-        f"{mark('compiled.batch_speedup_rodas3', fig['batch_speedup_rodas3'], '.2f')}x faster", "1 thread",
+        "batch of 64 flight-simulator runs, compiled rodas3: speed on 2 threads",
+        f"{mark('compiled.batch_speedup_rodas3', fig['batch_speedup_rodas3'], '.2f')}x", "1 thread",
     ))  # fmt: skip
     acc = bench_accuracy.main(repeat=3, methods=("rodas3",))
     fig = {}
@@ -270,7 +270,7 @@ def hopsan(found: dict) -> str:
         lines.append(f"| {label} | {ta} | {tb} | {ratio} |")
     lines.append(f"| one step (hydroservo: exported rk4) | {m('step_hopsan_us', '.3f')} µs | {m('step_rk4_us', '.3f')} µs | – |")
     lines.append(
-        "| whole process, wall time (Hopsan: `hopsancli` at its default; hydroservo: `export-c --main` simulator at "
+        "| whole process, CPU time (Hopsan: `hopsancli` at its default; hydroservo: `export-c --main` simulator at "
         f"accuracy 1e-3) | {m('process_hopsancli_s', '.3f')} s | {m('process_standalone_s', '.3f')} s | "
         f"{m('process_ratio', '.2f')}x |"
     )

@@ -29,7 +29,7 @@ MARKER = re.compile(
 #: "0.67 s wall", "22 ms against 0.51 s"); after the marked figures are taken out
 SPEED = re.compile(
     r"\d(?:x|×)(?![\w-])"
-    r"|times (?:faster|slower)"
+    r"|times faster"
     r"|\d\s*(?:µs|us|ms|s)\s+(?:wall|CPU)\b"
     r"|\btak(?:es|ing|e)\s+(?:about\s+|some\s+)?\d[\d.]*(?:[–-]\d[\d.]*)?\s*(?:µs|ms|s)\b"
     r"|\d\s*(?:µs|ms|s)\s+against\s+\d"
