@@ -197,7 +197,8 @@ def realtime(hopsan_us_per_step: float | None = None) -> str:
     head = (
         f"Real time, `python benchmarks/bench_realtime.py`'s measurements ({version}, -O2): the C code of "
         "`hydroservo export-c` compiled and run in this process (`hydroservo.codegen.c.CStepper`, the whole run in "
-        "one call into C, nothing recorded; medians over repeats), beside CVODES called from Python once per step "
+        "one call into C, nothing recorded; CPU time, medians over repeats), beside CVODES called from Python once per "
+        "step "
         "as a real-time loop in Python would. Deviation: the largest |C − CVODES| over the run on the main signals "
         f"({'; '.join(signals)}), relative to each signal's range, against CVODES at rtol 1e-10.\n\n"
     )
@@ -211,7 +212,8 @@ REALTIME_DOC = ""
 def realtime_doc(figures: list[dict], version: str) -> str:
     """docs/realtime.md's tables: every run of bench_realtime.CASES, and the baselines per step."""
     lines = [
-        f"Measured by `python benchmarks/suite.py --readme` ({version}, -O2; medians over repeats). Deviation: the "
+        f"Measured by `python benchmarks/suite.py --readme` ({version}, -O2; CPU time, medians over repeats). "
+        "Deviation: the "
         "largest |C - CVODES| over the run on the main signals, relative to each signal's range, against CVODES at "
         "rtol 1e-10 on a 1 ms grid.",
         "",
