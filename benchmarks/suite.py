@@ -13,6 +13,7 @@ a marker naming its key (benchmarks/results.py; tests/integration/test_claims.py
 
 from __future__ import annotations
 
+import os
 import platform
 import re
 import sys
@@ -129,7 +130,9 @@ def rows() -> list[tuple[str, str, str]]:
 
 
 def table(found: list[tuple[str, str, str]]) -> str:
-    head = f"Measured by `python benchmarks/suite.py --readme` ({platform.machine()}, {sys.version.split()[0]}):\n\n"
+    load = f"; load average {os.getloadavg()[0]:.0f} on {os.cpu_count()} cores" if hasattr(os, "getloadavg") else ""
+    head = (f"Measured by `python benchmarks/suite.py --readme` ({platform.machine()}, {sys.version.split()[0]}{load}: "
+            "other processes' load inflates wall times most, CPU times less, ratios least):\n\n")  # fmt: skip
     lines = ["| what | hydroservo | against |", "|---|---|---|"]
     lines += [f"| {a} | {b} | {c} |" for a, b, c in found]
     return head + "\n".join(lines) + "\n"
@@ -308,8 +311,6 @@ PARTS = ("rows", "realtime", "hopsan")
 
 
 def main(write: bool, parts: tuple[str, ...] = PARTS) -> None:
-    import os
-
     if "rows" in parts:
         text = table(rows())
         print(text)
