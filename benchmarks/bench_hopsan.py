@@ -308,6 +308,10 @@ def figures(found: dict) -> dict[str, float | None]:
     if found["hopsan"]:
         out["default_hopsan_ms"] = found["hopsan"][0][1] * 1e3
         out["default_ratio"] = found["hopsan"][0][1] / default
+    if not found["measured_hopsan"]:  # Hopsan's side quoted, not measured: no figure of it, nor a ratio, is written
+        for key in out:
+            if key != "measured_hopsan" and ("hopsan" in key or "ratio" in key):
+                out[key] = None
     return out
 
 
