@@ -2,8 +2,9 @@
 alternative's result beside each, measured on :class:`hydroservo.components.TwoStageServovalve` with Table 1.
 
 Run: ``python benchmarks/bench_servovalve_figures.py`` (about 5 minutes, most of it the ±100 % frequency
-response); ``--choices`` measures only the two choices (about half a minute). Prints every figure and writes
-them to benchmarks/results/servovalve.json (``--choices``: servovalve_choices.json only).
+response); ``--choices`` measures only the two choices (about half a minute); ``--fits`` the catalogue fits
+of ``hydroservo servovalve fit-catalogue`` only. Prints every figure and writes them to benchmarks/results/servovalve.json (``--choices``: servovalve_choices.json
+only; ``--fits``: servovalve_fits.json).
 
 The choices ([GordicND]; docs/servovalve.md, "Reading the paper"):
 
@@ -16,8 +17,11 @@ The choices ([GordicND]; docs/servovalve.md, "Reading the paper"):
 
 from __future__ import annotations
 
+import json
 import math
+import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -85,7 +89,33 @@ def bench_table() -> dict[str, float]:
     return out
 
 
+def fits() -> dict[str, float]:
+    """docs/servovalve.md's catalogue fits: ``hydroservo servovalve fit-catalogue --json`` (first, second and third
+    order from current to spool, fitted to the +-5 % response up to 150 Hz), its parameters and largest errors."""
+    with tempfile.TemporaryDirectory() as folder:
+        done = subprocess.run([sys.executable, "-m", "hydroservo", "servovalve", "fit-catalogue", "--json", "--out",
+                               str(Path(folder) / "fits")], capture_output=True, text=True, check=True)  # fmt: skip
+    out: dict[str, float] = {}
+    for fit in json.loads(done.stdout)["fits"]:
+        tag = f"order{fit['order']}"
+        for name, value in fit["params"].items():
+            out[f"{tag}_{name}"] = value
+        if "tau" in fit["params"]:
+            out[f"{tag}_tau_ms"] = fit["params"]["tau"] * 1e3
+        if "omega_n" in fit["params"]:
+            out[f"{tag}_f_n_Hz"] = fit["params"]["omega_n"] / (2 * math.pi)
+        out[f"{tag}_gain_error_dB"] = fit["gain_error_dB"]
+        out[f"{tag}_phase_error_deg"] = fit["phase_error_deg"]
+    return out
+
+
 def main() -> None:
+    if "--fits" in sys.argv:
+        found = fits()
+        for key, value in found.items():
+            print(f"  {key:<36}{value:12.4g}")
+        record("servovalve_fits", found, script="benchmarks/bench_servovalve_figures.py")
+        return
     only_choices = "--choices" in sys.argv
     found = choices()
     print("choices ([GordicND] Table 1 against the alternative):")
