@@ -18,7 +18,8 @@ costs one residual run per column, which SciPy counts among its residual evaluat
 largest difference of their results in standard errors. The first call of each builds and caches the
 integrators: it is timed apart and left out of the median.
 
-Figures are ratios on this machine, never absolute promises.
+Times are CPU time of this process (steadier than wall time on a shared machine). Figures are ratios on this
+machine, never absolute promises; written to benchmarks/results/calibration.json.
 """
 
 from __future__ import annotations
@@ -31,6 +32,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+from results import record as write_results
 
 from hydroservo.data import example_files
 from hydroservo.identification.calibration import calibrate
@@ -52,9 +54,9 @@ def _record() -> Any:
 
 def run(gradient: str, record: Any) -> tuple[float, Any]:
     arm = load_model("robot-arm")
-    start = time.perf_counter()
+    start = time.process_time()
     cal = calibrate(arm, [record], FIT, inputs=["command.y"], noise=NOISE, gradient=gradient)
-    return time.perf_counter() - start, cal
+    return time.process_time() - start, cal
 
 
 def main(repeat: int = 5) -> dict[str, float]:
@@ -85,6 +87,11 @@ def main(repeat: int = 5) -> dict[str, float]:
     for name in FIT:
         p = exact.parameter(name)
         print(f"  {name:<10} {p['value']:.5g} ± {p['stderr']:.2g} {p['unit']}")
+    write_results("calibration", {
+        "exact_s": out["exact s"], "fd_s": out["finite-differences s"], "ratio": out["ratio"],
+        "exact_runs": exact.nfev, "exact_jacobians": exact.njev, "exact_model_runs": runs_exact, "fd_runs": runs_fd,
+        "shift_stderr": shift,
+    })  # fmt: skip
     return out
 
 

@@ -14,9 +14,9 @@ second. The same equations are solved
    CVODES;
 3. as a semi-explicit DAE with IDAS.
 
-Printed: the median wall time of each over repeats, as a ratio to the first,
+Printed: the median CPU time of each over repeats (steadier than wall time on a shared machine), as a ratio to the first,
 and the largest difference of each solution from the first at tight
-tolerance (all three must agree).
+tolerance (all three must agree). Written to benchmarks/results/implicit.json.
 """
 
 from __future__ import annotations
@@ -26,6 +26,7 @@ import time
 
 import casadi as ca
 import numpy as np
+from results import record
 
 NX = 6
 W = 2 * np.pi * 50
@@ -74,24 +75,32 @@ def integrators(tol: float) -> dict[str, tuple[ca.Function, dict]]:
     return out
 
 
+#: the figures' keys of each method (benchmarks/results/implicit.json)
+KEYS = ("newton", "rootfinder", "idas")
+
+
 def main(repeat: int = 7) -> None:
     p = [1.0, 0.6]
+    figures: dict[str, float] = {}
     print(f"{'method':<24}{'median [ms]':>12}{'ratio':>8}{'steps':>8}{'max diff':>12}")
     for tol in (1e-6, 1e-10):
         print(f"rtol = {tol:g}")
         base = ref = None
-        for name, (integ, extra) in integrators(tol).items():
+        for key, (name, (integ, extra)) in zip(KEYS, integrators(tol).items(), strict=True):
             times = []
             for _ in range(repeat):
-                start = time.perf_counter()
+                start = time.process_time()
                 res = integ(x0=np.zeros(NX), p=p, **extra)
-                times.append(time.perf_counter() - start)
+                times.append(time.process_time() - start)
             med = statistics.median(times) * 1e3
             X = np.asarray(res["xf"])
             base = med if base is None else base
             ref = X if ref is None else ref
             diff = float(np.abs(X - ref).max())
             print(f"{name:<24}{med:>12.2f}{med / base:>8.2f}{integ.stats()['nsteps']:>8}{diff:>12.2e}")
+            figures[f"{key}_{tol:.0e}_ms"], figures[f"{key}_{tol:.0e}_ratio"] = med, med / base
+            figures[f"{key}_{tol:.0e}_diff"] = diff
+    record("implicit", figures)
 
 
 if __name__ == "__main__":

@@ -6,6 +6,8 @@ of each model, about a minute more).
 
 Everything is timed in this process, on this machine:
 
+Times are CPU time of this process (the stepper and CVODES run in it, one thread), medians over repeats.
+
 * the C stepper: the loop of ``CStepper.advance`` (one call into C for the whole run, nothing recorded),
   the median over repeats of the whole run from a reset, divided by the number of steps; and the same
   with every state and output written after every step (``CStepper.run``);
@@ -49,11 +51,13 @@ HOPSAN_US_PER_STEP = 0.5
 
 
 def median_time(fn, repeat: int) -> float:
+    """The median CPU time [s] of ``fn()`` over ``repeat`` calls: this process's, so ``fn`` must run in it on one
+    thread (a C stepper's loop, one CVODES call); steadier than wall time on a shared machine."""
     times = []
     for _ in range(repeat):
-        start = time.perf_counter()
+        start = time.process_time()
         fn()
-        times.append(time.perf_counter() - start)
+        times.append(time.process_time() - start)
     return statistics.median(times)
 
 

@@ -1,6 +1,7 @@
 """The servovalve bench report of [GordicND]'s Table 1 valve: hydroservo against plain SciPy, in this process.
 
-Run: ``python benchmarks/bench_servovalve.py`` (``--quick``: one repeat, no whole report)
+Run: ``python benchmarks/bench_servovalve.py`` (``--quick``: one repeat, nothing written; ``--report``: also
+times hydroservo's whole bench report)
 
 The baseline is ``reference_servovalve.py``: the same equations as
 :class:`hydroservo.components.TwoStageServovalve` (quasi-static first stage,
@@ -14,7 +15,9 @@ at 5, 50 and 200 Hz) because plain SciPy, simulating periods until the
 fundamental repeats, takes minutes per amplitude; hydroservo's whole report
 is timed on its own. The flows are compared too: both must agree.
 
-Figures are ratios on this machine (2 cores), never absolute promises.
+Figures are ratios on this machine (2 cores), never absolute promises; written to
+benchmarks/results/servovalve_speed.json (not with ``--quick``). Times are wall time (medians): both sides
+run one thread in this process, so the machine's load slows both alike.
 """
 
 from __future__ import annotations
@@ -32,6 +35,7 @@ from scipy.optimize import root
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import reference_servovalve as ref  # noqa: E402
+from results import record  # noqa: E402
 
 from hydroservo.analysis import servovalve_bench as sb  # noqa: E402
 
@@ -139,6 +143,11 @@ def scipy_bode(amplitudes: tuple[float, ...], frequencies: tuple[float, ...], to
     return H
 
 
+#: the figures' keys of each test (benchmarks/results/servovalve_speed.json)
+KEYS = {"static (41 currents at rest)": "static", "square waves 5/10/25 %": "steps", "hysteresis (1/16 Hz)": "hysteresis",
+        "blocked ports (3 sweeps)": "blocked", "frequency response, subset": "bode"}  # fmt: skip
+
+
 def main(quick: bool = False) -> dict[str, float]:
     repeat = 1 if quick else 3
     out: dict[str, float] = {}
@@ -158,6 +167,7 @@ def main(quick: bool = False) -> dict[str, float]:
          lambda: scipy_bode(amps, freqs), None)
     )
     total_e = total_s = 0.0
+    figures: dict[str, float] = {}
     for name, engine, scipy, compare in rows:
         t_e, res_e = median_time(engine, repeat)
         t_s, res_s = median_time(scipy, 1 if quick else 2)
@@ -165,12 +175,19 @@ def main(quick: bool = False) -> dict[str, float]:
         diff = "" if compare is None else f", flows differ by at most {compare(res_e, res_s):.1e} L/min"
         print(f"  {name:<30} hydroservo {t_e:7.2f} s   SciPy {t_s:8.2f} s   ratio {t_s / t_e:6.1f}x{diff}")
         out[name] = t_s / t_e
+        key = KEYS[name]
+        figures[f"{key}_ratio"], figures[f"{key}_hydroservo_s"], figures[f"{key}_scipy_s"] = t_s / t_e, t_e, t_s
+        if compare is not None:
+            figures[f"{key}_flow_difference_L_min"] = compare(res_e, res_s)
     print(f"  {'all of the above':<30} hydroservo {total_e:7.2f} s   SciPy {total_s:8.2f} s   ratio {total_s / total_e:6.1f}x")
     out["total"] = total_s / total_e
-    if not quick:
+    figures["total_ratio"], figures["total_hydroservo_s"], figures["total_scipy_s"] = total_s / total_e, total_e, total_s
+    if "--report" in sys.argv:
         t_r, report = median_time(lambda: sb.bench_report(), 1)
-        out["report_s"] = t_r
+        out["report_s"] = figures["report_s"] = t_r
         print(f"hydroservo's whole report (static, blocked, steps, hysteresis, threshold, Bode at 5/25/100 % x 19 frequencies): {t_r:.1f} s")
+    if not quick:
+        record("servovalve_speed", figures)
     return out
 
 

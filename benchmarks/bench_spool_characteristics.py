@@ -12,6 +12,9 @@ leakage maximum, flow-gain slopes). The issue's floor: under 1 s.
 Baseline, in this process: the same curves solved the straightforward way,
 one opening at a time with SciPy's ``brentq`` on the same orifice laws (same
 bracket, same tolerance). Their largest differences are printed.
+
+Times are CPU time of this process (steadier than wall time on a shared machine), each a single run after a
+warm-up. Figures are written to benchmarks/results/spool_characteristics.json.
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ from __future__ import annotations
 import time
 
 import numpy as np
+from results import record
 from scipy.optimize import brentq
 
 from hydroservo.analysis.static_bench import Bench, bench_curves, table2_metrics
@@ -57,15 +61,15 @@ def main() -> None:
     valve, bench = read_staged_slot_valve("aerospace-example")
     assert bench is not None
     bench_curves(valve, T, bench)  # warm-up
-    t0 = time.perf_counter()
+    t0 = time.process_time()
     curves = bench_curves(valve, T, bench)
-    t_curves = time.perf_counter() - t0
-    t0 = time.perf_counter()
+    t_curves = time.process_time() - t0
+    t0 = time.process_time()
     metrics = table2_metrics(valve, T, bench)
-    t_metrics = time.perf_counter() - t0
-    t0 = time.perf_counter()
+    t_metrics = time.process_time() - t0
+    t0 = time.process_time()
     Q_L, P1, leak = baseline_curves(valve, bench)
-    t_base = time.perf_counter() - t0
+    t_base = time.process_time() - t0
     print(f"one valve at {T:g} degC, 401 openings per test")
     print(f"  baseline, brentq per opening, the three curves:   {t_base * 1e3:8.1f} ms")
     print(
@@ -82,6 +86,11 @@ def main() -> None:
         f"leakage {np.max(np.abs(leak / curves.Q_lk - 1)):.1e} relative"
     )
     print("  metrics: " + ", ".join(f"{k} {v:.4g}" for k, v in metrics.items()))
+    record("spool_characteristics", {
+        "baseline_ms": t_base * 1e3, "curves_ms": t_curves * 1e3, "ratio": t_base / t_curves,
+        "every_test_s": t_curves + t_metrics,
+        "Q_L_difference": float(np.max(np.abs(Q_L - curves.Q_L)) / np.max(np.abs(Q_L))),
+    })  # fmt: skip
 
 
 if __name__ == "__main__":

@@ -3,19 +3,20 @@
 Run: ``python benchmarks/bench_startup.py [REPEATS]`` (default 15). Each
 command runs as a fresh process, alternating with the baseline (``python -c
 pass``) in the same loop, so that machine load affects both alike; prints the
-median and the spread of wall times, and each median's excess over the
-baseline's. The budgets (on an idle machine): ``import hydroservo`` under
+median and the spread of CPU times, and each median's excess over the
+baseline's. Times are CPU time (user + system, children included), steadier than wall time on a shared
+machine. The budgets (on an idle machine): ``import hydroservo`` under
 0.4 s, ``--version`` and ``--help`` under 0.3 s (issue 9); ``hydroservo simulate
 flight-simulator --json`` end to end under 0.6 s (issue 14).
 """
 
 from __future__ import annotations
 
+import os
 import shutil
 import statistics
 import subprocess
 import sys
-import time
 
 PY = sys.executable
 CLI = shutil.which("hydroservo") or ""
@@ -35,21 +36,25 @@ COMMANDS = {
 }
 
 
-def wall(argv: list[str]) -> float:
-    start = time.perf_counter()
-    subprocess.run(argv, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return time.perf_counter() - start
+def cpu(argv: list[str]) -> float:
+    """The CPU time [s] of one process (user + system, its children included): steadier than wall time on a
+    shared machine."""
+    proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, status, usage = os.wait4(proc.pid, 0)
+    if os.waitstatus_to_exitcode(status) != 0:
+        raise SystemExit(f"{' '.join(argv)} failed")
+    return usage.ru_utime + usage.ru_stime
 
 
 def main(repeats: int = 15) -> dict[str, float]:
     times: dict[str, list[float]] = {name: [] for name in COMMANDS}
     for argv in COMMANDS.values():  # warm the file cache
-        wall(argv)
+        cpu(argv)
     for _ in range(repeats):
         for name, argv in COMMANDS.items():
-            times[name].append(wall(argv))
+            times[name].append(cpu(argv))
     base = statistics.median(times["baseline: python -c pass"])
-    print(f"{repeats} runs each, wall time [s]: median (min - max); excess over the bare interpreter")
+    print(f"{repeats} runs each, CPU time [s]: median (min - max); excess over the bare interpreter")
     for name, ts in times.items():
         med = statistics.median(ts)
         print(f"  {name:44s} {med:6.3f} ({min(ts):.3f} - {max(ts):.3f})   +{med - base:.3f}   x{med / base:.1f}")
