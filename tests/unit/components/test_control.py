@@ -282,24 +282,24 @@ def test_floor_ceil_round_comparisons_and_logic_are_hopsans() -> None:
     s.add(c.Ramp("u", offset=-2.0, slope=1.0, t_start=0.0))
     s.add(c.Constant("k", value=0.5))
     for f in ("floor", "ceil", "round", "greater", "smaller", "and", "or", "xor", "not", "max", "min"):
-        s.add(c.Function(f, function=f))
-        s.connect("u.y", f"{f}.u")
+        s.add(c.Function(f"f_{f}", function=f))  # "and", "or", "not" are keywords: no names
+        s.connect("u.y", f"f_{f}.u")
         if f in ("greater", "smaller", "and", "or", "xor", "max", "min"):
-            s.connect("k.y", f"{f}.u2")
+            s.connect("k.y", f"f_{f}.u2")
     t = np.array([0.0, 0.3, 1.5, 1.75, 2.25, 2.5, 3.2, 3.5, 4.0])
     r = s.simulate(t_eval=t)
     u = t - 2.0
-    np.testing.assert_array_equal(r["floor.y"], np.floor(u))
-    np.testing.assert_array_equal(r["ceil.y"], np.ceil(u))
-    np.testing.assert_array_equal(r["round.y"], np.sign(u) * np.floor(np.abs(u) + 0.5))
-    np.testing.assert_array_equal(r["greater.y"], (u > 0.5).astype(float))
-    np.testing.assert_array_equal(r["smaller.y"], (u < 0.5).astype(float))
-    np.testing.assert_array_equal(r["and.y"], np.zeros_like(u))  # the constant 0.5 is not > 0.5: off
-    np.testing.assert_array_equal(r["or.y"], (u > 0.5).astype(float))
-    np.testing.assert_array_equal(r["xor.y"], (u > 0.5).astype(float))  # 0.5 is off: xor is u's
-    np.testing.assert_array_equal(r["not.y"], (u <= 0.5).astype(float))
-    np.testing.assert_array_equal(r["max.y"], np.maximum(u, 0.5))
-    np.testing.assert_array_equal(r["min.y"], np.minimum(u, 0.5))
+    np.testing.assert_array_equal(r["f_floor.y"], np.floor(u))
+    np.testing.assert_array_equal(r["f_ceil.y"], np.ceil(u))
+    np.testing.assert_array_equal(r["f_round.y"], np.sign(u) * np.floor(np.abs(u) + 0.5))
+    np.testing.assert_array_equal(r["f_greater.y"], (u > 0.5).astype(float))
+    np.testing.assert_array_equal(r["f_smaller.y"], (u < 0.5).astype(float))
+    np.testing.assert_array_equal(r["f_and.y"], np.zeros_like(u))  # the constant 0.5 is not > 0.5: off
+    np.testing.assert_array_equal(r["f_or.y"], (u > 0.5).astype(float))
+    np.testing.assert_array_equal(r["f_xor.y"], (u > 0.5).astype(float))  # 0.5 is off: xor is u's
+    np.testing.assert_array_equal(r["f_not.y"], (u <= 0.5).astype(float))
+    np.testing.assert_array_equal(r["f_max.y"], np.maximum(u, 0.5))
+    np.testing.assert_array_equal(r["f_min.y"], np.minimum(u, 0.5))
 
 
 def test_latch_sets_resets_and_holds() -> None:
