@@ -45,6 +45,10 @@ if TYPE_CHECKING:
 __all__ = ["Model"]
 
 _INTERPRETED_SAID = threading.Event()
+#: The largest entry of the Jacobian on the scaled states at the start of a run [1/s]: a time scale of 1e-20 s,
+#: eleven orders of magnitude below the fastest mode of any random valid parameter set of the built-in models
+#: (4e10 1/s, benchmarks/bench_robustness.py) and below where CVODES starts to fail (about 1e30 1/s).
+FASTEST_RATE = 1e20
 
 
 def _progress_of(
@@ -364,6 +368,7 @@ class Model:
         why = self.unconverged(grid[:1], (x0 / self.nominal)[:, None], p)
         if why is not None:
             raise SolverError(f"integration of {self.name!r} cannot start: {why}")
+        self._check_time_scale(float(grid[0]), x0, p)
         if method != "cvodes":
             return self._compiled_run(method, grid, x0, p, settings, events)
         integ = self._integrator(grid, settings)
@@ -391,6 +396,45 @@ class Model:
         stats: dict[str, Any] = {k: found[k] for k in kept if isinstance(found.get(k), (int, float))}
         stats.update({"method": "cvodes", "rtol": settings.rtol, "atol": settings.atol, "wall_time_s": wall})
         return self._result(grid, None, p, stats, xf)
+
+    def _check_time_scale(self, t0: float, x0: np.ndarray, p: np.ndarray) -> None:
+        """Refuse a start whose Jacobian (on the scaled states) has an entry beyond :data:`FASTEST_RATE`: a time
+        scale no circuit has, which only a parameter out of all proportion gives (``B = 1e300 N*s/m``). Neither
+        method integrates it reliably in double precision (the compiled ones step over it, CVODES overflows), so
+        both refuse it alike, naming the entry and the parameters it grows with."""
+        A = np.asarray(self._jz(t0, x0 / self.nominal, p), dtype=float)
+        bad = ~(np.abs(A) <= FASTEST_RATE)  # NaN and Inf count
+        if not bad.any():
+            return
+        i, j = (int(v) for v in np.argwhere(bad)[0])
+        t, z, ps = self._dae["t"], self._dae["x"], self._dae["p"]
+        entry = ca.jacobian(self._dae["ode"][i], z)[j]
+        dA = ca.jacobian(entry, ps)
+        depends = np.asarray(ca.DM(dA.sparsity(), 1), dtype=float).ravel() > 0
+        grad = np.asarray(ca.Function("dA_dp", [t, z, ps], [dA])(t0, x0 / self.nominal, p), dtype=float).ravel()
+        with np.errstate(all="ignore"):
+            share = np.abs(grad * p / A[i, j])  # the entry's log-sensitivity to each parameter
+            extreme = np.where(p != 0, np.abs(np.log10(np.abs(p))), 0.0)  # among equal shares, furthest from 1 first
+        if not np.isfinite(A[i, j]):  # no sensitivity to speak of: the parameters it depends on, extreme first
+            share = depends.astype(float)
+        share = np.where(depends, np.nan_to_num(share, nan=np.inf), 0.0)
+        order = [k for k in np.lexsort((-extreme, -share)) if share[k] > 0.1]
+        named = [
+            f"{self.parameter_names[k]} = {p[k]:.4g} {si_unit(self.parameter_units.get(self.parameter_names[k], ''))}".rstrip()
+            for k in order[:4]
+        ]
+        xi, xj = self.state_names[i], self.state_names[j]
+        ui, uj = (si_unit(self.units.get(n, "")) for n in (xi, xj))
+        unit = "1/s" if ui == uj else f"{ui or '1'}/s per {uj or 'unit'}"
+        value = A[i, j] * self.nominal[i] / self.nominal[j]
+        scale = f"a time scale of {1 / abs(A[i, j]):.3g} s" if np.isfinite(A[i, j]) and A[i, j] != 0 else "no finite time scale"
+        head = f"{named[0]} is out of all proportion" if named else f"{self.name!r} cannot be integrated"
+        raise ParameterError(
+            f"{head}: at the start the rate of {xi} changes with {xj} by {value:.3g} {unit} ({scale}; the limit, on "
+            f"the states scaled by their nominal magnitudes, is {FASTEST_RATE:.0e} 1/s: no circuit has a mode that "
+            f"fast, and neither solver integrates one reliably in double precision); that rate grows with "
+            f"{', '.join(named) if named else 'no parameter'}: check the value and its unit"
+        )
 
     def _resolve(self, method: str) -> str:
         """The method ``method`` names: ``auto`` is :data:`~hydroservo.system.integration.AUTO_METHOD` if this

@@ -578,9 +578,11 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
     while (out < n_times) {
         if (taken >= max_steps) {
             snprintf(m->message, sizeof m->message,
-                     "t = %.9g s: the step budget of %ld steps was used up (last step %.3g s); the dynamics are too "
-                     "fast for the time span%s, or a state diverges",
-                     t, max_steps, h, explicit_method ? " (stiff? ros23 is for stiff circuits)" : "");
+                     "t = %.9g s: the step budget of %ld steps was used up (last step %.3g s, mean step %.3g s; "
+                     "%.3g s of the %.3g s asked for were done); the dynamics are too fast for the time span%s, or a "
+                     "state diverges",
+                     t, max_steps, h, (t - times[0]) / (double)max_steps, t - times[0], t_end - times[0],
+                     explicit_method ? " (stiff? ros23 is for stiff circuits)" : "");
             status = @UPPER@_TOO_MUCH_WORK;
             break;
         }
@@ -588,7 +590,9 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
          * two of them (a square wave's edge, a table's corner) cannot be stepped over unseen */
         const double stop = times[out], remaining = stop - t, h_wanted = h;
         if (h >= (1.0 - 1e-6) * remaining || t + h >= stop) h = remaining; /* never a sliver short of it */
-        if (!(h > 16.0 * DBL_EPSILON * fmax(fabs(t), 1e-3 * hmax))) {
+        /* the floor: what floating point resolves at t, and near t = 0 a thousandth of the span, but never more
+         * than 1e-3 s of it (a horizon of 1e300 s must not make a step of 1e-7 s "too small") */
+        if (!(h > 16.0 * DBL_EPSILON * fmax(fabs(t), 1e-3 * fmin(hmax, 1.0)))) {
             snprintf(m->message, sizeof m->message,
                      "t = %.9g s: the step fell to %.3g s; the rates are discontinuous or not finite here (%s)", t, h,
                      method_name);
