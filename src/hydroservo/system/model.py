@@ -49,6 +49,8 @@ _INTERPRETED_SAID = threading.Event()
 #: eleven orders of magnitude below the fastest mode of any random valid parameter set of the built-in models
 #: (4e10 1/s, benchmarks/bench_robustness.py) and below where CVODES starts to fail (about 1e30 1/s).
 FASTEST_RATE = 1e20
+#: A state beyond this many times its nominal magnitude where a run failed: the solution diverged.
+RUNAWAY = 1e6
 
 
 def _progress_of(
@@ -562,7 +564,16 @@ class Model:
         rates = np.asarray(self.f(t, x, p), dtype=float).ravel() / self.nominal
         k = int(np.argmax(np.abs(np.where(np.isfinite(rates), rates, np.inf))))
         unit = si_unit(self.units.get(self.state_names[k], ""))
-        text = (
+        text = ""
+        size = np.abs(np.where(np.isfinite(x), x, np.inf)) / self.nominal
+        if size.max() > RUNAWAY:  # the cause: nothing bounds the solution, no step control helps
+            r = int(np.argmax(size))
+            text = (
+                f"The solution diverges: {self.state_names[r]} reached {x[r]:.3g} "
+                f"{si_unit(self.units.get(self.state_names[r], ''))}, {size[r]:.1e} times its nominal magnitude "
+                "(an unstable loop that nothing in the model bounds, for these parameters). "
+            )
+        text += (
             f"At t = {t:.6g} s the state changing fastest was {self.state_names[k]} = {x[k]:.6g} {unit} "
             f"(rate {rates[k] * self.nominal[k]:.3g} {unit}/s)"
         )
@@ -581,7 +592,9 @@ class Model:
         )
         grow = int(np.argmax(lam.real))
         if lam[grow].real > 1e-6 * abs(lam[i]):
-            text += f"; the model is unstable there (a mode grows at {lam[grow].real:.3g} 1/s)"
+            w = np.abs(vec[:, grow])
+            growing = [self.state_names[j] for j in np.argsort(-w) if w[j] > 0.3 * w.max()][:3]
+            text += f"; the model is unstable there (a mode grows at {lam[grow].real:.3g} 1/s, mostly in {', '.join(growing)})"
         if all(si_unit(self.units.get(n, "")) == "Pa" for n in names):
             text += "; fast pressure modes come from small volumes, a large bulk modulus or large areas"
         return text + "."
