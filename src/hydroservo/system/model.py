@@ -331,10 +331,12 @@ class Model:
             ``rtol = accuracy / 100`` (:func:`hydroservo.system.integration.tolerances`). Neither
             given: 1e-4, i.e. rtol 1e-6 and atol 1e-8.
         max_steps : int
-            Step budget of the run, shared out over the output intervals (at least 500
+            Step budget of the run (CVODES: shared out over the output intervals, at least 500
             each): a hopeless parameter set fails in about this many steps. Default: 100 000 at
             rtol 1e-6 and looser, more at tighter tolerances
-            (:func:`~hydroservo.system.integration.default_max_steps`).
+            (:func:`~hydroservo.system.integration.default_max_steps`), and ten times that for the
+            compiled methods, whose steps are cheap (a compiled run that stops advancing fails within
+            10 000 steps, whatever the budget).
         initial : "parameters", "trim" or mapping
             Initial state, see :meth:`initial_state`.
         method : str

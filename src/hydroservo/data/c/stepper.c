@@ -59,6 +59,8 @@
 #include <string.h>
 
 #define @UPPER@_AT_LEAST_1(n) ((n) > 0 ? (n) : 1)
+/* @NAME@_integrate: every this many steps, a run that advanced by less than 1e-9 of its span is stuck */
+#define @UPPER@_STUCK_STEPS 10000
 #define @UPPER@_NP (@UPPER@_N_PARAMETERS + @UPPER@_N_INPUTS)
 #define @UPPER@_NZ @UPPER@_AT_LEAST_1(@UPPER@_N_STATES)
 
@@ -550,7 +552,8 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
     const double exponent = 1.0 / (order + 1);
     const char *method_name = method == @UPPER@_DOPRI5 ? "dopri5" : (method == @UPPER@_RODAS3 ? "rodas3" : "ros23");
     double t = times[0], t_end = times[n_times - 1], *err = m->k[6];
-    long out = 1, taken = 0;
+    long out = 1, taken = 0, taken_mark = 0;
+    double t_mark = times[0];
     int rejected_last = 0, status = @UPPER@_OK;
     @NAME@_record(m, 0, t, m->z, states, outputs);
     if (n_times == 1) return @UPPER@_OK;
@@ -585,6 +588,18 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
                      explicit_method ? " (stiff? ros23 is for stiff circuits)" : "");
             status = @UPPER@_TOO_MUCH_WORK;
             break;
+        }
+        if (taken - taken_mark >= @UPPER@_STUCK_STEPS) { /* a run that no longer advances fails now, not at the budget */
+            if (t - t_mark < 1e-9 * (t_end - times[0])) {
+                snprintf(m->message, sizeof m->message,
+                         "t = %.9g s: the last %ld steps advanced by %.3g s in all (mean step %.3g s, %.1e of the span): "
+                         "the step control is stuck at a kink or a jump of the rates here (%s)",
+                         t, taken - taken_mark, t - t_mark, (t - t_mark) / (double)(taken - taken_mark),
+                         (t - t_mark) / (t_end - times[0]), method_name);
+                status = @UPPER@_STEP_TOO_SMALL;
+                break;
+            }
+            taken_mark = taken, t_mark = t;
         }
         /* no step passes the next output time: every output time ends a step, so an input that changes between
          * two of them (a square wave's edge, a table's corner) cannot be stepped over unseen */
