@@ -591,11 +591,14 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
         }
         if (taken - taken_mark >= @UPPER@_STUCK_STEPS) { /* a run that no longer advances fails now, not at the budget */
             if (t - t_mark < 1e-9 * (t_end - times[0])) {
+                const double mean = (t - t_mark) / (double)(taken - taken_mark);
                 snprintf(m->message, sizeof m->message,
-                         "t = %.9g s: the last %ld steps advanced by %.3g s in all (mean step %.3g s, %.1e of the span): "
-                         "the step control is stuck at a kink or a jump of the rates here (%s)",
-                         t, taken - taken_mark, t - t_mark, (t - t_mark) / (double)(taken - taken_mark),
-                         (t - t_mark) / (t_end - times[0]), method_name);
+                         "t = %.9g s: the last %ld steps advanced by %.3g s in all (mean step %.3g s); at that pace the "
+                         "%.3g s left of the %.3g s asked for would take %.2g steps (budget %ld): the step control is "
+                         "stuck at a kink or a jump of the rates here, or the span is far too long for the model's "
+                         "dynamics (%s)",
+                         t, taken - taken_mark, t - t_mark, mean, t_end - t, t_end - times[0],
+                         mean > 0.0 ? (t_end - t) / mean : HUGE_VAL, max_steps, method_name);
                 status = @UPPER@_STEP_TOO_SMALL;
                 break;
             }
