@@ -38,7 +38,7 @@ class FlapperNozzleSpool(Component):
         "delta_h": Param(1.0, "", "damping ratio of the spool stage", min=0.0),
         "xv0": Param(0.0, "m", "initial spool position"),
         "xv_max": Param(
-            2.54e-3, "m", "spool travel to either stop (the valve's full travel)", min=0.0, min_inclusive=False
+            2.54e-3, "m", "spool stroke (its stops; one stroke with the valve it drives)", min=0.0, min_inclusive=False
         ),
     }
     STATES = {
