@@ -147,7 +147,9 @@ def run(n: int, seed: int, all_prob: float, methods: list[str], timeout: float) 
             continue
         row["failed"] += 1
         message = str(out.get("message", ""))
-        cls = classify(message, str(out.get("error_type", "")), nominals[label]) if outcome == "clean_error" else outcome
+        cls = (
+            classify(message, str(out.get("error_type", "")), nominals[label]) if outcome == "clean_error" else outcome
+        )
         row["classes"][cls] += 1
         row["failures"].append({"index": req["id"], "class": cls, "params": req["params"], "message": message})
     for entry in models.values():
@@ -155,7 +157,7 @@ def run(n: int, seed: int, all_prob: float, methods: list[str], timeout: float) 
             entry[method]["classes"] = dict(entry[method]["classes"])
             entry[method]["failed_percent"] = 100.0 * entry[method]["failed"] / max(entry[method]["sets"], 1)
     return {
-        "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+        "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
         "machine": f"{platform.machine()}, {platform.processor() or 'unknown processor'}, {os.cpu_count()} cores, "
         f"{platform.system()} {platform.release()}, Python {sys.version.split()[0]}",
         "code": fz._code_version(),

@@ -19,7 +19,11 @@ from hydroservo.laws.pseudo_section import check_sections
 #: flight-simulator, benchmark set 102: the spool end area a hundredth of the default makes the servovalve's pilot
 #: loop (torque motor, flapper-nozzle, spool, feedback wire) unstable. Before: the spool ran off to 1e17 m/s^2 and
 #: the run failed ("step budget ... used up"); now the spool chatters between its stops and the run completes.
-UNSTABLE_PILOT = {"feedback.G": -15.88031284931419, "spool.Av": 7.615060659547652e-07, "load.x_max": 2.199474849778531e28}
+UNSTABLE_PILOT = {
+    "feedback.G": -15.88031284931419,
+    "spool.Av": 7.615060659547652e-07,
+    "load.x_max": 2.199474849778531e28,
+}
 
 #: servo-solenoid-cylinder, fuzz set 130 (seed 0): k and x_t drawn alone, so that the variable-structure
 #: pseudo-section's two branches differ by a factor 1e11 at x_t. Before: "the step fell to 5.09e-17 s".
