@@ -32,6 +32,7 @@ failing set (its parameters, its message).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import datetime
 import importlib.util
 import json
@@ -41,6 +42,7 @@ import re
 import sys
 import tempfile
 from collections import Counter
+from importlib import metadata
 from pathlib import Path
 from types import ModuleType
 from typing import Any
@@ -156,13 +158,48 @@ def run(n: int, seed: int, all_prob: float, methods: list[str], timeout: float) 
         for method in methods:
             entry[method]["classes"] = dict(entry[method]["classes"])
             entry[method]["failed_percent"] = 100.0 * entry[method]["failed"] / max(entry[method]["sets"], 1)
+    figures = {  # flat, no dots in the keys (benchmarks/results/<bench>.json: "figures" are numbers)
+        f"{label.replace('-', '_')}_{method}_{what}": models[label][method][key]
+        for label in models
+        for method in methods
+        for what, key in (("sets", "sets"), ("failed", "failed"), ("failed_percent", "failed_percent"))
+    }
     return {
-        "date": datetime.datetime.now(datetime.UTC).isoformat(timespec="seconds"),
-        "machine": f"{platform.machine()}, {platform.processor() or 'unknown processor'}, {os.cpu_count()} cores, "
-        f"{platform.system()} {platform.release()}, Python {sys.version.split()[0]}",
+        "bench": "robustness",
+        "script": "benchmarks/bench_robustness.py",
+        "date": datetime.datetime.now(datetime.UTC).strftime("%Y-%m-%dT%H:%M:%SZ"),
+        "machine": machine(),
         "code": fz._code_version(),
         "config": {"sets_per_model": n, "seed": seed, "all_prob": all_prob, "methods": methods, "timeout_s": timeout},
+        "figures": figures,
         "models": models,
+    }
+
+
+def machine() -> dict[str, Any]:
+    """The machine and software the figures were measured on."""
+    cpu = platform.processor() or platform.machine()
+    with contextlib.suppress(OSError):
+        for line in Path("/proc/cpuinfo").read_text(encoding="utf-8").splitlines():
+            if line.startswith("model name"):
+                cpu = line.split(":", 1)[1].strip()
+                break
+    packages: dict[str, str | None] = {}
+    for name in ("numpy", "scipy", "casadi"):
+        try:
+            packages[name] = metadata.version(name)
+        except metadata.PackageNotFoundError:
+            packages[name] = None
+    import hydroservo
+
+    packages["hydroservo"] = hydroservo.__version__
+    return {
+        "cpu": cpu,
+        "cores": os.cpu_count(),
+        "system": f"{platform.system()} {platform.release()} {platform.machine()}",
+        "python": sys.version.split()[0],
+        "packages": packages,
+        "load_average_1min": os.getloadavg()[0] if hasattr(os, "getloadavg") else None,
     }
 
 
@@ -178,10 +215,11 @@ def table(report: dict[str, Any]) -> str:
                 f"{label:26s} {method:7s} {row['sets']:5d} {row['ok']:5d} {row['implausible_warned']:6d} "
                 f"{row['failed']:6d} {row['failed_percent']:6.1f}  {reasons or '-'}"
             )
-    cfg = report["config"]
+    cfg, m = report["config"], report["machine"]
     lines.append(
         f"({cfg['sets_per_model']} valid sets per model, seed {cfg['seed']}, every parameter varied in "
-        f"{100 * cfg['all_prob']:.0f} % of them; impl+w: implausible and warned; {report['date']}; {report['machine']}; "
+        f"{100 * cfg['all_prob']:.0f} % of them; impl+w: implausible and warned; {report['date']}; "
+        f"{m['cpu']}, {m['cores']} cores, {m['system']}, Python {m['python']}, load {m['load_average_1min']}; "
         f"code {report['code']})"
     )
     return "\n".join(lines)
