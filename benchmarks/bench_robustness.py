@@ -18,6 +18,8 @@ A failure is classified from its message (the engine says where, which state and
 * ``out of proportion``: refused at the start, a rate faster than any circuit has (a parameter out of all
   proportion, ``Model.FASTEST_RATE``);
 * ``step budget``: the step budget was used up without a runaway state (a stiff or fast transient);
+* ``no derivative``: the Jacobian is not finite where the run stopped (a law without a derivative there, such
+  as a square root at zero drop with its regularisation set to 0);
 * ``step collapse``: the step fell below what floating point resolves, or CVODES' corrector failed
   (a kink or a discontinuity the step control does not get past);
 * ``not finite``: the rates gave NaN or Inf;
@@ -51,7 +53,16 @@ import numpy as np
 
 HERE = Path(__file__).resolve().parent
 RESULTS = HERE / "results" / "robustness.json"
-CLASSES = ("diverges", "out of proportion", "step budget", "step collapse", "not finite", "algebraic", "other")
+CLASSES = (
+    "diverges",
+    "out of proportion",
+    "step budget",
+    "no derivative",
+    "step collapse",
+    "not finite",
+    "algebraic",
+    "other",
+)
 #: A state beyond this many times its nominal magnitude at the failure: the solution runs away.
 RUNAWAY = 1e6
 
@@ -105,6 +116,8 @@ def classify(message: str, error_type: str, nominal: dict[str, float]) -> str:
         return "algebraic"
     if "step budget" in message:
         return "step budget"
+    if "Jacobian there is not finite" in message:
+        return "no derivative"
     if any(m in message for m in ("step fell to", "corrector did not converge", "error test failed", "too close")):
         return "step collapse"
     if "NaN" in message or "not finite" in message or "Inf" in message:

@@ -408,7 +408,8 @@ class Model:
         method integrates it reliably in double precision (the compiled ones step over it, CVODES overflows), so
         both refuse it alike, naming the entry and the parameters it grows with."""
         A = np.asarray(self._jz(t0, x0 / self.nominal, p), dtype=float)
-        bad = ~(np.abs(A) <= FASTEST_RATE)  # NaN and Inf count
+        with np.errstate(invalid="ignore"):
+            bad = np.abs(A) > FASTEST_RATE  # Inf counts; NaN (a law without a derivative there) is the solver's to say
         if not bad.any():
             return
         i, j = (int(v) for v in np.argwhere(bad)[0])
@@ -582,7 +583,12 @@ class Model:
         )
         A = np.asarray(self._jz(t, x / self.nominal, p), dtype=float)
         if not np.all(np.isfinite(A)):
-            return text + "; the Jacobian there is not finite."
+            i, j = (int(v) for v in np.argwhere(~np.isfinite(A))[0])
+            return text + (
+                f"; the Jacobian there is not finite: the rate of {self.state_names[i]} has a derivative of {A[i, j]} "
+                f"in {self.state_names[j]} (a law without a derivative at this point: a square root or an absolute "
+                "value at zero with no regularisation, a division by zero)."
+            )
         lam, vec = np.linalg.eig(A)
         i = int(np.argmax(np.abs(lam)))
         weight = np.abs(vec[:, i])
