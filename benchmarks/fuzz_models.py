@@ -33,7 +33,7 @@ their declared ranges (:class:`hydroservo.components.Param`):
   ``zeta_n = 0``, ``s0 = 1``), which is inside the range too.
 
 Each set runs as ``system.simulate(params=...)`` with the model's own
-``t_end``, in one of ``--workers`` worker processes (``--worker``; the runs of
+``t_end`` (and ``--method``, default ``auto`` as a user runs), in one of ``--workers`` worker processes (``--worker``; the runs of
 all models interleaved) whose wall time is bounded: a run over ``--timeout``
 seconds is a *hang*, the worker is killed and replaced. Each record also says
 whether the set would pass the components' own cross-parameter checks
