@@ -33,7 +33,7 @@ their declared ranges (:class:`hydroservo.components.Param`):
   ``zeta_n = 0``, ``s0 = 1``), which is inside the range too.
 
 Each set runs as ``system.simulate(params=...)`` with the model's own
-``t_end``, in one of ``--workers`` worker processes (``--worker``; the runs of
+``t_end`` (and ``--method``, default ``auto`` as a user runs), in one of ``--workers`` worker processes (``--worker``; the runs of
 all models interleaved) whose wall time is bounded: a run over ``--timeout``
 seconds is a *hang*, the worker is killed and replaced. Each record also says
 whether the set would pass the components' own cross-parameter checks
@@ -561,7 +561,13 @@ class Runner:
             self.systems[source] = load_model(source)
         return self.systems[source]
 
-    def run(self, source: str, params: Mapping[str, float], pressure_margin: float = PRESSURE_MARGIN) -> dict[str, Any]:
+    def run(
+        self,
+        source: str,
+        params: Mapping[str, float],
+        pressure_margin: float = PRESSURE_MARGIN,
+        method: str = "auto",
+    ) -> dict[str, Any]:
         from hydroservo.errors import HydroservoError
 
         system = self.system(source)
@@ -571,7 +577,7 @@ class Runner:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             try:
-                result = system.simulate(params=_with_units(system, params))
+                result = system.simulate(params=_with_units(system, params), method=method)
                 out["wall_s"] = time.perf_counter() - start
                 phase = "checks"
                 issues = plausibility(system, result, pressure_margin)
@@ -693,7 +699,9 @@ def worker_main() -> None:
 def _serve(runner: Runner, req: Mapping[str, Any]) -> dict[str, Any]:
     """One request of the worker protocol."""
     if req["op"] == "run":
-        return runner.run(req["model"], req["params"], req.get("pressure_margin", PRESSURE_MARGIN))
+        return runner.run(
+            req["model"], req["params"], req.get("pressure_margin", PRESSURE_MARGIN), req.get("method", "auto")
+        )
     if req["op"] == "batch":
         return runner.batch(req["model"], req["sets"], req.get("pressure_margin", PRESSURE_MARGIN), req.get("n_points"))
     if req["op"] == "ping":
@@ -826,6 +834,7 @@ class Config:
     edge_prob: float = EDGE_PROB
     all_prob: float = ALL_PROB
     pressure_margin: float = PRESSURE_MARGIN
+    method: str = "auto"
     quiet: bool = False
     extra: dict[str, Any] = field(default_factory=dict)
 
@@ -898,6 +907,7 @@ def fuzz(cfg: Config) -> dict[str, Any]:
                         "params": sets[i],
                         "id": len(reqs),
                         "pressure_margin": cfg.pressure_margin,
+                        "method": cfg.method,
                     }
                 )
                 where.append((m, i))
@@ -1293,6 +1303,7 @@ def main(argv: list[str] | None = None) -> int:
     )
     ap.add_argument("--all-prob", type=float, default=ALL_PROB, help="fraction of sets that vary every candidate")
     ap.add_argument("--edge-prob", type=float, default=EDGE_PROB, help="probability of a closed end of a range")
+    ap.add_argument("--method", default="auto", help="the solver of every run (default: auto, as a user runs)")
     ap.add_argument("--worker", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     if args.worker:
@@ -1309,6 +1320,7 @@ def main(argv: list[str] | None = None) -> int:
         all_prob=args.all_prob,
         edge_prob=args.edge_prob,
         pressure_margin=args.pressure_margin,
+        method=args.method,
     )
     report = fuzz(cfg)
     print(format_report(report))

@@ -1752,3 +1752,28 @@ def test_api_quantity_with_digit_groups(vc_system: hs.System) -> None:
 def test_option_numbers_with_digit_groups(argv: list[str], option: str, ws: Workspace, run) -> None:
     # the options' number lists read with float() took '2_0' as 20
     refused(run, ws, [*argv, "--out", ws.out], [re.escape(option), r"'(2_0|1_0%)'"])
+
+# ---- issue 37: solver robustness (absurd horizons, parameters out of all proportion) ----
+#: Parameters of 1e300 (SI) that both methods must refuse alike, naming the parameter: each makes a rate at the
+#: start faster than any circuit's (Model.FASTEST_RATE). Before: the default method ran load.B = 1e300 N*s/m (the
+#: load locked), CVODES gave "NaN or Inf".
+OUT_OF_PROPORTION = {
+    "damping": ("load.B=1e300 N*s/m", r"load\.B = 1e\+300 N·s/m is out of all proportion"),
+    "bulk-modulus": ("cyl.beta_e=1e300 Pa", r"cyl\.beta_e = 1e\+300 Pa is out of all proportion"),
+    "coulomb-friction": ("load.F_c0=1e300 N", r"load\.F_c0 = 1e\+300 N is out of all proportion"),
+    "leakage": ("cyl.C_Li=1e300 m^3/s/Pa", r"cyl\.C_Li = 1e\+300 .* is out of all proportion"),
+}
+
+
+@pytest.mark.parametrize("method", ["auto", "cvodes"])
+@pytest.mark.parametrize("case", list(OUT_OF_PROPORTION))
+def test_parameter_out_of_all_proportion_refused_by_both_methods(ws: Workspace, run, case: str, method: str) -> None:
+    setting, pattern = OUT_OF_PROPORTION[case]
+    argv = ["simulate", "position-servo", "--set", setting, "--method", method, "--out", ws.out]
+    refused(run, ws, argv, [pattern, r"(?i)check the value and its unit"])
+
+
+def test_absurd_horizon_says_how_far_the_run_would_need(ws: Workspace, run) -> None:
+    """``--t-end 1e300`` said "the step fell to 0.000395 s" at t = 0; now the pace and the steps it would take."""
+    o = refused(run, ws, ["simulate", "position-servo", "--t-end", "1e300", "--out", ws.out], [r"1e\+300 s asked for"])
+    assert "step fell" not in o.err

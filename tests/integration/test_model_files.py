@@ -77,5 +77,11 @@ def test_every_builtin_model_and_example_file_exports_and_reads_back_the_same() 
             systems[name] = system_from_dict(data)
     for name, system in systems.items():
         back = system_from_dict(tomllib.loads(model_to_toml(system)))
-        assert back.parameter_values() == system.parameter_values(), name
+        # a stroke set on a valve is written on the spool that drives it: the pair's values as run are the same
+        strokes = {key for pair in system.stroke_pairs() for key in pair}
+        values, values_back = system.parameter_values(), back.parameter_values()
+        assert {k: v for k, v in values_back.items() if k not in strokes} == {
+            k: v for k, v in values.items() if k not in strokes
+        }, name
+        assert back.parameter_vector().tolist() == system.parameter_vector().tolist(), name
         assert back._structure_key() == system._structure_key(), name

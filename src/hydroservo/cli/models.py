@@ -105,8 +105,8 @@ def add_parsers(sub: Any) -> None:
         type=int,
         default=None,
         metavar="N",
-        help="the run's step budget, shared over the output times (default 100000 at the default accuracy; a long "
-        "run of a stiff circuit may need more)",
+        help="the run's step budget (default at the default accuracy: 100000 for cvodes, shared over the output "
+        "times, and 1000000 for the compiled methods; a long run of a stiff circuit may need more)",
     )
     p.add_argument(
         "--strict",

@@ -41,6 +41,7 @@ How the extracted text was read
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping
 from typing import Any
 
@@ -92,6 +93,10 @@ PARAMETER_UNITS = {
 PRINTED_UNITS = {k: {"": "", _A: "L/min/bar^0.5", _A2: "(L/min)^2/bar"}[u] for k, u in PARAMETER_UNITS.items()}
 
 #: Parameter names of each structure, as in the paper.
+#: How far the two branches of a variable-structure section may differ at x_t, as a fraction of the larger: the
+#: rounding of printed parameters (the published KBSDG4V-3 set: 0.04 %), well short of a jump.
+CONTINUITY = 0.05
+
 PARAMETER_NAMES = {"variable": ("k", "gamma", "alpha", "beta", "x_t"), "fixed": ("k1", "k2", "k3", "k4", "k5")}
 
 
@@ -554,6 +559,20 @@ def check_sections(structure: str, params: Mapping[str, float]) -> None:
         for key in ("k", "gamma", "alpha"):
             if not params[key] > 0:
                 raise ParameterError(f"variable-structure {key} = {params[key]!r}: expected > 0 (eq. 24)")
+        # x_t is where the two branches meet (eqs. 24, 27-31: identification.datasheet derives alpha, beta and
+        # x_t from that): a section that jumps there is a flow that jumps with the spool, a discontinuity no
+        # valve has and no solver steps across (k = 63, x_t = 0.91 jumps by a factor of 1e11)
+        k, gamma, alpha, beta, x_t = (float(params[n]) for n in ("k", "gamma", "alpha", "beta", "x_t"))
+        with np.errstate(over="ignore"):
+            inner, outer = gamma * math.exp(min(k * x_t / 2.0, 700.0)), alpha * x_t + beta
+        if not abs(inner - outer) <= CONTINUITY * max(abs(inner), abs(outer)):
+            raise ParameterError(
+                f"variable-structure pseudo-section: at the transition point x_t = {x_t:.4g} the inner branch "
+                f"gamma exp(k x_t / 2) = {inner:.4g} (k = {k:.4g}, gamma = {gamma:.4g}) and the outer one "
+                f"alpha x_t + beta = {outer:.4g} (alpha = {alpha:.4g}, beta = {beta:.4g}) differ by more than "
+                f"{CONTINUITY:.0%}; expected a continuous section (eq. 24: x_t is where they meet; "
+                "identification.fit_datasheet derives alpha, beta and x_t from k and gamma)"
+            )
     A_p, _ = pseudo_sections(x, structure, dict(params))
     scale = float(np.max(np.abs(A_p)))
     # Below 0.1 % of the largest section a negative value is rounding (the published fixed set itself

@@ -42,6 +42,10 @@ MIN_STEPS_PER_INTERVAL = 500
 
 #: Step budget of a run at rtol 1e-6 (accuracy 1e-4) and looser: the built-in models take 600 to 25 000 steps there.
 DEFAULT_MAX_STEPS = 100_000
+#: The compiled methods' default budget, this many times CVODES': their steps cost microseconds (100 000 of the
+#: flight simulator's take 1 s), random valid sets whose valve chatters between its stops take up to 550 000, and
+#: a run that is stuck fails within 10 000 steps whatever the budget (data/c/stepper.c, STUCK_STEPS).
+COMPILED_STEPS_FACTOR = 10
 
 _REASONS = {
     "CV_TOO_MUCH_WORK": "the step budget was used up (the dynamics are too fast for the time span, or a state diverges)",
@@ -177,6 +181,8 @@ class SolverSettings:
             atol = rtol / RTOL_PER_ATOL if _real(rtol) else 1e-8
         if max_steps is None:
             max_steps = default_max_steps(rtol) if _real(rtol) and rtol > 0 else DEFAULT_MAX_STEPS
+            if method != "cvodes":
+                max_steps *= COMPILED_STEPS_FACTOR
         return cls(rtol, atol, max_steps)
 
     def steps_per_interval(self, n_intervals: int) -> int:

@@ -54,6 +54,13 @@ if TYPE_CHECKING:
 __all__ = ["Model"]
 
 _INTERPRETED_SAID = threading.Event()
+#: The largest entry of the Jacobian on the scaled states at the start of a run [1/s]: a time scale of 1e-20 s,
+#: ten orders of magnitude beyond the largest entry among 300 random sets of the flight simulator and the
+#: servo-solenoid cylinder varying every parameter (4e10 1/s; fuzz_models.py --all-prob 1 --seed 1), and below
+#: where CVODES starts to fail (position-servo's load.B: it runs at an entry of 1e28 1/s, fails at 1e33).
+FASTEST_RATE = 1e20
+#: A state beyond this many times its nominal magnitude where a run failed: the solution diverged.
+RUNAWAY = 1e6
 
 
 def _progress_of(
@@ -343,10 +350,12 @@ class Model:
             ``rtol = accuracy / 100`` (:func:`hydroservo.system.integration.tolerances`). Neither
             given: 1e-4, i.e. rtol 1e-6 and atol 1e-8.
         max_steps : int
-            Step budget of the run, shared out over the output intervals (at least 500
+            Step budget of the run (CVODES: shared out over the output intervals, at least 500
             each): a hopeless parameter set fails in about this many steps. Default: 100 000 at
             rtol 1e-6 and looser, more at tighter tolerances
-            (:func:`~hydroservo.system.integration.default_max_steps`).
+            (:func:`~hydroservo.system.integration.default_max_steps`), and ten times that for the
+            compiled methods, whose steps are cheap (a compiled run that stops advancing fails within
+            10 000 steps, whatever the budget).
         initial : "parameters", "trim" or mapping
             Initial state, see :meth:`initial_state`.
         method : str
@@ -382,6 +391,7 @@ class Model:
         why = self.unconverged(grid[:1], (x0 / self.nominal)[:, None], p)
         if why is not None:
             raise SolverError(f"integration of {self.name!r} cannot start: {why}")
+        self._check_time_scale(float(grid[0]), x0, p)
         if method != "cvodes":
             return self._compiled_run(method, grid, x0, p, settings, events)
         integ = self._integrator(grid, settings)
@@ -412,6 +422,46 @@ class Model:
         stats: dict[str, Any] = {k: found[k] for k in kept if isinstance(found.get(k), (int, float))}
         stats.update({"method": "cvodes", "rtol": settings.rtol, "atol": settings.atol, "wall_time_s": wall})
         return self._result(grid, None, p, stats, xf)
+
+    def _check_time_scale(self, t0: float, x0: np.ndarray, p: np.ndarray) -> None:
+        """Refuse a start whose Jacobian (on the scaled states) has an entry beyond :data:`FASTEST_RATE`: a time
+        scale no circuit has, which only a parameter out of all proportion gives (``B = 1e300 N*s/m``). Neither
+        method integrates it reliably in double precision (the compiled ones step over it, CVODES overflows), so
+        both refuse it alike, naming the entry and the parameters it grows with."""
+        A = np.asarray(self._jz(t0, x0 / self.nominal, p), dtype=float)
+        with np.errstate(invalid="ignore"):
+            bad = np.abs(A) > FASTEST_RATE  # Inf counts; NaN (a law without a derivative there) is the solver's to say
+        if not bad.any():
+            return
+        i, j = (int(v) for v in np.argwhere(bad)[0])
+        t, z, ps = self._dae["t"], self._dae["x"], self._dae["p"]
+        entry = ca.jacobian(self._dae["ode"][i], z)[j]
+        dA = ca.jacobian(entry, ps)
+        depends = np.asarray(ca.DM(dA.sparsity(), 1), dtype=float).ravel() > 0
+        grad = np.asarray(ca.Function("dA_dp", [t, z, ps], [dA])(t0, x0 / self.nominal, p), dtype=float).ravel()
+        with np.errstate(all="ignore"):
+            share = np.abs(grad * p / A[i, j])  # the entry's log-sensitivity to each parameter
+            extreme = np.where(p != 0, np.abs(np.log10(np.abs(p))), 0.0)  # among equal shares, furthest from 1 first
+        if not np.isfinite(A[i, j]):  # no sensitivity to speak of: the parameters it depends on, extreme first
+            share = depends.astype(float)
+        share = np.where(depends, np.nan_to_num(share, nan=np.inf), 0.0)
+        order = [k for k in np.lexsort((-extreme, -share)) if share[k] > 0.1]
+        named = [
+            f"{self.parameter_names[k]} = {p[k]:.4g} {si_unit(self.parameter_units.get(self.parameter_names[k], ''))}".rstrip()
+            for k in order[:4]
+        ]
+        xi, xj = self.state_names[i], self.state_names[j]
+        ui, uj = (si_unit(self.units.get(n, "")) for n in (xi, xj))
+        unit = "1/s" if ui == uj else f"{ui or '1'}/s per {uj or 'unit'}"
+        value = A[i, j] * self.nominal[i] / self.nominal[j]
+        scale = f"a time scale of {1 / abs(A[i, j]):.3g} s" if np.isfinite(A[i, j]) and A[i, j] != 0 else "no finite time scale"
+        head = f"{named[0]} is out of all proportion" if named else f"{self.name!r} cannot be integrated"
+        raise ParameterError(
+            f"{head}: at the start the rate of {xi} changes with {xj} by {value:.3g} {unit} ({scale}; the limit, on "
+            f"the states scaled by their nominal magnitudes, is {FASTEST_RATE:.0e} 1/s: no circuit has a mode that "
+            f"fast, and neither solver integrates one reliably in double precision); that rate grows with "
+            f"{', '.join(named) if named else 'no parameter'}: check the value and its unit"
+        )
 
     def _resolve(self, method: str) -> str:
         """The method ``method`` names: ``auto`` is :data:`~hydroservo.system.integration.AUTO_METHOD` if this
@@ -547,13 +597,27 @@ class Model:
         rates = np.asarray(self.f(t, x, p), dtype=float).ravel() / self.nominal
         k = int(np.argmax(np.abs(np.where(np.isfinite(rates), rates, np.inf))))
         unit = si_unit(self.units.get(self.state_names[k], ""))
-        text = (
+        text = ""
+        size = np.abs(np.where(np.isfinite(x), x, np.inf)) / self.nominal
+        if size.max() > RUNAWAY:  # the cause: nothing bounds the solution, no step control helps
+            r = int(np.argmax(size))
+            text = (
+                f"The solution diverges: {self.state_names[r]} reached {x[r]:.3g} "
+                f"{si_unit(self.units.get(self.state_names[r], ''))}, {size[r]:.1e} times its nominal magnitude "
+                "(an unstable loop that nothing in the model bounds, for these parameters). "
+            )
+        text += (
             f"At t = {t:.6g} s the state changing fastest was {self.state_names[k]} = {x[k]:.6g} {unit} "
             f"(rate {rates[k] * self.nominal[k]:.3g} {unit}/s)"
         )
         A = np.asarray(self._jz(t, x / self.nominal, p), dtype=float)
         if not np.all(np.isfinite(A)):
-            return text + "; the Jacobian there is not finite."
+            i, j = (int(v) for v in np.argwhere(~np.isfinite(A))[0])
+            return text + (
+                f"; the Jacobian there is not finite: the rate of {self.state_names[i]} has a derivative of {A[i, j]} "
+                f"in {self.state_names[j]} (a law without a derivative at this point: a square root or an absolute "
+                "value at zero with no regularisation, a division by zero)."
+            )
         lam, vec = np.linalg.eig(A)
         i = int(np.argmax(np.abs(lam)))
         weight = np.abs(vec[:, i])
@@ -566,7 +630,9 @@ class Model:
         )
         grow = int(np.argmax(lam.real))
         if lam[grow].real > 1e-6 * abs(lam[i]):
-            text += f"; the model is unstable there (a mode grows at {lam[grow].real:.3g} 1/s)"
+            w = np.abs(vec[:, grow])
+            growing = [self.state_names[j] for j in np.argsort(-w) if w[j] > 0.3 * w.max()][:3]
+            text += f"; the model is unstable there (a mode grows at {lam[grow].real:.3g} 1/s, mostly in {', '.join(growing)})"
         if all(si_unit(self.units.get(n, "")) == "Pa" for n in names):
             text += "; fast pressure modes come from small volumes, a large bulk modulus or large areas"
         return text + "."

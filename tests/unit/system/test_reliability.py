@@ -193,9 +193,11 @@ def test_a_piston_driven_through_missing_stops_is_flagged(flight: hs.System) -> 
     with pytest.warns(hs.ImplausibleResultWarning, match=r"physically implausible result of 'flight-simulator'"):
         r = flight.simulate(t_end=2.0, params={"source.amplitude": 100.0, "cyl.k_stop": 0.0, "cyl.c_stop": 0.0})
     signals = {w.signal for w in r.warnings}
-    assert signals == {"load.x", "cyl.pA"}
+    # the piston, not the chamber: since the spool stops at its travel (issue 37), the saturated valve opens no
+    # further than fully, and cyl.pA stays within the margin (it peaked above it with the spool at 71 mm, 28 times its travel)
+    assert signals == {"load.x"}
     travel = next(w for w in r.warnings if w.signal == "load.x")
-    assert travel.value < -10 and "cyl.x_min = -0.381 m" in travel.message
+    assert travel.value < -1 and "cyl.x_min = -0.381 m" in travel.message  # 4.9 m at full opening
     # With the model's own end stops the same command stays physical.
     assert flight.simulate(t_end=2.0, params={"source.amplitude": 100.0}).warnings == []
 

@@ -59,6 +59,8 @@
 #include <string.h>
 
 #define @UPPER@_AT_LEAST_1(n) ((n) > 0 ? (n) : 1)
+/* @NAME@_integrate: every this many steps, a run that advanced by less than 1e-9 of its span is stuck */
+#define @UPPER@_STUCK_STEPS 10000
 #define @UPPER@_NP (@UPPER@_N_PARAMETERS + @UPPER@_N_INPUTS)
 #define @UPPER@_NZ @UPPER@_AT_LEAST_1(@UPPER@_N_STATES)
 
@@ -551,7 +553,8 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
     const double exponent = 1.0 / (order + 1);
     const char *method_name = method == @UPPER@_DOPRI5 ? "dopri5" : (method == @UPPER@_RODAS3 ? "rodas3" : "ros23");
     double t = times[0], t_end = times[n_times - 1], *err = m->k[6];
-    long out = 1, taken = 0;
+    long out = 1, taken = 0, taken_mark = 0;
+    double t_mark = times[0];
     int rejected_last = 0, status = @UPPER@_OK;
     @NAME@_record(m, 0, t, m->z, states, outputs);
     if (n_times == 1) return @UPPER@_OK;
@@ -584,17 +587,36 @@ int @NAME@_integrate(@NAME@_instance *m, int method, int events, double rtol, do
         }
         if (taken >= max_steps) {
             snprintf(m->message, sizeof m->message,
-                     "t = %.9g s: the step budget of %ld steps was used up (last step %.3g s); the dynamics are too "
-                     "fast for the time span%s, or a state diverges",
-                     t, max_steps, h, explicit_method ? " (stiff? ros23 is for stiff circuits)" : "");
+                     "t = %.9g s: the step budget of %ld steps was used up (last step %.3g s, mean step %.3g s; "
+                     "%.3g s of the %.3g s asked for were done); the dynamics are too fast for the time span%s, or a "
+                     "state diverges",
+                     t, max_steps, h, (t - times[0]) / (double)max_steps, t - times[0], t_end - times[0],
+                     explicit_method ? " (stiff? ros23 is for stiff circuits)" : "");
             status = @UPPER@_TOO_MUCH_WORK;
             break;
+        }
+        if (taken - taken_mark >= @UPPER@_STUCK_STEPS) { /* a run that no longer advances fails now, not at the budget */
+            if (t - t_mark < 1e-9 * (t_end - times[0])) {
+                const double mean = (t - t_mark) / (double)(taken - taken_mark);
+                snprintf(m->message, sizeof m->message,
+                         "t = %.9g s: the last %ld steps advanced by %.3g s in all (mean step %.3g s); at that pace the "
+                         "%.3g s left of the %.3g s asked for would take %.2g steps (budget %ld): the step control is "
+                         "stuck at a kink or a jump of the rates here, or the span is far too long for the model's "
+                         "dynamics (%s)",
+                         t, taken - taken_mark, t - t_mark, mean, t_end - t, t_end - times[0],
+                         mean > 0.0 ? (t_end - t) / mean : HUGE_VAL, max_steps, method_name);
+                status = @UPPER@_STEP_TOO_SMALL;
+                break;
+            }
+            taken_mark = taken, t_mark = t;
         }
         /* no step passes the next output time: every output time ends a step, so an input that changes between
          * two of them (a square wave's edge, a table's corner) cannot be stepped over unseen */
         const double stop = times[out], remaining = stop - t, h_wanted = h;
         if (h >= (1.0 - 1e-6) * remaining || t + h >= stop) h = remaining; /* never a sliver short of it */
-        if (!(h > 16.0 * DBL_EPSILON * fmax(fabs(t), 1e-3 * hmax))) {
+        /* the floor: what floating point resolves at t, and near t = 0 a thousandth of the span, but never more
+         * than 1e-3 s of it (a horizon of 1e300 s must not make a step of 1e-7 s "too small") */
+        if (!(h > 16.0 * DBL_EPSILON * fmax(fabs(t), 1e-3 * fmin(hmax, 1.0)))) {
             snprintf(m->message, sizeof m->message,
                      "t = %.9g s: the step fell to %.3g s; the rates are discontinuous or not finite here (%s)", t, h,
                      method_name);
