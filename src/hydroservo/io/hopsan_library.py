@@ -2189,7 +2189,12 @@ def _sensor(variable: str, unit: str) -> Builder:
     def build(hc: HopsanComponent, n: str, par: _Params) -> Mapped:
         from hydroservo.components import Sum
 
-        return Mapped([Sum(n, unit=unit, gain2=0.0)], read={"P1": (f"{n}.u1", variable)}, outputs={"out": f"{n}.y"})
+        # A pressure read is Hopsan's absolute one (the node's value plus the atmosphere, as the blocks it feeds
+        # expect): its Hopsan-named variable is shown as absolute, as the node's own pressure is, not as a gauge
+        # pressure (shown in Pa_abs that added the atmosphere twice)
+        values = {"out": Var(1.0, f"{n}.y", unit="Pa_abs")} if variable == "Pressure" else {}
+        return Mapped([Sum(n, unit=unit, gain2=0.0)], read={"P1": (f"{n}.u1", variable)}, outputs={"out": f"{n}.y"},
+                      values=values)
 
     return build
 

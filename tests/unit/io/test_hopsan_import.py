@@ -2885,3 +2885,18 @@ def test_hopsans_piston_with_mass_load_leaks_between_its_ports_and_stops_at_xmin
     assert r["P.P1.Flow"][1] == pytest.approx(-2e-3 * a * 0.02 - 1e-12 * 1e6, rel=1e-6)
     assert r["P.Pmp.Position"][-1] == pytest.approx(0.3, abs=1e-5)
     assert r["P.P1.Flow"][-1] == pytest.approx(-1e-12 * 1e6, rel=1e-3)
+
+
+def test_a_pressure_sensor_shows_the_pressure_of_its_node(tmp_path: Path) -> None:
+    """Hopsan's pressure sensor gives its node's absolute pressure: its output (the number its blocks are fed) is
+    the node's pressure plus the atmosphere, and shown in any pressure unit it reads as the node's own pressure
+    (declared as a gauge pressure, 'Pa', it was shown one atmosphere too high in Pa_abs, bar or psi)."""
+    components = [("HydraulicPressureSourceC", "S", {"p#Value": ("5e6", "Pa")}), ("HydraulicFlowSourceQ", "Q", {}),
+                  ("HydraulicPressureSensor", "PS", {}), ("SignalSink", "Scope", {})]
+    connections = [("S.P1", "Q.P1"), ("PS.P1", "Q.P1"), ("PS.out", "Scope.in")]
+    path = tmp_path / "sensor.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    r = read_hopsan(path).simulate(t_eval=[0.0, 0.1])
+    assert r["PS.out.Value"][-1] == pytest.approx(5e6)  # Hopsan's number, absolute
+    for unit in ("Pa_abs", "bar", "psi"):
+        assert r.get("PS.out.Value", unit)[-1] == pytest.approx(r.get("S.P1.Pressure", unit)[-1], rel=1e-9), unit
