@@ -18,6 +18,7 @@ import threading
 import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import hydroservo as hs
@@ -245,3 +246,52 @@ def test_an_exported_stepper_stops_when_the_flag_is_set(monkeypatch: pytest.Monk
     assert time.process_time() - start < 30.0
     STOP.value = 0
     stepper.advance(10)  # the instance goes on from where it stopped, outside the guard
+
+
+#: calibrate's starts run on threads, where an integration cannot see the signal: each start stops at its next
+#: evaluation of the residuals or their Jacobian (a Jacobian of the arm's records, with its sensitivities, takes
+#: up to about a second of CPU on this machine), so the bound here is wider than a single run's
+CPU_AFTER_SIGNAL_STARTS = 4.0
+
+
+@needs_proc
+def test_ctrl_c_stops_calibrate_with_starts_on_threads(tmp_path: Path) -> None:
+    """Exit 130, one message, nothing written. Before, the starts running when Ctrl-C came ran to their end (the
+    pool waited for them): on this small example a start is short, so the CPU bound alone does not tell the two
+    apart; test_a_start_stops_at_its_next_evaluation_once_the_flag_is_set does."""
+    from hydroservo.data import example_files
+
+    records = []
+    for name, text in example_files().items():
+        if name.startswith("arm_step"):
+            (tmp_path / name).write_text(text, encoding="utf-8")
+            records.append(name)
+    out = tmp_path / "cal"
+    argv = [sys.executable, "-m", "hydroservo", "calibrate", "robot-arm", "--record", ",".join(sorted(records)),
+            "--input", "command.y", "--noise", "cyl.pA=0.05 bar,cyl.pB=0.05 bar,load.x=0.02 mm", "--starts", "32",
+            "--out", str(out)]
+    for name in ("spool.tau", "valve.c_v", "cyl.C_Li", "load.B", "load.F_c0"):
+        argv += ["--fit", name]
+    code, stdout, stderr, after = _interrupt(argv, tmp_path)
+    assert code == 130, stderr[-2000:]
+    assert "Traceback" not in stderr and "interrupted" in stderr, stderr[-2000:]
+    assert not out.exists()
+    assert after < CPU_AFTER_SIGNAL_STARTS, f"{after:.2f} s of CPU after SIGINT"
+
+
+def test_a_start_stops_at_its_next_evaluation_once_the_flag_is_set() -> None:
+    """A calibration start on a worker thread reads the guard's flag before each evaluation of its residuals and
+    their Jacobian: set, it raises Interrupted there instead of fitting on."""
+    import ctypes
+
+    from hydroservo.identification import calibration as cal
+
+    problem = cal._Problem([], [], {}, cal.SolverSettings.of())
+    flag = ctypes.c_int(0)
+    problem.stop = flag
+    problem._check_stop()  # not set: nothing
+    flag.value = 1
+    with pytest.raises(Interrupted, match="calibration"):
+        problem.residuals(np.zeros(0))
+    with pytest.raises(Interrupted, match="calibration"):
+        problem.jacobian(np.zeros(0))

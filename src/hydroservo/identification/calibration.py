@@ -55,7 +55,7 @@ from hydroservo.components.signals import Table
 from hydroservo.components.sources import PressureTable
 from hydroservo.errors import HydroservoError, ParameterError, SolverError, TrimError, UnitError
 from hydroservo.identification.records import Channel, Record
-from hydroservo.system.integration import SolverSettings
+from hydroservo.system.integration import Interrupted, SolverSettings, interruptible
 from hydroservo.units import coherent_unit, from_si, same_dimension, si_unit, split_quantity, to_si
 
 if TYPE_CHECKING:
@@ -431,6 +431,8 @@ class _Problem:
         self.experiments, self.params, self.sigma, self.settings = experiments, params, sigma, settings
         self.nfev = 0
         self.njev = 0
+        #: the flag of the interrupt guard a start on a worker thread runs under (:func:`interruptible`), or None
+        self.stop: Any = None
         # the initial states estimated per experiment come after the shared parameters
         self.extra = [(e, s) for e, exp in enumerate(experiments) for s in exp.estimate_initial]
         self.base = [exp.system.parameter_vector() for exp in experiments]
@@ -520,7 +522,14 @@ class _Problem:
         X = np.vstack([result[s] for s in exp.model.state_names]) if exp.model.nx else np.zeros((0, exp.grid.size))
         return self._signals(e, X, p)
 
+    def _check_stop(self) -> None:
+        """Raises :class:`Interrupted` once Ctrl-C has set the flag of a guard this fit runs under (a start on a
+        worker thread, whose integrations may not see the signal themselves)."""
+        if self.stop is not None and self.stop.value:
+            raise Interrupted(f"calibration ({self.nfev} evaluations of this start done)")
+
     def residuals(self, theta: np.ndarray) -> np.ndarray:
+        self._check_stop()
         self.nfev += 1
         parts = []
         try:
@@ -534,6 +543,7 @@ class _Problem:
         return np.concatenate(parts)
 
     def jacobian(self, theta: np.ndarray) -> np.ndarray:
+        self._check_stop()
         self.njev += 1
         nth = theta.size
         blocks = []
@@ -986,8 +996,9 @@ def _run_starts(
     """Fit from every start, on all cores at once (each fit on its own copy of the problem's counters)."""
     import os
 
-    def one(theta0: np.ndarray) -> tuple[np.ndarray, Any, Exception | None, int, int]:
+    def one(theta0: np.ndarray, stop: Any = None) -> tuple[np.ndarray, Any, Exception | None, int, int]:
         local = _Problem(problem.experiments, problem.params, problem.sigma, problem.settings)
+        local.stop = stop
         try:
             sol = _solve(local, theta0, gradient, max_nfev)
         except SolverError as exc:
@@ -997,8 +1008,14 @@ def _run_starts(
     if len(starts) == 1:
         return [one(starts[0])]
     say(f"{len(starts)} starts, on {min(len(starts), os.cpu_count() or 1)} threads")
-    with ThreadPoolExecutor(max_workers=min(len(starts), os.cpu_count() or 1)) as pool:
-        return list(pool.map(one, starts))
+    # Ctrl-C: the guard's flag stops each start at its next evaluation, the starts not begun are cancelled
+    with interruptible() as flag:
+        pool = ThreadPoolExecutor(max_workers=min(len(starts), os.cpu_count() or 1))
+        try:
+            futures = [pool.submit(one, start, flag) for start in starts]
+            return [future.result() for future in futures]
+        finally:
+            pool.shutdown(wait=True, cancel_futures=True)
 
 
 # -- prediction on other records ------------------------------------------------
