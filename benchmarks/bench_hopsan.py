@@ -35,13 +35,11 @@ import statistics
 import subprocess
 import sys
 import tempfile
-import time
 import warnings
 from pathlib import Path
 
 import numpy as np
-from bench_realtime import median_time
-from results import record
+from results import median_cpu, record
 
 import hydroservo as hs
 from hydroservo.codegen.c import CStepper, export_c
@@ -71,16 +69,6 @@ def reference() -> dict[str, np.ndarray]:
 def deviations(signals: dict[str, np.ndarray], converged: dict[str, np.ndarray]) -> dict[str, float]:
     return {k: float(np.max(np.abs(signals[k] - converged[k])) / np.ptp(converged[k])) for k in ("x", "v", "pA")}
 
-
-def median_cpu(fn, repeat: int) -> float:
-    """The median CPU time [s] of ``fn()`` over ``repeat`` calls (this process: steadier than wall time on a
-    shared machine; the runs use one thread)."""
-    times = []
-    for _ in range(repeat):
-        start = time.process_time()
-        fn()
-        times.append(time.process_time() - start)
-    return statistics.median(times)
 
 
 def hydroservo_signals(result: hs.Result) -> dict[str, np.ndarray]:
@@ -142,7 +130,7 @@ def per_step(repeat: int) -> float:
         stepper.reset()
         stepper.advance(steps)
 
-    return median_time(run, repeat) / steps
+    return median_cpu(run, repeat) / steps
 
 
 def process_cpu(argv: list[str], env: dict[str, str] | None = None) -> float:

@@ -24,12 +24,11 @@ from __future__ import annotations
 
 import argparse
 import platform
-import statistics
 import subprocess
-import time
 
 import casadi as ca
 import numpy as np
+from results import median_cpu
 
 import hydroservo as hs
 from hydroservo.codegen.c import CStepper, compiler
@@ -48,17 +47,6 @@ CASES = [
 
 #: Hopsan's compiled fixed-step solver: quoted, not measured here.
 HOPSAN_US_PER_STEP = 0.5
-
-
-def median_time(fn, repeat: int) -> float:
-    """The median CPU time [s] of ``fn()`` over ``repeat`` calls: this process's, so ``fn`` must run in it on one
-    thread (a C stepper's loop, one CVODES call); steadier than wall time on a shared machine."""
-    times = []
-    for _ in range(repeat):
-        start = time.process_time()
-        fn()
-        times.append(time.process_time() - start)
-    return statistics.median(times)
 
 
 def reference(system: hs.System, t_end: float) -> hs.Result:
@@ -89,8 +77,8 @@ def c_stepper(system: hs.System, t_end: float, method: str, h: float, ref: hs.Re
         stepper.reset()
         stepper.run(t_end)
 
-    row["us_per_step"] = median_time(loop, 15) / n * 1e6
-    row["us_per_step_recorded"] = median_time(recorded, 5) / n * 1e6
+    row["us_per_step"] = median_cpu(loop, 15) / n * 1e6
+    row["us_per_step_recorded"] = median_cpu(recorded, 5) / n * 1e6
     return row
 
 
@@ -110,14 +98,14 @@ def cvodes_per_step(system: hs.System, h: float, frames: int = 400) -> float:
         for k in range(frames):
             state = step(x0=state, p=np.append(p, k * h))["xf"]
 
-    return median_time(loop, 5) / frames * 1e6
+    return median_cpu(loop, 5) / frames * 1e6
 
 
 def cvodes_with_output_every_step(system: hs.System, t_end: float, h: float) -> float:
     """Microseconds per step of h for one System.simulate run with an output at every step."""
     grid = np.linspace(0.0, t_end, round(t_end / h) + 1)
     system.simulate(t_end, t_eval=grid, method="cvodes")
-    return median_time(lambda: system.simulate(t_end, t_eval=grid, method="cvodes"), 5) / (grid.size - 1) * 1e6
+    return median_cpu(lambda: system.simulate(t_end, t_eval=grid, method="cvodes"), 5) / (grid.size - 1) * 1e6
 
 
 def rk4_stability_limit(

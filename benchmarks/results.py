@@ -29,6 +29,20 @@ FOLDER = Path(__file__).resolve().parent / "results"
 PACKAGES = ("hydroservo", "numpy", "scipy", "casadi")
 
 
+def median_cpu(fn, repeat: int) -> float:
+    """The median CPU time [s] of ``fn()`` over ``repeat`` calls: this process's, so ``fn`` must run in it on one
+    thread (a C stepper's loop, one CVODES call); steadier than wall time on a shared machine."""
+    import statistics
+    import time
+
+    times = []
+    for _ in range(repeat):
+        start = time.process_time()
+        fn()
+        times.append(time.process_time() - start)
+    return statistics.median(times)
+
+
 def cpu_model() -> str:
     try:
         for line in Path("/proc/cpuinfo").read_text(encoding="utf-8").splitlines():

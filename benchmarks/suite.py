@@ -100,7 +100,8 @@ def rows() -> list[tuple[str, str, str]]:
         fig[f"batch_speedup_{m}"] = v
     record("compiled", fig, script=SCRIPT)
     out.append((
-        "batch of 64 flight-simulator runs, compiled rodas3: speed on 2 threads",
+        "batch of 64 flight-simulator runs, compiled rodas3: CPU time on 1 thread over CPU time on 2 (the work the threads add; "
+        "what they save in wall time cannot be measured here, where a session gets about half a core)",
         f"{mark('compiled.batch_speedup_rodas3', fig['batch_speedup_rodas3'], '.2f')}x", "1 thread",
     ))  # fmt: skip
     acc = bench_accuracy.main(repeat=3, methods=("rodas3",))
