@@ -6,6 +6,9 @@ modules cannot import one another: what several of them need lives here.
 
 from __future__ import annotations
 
+import contextlib
+import io
+import shlex
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
@@ -52,6 +55,36 @@ def cli(capsys: pytest.CaptureFixture[str]) -> CliRun:
         code = main(list(argv))
         out = capsys.readouterr()
         return code, out.out, out.err
+
+    return run
+
+
+@pytest.fixture
+def command_line(monkeypatch: pytest.MonkeyPatch) -> Callable[[str], None]:
+    """``command_line("cd out && hydroservo simulate x > out.txt")`` runs a documented command line as a shell
+    would: ``cd`` as such, each ``hydroservo`` part through the CLI in-process (exit code 0 expected), ``> file``
+    writing what it printed."""
+
+    def run(line: str) -> None:
+        for part in line.split("&&"):
+            argv = shlex.split(part.strip())
+            if argv[0] == "cd":
+                monkeypatch.chdir(argv[1])
+                continue
+            assert argv[0] == "hydroservo", f"not a hydroservo command: {part.strip()!r}"
+            target = None
+            if ">" in argv:
+                target = Path(argv[argv.index(">") + 1])
+                argv = argv[: argv.index(">")]
+            out = io.StringIO()
+            with contextlib.redirect_stdout(out):
+                try:
+                    code = main(argv[1:])
+                except SystemExit as exc:  # --version and --help answer by exiting
+                    code = exc.code if isinstance(exc.code, int) else 1
+            assert code == 0, f"{part.strip()!r} exited with {code}:\n{out.getvalue()}"
+            if target is not None:
+                target.write_text(out.getvalue(), encoding="utf-8")
 
     return run
 

@@ -10,15 +10,11 @@ before it left. docs/hopsan.md's import commands run the same way, from the file
 
 from __future__ import annotations
 
-import contextlib
-import io
 import re
-import shlex
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
-
-from hydroservo.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 GETTING_STARTED = ROOT / "docs" / "getting_started.md"
@@ -39,28 +35,6 @@ def blocks(page: Path) -> list[tuple[str, str]]:
     """The page's ``bash`` and ``python`` blocks in its order: (kind, text)."""
     return re.findall(r"```(bash|python)\n(.*?)```", page.read_text(encoding="utf-8"), flags=re.S)
 
-
-def run_line(line: str, monkeypatch: pytest.MonkeyPatch) -> None:
-    """Run one command line: its ``hydroservo`` parts through the CLI (exit code 0 expected), ``cd`` as such."""
-    for part in line.split("&&"):
-        argv = shlex.split(part.strip())
-        if argv[0] == "cd":
-            monkeypatch.chdir(argv[1])
-            continue
-        assert argv[0] == "hydroservo", f"not a hydroservo command: {part.strip()!r}"
-        target = None
-        if ">" in argv:
-            target = Path(argv[argv.index(">") + 1])
-            argv = argv[: argv.index(">")]
-        out = io.StringIO()
-        with contextlib.redirect_stdout(out):
-            try:
-                code = main(argv[1:])
-            except SystemExit as exc:  # --version and --help answer by exiting
-                code = exc.code if isinstance(exc.code, int) else 1
-        assert code == 0, f"{part.strip()!r} exited with {code}:\n{out.getvalue()}"
-        if target is not None:
-            target.write_text(out.getvalue(), encoding="utf-8")
 
 
 def test_the_getting_started_page_is_the_first_of_the_site() -> None:
@@ -91,7 +65,7 @@ def test_no_page_installs_from_a_package_index_without_a_release() -> None:
 
 # slow: the page's simulations compile and run their models
 @pytest.mark.slow
-def test_every_getting_started_command_and_block_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_every_getting_started_command_and_block_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, command_line: Callable[[str], None]) -> None:
     import matplotlib
 
     matplotlib.use("Agg")
@@ -106,17 +80,17 @@ def test_every_getting_started_command_and_block_runs(tmp_path: Path, monkeypatc
             for line in text.splitlines():
                 line = line.split("  #")[0].strip()
                 if line.startswith(("hydroservo", "cd ")):
-                    run_line(line, monkeypatch)
+                    command_line(line)
     assert (tmp_path / "hydroservo-position-servo" / "position-servo.csv").is_file()
     assert (tmp_path / "position-servo.png").is_file() and (tmp_path / "position-mm.png").is_file()
     assert (tmp_path / "my-examples" / "servo" / "hopsan_servo.toml").is_file()
 
 
 @pytest.mark.slow
-def test_the_hopsan_pages_import_commands_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_the_hopsan_pages_import_commands_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, command_line: Callable[[str], None]) -> None:
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("HYDROSERVO_CACHE", str(tmp_path / "cache"))
     lines = bash_lines(HOPSAN)
     assert lines
     for line in lines:
-        run_line(line, monkeypatch)
+        command_line(line)

@@ -7,15 +7,12 @@ fresh folder (``cd`` and ``> file`` honoured) and expects exit code 0.
 
 from __future__ import annotations
 
-import contextlib
-import io
 import re
-import shlex
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
 
-from hydroservo.cli import main
 from hydroservo.system.native import has_compiler
 
 README = Path(__file__).resolve().parents[2] / "README.md"
@@ -46,7 +43,7 @@ def _needs_a_compiler(line: str) -> bool:
 
 
 @pytest.mark.slow
-def test_every_readme_command_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_every_readme_command_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, command_line: Callable[[str], None]) -> None:
     """Every command runs (those that compile C only where there is a C compiler)."""
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("HYDROSERVO_CACHE", str(tmp_path / "cache"))
@@ -54,21 +51,7 @@ def test_every_readme_command_runs(tmp_path: Path, monkeypatch: pytest.MonkeyPat
     for line in readme_commands():
         if _needs_a_compiler(line) and not compiles:
             continue
-        for part in line.split("&&"):
-            argv = shlex.split(part.strip())
-            if argv[0] == "cd":
-                monkeypatch.chdir(argv[1])
-                continue
-            target = None
-            if ">" in argv:
-                target = Path(argv[argv.index(">") + 1])
-                argv = argv[: argv.index(">")]
-            out = io.StringIO()
-            with contextlib.redirect_stdout(out):
-                code = main(argv[1:])
-            assert code == 0, f"{part.strip()!r} exited with {code}"
-            if target is not None:
-                target.write_text(out.getvalue())
+        command_line(line)
 
 
 @pytest.mark.slow
