@@ -257,7 +257,7 @@ def checked_model_text(text: str, system: System, what: str = "model file") -> s
 
     def described(s: System) -> tuple[Any, ...]:
         return (
-            s.name, s.t_end, list(s.components), s.parameter_values(),
+            s.name, s.t_end, list(s.components), s.parameter_values(as_run=True),  # a stroke is written once
             {c: comp.option_values for c, comp in s.components.items()},
             {frozenset(node.ports) for node in s.nodes()}, dict(s.connections), dict(s.initial),
             dict(s.aliases),

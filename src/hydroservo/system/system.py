@@ -482,8 +482,13 @@ class System:
         ``"OUTPUTS"``), by full name: ``{"load.m": Param(...), ...}``."""
         return {f"{c}.{k}": spec for c, comp in self.components.items() for k, spec in getattr(comp, kind).items()}
 
-    def parameter_values(self) -> dict[str, float]:
-        return {f"{c}.{p}": comp.values[p] for c, comp in self.components.items() for p in comp.PARAMETERS}
+    def parameter_values(self, *, as_run: bool = False) -> dict[str, float]:
+        """Every numeric parameter's value [SI] by "comp.param"; with ``as_run``, as a run takes them: the stroke a
+        valve and the spool that drives it share, set on one of them, on both."""
+        values = {f"{c}.{p}": comp.values[p] for c, comp in self.components.items() for p in comp.PARAMETERS}
+        if as_run:
+            self._share_strokes(values, ())
+        return values
 
     def parameter_key(self, key: str) -> str:
         """The current name "comp.param" of a numeric parameter given as ``key`` (a former name is accepted
