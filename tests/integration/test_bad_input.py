@@ -1777,3 +1777,24 @@ def test_absurd_horizon_says_how_far_the_run_would_need(ws: Workspace, run) -> N
     """``--t-end 1e300`` said "the step fell to 0.000395 s" at t = 0; now the pace and the steps it would take."""
     o = refused(run, ws, ["simulate", "position-servo", "--t-end", "1e300", "--out", ws.out], [r"1e\+300 s asked for"])
     assert "step fell" not in o.err
+
+
+# ---- issue 37: found by the review after the merge ----
+def test_misspelt_model_key_is_refused_with_a_suggestion(ws: Workspace, run) -> None:
+    # `tend = "0.5 s"` was dropped without a word and the run made with the default t_end
+    text = vc_base().replace("[model]\n", '[model]\ntend = "0.5 s"\n', 1)
+    refused(run, ws, ["simulate", model_file(ws, text=text), "--out", ws.out],
+            [r"vc\.toml", r"\[model\] 'tend'", r"unknown key", r"did you mean 't_end'"])
+
+
+def test_values_nested_a_thousand_deep_are_refused(ws: Workspace, run) -> None:
+    # tomllib recurses once per level: a RecursionError traceback
+    text = vc_base().replace("[model]\n", "[model]\nx = " + "[" * 2000 + "]" * 2000 + "\n", 1)
+    refused(run, ws, ["simulate", model_file(ws, text=text), "--out", ws.out], [r"vc\.toml", r"nested too deep"])
+
+
+@pytest.mark.parametrize("t", ["-1", "-1e-9"])
+@pytest.mark.parametrize("command", ["linearize", "ladder"])
+def test_an_operating_point_before_the_start_is_refused(command: str, t: str, ws: Workspace, run) -> None:
+    # linearize --t -1 printed a linear model "at t = -1 s"
+    refused(run, ws, [command, "robot-arm", f"--t={t}", "--out", ws.out], [r"--t", re.escape(repr(t)), r"0 s or later"])

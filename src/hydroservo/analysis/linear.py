@@ -28,6 +28,7 @@ Jacobians, beside the closed forms of
 
 from __future__ import annotations
 
+import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -35,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 import casadi as ca
 import numpy as np
 
-from hydroservo.errors import ModelError, ParameterError, TrimError, did_you_mean
+from hydroservo.errors import ModelError, ParameterError, TrimError, did_you_mean, shorten
 from hydroservo.system.assembly import assemble
 
 if TYPE_CHECKING:
@@ -287,6 +288,15 @@ def _default_inputs(system: System) -> list[str]:
     return found
 
 
+def operating_time(t: float, what: str = "t", given: Any = None) -> float:
+    """``t`` [s], the time of an operating point, if it is one: finite and not before the start (0 s); else a
+    ParameterError naming ``what`` and the value given."""
+    if not (math.isfinite(t) and t >= 0.0):
+        shown = given if given is not None else t
+        raise ParameterError(f"{what} {shorten(str(shown))!r}: expected the time of the operating point, 0 s or later")
+    return float(t)
+
+
 def operating_point(
     system: System,
     at: str | Mapping[str, Any] = "trim",
@@ -312,6 +322,8 @@ def operating_point(
       their initial values).
     """
     from hydroservo.units import to_si
+
+    t = operating_time(t)
 
     model = system.build()
     p = system.parameter_vector(params)

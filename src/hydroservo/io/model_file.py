@@ -80,6 +80,8 @@ __all__ = [
 _SECTIONS = ("model", "fluid", "components", "connections", "initial", "aliases")
 _FLUID_KEYS = ("name", "temperature", "pressure", "bulk_modulus")
 _META = ("citation", "status", "validation")
+#: every key [model] may hold
+_MODEL_KEYS = ("name", "description", *_META, "t_end", "plots", "plot_units", "units", "metrics", "notes")
 
 
 def _component_lines(
@@ -433,6 +435,14 @@ def system_from_dict(data: dict[str, Any], where: str = "model", base: Path | No
             f"{where}: unknown section(s) {', '.join(sorted(unknown))}; expected {', '.join(_SECTIONS)}"
         )
     meta = data.get("model", {})
+    if not isinstance(meta, dict):
+        raise ModelFileError(f"{where}: [model] = {shorten(repr(meta))}: expected a table (name, t_end, ...)")
+    for key in meta:  # a misspelt key (tend = "0.5 s") would be dropped and the run made with the default
+        if key not in _MODEL_KEYS:
+            raise ModelFileError(
+                f"{where}: [model] {shorten(str(key))!r}: unknown key{did_you_mean(str(key), _MODEL_KEYS)}; expected one "
+                f"of {', '.join(_MODEL_KEYS)}"
+            )
     try:
         t_end = to_si(meta.get("t_end", 1.0), "s", what="[model] t_end")
     except HydroservoError as exc:

@@ -33,6 +33,8 @@ def read_toml(path: str | Path, what: str, error: type[HydroservoError] = Parame
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise error(f"{what} {str(path)!r}: malformed TOML: {exc}") from None
+    except RecursionError:  # arrays or tables nested a thousand deep: the parser recurses once per level
+        raise error(f"{what} {str(path)!r}: values nested too deep to read; expected a model file's few levels") from None
 
 
 def _printable(quoted: str, text: str) -> str:

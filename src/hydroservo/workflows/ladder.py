@@ -230,7 +230,10 @@ class Ladder(Workflow):
                 f"{self.name('output')} {self.compared!r}: expected a signal of {system.name!r} (a state, output or alias)"
             )
         self.step_values = list(self.steps) if self.steps else list(STEPS)
-        self.time = to_si(self.t, "s", what=self.name("t")) if self.t is not None else defaults["t"]
+        from hydroservo.analysis.linear import operating_time
+
+        self.time = operating_time(to_si(self.t, "s", what=self.name("t")), self.name("t"), self.t) \
+            if self.t is not None else defaults["t"]
         self.free_states = list(self.free) if self.free is not None else defaults["free"]
         self.kinds = list(self.models) if self.models else list(RUNGS)
         for k in self.kinds:

@@ -331,7 +331,9 @@ class Linearize(Workflow):
         for what, names, kind in (("inputs", self.inputs, "input"), ("outputs", self.outputs, "signal"),
                                   ("free", self.free, "state"), ("at", self.point if isinstance(self.point, Mapping) else None, "state")):
             check_names(self.system, self.name(what), names, kind)
-        self.time = to_si(self.t, "s", what=self.name("t"))
+        from hydroservo.analysis.linear import operating_time
+
+        self.time = operating_time(to_si(self.t, "s", what=self.name("t")), self.name("t"), self.t)
         self.grid = None if self.frequencies is None else np.asarray(self.frequencies, dtype=float)
         self.unit_choice = self.system.unit_choice(asked_units(self.system, self.units, self.si, self.name))
 
