@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+import hydroservo as hs
 from hydroservo.io import load_model, read_model
 from hydroservo.units import convert
 
@@ -142,3 +143,18 @@ def test_sobol_names_its_metrics_in_the_units_shown_and_ladder_json_alone_writes
     monkeypatch.chdir(tmp_path)
     code, _, _ = cli("ladder", "robot-arm", "--steps", "36.8", "--models", "nonlinear", "--points", "101", "--json")
     assert code == 0 and not list(tmp_path.glob("hydroservo-*"))
+
+
+def test_an_exported_file_that_changes_the_model_scopes_its_notes(cli, tmp_path) -> None:
+    """position-servo's note gives its default run's peaks (55 and 86 MPa for 100 kg): a file exported with
+    another mass carried it as true, and every run of that file printed it so (issue 37's review)."""
+    scope = "[measured on the model's default run; this file changes load.m, so it may not hold here] "
+    for extra in ([], ["--full"]):
+        code, text, err = cli("export", "position-servo", "--set", "load.m=10 kg", *extra)
+        assert code == 0, err
+        path = tmp_path / "light.toml"
+        path.write_text(text, encoding="utf-8")
+        system = hs.load_model(path)
+        assert system.notes and all(note.startswith(scope) for note in system.notes), system.notes
+    code, text, _ = cli("export", "position-servo")
+    assert code == 0 and "[measured on" not in text  # the model itself: its notes as they are

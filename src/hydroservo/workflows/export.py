@@ -60,8 +60,17 @@ class ExportModel(Workflow):
 
     def run(self, progress: Progress | None = None, folder: Path | None = None) -> ModelFileReport:
         from hydroservo.io.model_file import checked_model_text, model_to_toml
+        from hydroservo.io.notebook import departures, scoped_notes
+        from hydroservo.io.toml import edit_toml, toml_value
 
+        # the model's notes were measured on it as its file gives it: a file that changes it says so in each note,
+        # which then travels with the file (a run of it is otherwise a default run, whose notes are shown as true)
+        changes = departures(self.system)
+        if changes:
+            self.system.notes = scoped_notes(self.system, changes, "file")
         text = None if self.full else self._edited()
+        if text is not None and changes and self.system.notes:
+            text = edit_toml(text, {("model", "notes"): toml_value(self.system.notes)})
         text = text if text is not None else model_to_toml(self.system)
         # what is written loads and is this model, whatever its names and descriptions hold: checked before writing
         return ModelFileReport(self.system, checked_model_text(text, self.system, "the exported model file"))
