@@ -4174,10 +4174,19 @@ def import_hopsan(path: str | Path, line_segments: int | None = None) -> HopsanI
         if isinstance(line_segments, bool) or not isinstance(line_segments, int) or not 1 <= line_segments <= Line.MAX_SEGMENTS:
             raise ModelFileError(f"line_segments = {line_segments!r}: expected a whole number from 1 to {Line.MAX_SEGMENTS}")
     seen_names: set[str] = set()
+    heads: dict[str, str] = {}
     for hc in model.components:
         if hc.full_name in seen_names:
             problems.append(f"{source}: two components are named {hc.full_name!r}")
         seen_names.add(hc.full_name)
+        head = _alias(hc.full_name)  # its variables' names, as Hopsan's (Ctl-x#out#Value is Ctl_x.out.Value)
+        if head in heads and heads[head] != hc.full_name:
+            problems.append(
+                f"{source}: components {heads[head]!r} and {hc.full_name!r} would both name their variables "
+                f"{head!r}.* (characters other than letters, digits and _ become _); expected names that differ "
+                "in more than those characters: rename one of them in Hopsan"
+            )
+        heads.setdefault(head, hc.full_name)
     for connection in model.connections:
         for end in connection:
             if _end(end)[0] not in seen_names:

@@ -2900,3 +2900,15 @@ def test_a_pressure_sensor_shows_the_pressure_of_its_node(tmp_path: Path) -> Non
     assert r["PS.out.Value"][-1] == pytest.approx(5e6)  # Hopsan's number, absolute
     for unit in ("Pa_abs", "bar", "psi"):
         assert r.get("PS.out.Value", unit)[-1] == pytest.approx(r.get("S.P1.Pressure", unit)[-1], rel=1e-9), unit
+
+
+def test_two_names_that_would_name_the_same_variables_are_refused(tmp_path: Path) -> None:
+    """'Ctl-x' and 'Ctl_x' both give variables 'Ctl_x.out.Value': one of Hopsan's variables was lost and the
+    other's alias named the wrong block, without a word (issue 37's review)."""
+    components = [("SignalConstant", "Ctl-x", {"y#Value": ("1", "")}), ("SignalGain", "Ctl_x", {"k#Value": ("2", "")}),
+                  ("SignalSink", "Scope", {})]
+    connections = [("Ctl-x.y", "Ctl_x.in"), ("Ctl_x.out", "Scope.in")]
+    path = tmp_path / "clash.hmf"
+    path.write_text(_hmf(components, connections), encoding="utf-8")
+    with pytest.raises(ModelFileError, match=r"'Ctl-x' and 'Ctl_x' would both name their variables 'Ctl_x'"):
+        read_hopsan(path)
