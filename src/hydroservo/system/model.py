@@ -96,7 +96,7 @@ def _interpreted_once(
         _INTERPRETED_SAID.set()
         warnings.warn(
             f"simulating with CVODES in CasADi's interpreter, 2 to 5 times slower than compiled ({why}). "
-            f"{remedy} method='cvodes' to choose it",
+            f"{remedy} method='cvodes' (on the command line --method cvodes) to choose it",
             InterpretedWarning,
             stacklevel=5,
         )
