@@ -1602,8 +1602,17 @@ def _refused_special(run: Callable[..., Outcome], ws: Workspace, argv: list[Any]
     return o
 
 
-@pytest.mark.parametrize("special", ["dev-zero", "fifo"])
-@pytest.mark.parametrize("kind", list(SPECIAL_KINDS))
+#: the FIFO cases of these kinds run in the default suite, the others with the slow tests (each a child process:
+#: the default suite stays inside its 5 minutes); /dev/zero runs for every kind in both
+FIFO_KINDS_BY_DEFAULT = ("model-file", "hopsan-model", "rig-record-csv", "curves-csv")
+
+
+@pytest.mark.parametrize(
+    ("kind", "special"),
+    [(kind, "dev-zero") for kind in SPECIAL_KINDS]
+    + [pytest.param(kind, "fifo", marks=() if kind in FIFO_KINDS_BY_DEFAULT else pytest.mark.slow, id=f"{kind}-fifo")
+       for kind in SPECIAL_KINDS],
+)
 def test_reader_special_file(kind: str, special: str, ws: Workspace, run) -> None:
     _valid(ws, kind)
     name = f"bad{SPECIAL_KINDS[kind]}"

@@ -92,6 +92,7 @@ def _warm(method: str) -> None:
     hs.load_model("position-servo").simulate(t_end=0.01, n_points=3, method=method)
 
 
+@pytest.mark.slow  # a child process run into its solver and interrupted: a few seconds each
 @needs_proc
 @pytest.mark.parametrize(
     ("method", "span"),
@@ -124,6 +125,7 @@ def test_ctrl_c_stops_simulate_exits_130_and_writes_nothing(method: str, span: l
     assert after < CPU_AFTER_SIGNAL, f"{after:.2f} s of CPU after SIGINT"
 
 
+@pytest.mark.slow  # a child process run into its solver and interrupted: a few seconds each
 @needs_proc
 def test_ctrl_c_with_debug_shows_the_traceback(tmp_path: Path) -> None:
     code, _, stderr, _ = _interrupt(
@@ -163,6 +165,7 @@ else:
 """
 
 
+@pytest.mark.slow  # a child process run into its solver and interrupted: a few seconds each
 @needs_proc
 @pytest.mark.parametrize(
     ("what", "method"),
@@ -254,6 +257,7 @@ def test_an_exported_stepper_stops_when_the_flag_is_set(monkeypatch: pytest.Monk
 CPU_AFTER_SIGNAL_STARTS = 4.0
 
 
+@pytest.mark.slow  # a child process run into its solver and interrupted: a few seconds each
 @needs_proc
 def test_ctrl_c_stops_calibrate_with_starts_on_threads(tmp_path: Path) -> None:
     """Exit 130, one message, nothing written. Before, the starts running when Ctrl-C came ran to their end (the
