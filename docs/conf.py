@@ -97,3 +97,17 @@ html_theme = "furo"
 html_title = f"hydroservo {release}"
 html_static_path: list[str] = []
 html_show_sourcelink = False
+
+
+# -- members matplotlib writes for each subclass -------------------------------------------------------------------
+def _skip_matplotlib_set(app, what, name, obj, skip, options):
+    """matplotlib gives every Artist subclass a generated ``set`` whose docstring uses matplotlib's own roles
+    (``:mpltype:``), unknown here: plotting's ShownFigure (a Figure) would fail the build; its ``set`` is
+    matplotlib's, documented there."""
+    if name == "set" and getattr(obj, "__module__", "") == "matplotlib.artist":
+        return True
+    return None
+
+
+def setup(app):
+    app.connect("autodoc-skip-member", _skip_matplotlib_set)

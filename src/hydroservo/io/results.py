@@ -65,7 +65,7 @@ def csv_header_row(columns: list[str]) -> str:
 
 
 def csv_comments(lines: list[str] | tuple[str, ...] | str) -> str:
-    """``lines`` (or a text of lines) as the ``# `` comment lines that head a CSV (with their line ends), each on
+    """``lines`` (or a text of lines) as the comment lines (``#`` and a space) that head a CSV (with their line ends), each on
     one line whatever it holds (:func:`hydroservo.io.text.comment_lines`)."""
     texts = [lines] if isinstance(lines, str) else list(lines)
     return "".join(f"{c}\n" for text in texts for c in (comment_lines(text) or ["#"]))
