@@ -190,6 +190,7 @@ def test_result_plot_without_arguments_shows_the_main_signals(tmp_path) -> None:
     assert legend == ["vi: command voltage", "eo: error voltage at the RC network output"]
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_servovalve_bench_writes_its_report_and_refuses_bad_values(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
     import json
 
@@ -359,6 +360,7 @@ def test_sensitivity_refuses_bad_options(tmp_path, cli, argv, patterns) -> None:
     assert not (tmp_path / "out").exists() or not any((tmp_path / "out").rglob("*.*"))
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_ladder_prints_the_table_and_writes_its_files(tmp_path, cli) -> None:  # type: ignore[no-untyped-def]
     measured = tmp_path / "run_368.csv"
     measured.write_text("t [s],x [mm]\n0,0\n1.5,33.0\n")

@@ -32,6 +32,7 @@ def records(tmp_path_factory: pytest.TempPathFactory) -> Path:
     return folder
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_calibrate_recovers_the_rig_and_predicts_the_held_out_record(cli, records: Path, tmp_path: Path) -> None:
     argv = ["calibrate", "robot-arm", "--record", _files(records, "arm_step"), "--input", "command.y", "--noise", NOISE,
             "--validate", _files(records, "arm_check"), "--out", str(tmp_path / "cal"), "--json"]

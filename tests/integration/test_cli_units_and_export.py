@@ -19,6 +19,7 @@ def _row(text: str, name: str) -> list[str]:
     return line.split()
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_linearize_shows_the_operating_point_and_valve_coefficients_in_the_models_units(tmp_path, cli) -> None:
     # flight-simulator's file is in psi and in: the trim's chamber pressure is shown in psi, the same value as SI
     code, psi, _ = cli("linearize", "flight-simulator", "--out", str(tmp_path / "a"))

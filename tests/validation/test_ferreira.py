@@ -82,6 +82,7 @@ def test_published_sets_reproduce_the_datasheet(ferreira_published: dict[str, di
 
 
 # -- spool dynamics, section 6 -------------------------------------------------------
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_identification_round_trip(published_bode: FrequencyResponse) -> None:
     """FerreiraND eq. 43 from a start 35-40 % away from every value: recover all within 1 %.
 

@@ -22,6 +22,7 @@ def test_static_tests_reproduce_the_rated_flow_at_rest() -> None:
     assert 0.5 < st.internal_leakage_null * 6e4 < 1.5
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_the_25_percent_square_wave_is_slower_because_the_flapper_hits_the_nozzle() -> None:
     """[GordicND] section 4, Fig. 9, as the bench measures it."""
     steps = {s.fraction: s for s in sb.step_tests()}
@@ -33,6 +34,7 @@ def test_the_25_percent_square_wave_is_slower_because_the_flapper_hits_the_nozzl
         assert st.flow[-1] == pytest.approx(at_rest, rel=0.03)
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_hysteresis_comes_from_the_feedback_ball_clearance_and_friction() -> None:
     """Hysteresis 'can be spotted in the numerically obtained curve' ([GordicND] Fig. 10): with Table 1's ball
     clearance and dry friction a slow sine leaves a loop; without them it nearly closes."""
@@ -54,6 +56,7 @@ def test_the_threshold_away_from_null_is_below_a_hundredth_of_a_per_cent() -> No
     assert sticky.threshold > 5 * th.threshold and sticky.threshold > 2e-4
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_blocked_ports_give_load_pressure_and_leakage() -> None:
     bl = sb.blocked_tests()
     span = 209e5

@@ -51,6 +51,7 @@ def test_the_torque_motor_sits_near_its_stability_limit(study) -> None:  # type:
     assert np.isfinite(study.elasticity["overshoot"]["k_n"])
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_linearity_and_hysteresis_follow_the_bench() -> None:
     """The study's design point is the bench's: the same linearity (41 currents) and hysteresis (1/16 Hz)."""
     study = design_study(parameters=["x_p0", "N"], figures=["linearity", "hysteresis"])

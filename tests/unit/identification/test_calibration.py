@@ -143,6 +143,7 @@ def test_bad_fit_requests_are_refused(stepped_arm) -> None:
     assert fit[1].unit == "N" and fit[1].lower == pytest.approx(0.78)
 
 
+@pytest.mark.slow  # over 5 s (the default suite stays inside its 5 minutes)
 def test_several_starts_run_together(step_record, stepped_arm) -> None:
     cal = calibrate(stepped_arm(), [step_record], ["load.B", "spool.tau"], inputs=["command.y"], noise=NOISE,
                     initial="model", starts=3, seed=1)
