@@ -12,7 +12,7 @@ load.x     -0.18285  m
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from typing import Any
 
 __all__ = ["text_table", "one_line", "comment_lines", "xml_text"]
@@ -76,9 +76,14 @@ def one_line(text: str) -> str:
     >>> print(one_line('Force\\n[initial]\\r\\x00 \\u2028ok'))
     Force\\n[initial]\\r\\x00 \\u2028ok
     """
-    if text.isprintable():
+    return _escaped(text, lambda ch: not ch.isprintable())
+
+
+def _escaped(text: str, bad: Callable[[str], bool]) -> str:
+    """``text`` with each character ``bad`` says it cannot hold written as its Python escape (``\\x00``)."""
+    if not any(bad(ch) for ch in text):
         return text
-    return "".join(ch if ch.isprintable() else repr(ch)[1:-1] for ch in text)
+    return "".join(repr(ch)[1:-1] if bad(ch) else ch for ch in text)
 
 
 def comment_lines(text: str, mark: str = "#") -> list[str]:
@@ -106,6 +111,4 @@ def xml_text(text: str) -> str:
     >>> xml_text('a\\x00b\\nc<d>')
     'a\\\\x00b\\nc<d>'
     """
-    if not any(_xml_forbidden(ch) for ch in text):
-        return text
-    return "".join(repr(ch)[1:-1] if _xml_forbidden(ch) else ch for ch in text)
+    return _escaped(text, _xml_forbidden)

@@ -35,7 +35,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar, NamedTuple
 
 from hydroservo.errors import BareNumberWarning, HydroservoError, ParameterError, did_you_mean, shorten
-from hydroservo.units import plain_number
+from hydroservo.io.files import plain_float
 
 if TYPE_CHECKING:
     from hydroservo.io.files import OutputFolder
@@ -202,14 +202,6 @@ def footer() -> str:
     return f"made by hydroservo {__version__} on {datetime.date.today().isoformat()}"
 
 
-def _plain(text: str) -> float:
-    """A plain decimal (:func:`hydroservo.units.plain_number`), else ValueError: ``2_5`` is not 25."""
-    value = plain_number(text)
-    if value is None:
-        raise ValueError(text)
-    return value
-
-
 def numbers(
     text: str,
     what: str,
@@ -225,7 +217,7 @@ def numbers(
     import math
 
     try:
-        vals = [_plain(v) for v in text.split(",") if v.strip()]
+        vals = [plain_float(v) for v in text.split(",") if v.strip()]
     except ValueError:
         raise ParameterError(f"{what} {text!r}: expected comma-separated numbers, e.g. 5,25,50") from None
     if not vals:

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
 from hydroservo.errors import ImplausibleResultError, ParameterError, did_you_mean, shorten
-from hydroservo.units import plain_number
+from hydroservo.io.files import plain_float
 from hydroservo.workflows.base import Artifact, Progress, Report, Workflow, asked_units, load_with_sets, safe_name
 
 if TYPE_CHECKING:
@@ -38,10 +38,7 @@ def accuracy_of(text: float | str | None, what: str = "--accuracy") -> float | N
         return None if text is None else float(text)
     stripped = text.strip()
     try:
-        value = plain_number(stripped[:-1] if stripped.endswith("%") else stripped)
-        if value is None:
-            raise ValueError(stripped)
-        return value / 100 if stripped.endswith("%") else value
+        return plain_float(stripped[:-1]) / 100 if stripped.endswith("%") else plain_float(stripped)
     except ValueError:
         raise ParameterError(
             f"{what} {shorten(text)!r}: expected a fraction of each signal's range, e.g. 1e-3 or 0.1%"
