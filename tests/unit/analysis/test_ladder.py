@@ -109,6 +109,7 @@ def test_classes_of_table_5_3() -> None:
         "accurate", "accurate", "moderate", "moderate", "moderate", "inaccurate", "failed"]
 
 
+@pytest.mark.slow  # about 5 s (the default suite stays inside its 5 minutes)
 def test_the_robot_arm_ladder_and_its_defaults() -> None:
     """The example's ladder: ten models; the improved models with parameter feedback follow the model as given
     within the accurate class at every step of the thesis; the plain linear one only near its point."""

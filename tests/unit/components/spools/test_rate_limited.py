@@ -28,6 +28,7 @@ def test_limiters_have_unit_gain_at_the_origin(rate_limited_spool_system) -> Non
     assert v_l == pytest.approx(L_v, rel=1e-6)
 
 
+@pytest.mark.slow  # about 5 s (the default suite stays inside its 5 minutes)
 def test_pade_delay_matches_the_exact_delay_in_the_band(rate_limited_spool_system) -> None:
     """The (2,2) Padé of the component against the exact phase -360 f dt: < 0.5 deg to 300 Hz, same gain.
 

@@ -110,6 +110,7 @@ def test_default_null_coefficients_are_lichtarowicz_at_210_bar() -> None:
     assert spec["K_od0"].default == pytest.approx(null["K_od"], abs=5e-4)
 
 
+@pytest.mark.slow  # about 5 s (the default suite stays inside its 5 minutes)
 def test_the_amplifier_of_eqs_1_2_drives_it_in_a_system() -> None:
     """Eq. 1: i = sat(K_a U); eq. 2 adds electrical feedback of the spool, U - K_p y. The package's Amplifier
     (saturating) and Sum in front of the valve: a command that would ask 30 mA is held at the 12 mA limit,
